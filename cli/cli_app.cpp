@@ -1,0 +1,200 @@
+#include "cli_app.h"
+
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <new>
+#include <optional>
+#include <sstream>
+
+#include "dem_reader.h"
+#include "output_files.h"
+#include "preview.h"
+#include "silhouettes.h"
+#include "vector_writer.h"
+
+namespace tsk::cli {
+namespace {
+
+const char* const kUsage = R"(usage: terrain-sketch silhouettes INPUT OUTPUT [options]
+
+Factual and Formulated Silhouettes of a DEM seen obliquely from above, as vector strokes.
+INPUT is any raster GDAL reads (heights in metres, a projected CRS in metres);
+OUTPUT any OGR vector format, chosen by extension (.gpkg, .shp, .geojson, .fgb, ...).
+
+view:
+  --azimuth DEG        bearing the viewer faces, 0, 90, 180 or 270 (default 90: from the west)
+  --ve X               vertical exaggeration, > 0 (default 2.5)
+  --base-slope PCT     base slope added along the line of sight, percent (default 40)
+slope filter:
+  --row-cut PCT        row slope cut-off, percent (default 20)
+  --col-cut PCT        column slope cut-off, percent (default 12)
+  --ctrl PCT           column slope of the control point, percent (default 8.75)
+  --no-diagonals       remove the whole rectangle below both cut-offs
+strokes:
+  --window N           formulated chaining search window, cells (default 3)
+  --min-cells N        drop strokes with fewer cells (default 3)
+  --placement P        far (default) or near_and_far: which end of an f-set zone to keep
+  --subcell            place factual points at the sub-cell peak of the profile
+  --geometry G         map (cell centres) or oblique (plan oblique sketch) (default map)
+input and output:
+  --band N             raster band (default 1)
+  --cell-size M        cell size in metres for a raster without georeferencing
+  --format DRIVER      OGR driver name, overriding the extension
+  --stats-json FILE    write the stage statistics as JSON
+  --preview PNG        render the oblique sketch to a PNG picture
+  --threads N          worker threads (default: all cores)
+)";
+
+// Parses a whole number or a finite decimal, refusing trailing junk.
+double parse_number(const std::string& option, const std::string& text) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || used == 0) throw Error(option + " needs a number, got '" + text + "'");
+  return value;
+}
+
+int parse_int(const std::string& option, const std::string& text) {
+  const double value = parse_number(option, text);
+  if (value != static_cast<double>(static_cast<long long>(value)) || value < -1e9 || value > 1e9) {
+    throw Error(option + " needs a whole number, got '" + text + "'");
+  }
+  return static_cast<int>(value);
+}
+
+struct Options {
+  std::string input, output, format, stats_json, preview;
+  io::DemOptions dem;
+  SilhouetteParams params;
+};
+
+Options parse(const std::vector<std::string>& args) {
+  Options o;
+  std::vector<std::string> positional;
+  using Setter = std::function<void(const std::string&, const std::string&)>;
+  const std::map<std::string, Setter> with_value = {
+      {"--azimuth", [&](auto& n, auto& v) { o.params.view.azimuth_deg = parse_number(n, v); }},
+      {"--ve", [&](auto& n, auto& v) { o.params.view.ve = parse_number(n, v); }},
+      {"--base-slope",
+       [&](auto& n, auto& v) { o.params.view.base_slope_pct = parse_number(n, v); }},
+      {"--row-cut", [&](auto& n, auto& v) { o.params.filter.row_cut_pct = parse_number(n, v); }},
+      {"--col-cut", [&](auto& n, auto& v) { o.params.filter.col_cut_pct = parse_number(n, v); }},
+      {"--ctrl", [&](auto& n, auto& v) { o.params.filter.ctrl_col_pct = parse_number(n, v); }},
+      {"--window", [&](auto& n, auto& v) { o.params.chain.window = parse_int(n, v); }},
+      {"--min-cells", [&](auto& n, auto& v) { o.params.chain.min_cells = parse_int(n, v); }},
+      {"--placement", [&](auto&, auto& v) { o.params.placement = parse_placement(v); }},
+      {"--geometry", [&](auto&, auto& v) { o.params.geometry = parse_geometry(v); }},
+      {"--band", [&](auto& n, auto& v) { o.dem.band = parse_int(n, v); }},
+      {"--cell-size", [&](auto& n, auto& v) { o.dem.cell_size = parse_number(n, v); }},
+      {"--threads",
+       [&](auto& n, auto& v) {
+         const int t = parse_int(n, v);
+         if (t < 0) throw Error("--threads must be 0 or more");
+         o.params.threads = static_cast<unsigned>(t);
+       }},
+      {"--format", [&](auto&, auto& v) { o.format = v; }},
+      {"--stats-json", [&](auto&, auto& v) { o.stats_json = v; }},
+      {"--preview", [&](auto&, auto& v) { o.preview = v; }},
+  };
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    const std::string& a = args[k];
+    if (a == "--no-diagonals") {
+      o.params.filter.diagonals = false;
+    } else if (a == "--subcell") {
+      o.params.subcell = true;
+    } else if (auto it = with_value.find(a); it != with_value.end()) {
+      if (k + 1 >= args.size()) throw Error(a + " needs a value");
+      it->second(a, args[++k]);
+    } else if (a.size() > 1 && a[0] == '-' && !std::isdigit(static_cast<unsigned char>(a[1]))) {
+      throw Error("unknown option '" + a + "'");
+    } else {
+      positional.push_back(a);
+    }
+  }
+  if (positional.size() != 2) throw Error("expected INPUT and OUTPUT");
+  o.input = positional[0];
+  o.output = positional[1];
+  o.dem.azimuth_deg = o.params.view.azimuth_deg;
+  o.params.validate();
+  return o;
+}
+
+std::string stats_json(const StageStats& s) {
+  std::ostringstream j;
+  j.precision(6);
+  j << std::fixed << "{\n"
+    << "  \"valid_cells\": " << s.valid << ",\n"
+    << "  \"hidden_pct\": " << s.pct(s.hidden) << ",\n"
+    << "  \"occluding_pct\": " << s.pct(s.occluding) << ",\n"
+    << "  \"cset_pct\": " << s.pct(s.candidate) << ",\n"
+    << "  \"fset_pct\": " << s.pct(s.filtered) << ",\n"
+    << "  \"tset_pct\": " << s.pct(s.thinned) << ",\n"
+    << "  \"gset_pct\": " << s.pct(s.generalised) << ",\n"
+    << "  \"factual_strokes\": " << s.factual_strokes << ",\n"
+    << "  \"formulated_strokes\": " << s.formulated_strokes << "\n}\n";
+  return j.str();
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  io::write_atomically(path, [&](const std::filesystem::path& staged) {
+    std::ofstream f(staged);
+    f << text;
+    f.close();
+    if (!f) throw Error("cannot write '" + path + "'");
+  });
+}
+
+int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Options o = parse(args);
+  io::vector_driver_for(o.output, o.format);  // an unknown format fails before any work
+  const io::Dem dem = io::read_dem(o.input, o.dem);
+  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  const SilhouetteResult result =
+      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
+  io::write_strokes(o.output, o.format, result.strokes, dem.srs_wkt);
+  if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
+  if (!o.preview.empty()) {
+    io::write_preview(o.preview, result, dem.oriented, dem.frame, o.params.view);
+  }
+  const StageStats& s = result.stats;
+  out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes
+      << " formulated strokes (c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered)
+      << " %, t-set " << s.pct(s.thinned) << " %, g-set " << s.pct(s.generalised) << " %)\n";
+  return 0;
+}
+
+}  // namespace
+
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    (args.empty() ? err : out) << kUsage;
+    return args.empty() ? 2 : 0;
+  }
+  if (args[0] != "silhouettes") {
+    err << "terrain-sketch: unknown command '" << args[0] << "'\n" << kUsage;
+    return 2;
+  }
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (!rest.empty() && (rest[0] == "--help" || rest[0] == "-h")) {
+    out << kUsage;
+    return 0;
+  }
+  try {
+    return silhouettes(rest, out, err);
+  } catch (const Error& e) {
+    err << "terrain-sketch: " << e.what() << "\n";
+  } catch (const std::bad_alloc&) {
+    err << "terrain-sketch: out of memory\n";
+  } catch (const std::exception& e) {
+    err << "terrain-sketch: unexpected failure: " << e.what() << "\n";
+  }
+  return 1;
+}
+
+}  // namespace tsk::cli

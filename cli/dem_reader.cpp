@@ -1,0 +1,114 @@
+#include "dem_reader.h"
+
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <new>
+#include <vector>
+
+#include "gdal_util.h"
+
+namespace tsk::io {
+namespace {
+
+// A reprojection hint for a geographic DEM: the UTM zone of its centre.
+std::string utm_hint(const GeoTransform& gt, std::size_t rows, std::size_t cols) {
+  double lon = 0, lat = 0;
+  gt.apply({static_cast<double>(cols) / 2, static_cast<double>(rows) / 2}, lon, lat);
+  const int zone = std::clamp(static_cast<int>(std::floor((lon + 180.0) / 6.0)) + 1, 1, 60);
+  const int epsg = (lat >= 0 ? 32600 : 32700) + zone;
+  return "gdalwarp -t_srs EPSG:" + std::to_string(epsg) + " -r bilinear INPUT OUTPUT_utm.tif";
+}
+
+}  // namespace
+
+Dem read_dem(const std::string& path, const DemOptions& options) {
+  GdalErrorCapture capture;
+  auto dataset = open_raster(path);
+  const int bands = dataset->GetRasterCount();
+  if (bands < 1) throw Error("'" + path + "' has no raster bands");
+  if (options.band < 1 || options.band > bands) {
+    throw Error("band " + std::to_string(options.band) + " does not exist: '" + path + "' has " +
+                std::to_string(bands) + " band(s)");
+  }
+  Dem dem;
+  dem.rows = static_cast<std::size_t>(dataset->GetRasterYSize());
+  dem.cols = static_cast<std::size_t>(dataset->GetRasterXSize());
+
+  double gt[6];
+  if (dataset->GetGeoTransform(gt) == CE_None) {
+    if (gt[2] != 0.0 || gt[4] != 0.0) {
+      throw Error("'" + path +
+                  "' has a rotated or sheared geotransform; make it north-up first, e.g. "
+                  "gdalwarp INPUT OUTPUT_northup.tif");
+    }
+    if (!(gt[1] > 0.0) || !(gt[5] < 0.0)) {
+      throw Error("'" + path +
+                  "' is not north-up (row 0 must be north, column 0 west); warp it first, e.g. "
+                  "gdalwarp INPUT OUTPUT_northup.tif");
+    }
+    std::copy(gt, gt + 6, dem.geotransform.a.begin());
+  } else if (options.cell_size > 0.0) {
+    dem.geotransform.a = {0.0, options.cell_size, 0.0, 0.0, 0.0, -options.cell_size};
+    dem.notes +=
+        "no georeferencing: cells taken as " + std::to_string(options.cell_size) + " m squares\n";
+  } else {
+    throw Error("'" + path +
+                "' has no georeferencing, so its cell size is unknown; give it with --cell-size");
+  }
+
+  if (const OGRSpatialReference* srs = dataset->GetSpatialRef()) {
+    if (srs->IsGeographic()) {
+      throw Error("'" + path +
+                  "' is in a geographic CRS: its cell sizes are degrees, not metres like its "
+                  "heights. Reproject it to a metric CRS first, e.g. " +
+                  utm_hint(dem.geotransform, dem.rows, dem.cols));
+    }
+    if (srs->IsProjected() && std::fabs(srs->GetLinearUnits() - 1.0) > 1e-9) {
+      dem.notes += "the CRS's linear unit is not the metre; heights must be in that same unit\n";
+    }
+    char* wkt = nullptr;
+    srs->exportToWkt(&wkt);
+    dem.srs_wkt = wkt ? wkt : "";
+    CPLFree(wkt);
+  } else {
+    dem.notes += "no CRS: coordinates are written without one, cell sizes taken as metres\n";
+  }
+
+  const double dx = dem.geotransform.a[1];
+  const double dy = -dem.geotransform.a[5];
+  dem.frame = make_frame(dem.rows, dem.cols, dx, dy, options.azimuth_deg);
+  try {
+    dem.oriented = HeightGrid(dem.frame.profiles, dem.frame.length);
+  } catch (const std::bad_alloc&) {
+    throw Error("not enough memory for a " + std::to_string(dem.rows) + " x " +
+                std::to_string(dem.cols) + " DEM");
+  }
+
+  GDALRasterBand* band = dataset->GetRasterBand(options.band);
+  int has_nodata = 0;
+  const double nodata = band->GetNoDataValue(&has_nodata);
+  const float nodata_f = static_cast<float>(nodata);
+  const std::size_t block_rows = std::max<std::size_t>(1, (1u << 22) / dem.cols);
+  std::vector<float> block(std::min(block_rows, dem.rows) * dem.cols);
+  for (std::size_t r = 0; r < dem.rows; r += block_rows) {
+    const std::size_t count = std::min(block_rows, dem.rows - r);
+    if (band->RasterIO(GF_Read, 0, static_cast<int>(r), static_cast<int>(dem.cols),
+                       static_cast<int>(count), block.data(), static_cast<int>(dem.cols),
+                       static_cast<int>(count), GDT_Float32, 0, 0) != CE_None) {
+      throw Error("reading '" + path + "' failed: " + capture.message());
+    }
+    if (has_nodata) {
+      for (std::size_t k = 0; k < count * dem.cols; ++k) {
+        if (block[k] == nodata_f) block[k] = kNoData;
+      }
+    }
+    scatter_dem_rows(dem.frame, r, count, block.data(), dem.cols, dem.oriented);
+  }
+  return dem;
+}
+
+}  // namespace tsk::io

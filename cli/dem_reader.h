@@ -1,0 +1,30 @@
+// Reads a DEM through GDAL straight into the core's oriented grid, with its georeferencing.
+#pragma once
+
+#include <string>
+
+#include "orient.h"
+#include "strokes.h"
+
+namespace tsk::io {
+
+struct DemOptions {
+  int band = 1;
+  double azimuth_deg = 90.0;
+  double cell_size = 0.0;  // > 0: use this cell size when the raster has no georeferencing
+};
+
+struct Dem {
+  HeightGrid oriented;
+  OrientedFrame frame;
+  GeoTransform geotransform;
+  std::string srs_wkt;  // empty when the raster has no CRS
+  std::string notes;    // things the user should know (no CRS, assumed units), one per line
+  std::size_t rows = 0, cols = 0;
+};
+
+// Throws tsk::Error with a message for the user on anything it cannot read faithfully:
+// not a raster, bad band, rotated or south-up georeferencing, a geographic CRS.
+Dem read_dem(const std::string& path, const DemOptions& options);
+
+}  // namespace tsk::io

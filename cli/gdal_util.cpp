@@ -1,0 +1,33 @@
+#include "gdal_util.h"
+
+#include <cpl_error.h>
+
+namespace tsk::io {
+
+GdalErrorCapture::GdalErrorCapture() {
+  GDALAllRegister();
+  CPLPushErrorHandler(CPLQuietErrorHandler);
+  CPLErrorReset();
+}
+
+GdalErrorCapture::~GdalErrorCapture() {
+  CPLPopErrorHandler();
+}
+
+std::string GdalErrorCapture::message() const {
+  const char* msg = CPLGetLastErrorMsg();
+  return msg && *msg ? msg : "unknown GDAL error";
+}
+
+DatasetPtr open_raster(const std::string& path) {
+  GdalErrorCapture capture;
+  DatasetPtr dataset(static_cast<GDALDataset*>(
+      GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+  if (!dataset) throw Error("cannot open '" + path + "' as a raster: " + capture.message());
+  if (dataset->GetRasterXSize() < 1 || dataset->GetRasterYSize() < 1) {
+    throw Error("'" + path + "' has no cells");
+  }
+  return dataset;
+}
+
+}  // namespace tsk::io

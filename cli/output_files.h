@@ -1,0 +1,17 @@
+// Writing outputs whole or not at all: everything goes to a private temporary folder beside the
+// destination and is moved into place only when complete.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace tsk::io {
+
+// Calls write(temporary_path) where temporary_path has the destination's file name inside a
+// fresh temporary folder next to it; on success moves every file the writer made (a shapefile
+// makes several) beside the destination. On any exception nothing is left behind.
+void write_atomically(const std::filesystem::path& destination,
+                      const std::function<void(const std::filesystem::path&)>& write);
+
+}  // namespace tsk::io

@@ -1,0 +1,117 @@
+#include "vector_writer.h"
+
+#include <gdal_priv.h>
+#include <ogrsf_frmts.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "gdal_util.h"
+#include "output_files.h"
+
+namespace tsk::io {
+namespace {
+
+struct RealField {
+  const char* name;
+  double Stroke::*member;
+};
+
+// The attribute fields beyond class and cells, in output order.
+const RealField kRealFields[] = {
+    {"length", &Stroke::length},
+    {"mean_slope", &Stroke::mean_slope_pct},
+    {"mean_row_slope", &Stroke::mean_row_slope_pct},
+    {"mean_depth", &Stroke::mean_depth_m},
+    {"max_depth", &Stroke::max_depth_m},
+    {"mean_dist", &Stroke::mean_dist},
+    {"mean_z", &Stroke::mean_z},
+};
+
+void check(OGRErr err, const std::string& what, const GdalErrorCapture& capture) {
+  if (err != OGRERR_NONE) throw Error(what + " failed: " + capture.message());
+}
+
+}  // namespace
+
+std::string vector_driver_for(const std::string& path, const std::string& format) {
+  if (!format.empty()) return format;
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  static const std::map<std::string, std::string> drivers = {
+      {".gpkg", "GPKG"},    {".shp", "ESRI Shapefile"}, {".geojson", "GeoJSON"},
+      {".json", "GeoJSON"}, {".fgb", "FlatGeobuf"},     {".gml", "GML"},
+      {".kml", "KML"},      {".sqlite", "SQLite"},      {".csv", "CSV"}};
+  const auto it = drivers.find(ext);
+  if (it == drivers.end()) {
+    throw Error("cannot tell the vector format of '" + path +
+                "' from its extension; use .gpkg, .shp, .geojson, .fgb, .gml, .kml, .sqlite or "
+                ".csv, or name an OGR driver with --format");
+  }
+  return it->second;
+}
+
+void write_strokes(const std::string& path, const std::string& format,
+                   const std::vector<Stroke>& strokes, const std::string& srs_wkt,
+                   const std::string& layer_name) {
+  GdalErrorCapture capture;
+  const std::string driver_name = vector_driver_for(path, format);
+  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
+  if (!driver || !driver->GetMetadataItem(GDAL_DCAP_VECTOR) ||
+      !driver->GetMetadataItem(GDAL_DCAP_CREATE)) {
+    throw Error("'" + driver_name + "' is not an OGR vector driver that can create files");
+  }
+  OGRSpatialReference srs;
+  const bool has_srs = !srs_wkt.empty() && srs.importFromWkt(srs_wkt.c_str()) == OGRERR_NONE;
+  srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+
+  write_atomically(path, [&](const std::filesystem::path& staged) {
+    DatasetPtr ds(driver->Create(staged.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+    if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
+    OGRLayer* layer =
+        ds->CreateLayer(layer_name.c_str(), has_srs ? &srs : nullptr, wkbLineString, nullptr);
+    if (!layer) throw Error("cannot create layer in '" + path + "': " + capture.message());
+    OGRFieldDefn cls("class", OFTString);
+    cls.SetWidth(10);
+    check(layer->CreateField(&cls), "creating field 'class'", capture);
+    OGRFieldDefn cells("cells", OFTInteger);
+    check(layer->CreateField(&cells), "creating field 'cells'", capture);
+    for (const RealField& f : kRealFields) {
+      OGRFieldDefn defn(f.name, OFTReal);
+      check(layer->CreateField(&defn), std::string("creating field '") + f.name + "'", capture);
+    }
+    const bool transaction = ds->StartTransaction() == OGRERR_NONE;
+    for (const Stroke& s : strokes) {
+      OGRFeature feature(layer->GetLayerDefn());
+      feature.SetField("class", stroke_class_name(s.cls));
+      feature.SetField("cells", s.cells);
+      for (const RealField& f : kRealFields) {
+        const double value = s.*(f.member);
+        if (std::isfinite(value)) {
+          feature.SetField(f.name, value);
+        } else {
+          feature.SetFieldNull(feature.GetFieldIndex(f.name));
+        }
+      }
+      OGRLineString line;
+      line.setNumPoints(static_cast<int>(s.points.size()));
+      for (std::size_t k = 0; k < s.points.size(); ++k) {
+        line.setPoint(static_cast<int>(k), s.points[k].x, s.points[k].y);
+      }
+      feature.SetGeometry(&line);
+      check(layer->CreateFeature(&feature), "writing a stroke to '" + path + "'", capture);
+    }
+    if (transaction) check(ds->CommitTransaction(), "committing '" + path + "'", capture);
+    CPLErrorReset();
+    ds.reset();  // closing flushes: a failure here means an incomplete file
+    if (CPLGetLastErrorType() >= CE_Failure) {
+      throw Error("closing '" + path + "' failed: " + capture.message());
+    }
+  });
+}
+
+}  // namespace tsk::io

@@ -1,0 +1,19 @@
+// Strokes to any OGR vector format, one line layer with the SPEC attribute fields.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "strokes.h"
+
+namespace tsk::io {
+
+// The OGR driver for an output path: `format` if given, else by the file's extension.
+std::string vector_driver_for(const std::string& path, const std::string& format);
+
+// Writes `strokes` to `path` (whole or not at all) in the CRS given as WKT (may be empty).
+void write_strokes(const std::string& path, const std::string& format,
+                   const std::vector<Stroke>& strokes, const std::string& srs_wkt,
+                   const std::string& layer_name = "silhouettes");
+
+}  // namespace tsk::io

@@ -1,0 +1,78 @@
+// The one grid type of the core: row-major, (row, col) indexing, NaN as the only nodata.
+#pragma once
+
+#include <cassert>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "errors.h"
+
+namespace tsk {
+
+// Largest grid the core accepts: each side must fit an int32 (profile and cell indices are
+// stored as int32) and the cell count must be addressable.
+constexpr std::size_t kMaxGridSide =
+    static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max());
+
+// rows * cols, refusing sizes that overflow or exceed the core's index range.
+inline std::size_t checked_cell_count(std::size_t rows, std::size_t cols) {
+  if (rows > kMaxGridSide || cols > kMaxGridSide) {
+    throw Error("grid of " + std::to_string(rows) + " x " + std::to_string(cols) +
+                " cells is too large: each side must be below 2^31");
+  }
+  if (cols != 0 && rows > std::numeric_limits<std::size_t>::max() / cols) {
+    throw Error("grid cell count overflows");
+  }
+  return rows * cols;
+}
+
+template <typename T>
+class Grid {
+ public:
+  Grid() = default;
+  Grid(std::size_t rows, std::size_t cols, T fill = T{})
+      : rows_(rows), cols_(cols), cells_(checked_cell_count(rows, cols), fill) {}
+
+  std::size_t rows() const { return rows_; }
+  std::size_t cols() const { return cols_; }
+  std::size_t size() const { return cells_.size(); }
+  bool empty() const { return cells_.empty(); }
+
+  T& operator()(std::size_t r, std::size_t c) {
+    assert(r < rows_ && c < cols_);
+    return cells_[r * cols_ + c];
+  }
+  const T& operator()(std::size_t r, std::size_t c) const {
+    assert(r < rows_ && c < cols_);
+    return cells_[r * cols_ + c];
+  }
+  T* row(std::size_t r) {
+    assert(r < rows_);
+    return cells_.data() + r * cols_;
+  }
+  const T* row(std::size_t r) const {
+    assert(r < rows_);
+    return cells_.data() + r * cols_;
+  }
+  T* data() { return cells_.data(); }
+  const T* data() const { return cells_.data(); }
+
+ private:
+  std::size_t rows_ = 0;
+  std::size_t cols_ = 0;
+  std::vector<T> cells_;
+};
+
+using HeightGrid = Grid<float>;
+
+constexpr float kNoData = std::numeric_limits<float>::quiet_NaN();
+
+// Inside the core a height is data when it is finite; NaN and +-Inf are nodata.
+inline bool is_data(float z) {
+  return std::isfinite(z);
+}
+
+}  // namespace tsk

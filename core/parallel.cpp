@@ -1,0 +1,61 @@
+#include "parallel.h"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "errors.h"
+
+namespace tsk {
+
+void parallel_for(std::size_t count, unsigned threads,
+                  const std::function<void(std::size_t, std::size_t)>& work,
+                  const ProgressFn& progress) {
+  if (count == 0) return;
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  // Small chunks so the caller's thread reports progress often and cancels quickly.
+  const std::size_t chunk = std::max<std::size_t>(1, std::min<std::size_t>(64, count / 256 + 1));
+  const std::size_t chunks = (count + chunk - 1) / chunk;
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> done{0};
+  std::atomic<bool> stop{false};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  bool cancelled = false;
+
+  auto worker = [&](bool reports) {
+    for (;;) {
+      if (stop.load(std::memory_order_relaxed)) return;
+      const std::size_t k = next.fetch_add(1);
+      if (k >= chunks) return;
+      try {
+        work(k * chunk, std::min(count, (k + 1) * chunk));
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        stop = true;
+        return;
+      }
+      const std::size_t finished = done.fetch_add(1) + 1;
+      if (reports && progress && !progress(static_cast<double>(finished) / chunks)) {
+        cancelled = true;
+        stop = true;
+        return;
+      }
+    }
+  };
+
+  const unsigned helpers = static_cast<unsigned>(std::min<std::size_t>(threads, chunks)) - 1;
+  std::vector<std::thread> pool;
+  pool.reserve(helpers);
+  for (unsigned t = 0; t < helpers; ++t) pool.emplace_back(worker, false);
+  worker(true);
+  for (auto& thread : pool) thread.join();
+  if (failure) std::rethrow_exception(failure);
+  if (cancelled) throw Cancelled();
+}
+
+}  // namespace tsk

@@ -1,0 +1,70 @@
+#include "params.h"
+
+#include <cmath>
+
+#include "errors.h"
+
+namespace tsk {
+namespace {
+
+void require(bool ok, const std::string& message) {
+  if (!ok) throw Error(message);
+}
+
+// Rejects NaN and infinities along with values outside [lo, hi].
+void require_range(double value, double lo, double hi, const std::string& what) {
+  require(std::isfinite(value) && value >= lo && value <= hi,
+          what + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
+              ", got " + std::to_string(value));
+}
+
+}  // namespace
+
+void ViewParams::validate() const {
+  require_range(azimuth_deg, -360.0, 360.0, "azimuth (degrees)");
+  require(std::isfinite(ve) && ve > 0.0 && ve <= 1000.0,
+          "vertical exaggeration must be > 0 and at most 1000, got " + std::to_string(ve));
+  require(std::isfinite(base_slope_pct) && base_slope_pct > 0.0 && base_slope_pct <= 10000.0,
+          "base slope must be > 0 % and at most 10000 %, got " + std::to_string(base_slope_pct));
+}
+
+void FilterParams::validate() const {
+  require(std::isfinite(row_cut_pct) && row_cut_pct > 0.0 && row_cut_pct <= 10000.0,
+          "row slope cut-off must be > 0 % and at most 10000 %");
+  require(std::isfinite(col_cut_pct) && col_cut_pct > 0.0 && col_cut_pct <= 10000.0,
+          "column slope cut-off must be > 0 % and at most 10000 %");
+  require(std::isfinite(ctrl_col_pct) && ctrl_col_pct > 0.0 && ctrl_col_pct < col_cut_pct,
+          "control point column slope must be > 0 and below the column cut-off (" +
+              std::to_string(col_cut_pct) + " %), got " + std::to_string(ctrl_col_pct));
+}
+
+void ChainParams::validate() const {
+  require(window >= 0 && window <= 1000, "chaining window must be between 0 and 1000 cells");
+  require(min_cells >= 2 && min_cells <= 1000000,
+          "minimum stroke cells must be at least 2 (a one-cell chain is noise)");
+}
+
+void SilhouetteParams::validate() const {
+  view.validate();
+  filter.validate();
+  chain.validate();
+  require(threads <= 1024, "thread count must be at most 1024");
+}
+
+Geometry parse_geometry(const std::string& name) {
+  if (name == "map") return Geometry::map;
+  if (name == "oblique") return Geometry::oblique;
+  throw Error("geometry must be 'map' or 'oblique', got '" + name + "'");
+}
+
+Placement parse_placement(const std::string& name) {
+  if (name == "far") return Placement::far;
+  if (name == "near_and_far") return Placement::near_and_far;
+  throw Error("placement must be 'far' or 'near_and_far', got '" + name + "'");
+}
+
+const char* geometry_name(Geometry geometry) {
+  return geometry == Geometry::map ? "map" : "oblique";
+}
+
+}  // namespace tsk

@@ -1,0 +1,48 @@
+// The whole method in order (SPEC 1.2-1.9 and 2), one named step per stage.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "flags.h"
+#include "orient.h"
+#include "parallel.h"
+#include "params.h"
+#include "strokes.h"
+
+namespace tsk {
+
+// Cell counts of each stage (SPEC 2); shares are of the valid cells.
+struct StageStats {
+  std::size_t valid = 0;
+  std::size_t hidden = 0;
+  std::size_t occluding = 0;
+  std::size_t candidate = 0;    // c-set
+  std::size_t filtered = 0;     // f-set
+  std::size_t thinned = 0;      // t-set
+  std::size_t generalised = 0;  // g-set: cells of kept strokes, factual and formulated
+  std::size_t factual_strokes = 0;
+  std::size_t formulated_strokes = 0;
+  double pct(std::size_t n) const { return valid ? 100.0 * static_cast<double>(n) / valid : 0.0; }
+};
+
+// Wall time of each stage, seconds.
+struct StageTimings {
+  double visibility = 0, candidates = 0, filter = 0, thinning = 0, chaining = 0, strokes = 0;
+  double total() const { return visibility + candidates + filter + thinning + chaining + strokes; }
+};
+
+struct SilhouetteResult {
+  std::vector<Stroke> strokes;  // factual first, then formulated
+  StageStats stats;
+  StageTimings timings;
+  CellFlags flags;  // the per-cell classification, for diagnostics and tests
+};
+
+// Runs every stage on an oriented grid (see orient.h). Throws Error on bad parameters or a grid
+// that does not match the frame, Cancelled when `progress` returns false.
+SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,
+                                 const GeoTransform& geotransform, const SilhouetteParams& params,
+                                 const ProgressFn& progress = {});
+
+}  // namespace tsk

@@ -1,0 +1,66 @@
+// Stage 7 (SPEC 1.8, 1.9): chains to strokes with attributes, in map or plan-oblique geometry.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "chaining.h"
+#include "orient.h"
+#include "params.h"
+
+namespace tsk {
+
+// GDAL-style affine georeferencing: x = a0 + col * a1 + row * a2, y = a3 + col * a4 + row * a5,
+// where (col, row) is a DEM pixel position (cell corners at integers).
+struct GeoTransform {
+  std::array<double, 6> a{0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
+  void apply(const PixelPoint& px, double& x, double& y) const {
+    x = a[0] + px.col * a[1] + px.row * a[2];
+    y = a[3] + px.col * a[4] + px.row * a[5];
+  }
+};
+
+enum class StrokeClass : std::uint8_t { factual, formulated };
+const char* stroke_class_name(StrokeClass cls);
+
+struct StrokePoint {
+  double x;
+  double y;
+};
+
+struct Stroke {
+  StrokeClass cls = StrokeClass::factual;
+  std::vector<StrokePoint> points;  // in the chosen geometry, in the DEM's CRS
+  Chain chain;                      // the oriented cells the points stand for
+  int cells = 0;
+  double length = 0.0;          // ground length in map units (map geometry)
+  double mean_slope_pct = 0.0;  // mean |column slope|, percent
+  double mean_row_slope_pct = 0.0;
+  double mean_depth_m = 0.0;  // factual: mean hidden-zone depth in metres; formulated: NaN
+  double max_depth_m = 0.0;   // factual: deepest hidden zone; formulated: NaN
+  double mean_dist = 0.0;     // mean distance from the front of the view, ground units
+  double mean_z = 0.0;        // mean height, metres
+};
+
+// What turning chains into strokes needs to know about the grid and the view.
+struct StrokeContext {
+  const HeightGrid& z;
+  const CellFlags& flags;
+  const OrientedFrame& frame;
+  const ViewParams& view;
+  const GeoTransform& geotransform;
+  Geometry geometry = Geometry::map;
+  bool subcell = false;
+  double z_ref = 0.0;  // height that stays in place in plan-oblique geometry (the DEM minimum)
+};
+
+// Position of an occluding cell along its profile, refined to the peak of the parabola through
+// the transformed heights of it and its neighbours (within half a cell).
+double subcell_peak(const float* z, std::size_t length, std::size_t i, double d,
+                    const ViewParams& view);
+
+// Appends the strokes of `chains` with at least `min_cells` cells to `out`.
+void make_strokes(const std::vector<Chain>& chains, StrokeClass cls, int min_cells,
+                  const StrokeContext& ctx, std::vector<Stroke>& out);
+
+}  // namespace tsk

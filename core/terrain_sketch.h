@@ -1,0 +1,31 @@
+// Terrain Sketch core: Factual and Formulated Silhouettes of a DEM seen obliquely from above.
+// Table of contents, one line per stage (SPEC section in brackets):
+//
+//   orient.h          [1.1] DEM -> oriented grid g[p][i]: profiles left to right, cells front to
+//   back visibility.h      [1.2] transformed heights, hidden cells, occluding cells, hidden zones
+//   candidates.h      [1.3, 1.4] column slopes, the candidate set (c-set)
+//   slope_filter.h    [1.3, 1.5] row slopes, the slope filter (f-set)
+//   thinning.h        [1.6] thinning rules (a) and (b) (t-set)
+//   chaining.h        [1.7] factual and formulated chainers
+//   strokes.h         [1.8, 1.9] strokes, attributes, generalisation, map/oblique geometry
+//   silhouettes.h     [2] all stages in order with stage statistics and timings
+//
+// Support: grid.h (the grid type, NaN nodata), flags.h (per-cell classification bits),
+// params.h (every parameter with its default), parallel.h (threads, progress, cancellation),
+// analytic_terrain.h (plane, step, bump, cone, ridge).
+#pragma once
+
+#include "analytic_terrain.h"
+#include "candidates.h"
+#include "chaining.h"
+#include "errors.h"
+#include "flags.h"
+#include "grid.h"
+#include "orient.h"
+#include "parallel.h"
+#include "params.h"
+#include "silhouettes.h"
+#include "slope_filter.h"
+#include "strokes.h"
+#include "thinning.h"
+#include "visibility.h"

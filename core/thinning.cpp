@@ -1,0 +1,34 @@
+#include "thinning.h"
+
+namespace tsk {
+
+void thin_profile(std::uint8_t* flags, std::size_t length, Placement placement) {
+  std::size_t i = 0;
+  while (i < length) {
+    if (!(flags[i] & cell::filtered)) {
+      ++i;
+      continue;
+    }
+    const std::size_t first = i;
+    while (i + 1 < length && (flags[i + 1] & cell::filtered)) ++i;
+    const std::size_t last = i;
+    const bool leads_to_factual = last + 1 < length && (flags[last + 1] & cell::occluding);
+    if (!leads_to_factual) {
+      flags[last] |= cell::thinned;
+      if (placement == Placement::near_and_far) flags[first] |= cell::thinned;
+    }
+    ++i;
+  }
+}
+
+void thin(CellFlags& flags, Placement placement, unsigned threads, const ProgressFn& progress) {
+  parallel_for(
+      flags.rows(), threads,
+      [&](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p)
+          thin_profile(flags.row(p), flags.cols(), placement);
+      },
+      progress);
+}
+
+}  // namespace tsk
