@@ -2,6 +2,7 @@
 
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
+#include <ogr_geometry.h>
 
 #include <algorithm>
 #include <cmath>
@@ -21,6 +22,27 @@ std::string utm_hint(const GeoTransform& gt, std::size_t rows, std::size_t cols)
   const int zone = std::clamp(static_cast<int>(std::floor((lon + 180.0) / 6.0)) + 1, 1, 60);
   const int epsg = (lat >= 0 ? 32600 : 32700) + zone;
   return "gdalwarp -t_srs EPSG:" + std::to_string(epsg) + " -r bilinear INPUT OUTPUT_utm.tif";
+}
+
+// Ground metres per map unit at the DEM's centre: cos(latitude) for Mercator projections (Web
+// Mercator among them), whose map units grow away from the equator; 1 otherwise.
+double mercator_ground_scale(const OGRSpatialReference& srs, const GeoTransform& gt,
+                             std::size_t rows, std::size_t cols) {
+  const char* projection = srs.GetAttrValue("PROJECTION");
+  const bool mercator = projection && std::string(projection).find("Mercator") != std::string::npos &&
+                        std::string(projection).find("Transverse") == std::string::npos;
+  if (!mercator) return 1.0;
+  std::unique_ptr<OGRSpatialReference> geographic(srs.CloneGeogCS());
+  if (!geographic) return 1.0;
+  geographic->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  OGRSpatialReference source(srs);
+  source.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  std::unique_ptr<OGRCoordinateTransformation> to_lonlat(
+      OGRCreateCoordinateTransformation(&source, geographic.get()));
+  double x = 0, y = 0;
+  gt.apply({static_cast<double>(cols) / 2, static_cast<double>(rows) / 2}, x, y);
+  if (!to_lonlat || !to_lonlat->Transform(1, &x, &y)) return 1.0;
+  return std::cos(y * M_PI / 180.0);
 }
 
 }  // namespace
@@ -67,6 +89,11 @@ Dem read_dem(const std::string& path, const DemOptions& options) {
                   "heights. Reproject it to a metric CRS first, e.g. " +
                   utm_hint(dem.geotransform, dem.rows, dem.cols));
     }
+    dem.ground_scale = mercator_ground_scale(*srs, dem.geotransform, dem.rows, dem.cols);
+    if (dem.ground_scale != 1.0) {
+      dem.notes += "Mercator projection: map units are not ground metres here; cell sizes scaled by "
+                   "cos(latitude of the centre) = " + std::to_string(dem.ground_scale) + "\n";
+    }
     if (srs->IsProjected() && std::fabs(srs->GetLinearUnits() - 1.0) > 1e-9) {
       dem.notes += "the CRS's linear unit is not the metre; heights must be in that same unit\n";
     }
@@ -78,8 +105,8 @@ Dem read_dem(const std::string& path, const DemOptions& options) {
     dem.notes += "no CRS: coordinates are written without one, cell sizes taken as metres\n";
   }
 
-  const double dx = dem.geotransform.a[1];
-  const double dy = -dem.geotransform.a[5];
+  const double dx = dem.geotransform.a[1] * dem.ground_scale;
+  const double dy = -dem.geotransform.a[5] * dem.ground_scale;
   dem.frame = make_frame(dem.rows, dem.cols, dx, dy, options.azimuth_deg);
   try {
     dem.oriented = HeightGrid(dem.frame.profiles, dem.frame.length);

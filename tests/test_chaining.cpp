@@ -1,0 +1,99 @@
+#include <catch2/catch.hpp>
+#include <string>
+#include <vector>
+
+#include "test_support.h"
+
+using namespace tsk;
+
+namespace {
+
+// Builds flags from one string per profile: 'o' occluding, 'h' hidden, 't' t-set, '.' valid.
+CellFlags grid(const std::vector<std::string>& profiles) {
+  CellFlags flags(profiles.size(), profiles[0].size());
+  for (std::size_t p = 0; p < profiles.size(); ++p)
+    for (std::size_t i = 0; i < profiles[p].size(); ++i) {
+      const char ch = profiles[p][i];
+      std::uint8_t f = ch == ' ' ? 0 : cell::valid;
+      if (ch == 'o') f |= cell::occluding;
+      if (ch == 'h') f |= cell::hidden;
+      if (ch == 't') f |= cell::thinned;
+      flags(p, i) = f;
+    }
+  return flags;
+}
+
+std::vector<std::pair<int, int>> cells(const Chain& chain) {
+  std::vector<std::pair<int, int>> out;
+  for (const ChainCell& c : chain) out.emplace_back(c.p, c.i);
+  return out;
+}
+
+using Cells = std::vector<std::pair<int, int>>;
+
+}  // namespace
+
+TEST_CASE("factual chaining links overlapping hidden zones", "[chaining]") {
+  // (0,1) with zone [1,3] overlaps (1,2) with [2,4], which overlaps (2,4) with [4,6].
+  const auto chains = chain_factual(grid({".ohh.....", "..ohh....", "....ohh..", "........."}));
+  REQUIRE(chains.size() == 1);
+  CHECK(cells(chains[0]) == Cells{{0, 1}, {1, 2}, {2, 4}});
+}
+
+TEST_CASE("factual chaining prefers the nearest cell, ties to the front", "[chaining]") {
+  // From (0, 4) with zone [4, 8]: candidates at 2 (zone to 4) and 6, gaps 2 and 2: pick 2.
+  const auto chains = chain_factual(grid({"....ohhhh.", "..ohh.oh..", ".........."}));
+  REQUIRE(chains.size() == 1);
+  CHECK(cells(chains[0]) == Cells{{0, 4}, {1, 2}});
+}
+
+TEST_CASE("factual chaining skips used cells and never outputs one-cell chains", "[chaining]") {
+  const auto chains = chain_factual(grid({".oh.oh.", ".oh....", "......o"}));
+  // (0,1)-(1,1); (0,4) finds nothing unused overlapping; (2,6) is alone.
+  REQUIRE(chains.size() == 1);
+  CHECK(cells(chains[0]) == Cells{{0, 1}, {1, 1}});
+}
+
+TEST_CASE("factual chaining carries a zone across nodata", "[chaining]") {
+  const auto chains = chain_factual(grid({".o  h....", "....o....", "........."}));
+  REQUIRE(chains.size() == 1);
+  CHECK(cells(chains[0]) == Cells{{0, 1}, {1, 4}});
+}
+
+TEST_CASE("formulated chaining links within the window, nearest first", "[chaining]") {
+  const auto flags = grid({"...t......", "......t...", "..t....t..", "..t......."});
+  // Window 4: from (1,6) both (2,2) (gap 4) and (2,7) (gap 1) qualify; the nearest wins.
+  const auto wide = chain_formulated(flags, 4);
+  REQUIRE(wide.size() == 2);
+  CHECK(cells(wide[0]) == Cells{{0, 3}, {1, 6}, {2, 7}});
+  CHECK(cells(wide[1]) == Cells{{2, 2}, {3, 2}});
+  // Window 1: (0,3) is three cells from (1,6) and stays alone, so it is dropped.
+  const auto narrow = chain_formulated(flags, 1);
+  REQUIRE(narrow.size() == 2);
+  CHECK(cells(narrow[0]) == Cells{{1, 6}, {2, 7}});
+  CHECK(cells(narrow[1]) == Cells{{2, 2}, {3, 2}});
+  const auto none = chain_formulated(flags, 0);
+  REQUIRE(none.size() == 1);
+  CHECK(cells(none[0]) == Cells{{2, 2}, {3, 2}});
+}
+
+TEST_CASE("every chained cell is used once and links neighbouring profiles", "[chaining]") {
+  const HeightGrid z = test::random_terrain(80, 90, 3, 0.03);
+  SilhouetteParams params;
+  const SilhouetteResult r = test::run_on_dem(z, params);
+  CellFlags seen(r.flags.rows(), r.flags.cols());
+  for (const Stroke& s : r.strokes) {
+    REQUIRE(s.chain.size() >= 3);
+    for (std::size_t k = 0; k < s.chain.size(); ++k) {
+      const ChainCell c = s.chain[k];
+      const std::uint8_t need = s.cls == StrokeClass::factual ? cell::occluding : cell::thinned;
+      REQUIRE((r.flags(c.p, c.i) & need));
+      REQUIRE_FALSE(seen(c.p, c.i));
+      seen(c.p, c.i) = 1;
+      if (k > 0) {
+        REQUIRE(c.p == s.chain[k - 1].p + 1);
+        if (s.cls == StrokeClass::formulated) REQUIRE(std::abs(c.i - s.chain[k - 1].i) <= 3);
+      }
+    }
+  }
+}

@@ -1,0 +1,81 @@
+#include <catch2/catch.hpp>
+
+#include "test_support.h"
+
+using namespace tsk;
+
+namespace {
+
+HeightGrid numbered(std::size_t rows, std::size_t cols) {
+  HeightGrid g(rows, cols);
+  for (std::size_t r = 0; r < rows; ++r)
+    for (std::size_t c = 0; c < cols; ++c) g(r, c) = static_cast<float>(r * 100 + c);
+  return g;
+}
+
+}  // namespace
+
+TEST_CASE("orientation puts the nearest cell of the leftmost profile first", "[orient]") {
+  const HeightGrid dem = numbered(3, 5);  // row 0 north, column 0 west
+  struct Case {
+    double azimuth;
+    float front_left, front_right, back_left;
+    std::size_t profiles;
+  };
+  // Viewer facing east (from the west): left is north, front is west.
+  // Facing north: left is west, front is south. Facing south: left east, front north.
+  // Facing west: left south, front east.
+  const Case cases[] = {
+      {90, 0, 200, 4, 3}, {0, 200, 204, 0, 5}, {180, 4, 0, 204, 5}, {270, 204, 4, 200, 3}};
+  for (const Case& c : cases) {
+    CAPTURE(c.azimuth);
+    const OrientedFrame f = make_frame(3, 5, 10, 20, c.azimuth);
+    const HeightGrid g = orient(dem, f);
+    REQUIRE(g.rows() == c.profiles);
+    CHECK(g(0, 0) == c.front_left);
+    CHECK(g(g.rows() - 1, 0) == c.front_right);
+    CHECK(g(0, g.cols() - 1) == c.back_left);
+    for (std::size_t p = 0; p < g.rows(); ++p)
+      for (std::size_t i = 0; i < g.cols(); ++i) {
+        REQUIRE(g(p, i) == dem(f.dem_row(p, i), f.dem_col(p, i)));
+        const PixelPoint px = f.to_pixel(static_cast<double>(p), static_cast<double>(i));
+        REQUIRE(px.col == Approx(f.dem_col(p, i) + 0.5));
+        REQUIRE(px.row == Approx(f.dem_row(p, i) + 0.5));
+      }
+  }
+}
+
+TEST_CASE("spacings follow the line of sight on non-square cells", "[orient]") {
+  const OrientedFrame east = make_frame(3, 5, 10, 20, 90);
+  CHECK(east.d == 10);
+  CHECK(east.w == 20);
+  const OrientedFrame north = make_frame(3, 5, 10, 20, 0);
+  CHECK(north.d == 20);
+  CHECK(north.w == 10);
+  CHECK(make_frame(3, 5, 10, 20, -90).azimuth_deg == 270);
+  CHECK(make_frame(3, 5, 10, 20, 360).azimuth_deg == 0);
+}
+
+TEST_CASE("orientation refuses what it cannot do exactly", "[orient]") {
+  CHECK_THROWS_AS(make_frame(3, 5, 10, 10, 45), Error);
+  CHECK_THROWS_AS(make_frame(3, 5, 10, 10, 90.5), Error);
+  CHECK_THROWS_AS(make_frame(0, 5, 10, 10, 90), Error);
+  CHECK_THROWS_AS(make_frame(3, 5, 0, 10, 90), Error);
+  CHECK_THROWS_AS(make_frame(3, 5, 10, std::nan(""), 90), Error);
+  CHECK_THROWS_AS(make_frame(3, 5, -1, 10, 90), Error);
+  CHECK_THROWS_AS(make_frame(std::size_t{1} << 32, 5, 10, 10, 90), Error);
+  CHECK_THROWS_AS(checked_cell_count(std::size_t{1} << 31, std::size_t{1} << 31), Error);
+}
+
+TEST_CASE("a DEM read block by block equals one turned at once", "[orient]") {
+  const HeightGrid dem = numbered(7, 4);
+  for (double az : {0.0, 90.0, 180.0, 270.0}) {
+    const OrientedFrame f = make_frame(7, 4, 1, 1, az);
+    HeightGrid blocks(f.profiles, f.length);
+    scatter_dem_rows(f, 0, 3, dem.row(0), 4, blocks);
+    scatter_dem_rows(f, 3, 4, dem.row(3), 4, blocks);
+    const HeightGrid whole = orient(dem, f);
+    CHECK(std::equal(whole.data(), whole.data() + whole.size(), blocks.data()));
+    CHECK_THROWS_AS(scatter_dem_rows(f, 5, 4, dem.row(0), 4, blocks), Error);
+  }
+}

@@ -1,0 +1,229 @@
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <set>
+
+#include "test_support.h"
+
+using namespace tsk;
+
+TEST_CASE("a front-facing tilted plane has no silhouettes", "[pipeline][analytic]") {
+  // Rising 30 % towards the east, seen from the west.
+  const HeightGrid dem = make_plane(50, 60, 10, 0.3, 0.05);
+  const SilhouetteResult r = test::run_on_dem(dem, SilhouetteParams{});
+  CHECK(r.stats.valid == 3000);
+  CHECK(r.stats.hidden == 0);
+  CHECK(r.stats.occluding == 0);
+  CHECK(r.stats.candidate == 0);
+  CHECK(r.strokes.empty());
+}
+
+TEST_CASE("a steep cone occludes where its transformed profile peaks", "[pipeline][analytic]") {
+  // Cone of slope s = 0.5 seen from the west with ve 2.5, B 40 %: on the profile at distance y
+  // from the apex, t peaks where ve s x / r = B, i.e. x* = |y| k / sqrt(1 - k^2), k = B/(ve s).
+  const double cell = 10, s = 0.5;
+  const std::size_t n = 81;
+  const HeightGrid dem = make_cone(n, n, cell, 300, s);
+  const SilhouetteResult r = test::run_on_dem(dem, SilhouetteParams{}, cell, cell);
+  const double k = 0.4 / (2.5 * s);
+  const double centre = (n - 1) / 2.0;
+  int checked = 0;
+  for (std::size_t p = 0; p < n; ++p) {
+    const double y = std::fabs(static_cast<double>(p) - centre);
+    if (y > 20) continue;  // stay well inside the cone's foot
+    std::vector<std::size_t> occluders;
+    for (std::size_t i = 0; i < n; ++i)
+      if (r.flags(p, i) & cell::occluding) occluders.push_back(i);
+    CAPTURE(p);
+    REQUIRE(occluders.size() == 1);
+    const double expected = centre + y * k / std::sqrt(1 - k * k);
+    CHECK(std::fabs(static_cast<double>(occluders[0]) - expected) <= 1.0);
+    ++checked;
+  }
+  CHECK(checked == 41);
+  // The occluders chain into one factual stroke over the cone, symmetric north-south.
+  REQUIRE(r.stats.factual_strokes >= 1);
+  CHECK(r.strokes[0].cells >= 41);
+}
+
+TEST_CASE("a Gaussian bump: occlusion on its far side, symmetric north-south",
+          "[pipeline][analytic]") {
+  const std::size_t n = 61;
+  const HeightGrid dem = make_bump(n, n, 200, 8);
+  const SilhouetteResult r = test::run_on_dem(dem, SilhouetteParams{}, 10, 10);
+  REQUIRE(r.stats.occluding > 0);
+  for (std::size_t p = 0; p < n; ++p)
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!(r.flags(p, i) & cell::occluding)) continue;
+      CAPTURE(p, i);
+      CHECK(i >= 30);  // never on the slope facing the viewer
+      CHECK((r.flags(n - 1 - p, i) & cell::occluding));
+    }
+  // The c-set ring around the occluded back lies behind the centre too.
+  for (std::size_t p = 0; p < n; ++p)
+    for (std::size_t i = 0; i < 30; ++i) REQUIRE_FALSE(r.flags(p, i) & cell::candidate);
+}
+
+TEST_CASE("turning the DEM and the view by 90 degrees gives the same strokes",
+          "[pipeline][invariance]") {
+  const HeightGrid dem = test::random_terrain(70, 90, 99, 0.01);
+  const HeightGrid turned = test::rotate_clockwise(dem);  // east becomes south
+  for (double az : {0.0, 90.0, 180.0, 270.0}) {
+    CAPTURE(az);
+    SilhouetteParams a, b;
+    a.view.azimuth_deg = az;
+    b.view.azimuth_deg = std::fmod(az + 90, 360);
+    const SilhouetteResult ra = test::run_on_dem(dem, a, 10, 10);
+    const SilhouetteResult rb = test::run_on_dem(turned, b, 10, 10);
+    REQUIRE(ra.strokes.size() == rb.strokes.size());
+    REQUIRE(ra.strokes.size() > 10);
+    CHECK(ra.stats.generalised == rb.stats.generalised);
+    CHECK(ra.stats.filtered == rb.stats.filtered);
+    for (std::size_t k = 0; k < ra.strokes.size(); ++k) {
+      const Stroke& sa = ra.strokes[k];
+      const Stroke& sb = rb.strokes[k];
+      REQUIRE(sa.cls == sb.cls);
+      REQUIRE(sa.points.size() == sb.points.size());
+      if (sa.cls == StrokeClass::factual) CHECK(sa.mean_depth_m == Approx(sb.mean_depth_m));
+      for (std::size_t q = 0; q < sa.points.size(); ++q) {
+        // In pixel coordinates the turn maps (x, y) to (rows - y, x).
+        REQUIRE(sb.points[q].x == Approx(70 - sa.points[q].y));
+        REQUIRE(sb.points[q].y == Approx(sa.points[q].x));
+      }
+    }
+  }
+}
+
+TEST_CASE("mirroring the DEM across the line of sight mirrors every stage",
+          "[pipeline][invariance]") {
+  const HeightGrid dem = test::random_terrain(50, 70, 123, 0.02);
+  HeightGrid mirrored(dem.rows(), dem.cols());
+  for (std::size_t r = 0; r < dem.rows(); ++r)
+    std::copy(dem.row(r), dem.row(r) + dem.cols(), mirrored.row(dem.rows() - 1 - r));
+  const SilhouetteResult a = test::run_on_dem(dem, SilhouetteParams{});
+  const SilhouetteResult b = test::run_on_dem(mirrored, SilhouetteParams{});
+  // Viewed from the west, profile p is row p: left and right swap.
+  for (std::size_t p = 0; p < dem.rows(); ++p)
+    REQUIRE(
+        std::equal(a.flags.row(p), a.flags.row(p) + dem.cols(), b.flags.row(dem.rows() - 1 - p)));
+  CHECK(a.stats.thinned == b.stats.thinned);
+  CHECK(a.stats.occluding == b.stats.occluding);
+}
+
+TEST_CASE("stage statistics are consistent shares of the valid cells", "[pipeline]") {
+  const SilhouetteResult r = test::run_on_dem(test::random_terrain(100, 100, 5, 0.1), {});
+  const StageStats& s = r.stats;
+  CHECK(s.valid < 10000);
+  CHECK(s.valid > 8500);
+  CHECK(s.filtered <= s.candidate);
+  CHECK(s.thinned <= s.filtered);
+  std::size_t cells = 0;
+  for (const Stroke& st : r.strokes) cells += static_cast<std::size_t>(st.cells);
+  CHECK(s.generalised == cells);
+  CHECK(s.factual_strokes + s.formulated_strokes == r.strokes.size());
+  CHECK(s.pct(s.valid) == Approx(100.0));
+}
+
+TEST_CASE("the minimum stroke length generalises", "[pipeline]") {
+  const HeightGrid dem = test::random_terrain(80, 80, 17);
+  SilhouetteParams two, five;
+  two.chain.min_cells = 2;
+  five.chain.min_cells = 5;
+  const SilhouetteResult a = test::run_on_dem(dem, two);
+  const SilhouetteResult b = test::run_on_dem(dem, five);
+  std::size_t long_ones = 0;
+  for (const Stroke& s : a.strokes) long_ones += s.cells >= 5;
+  CHECK(b.strokes.size() == long_ones);
+  CHECK(b.strokes.size() < a.strokes.size());
+}
+
+TEST_CASE("nodata, tiny grids and non-finite heights never break the pipeline",
+          "[pipeline][robustness]") {
+  SECTION("all nodata") {
+    const HeightGrid dem(20, 30, kNoData);
+    const SilhouetteResult r = test::run_on_dem(dem, {});
+    CHECK(r.stats.valid == 0);
+    CHECK(r.stats.pct(0) == 0.0);
+    CHECK(r.strokes.empty());
+  }
+  SECTION("one row, one column, one cell") {
+    for (auto [rows, cols] : {std::pair<std::size_t, std::size_t>{1, 50}, {50, 1}, {1, 1}}) {
+      for (double az : {0.0, 90.0, 180.0, 270.0}) {
+        SilhouetteParams p;
+        p.view.azimuth_deg = az;
+        const HeightGrid dem = test::random_terrain(rows, cols, 8);
+        const SilhouetteResult r = test::run_on_dem(dem, p);
+        CHECK(r.stats.valid == rows * cols);
+        // One profile cannot chain; many one-cell profiles cannot either.
+        CHECK(r.strokes.empty());
+      }
+    }
+  }
+  SECTION("NaN, infinities and huge values") {
+    HeightGrid dem = test::random_terrain(30, 30, 4);
+    dem(3, 3) = std::numeric_limits<float>::infinity();
+    dem(4, 4) = -std::numeric_limits<float>::infinity();
+    dem(5, 5) = kNoData;
+    dem(6, 6) = 3.0e38f;
+    dem(7, 7) = -3.0e38f;
+    const SilhouetteResult r = test::run_on_dem(dem, {});
+    CHECK(r.stats.valid == 900 - 3);
+    for (const Stroke& s : r.strokes)
+      for (const StrokePoint& pt : s.points) REQUIRE((std::isfinite(pt.x) && std::isfinite(pt.y)));
+  }
+  SECTION("holes") {
+    const SilhouetteResult r = test::run_on_dem(test::random_terrain(60, 60, 6, 0.3), {});
+    CHECK(r.stats.valid > 0);
+    for (const Stroke& s : r.strokes)
+      for (const ChainCell& c : s.chain) REQUIRE((r.flags(c.p, c.i) & cell::valid));
+  }
+}
+
+TEST_CASE("non-square cells: the row slope uses the spacing across profiles", "[pipeline]") {
+  // Heights from ground coordinates: a north-facing 15 % row slope is 15 % whatever the cells.
+  const double dx = 10, dy = 25;
+  HeightGrid dem(40, 40);
+  for (std::size_t r = 0; r < 40; ++r)
+    for (std::size_t c = 0; c < 40; ++c)
+      dem(r, c) = static_cast<float>(0.15 * dy * r - 0.05 * dx * c);
+  const OrientedFrame f = make_frame(40, 40, dx, dy, 90);
+  const HeightGrid z = orient(dem, f);
+  CHECK(std::fabs(row_slope(z, 10, 10, f.w)) == Approx(0.15));
+  CHECK(column_slope(z.row(10), 40, 10, f.d) == Approx(-0.05));
+}
+
+TEST_CASE("threads do not change the result", "[pipeline]") {
+  const HeightGrid dem = test::random_terrain(200, 150, 31, 0.02);
+  SilhouetteParams one, two;
+  one.threads = 1;
+  two.threads = 2;
+  const SilhouetteResult a = test::run_on_dem(dem, one);
+  const SilhouetteResult b = test::run_on_dem(dem, two);
+  REQUIRE(a.strokes.size() == b.strokes.size());
+  CHECK(std::equal(a.flags.data(), a.flags.data() + a.flags.size(), b.flags.data()));
+  for (std::size_t k = 0; k < a.strokes.size(); ++k)
+    CHECK(a.strokes[k].cells == b.strokes[k].cells);
+}
+
+TEST_CASE("progress rises to one and cancelling stops the run", "[pipeline]") {
+  const HeightGrid dem = test::random_terrain(300, 300, 2);
+  const OrientedFrame f = make_frame(300, 300, 10, 10, 90);
+  const HeightGrid z = orient(dem, f);
+  double last = 0;
+  bool monotonic = true;
+  run_silhouettes(z, f, GeoTransform{}, {}, [&](double fraction) {
+    monotonic = monotonic && fraction >= last - 1e-12;
+    last = fraction;
+    return true;
+  });
+  CHECK(monotonic);
+  CHECK(last == Approx(1.0));
+  int calls = 0;
+  CHECK_THROWS_AS(run_silhouettes(z, f, GeoTransform{}, {}, [&](double) { return ++calls < 3; }),
+                  Cancelled);
+  CHECK(calls == 3);
+}
+
+TEST_CASE("a grid that does not match its frame is refused", "[pipeline]") {
+  const OrientedFrame f = make_frame(10, 20, 10, 10, 90);
+  CHECK_THROWS_AS(run_silhouettes(HeightGrid(20, 10), f, GeoTransform{}, {}), Error);
+}
