@@ -1,8 +1,8 @@
 #include "dem_reader.h"
 
 #include <gdal_priv.h>
-#include <ogr_spatialref.h>
 #include <ogr_geometry.h>
+#include <ogr_spatialref.h>
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +29,8 @@ std::string utm_hint(const GeoTransform& gt, std::size_t rows, std::size_t cols)
 double mercator_ground_scale(const OGRSpatialReference& srs, const GeoTransform& gt,
                              std::size_t rows, std::size_t cols) {
   const char* projection = srs.GetAttrValue("PROJECTION");
-  const bool mercator = projection && std::string(projection).find("Mercator") != std::string::npos &&
+  const bool mercator = projection &&
+                        std::string(projection).find("Mercator") != std::string::npos &&
                         std::string(projection).find("Transverse") == std::string::npos;
   if (!mercator) return 1.0;
   std::unique_ptr<OGRSpatialReference> geographic(srs.CloneGeogCS());
@@ -91,8 +92,10 @@ Dem read_dem(const std::string& path, const DemOptions& options) {
     }
     dem.ground_scale = mercator_ground_scale(*srs, dem.geotransform, dem.rows, dem.cols);
     if (dem.ground_scale != 1.0) {
-      dem.notes += "Mercator projection: map units are not ground metres here; cell sizes scaled by "
-                   "cos(latitude of the centre) = " + std::to_string(dem.ground_scale) + "\n";
+      dem.notes +=
+          "Mercator projection: map units are not ground metres here; cell sizes scaled by "
+          "cos(latitude of the centre) = " +
+          std::to_string(dem.ground_scale) + "\n";
     }
     if (srs->IsProjected() && std::fabs(srs->GetLinearUnits() - 1.0) > 1e-9) {
       dem.notes += "the CRS's linear unit is not the metre; heights must be in that same unit\n";

@@ -18,9 +18,9 @@ struct Dem {
   HeightGrid oriented;
   OrientedFrame frame;
   GeoTransform geotransform;
-  std::string srs_wkt;  // empty when the raster has no CRS
+  std::string srs_wkt;        // empty when the raster has no CRS
   double ground_scale = 1.0;  // ground metres per map unit used for the cell sizes
-  std::string notes;    // things the user should know (no CRS, assumed units), one per line
+  std::string notes;          // things the user should know (no CRS, assumed units), one per line
   std::size_t rows = 0, cols = 0;
 };
 

@@ -1,0 +1,252 @@
+// The terrain-sketch command line, run in-process: outputs, formats, and every bad input it must
+// refuse with a message and without leaving a file behind.
+#include <ogrsf_frmts.h>
+
+#include <catch2/catch.hpp>
+#include <fstream>
+
+#include "dem_reader.h"
+#include "gdal_test_support.h"
+#include "silhouettes.h"
+
+using namespace tsk;
+using test::CliRun;
+using test::run_cli;
+using test::ScratchDir;
+
+namespace {
+
+const std::string kSample = TSK_SAMPLE_DEM;
+const std::string kData = TSK_TEST_DATA;
+
+struct VectorSummary {
+  long long features = 0;
+  std::map<std::string, long long> per_class;
+  long long null_depth_formulated = 0;
+  int epsg = 0;
+  std::vector<std::string> fields;
+};
+
+VectorSummary summarise(const std::string& path) {
+  GDALAllRegister();
+  GDALDataset* ds = static_cast<GDALDataset*>(
+      GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  REQUIRE(ds != nullptr);
+  OGRLayer* layer = ds->GetLayer(0);
+  VectorSummary s;
+  OGRFeatureDefn* defn = layer->GetLayerDefn();
+  for (int k = 0; k < defn->GetFieldCount(); ++k)
+    s.fields.push_back(defn->GetFieldDefn(k)->GetNameRef());
+  if (const OGRSpatialReference* srs = layer->GetSpatialRef()) {
+    const char* code = srs->GetAuthorityCode(nullptr);
+    s.epsg = code ? std::atoi(code) : -1;
+  }
+  for (auto& feature : *layer) {
+    ++s.features;
+    const std::string cls = feature->GetFieldAsString("class");
+    ++s.per_class[cls];
+    if (cls == "formulated" && feature->IsFieldNull(feature->GetFieldIndex("mean_depth"))) {
+      ++s.null_depth_formulated;
+    }
+    REQUIRE(feature->GetGeometryRef() != nullptr);
+  }
+  GDALClose(ds);
+  return s;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+const double kNorthUp[6] = {500000, 10, 0, 4000000, 0, -10};
+
+float hill(int, int r, int c) {
+  return static_cast<float>(300 * std::exp(-((r - 20) * (r - 20) + (c - 20) * (c - 20)) / 60.0));
+}
+
+}  // namespace
+
+TEST_CASE("the sample DEM becomes a GeoPackage equal to the core's result", "[cli]") {
+  ScratchDir dir("sample");
+  const CliRun run = run_cli({"silhouettes", kSample, dir / "out.gpkg", "--stats-json",
+                              dir / "stats.json", "--preview", dir / "sketch.png"});
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  CHECK(run.err.empty());
+
+  io::DemOptions options;
+  const io::Dem dem = io::read_dem(kSample, options);
+  const SilhouetteResult core = run_silhouettes(dem.oriented, dem.frame, dem.geotransform, {});
+  VectorSummary s = summarise(dir / "out.gpkg");
+  CHECK(s.features == static_cast<long long>(core.strokes.size()));
+  CHECK(s.per_class["factual"] == static_cast<long long>(core.stats.factual_strokes));
+  CHECK(s.per_class["formulated"] == static_cast<long long>(core.stats.formulated_strokes));
+  CHECK(s.null_depth_formulated == s.per_class["formulated"]);
+  CHECK(s.epsg == 32616);
+  for (const char* field :
+       {"class", "cells", "length", "mean_slope", "mean_row_slope", "mean_depth", "mean_dist"}) {
+    CHECK(std::find(s.fields.begin(), s.fields.end(), field) != s.fields.end());
+  }
+
+  const std::string json = slurp(dir / "stats.json");
+  for (const char* k : {"hidden_pct", "occluding_pct", "cset_pct", "fset_pct", "tset_pct",
+                        "gset_pct", "factual_strokes", "formulated_strokes"}) {
+    CHECK_THAT(json, Catch::Contains(std::string("\"") + k + "\": "));
+  }
+  CHECK_THAT(json,
+             Catch::Contains("\"factual_strokes\": " + std::to_string(core.stats.factual_strokes)));
+
+  GDALDataset* png = static_cast<GDALDataset*>(GDALOpen((dir / "sketch.png").c_str(), GA_ReadOnly));
+  REQUIRE(png != nullptr);
+  CHECK(std::string(png->GetDriver()->GetDescription()) == "PNG");
+  CHECK(png->GetRasterXSize() == 1600);
+  GDALClose(png);
+  CHECK(dir.file_count() == 3);  // no temporary leftovers
+}
+
+TEST_CASE("output formats follow the extension", "[cli]") {
+  ScratchDir dir("formats");
+  for (const char* name : {"out.geojson", "out.shp", "out.fgb"}) {
+    CAPTURE(name);
+    const CliRun run = run_cli({"silhouettes", kData + "/volcano.tif", dir / name});
+    INFO(run.err);
+    REQUIRE(run.code == 0);
+    CHECK(summarise(dir / name).features > 0);
+  }
+  const CliRun bad = run_cli({"silhouettes", kSample, dir / "out.xyz"});
+  CHECK(bad.code == 1);
+  CHECK_THAT(bad.err, Catch::Contains("--format"));
+  const CliRun forced = run_cli({"silhouettes", kSample, dir / "out.xyz", "--format", "GeoJSON"});
+  CHECK(forced.code == 0);
+}
+
+TEST_CASE("plan-oblique output and view options are passed through", "[cli]") {
+  ScratchDir dir("options");
+  const CliRun run = run_cli({"silhouettes",
+                              kSample,
+                              dir / "o.gpkg",
+                              "--geometry",
+                              "oblique",
+                              "--azimuth",
+                              "180",
+                              "--ve",
+                              "2",
+                              "--base-slope",
+                              "66.67",
+                              "--row-cut",
+                              "18",
+                              "--col-cut",
+                              "10",
+                              "--ctrl",
+                              "6",
+                              "--no-diagonals",
+                              "--window",
+                              "2",
+                              "--min-cells",
+                              "4",
+                              "--subcell",
+                              "--placement",
+                              "near_and_far",
+                              "--threads",
+                              "1"});
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  CHECK(summarise(dir / "o.gpkg").features > 0);
+}
+
+TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli][robustness]") {
+  ScratchDir dir("bad");
+  std::ofstream(dir / "not_a_raster.tif") << "hello";
+  test::write_tiff(
+      dir / "multi.tif", 40, 40, 2, [](int b, int r, int c) { return hill(b, r, c) * b; }, kNorthUp,
+      32616);
+  const double rotated[6] = {500000, 10, 2, 4000000, 2, -10};
+  test::write_tiff(dir / "rotated.tif", 40, 40, 1, hill, rotated, 32616);
+  const double south_up[6] = {500000, 10, 0, 4000000, 0, 10};
+  test::write_tiff(dir / "southup.tif", 40, 40, 1, hill, south_up, 32616);
+  test::write_tiff(dir / "nogeo.tif", 40, 40, 1, hill, nullptr, 0);
+  const std::size_t inputs = dir.file_count();
+
+  struct Bad {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::string out = dir / "out.gpkg";
+  const Bad cases[] = {
+      {{"silhouettes", kData + "/jacksboro_geo.tif", out}, "gdalwarp -t_srs EPSG:32616"},
+      {{"silhouettes", dir / "not_a_raster.tif", out}, "cannot open"},
+      {{"silhouettes", dir / "missing.tif", out}, "cannot open"},
+      {{"silhouettes", dir / "rotated.tif", out}, "rotated"},
+      {{"silhouettes", dir / "southup.tif", out}, "north-up"},
+      {{"silhouettes", dir / "nogeo.tif", out}, "--cell-size"},
+      {{"silhouettes", dir / "multi.tif", out, "--band", "3"}, "band 3 does not exist"},
+      {{"silhouettes", kSample, dir / "no/such/folder/out.gpkg"}, "does not exist"},
+      {{"silhouettes", kSample, out, "--ve", "0"}, "exaggeration"},
+      {{"silhouettes", kSample, out, "--ve", "abc"}, "needs a number"},
+      {{"silhouettes", kSample, out, "--ctrl", "13"}, "control point"},
+      {{"silhouettes", kSample, out, "--azimuth", "45"}, "not a cardinal"},
+      {{"silhouettes", kSample, out, "--base-slope", "-5"}, "base slope"},
+      {{"silhouettes", kSample, out, "--min-cells", "1"}, "at least 2"},
+      {{"silhouettes", kSample, out, "--window", "2.5"}, "whole number"},
+      {{"silhouettes", kSample, out, "--geometry", "sideways"}, "geometry"},
+      {{"silhouettes", kSample, out, "--bogus"}, "unknown option"},
+      {{"silhouettes", kSample, out, "--ve"}, "needs a value"},
+      {{"silhouettes", kSample}, "expected INPUT and OUTPUT"},
+      {{"silhouettes", kSample, out, "--format", "NoSuchDriver"}, "not an OGR vector driver"},
+  };
+  for (const Bad& b : cases) {
+    const CliRun run = run_cli(b.args);
+    CAPTURE(b.args.back(), run.err);
+    CHECK(run.code == 1);
+    CHECK_THAT(run.err, Catch::Contains(b.message));
+    CHECK(dir.file_count() == inputs);
+  }
+  CHECK(run_cli({"frobnicate"}).code == 2);
+  CHECK(run_cli({}).code == 2);
+  CHECK(run_cli({"--help"}).code == 0);
+}
+
+TEST_CASE("a failed run keeps an earlier output intact", "[cli][robustness]") {
+  ScratchDir dir("keep");
+  std::ofstream(dir / "out.geojson") << "earlier";
+  const CliRun run = run_cli({"silhouettes", kData + "/jacksboro_geo.tif", dir / "out.geojson"});
+  CHECK(run.code == 1);
+  CHECK(slurp(dir / "out.geojson") == "earlier");
+  CHECK(dir.file_count() == 1);
+}
+
+TEST_CASE("edge-case rasters give valid, possibly empty, outputs", "[cli][robustness]") {
+  ScratchDir dir("edge");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  test::write_tiff(
+      dir / "one.tif", 1, 1, 1, [](int, int, int) { return 5.f; }, kNorthUp, 32616);
+  test::write_tiff(
+      dir / "allnan.tif", 30, 30, 1, [=](int, int, int) { return nan; }, kNorthUp, 32616);
+  test::write_tiff(
+      dir / "multi.tif", 40, 40, 2, [](int b, int r, int c) { return hill(b, r, c) * b; }, kNorthUp,
+      32616);
+  test::write_tiff(dir / "nogeo.tif", 40, 40, 1, hill, nullptr, 0);
+  for (const char* name : {"one.tif", "allnan.tif"}) {
+    const CliRun run = run_cli({"silhouettes", dir / name, dir / (std::string(name) + ".gpkg")});
+    INFO(run.err);
+    REQUIRE(run.code == 0);
+    CHECK(summarise(dir / (std::string(name) + ".gpkg")).features == 0);
+  }
+  const CliRun band2 = run_cli({"silhouettes", dir / "multi.tif", dir / "b2.gpkg", "--band", "2"});
+  INFO(band2.err);
+  CHECK(band2.code == 0);
+  const CliRun nogeo =
+      run_cli({"silhouettes", dir / "nogeo.tif", dir / "ng.gpkg", "--cell-size", "10"});
+  CHECK(nogeo.code == 0);
+  CHECK_THAT(nogeo.err, Catch::Contains("no georeferencing"));
+}
+
+TEST_CASE("Web Mercator cells are scaled to ground metres with a note", "[cli]") {
+  io::DemOptions options;
+  const io::Dem dem = io::read_dem(kData + "/topobathy_3857.tif", options);
+  // Strait of Georgia, about 49.5 N: cos = 0.65.
+  CHECK(dem.ground_scale == Approx(0.65).margin(0.02));
+  CHECK(dem.frame.d == Approx(3710.65 * dem.ground_scale).epsilon(1e-6));
+  CHECK_THAT(dem.notes, Catch::Contains("Mercator"));
+}
