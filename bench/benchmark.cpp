@@ -1,0 +1,166 @@
+// Benchmark: each stage and the whole pipeline on synthetic DEMs, cells per second and peak
+// memory; with GDAL, the command line end to end against `gdaldem hillshade` on the same file.
+// Each size runs in its own child process so its peak memory is its own.
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "terrain_sketch.h"
+
+#ifdef TSK_BENCH_WITH_GDAL
+#include <gdal_priv.h>
+
+#include <sstream>
+
+#include "cli_app.h"
+#endif
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+double peak_rss_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+// Rolling synthetic terrain: ridges and valleys at several scales, 25 m cells.
+tsk::HeightGrid synthetic_dem(std::size_t n) {
+  tsk::HeightGrid g(n, n);
+  tsk::parallel_for(n, 0, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t r = begin; r < end; ++r) {
+      float* row = g.row(r);
+      const double y = static_cast<double>(r);
+      for (std::size_t c = 0; c < n; ++c) {
+        const double x = static_cast<double>(c);
+        const double z = 400 + 180 * std::sin(x * 0.011 + 0.4 * std::sin(y * 0.007)) +
+                         120 * std::sin(y * 0.013 + x * 0.004) +
+                         40 * std::sin(x * 0.071 + y * 0.053) + 15 * std::sin(x * 0.23 - y * 0.19);
+        row[c] = static_cast<float>(z);
+      }
+    }
+  });
+  return g;
+}
+
+#ifdef TSK_BENCH_WITH_GDAL
+void write_geotiff(const std::string& path, const tsk::HeightGrid& dem) {
+  GDALAllRegister();
+  GDALDriver* drv = GetGDALDriverManager()->GetDriverByName("GTiff");
+  const char* options[] = {"TILED=YES", nullptr};
+  const int n = static_cast<int>(dem.rows());
+  GDALDataset* ds = drv->Create(path.c_str(), n, n, 1, GDT_Float32, const_cast<char**>(options));
+  double gt[6] = {500000, 25, 0, 5000000, 0, -25};
+  ds->SetGeoTransform(gt);
+  OGRSpatialReference srs;
+  srs.importFromEPSG(32632);
+  ds->SetSpatialRef(&srs);
+  if (ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, n, n, const_cast<float*>(dem.data()), n, n,
+                                     GDT_Float32, 0, 0) != CE_None) {
+    std::fprintf(stderr, "cannot write %s\n", path.c_str());
+  }
+  GDALClose(ds);
+}
+
+double time_command(const std::string& command) {
+  const auto t = Clock::now();
+  if (std::system(command.c_str()) != 0) std::fprintf(stderr, "failed: %s\n", command.c_str());
+  return seconds_since(t);
+}
+#endif
+
+void bench_size(std::size_t n, bool with_gdaldem) {
+  const auto t_gen = Clock::now();
+  const tsk::HeightGrid dem = synthetic_dem(n);
+  const double gen = seconds_since(t_gen);
+  const double raster_mib = static_cast<double>(dem.size() * sizeof(float)) / (1024.0 * 1024.0);
+  const tsk::OrientedFrame frame = tsk::make_frame(n, n, 25, 25, 90);
+  // Viewed from the west the oriented grid is the DEM itself: no copy, as the reader does.
+  const auto t_run = Clock::now();
+  const tsk::SilhouetteResult r = tsk::run_silhouettes(dem, frame, tsk::GeoTransform{}, {});
+  const double whole = seconds_since(t_run);
+  const tsk::StageTimings& t = r.timings;
+  const double cells = static_cast<double>(dem.size());
+  std::printf("\n== synthetic %zux%zu (%.0f MiB Float32), generated in %.2f s\n", n, n, raster_mib,
+              gen);
+  std::printf("  visibility %.3f s | candidates %.3f s | filter %.3f s | thinning %.3f s | "
+              "chaining %.3f s | strokes %.3f s\n",
+              t.visibility, t.candidates, t.filter, t.thinning, t.chaining, t.strokes);
+  std::printf("  whole pipeline %.3f s, %.1f Mcells/s, %zu factual + %zu formulated strokes\n",
+              whole, cells / whole / 1e6, r.stats.factual_strokes, r.stats.formulated_strokes);
+  std::printf("  c-set %.1f %%, f-set %.1f %%, t-set %.1f %%, g-set %.1f %%\n",
+              r.stats.pct(r.stats.candidate), r.stats.pct(r.stats.filtered),
+              r.stats.pct(r.stats.thinned), r.stats.pct(r.stats.generalised));
+  const double peak = peak_rss_mib();
+  std::printf("  peak memory %.0f MiB = %.2f x the raster's bytes\n", peak, peak / raster_mib);
+#ifdef TSK_BENCH_WITH_GDAL
+  if (with_gdaldem) {
+    const std::string dir = "/tmp/tsk-bench-" + std::to_string(getpid());
+    std::system(("mkdir -p " + dir).c_str());
+    const std::string tif = dir + "/dem.tif";
+    write_geotiff(tif, dem);
+    const double hillshade = time_command("gdaldem hillshade -q " + tif + " " + dir + "/hs.tif");
+    std::ostringstream out, err;
+    const auto t_cli = Clock::now();
+    const int code = tsk::cli::run({"silhouettes", tif, dir + "/out.gpkg"}, out, err);
+    const double cli = seconds_since(t_cli);
+    std::printf("  gdaldem hillshade %.3f s | terrain-sketch CLI end to end (read, silhouettes, "
+                "write GeoPackage) %.3f s%s | ratio CLI/hillshade %.2f | pipeline/hillshade %.2f\n",
+                hillshade, cli, code ? " (FAILED)" : "", cli / hillshade, whole / hillshade);
+    std::system(("rm -rf " + dir).c_str());
+  }
+#else
+  (void)with_gdaldem;
+#endif
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::size_t> sizes = {4000, 8000};
+  bool with_gdaldem = false;
+  for (int k = 1; k < argc; ++k) {
+    const std::string a = argv[k];
+    if (a == "--gdaldem") {
+      with_gdaldem = true;
+    } else if (a == "--sizes" && k + 1 < argc) {
+      sizes.clear();
+      std::string list = argv[++k];
+      for (std::size_t pos = 0; pos < list.size();) {
+        const std::size_t comma = list.find(',', pos);
+        sizes.push_back(std::stoul(list.substr(pos, comma - pos)));
+        pos = comma == std::string::npos ? list.size() : comma + 1;
+      }
+    } else {
+      std::fprintf(stderr, "usage: tsk_benchmark [--sizes 4000,8000] [--gdaldem]\n");
+      return 2;
+    }
+  }
+  std::printf("terrain-sketch benchmark, %u hardware threads\n", std::thread::hardware_concurrency());
+  for (std::size_t n : sizes) {
+    std::fflush(stdout);
+    const pid_t child = fork();
+    if (child == 0) {
+      bench_size(n, with_gdaldem);
+      std::fflush(stdout);
+      _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) std::printf("  size %zu failed\n", n);
+  }
+  return 0;
+}

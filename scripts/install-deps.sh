@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs what Terrain Sketch needs on Debian 12, from Debian's packages only.
+# Usage: scripts/install-deps.sh [core|qgis]   (core: library, CLI and tests; qgis: plus the plugin)
+set -euo pipefail
+what=${1:-core}
+packages=(build-essential cmake catch2 libgdal-dev gdal-bin)
+if [ "$what" = qgis ]; then
+  packages+=(libqgis-dev qgis qgis-providers qttools5-dev-tools qttools5-dev xvfb xauth)
+fi
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+echo "installing: ${missing[*]}"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
