@@ -128,16 +128,16 @@ Options parse(const std::vector<std::string>& args) {
 std::string stats_json(const StageStats& s) {
   std::ostringstream j;
   j.precision(6);
-  j << std::fixed << "{\n"
-    << "  \"valid_cells\": " << s.valid << ",\n"
-    << "  \"hidden_pct\": " << s.pct(s.hidden) << ",\n"
-    << "  \"occluding_pct\": " << s.pct(s.occluding) << ",\n"
-    << "  \"cset_pct\": " << s.pct(s.candidate) << ",\n"
-    << "  \"fset_pct\": " << s.pct(s.filtered) << ",\n"
-    << "  \"tset_pct\": " << s.pct(s.thinned) << ",\n"
-    << "  \"gset_pct\": " << s.pct(s.generalised) << ",\n"
-    << "  \"factual_strokes\": " << s.factual_strokes << ",\n"
-    << "  \"formulated_strokes\": " << s.formulated_strokes << "\n}\n";
+  j << std::fixed << "{\n  \"valid_cells\": " << s.valid;
+  for (const StageFigure& f : stage_figures(s)) {
+    j << ",\n  \"" << f.key << "\": ";
+    if (f.is_count) {
+      j << static_cast<long long>(f.value);
+    } else {
+      j << f.value;
+    }
+  }
+  j << "\n}\n";
   return j.str();
 }
 

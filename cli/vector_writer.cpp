@@ -15,22 +15,6 @@
 namespace tsk::io {
 namespace {
 
-struct RealField {
-  const char* name;
-  double Stroke::*member;
-};
-
-// The attribute fields beyond class and cells, in output order.
-const RealField kRealFields[] = {
-    {"length", &Stroke::length},
-    {"mean_slope", &Stroke::mean_slope_pct},
-    {"mean_row_slope", &Stroke::mean_row_slope_pct},
-    {"mean_depth", &Stroke::mean_depth_m},
-    {"max_depth", &Stroke::max_depth_m},
-    {"mean_dist", &Stroke::mean_dist},
-    {"mean_z", &Stroke::mean_z},
-};
-
 void check(OGRErr err, const std::string& what, const GdalErrorCapture& capture) {
   if (err != OGRERR_NONE) throw Error(what + " failed: " + capture.message());
 }
@@ -80,7 +64,7 @@ void write_strokes(const std::string& path, const std::string& format,
     check(layer->CreateField(&cls), "creating field 'class'", capture);
     OGRFieldDefn cells("cells", OFTInteger);
     check(layer->CreateField(&cells), "creating field 'cells'", capture);
-    for (const RealField& f : kRealFields) {
+    for (const StrokeRealField& f : stroke_real_fields()) {
       OGRFieldDefn defn(f.name, OFTReal);
       check(layer->CreateField(&defn), std::string("creating field '") + f.name + "'", capture);
     }
@@ -89,7 +73,7 @@ void write_strokes(const std::string& path, const std::string& format,
       OGRFeature feature(layer->GetLayerDefn());
       feature.SetField("class", stroke_class_name(s.cls));
       feature.SetField("cells", s.cells);
-      for (const RealField& f : kRealFields) {
+      for (const StrokeRealField& f : stroke_real_fields()) {
         const double value = s.*(f.member);
         if (std::isfinite(value)) {
           feature.SetField(f.name, value);

@@ -60,6 +60,17 @@ ProgressFn stage_progress(const ProgressFn& progress, int index, int count) {
 
 }  // namespace
 
+std::vector<StageFigure> stage_figures(const StageStats& s) {
+  return {{"hidden_pct", s.pct(s.hidden), false},
+          {"occluding_pct", s.pct(s.occluding), false},
+          {"cset_pct", s.pct(s.candidate), false},
+          {"fset_pct", s.pct(s.filtered), false},
+          {"tset_pct", s.pct(s.thinned), false},
+          {"gset_pct", s.pct(s.generalised), false},
+          {"factual_strokes", static_cast<double>(s.factual_strokes), true},
+          {"formulated_strokes", static_cast<double>(s.formulated_strokes), true}};
+}
+
 SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,
                                  const GeoTransform& geotransform, const SilhouetteParams& params,
                                  const ProgressFn& progress) {

@@ -26,6 +26,15 @@ struct StageStats {
   double pct(std::size_t n) const { return valid ? 100.0 * static_cast<double>(n) / valid : 0.0; }
 };
 
+// The figures of SPEC 2 under their report keys (hidden_pct ... gset_pct in percent of valid
+// cells, then factual_strokes and formulated_strokes), in report order.
+struct StageFigure {
+  const char* key;
+  double value;
+  bool is_count;
+};
+std::vector<StageFigure> stage_figures(const StageStats& stats);
+
 // Wall time of each stage, seconds.
 struct StageTimings {
   double visibility = 0, candidates = 0, filter = 0, thinning = 0, chaining = 0, strokes = 0;

@@ -29,6 +29,19 @@ const char* stroke_class_name(StrokeClass cls) {
   return cls == StrokeClass::factual ? "factual" : "formulated";
 }
 
+const std::vector<StrokeRealField>& stroke_real_fields() {
+  static const std::vector<StrokeRealField> fields = {
+      {"length", &Stroke::length},
+      {"mean_slope", &Stroke::mean_slope_pct},
+      {"mean_row_slope", &Stroke::mean_row_slope_pct},
+      {"mean_depth", &Stroke::mean_depth_m},
+      {"max_depth", &Stroke::max_depth_m},
+      {"mean_dist", &Stroke::mean_dist},
+      {"mean_z", &Stroke::mean_z},
+  };
+  return fields;
+}
+
 double subcell_peak(const float* z, std::size_t length, std::size_t i, double d,
                     const ViewParams& view) {
   const double at = static_cast<double>(i);

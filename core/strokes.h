@@ -42,6 +42,14 @@ struct Stroke {
   double mean_z = 0.0;        // mean height, metres
 };
 
+// The real-valued attributes of a stroke, in output order, for adapters that write fields
+// (class and cells come first and are not listed). NaN values are written as null.
+struct StrokeRealField {
+  const char* name;
+  double Stroke::*member;
+};
+const std::vector<StrokeRealField>& stroke_real_fields();
+
 // What turning chains into strokes needs to know about the grid and the view.
 struct StrokeContext {
   const HeightGrid& z;
