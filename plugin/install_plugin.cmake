@@ -1,0 +1,21 @@
+# Copies the built plugin folder into a QGIS profile and enables it (desktop and qgis_process).
+# cmake -DPLUGIN_DIR=... -DPROFILE_DIR=... -DPLUGIN_NAME=terrain_sketch -P install_plugin.cmake
+set(target "${PROFILE_DIR}/python/plugins/${PLUGIN_NAME}")
+file(REMOVE_RECURSE "${target}")
+file(MAKE_DIRECTORY "${PROFILE_DIR}/python/plugins" "${PROFILE_DIR}/QGIS")
+file(COPY "${PLUGIN_DIR}" DESTINATION "${PROFILE_DIR}/python/plugins")
+
+set(ini "${PROFILE_DIR}/QGIS/QGIS3.ini")
+set(content "")
+if(EXISTS "${ini}")
+  file(READ "${ini}" content)
+endif()
+if(NOT content MATCHES "${PLUGIN_NAME}=true")
+  if(content MATCHES "\\[PythonPlugins\\]")
+    string(REPLACE "[PythonPlugins]" "[PythonPlugins]\n${PLUGIN_NAME}=true" content "${content}")
+  else()
+    string(APPEND content "\n[PythonPlugins]\n${PLUGIN_NAME}=true\n")
+  endif()
+  file(WRITE "${ini}" "${content}")
+endif()
+message(STATUS "Terrain Sketch installed in ${target} and enabled in ${ini}")

@@ -1,0 +1,23 @@
+#include "plugin_paths.h"
+
+#include <dlfcn.h>
+
+#include <QFileInfo>
+
+namespace tsk::qgis {
+
+QString pluginDir() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&pluginDir), &info) == 0 || !info.dli_fname) return QString();
+  return QFileInfo(QString::fromLocal8Bit(info.dli_fname)).absolutePath();
+}
+
+QString stylePath(const QString& name) {
+  return pluginDir() + "/styles/" + name + ".qml";
+}
+
+QString iconPath() {
+  return pluginDir() + "/icons/terrain_sketch.svg";
+}
+
+}  // namespace tsk::qgis

@@ -1,0 +1,13 @@
+// Where the installed plugin keeps its files: styles, icon, translations, beside the library.
+#pragma once
+
+#include <QString>
+
+namespace tsk::qgis {
+
+// The folder holding this shared library.
+QString pluginDir();
+QString stylePath(const QString& name);  // e.g. "factual" -> <dir>/styles/factual.qml
+QString iconPath();
+
+}  // namespace tsk::qgis

@@ -1,0 +1,41 @@
+// The few QGIS API names that differ between QGIS 3.22 (Qt5) and QGIS 3.36+/4 (Qt6).
+#pragma once
+
+#include <qgsconfig.h>
+#include <qgsfield.h>
+#include <qgsprocessing.h>
+#include <qgsprocessingparameters.h>
+
+namespace tsk::qgis {
+
+#if _QGIS_VERSION_INT >= 33600
+constexpr auto kLineLayer = Qgis::ProcessingSourceType::VectorLine;
+constexpr auto kLineString = Qgis::WkbType::LineString;
+constexpr auto kDoubleNumber = Qgis::ProcessingNumberParameterType::Double;
+constexpr auto kIntegerNumber = Qgis::ProcessingNumberParameterType::Integer;
+constexpr auto kAdvanced = Qgis::ProcessingParameterFlag::Advanced;
+#else
+constexpr auto kLineLayer = QgsProcessing::TypeVectorLine;
+constexpr auto kLineString = QgsWkbTypes::LineString;
+constexpr auto kDoubleNumber = QgsProcessingParameterNumber::Double;
+constexpr auto kIntegerNumber = QgsProcessingParameterNumber::Integer;
+constexpr auto kAdvanced = QgsProcessingParameterDefinition::FlagAdvanced;
+#endif
+
+enum class FieldKind { Text, Integer, Real };
+
+// A field of the given kind (QVariant::Type in 3.x, QMetaType::Type from 3.38).
+inline QgsField makeField(const QString& name, FieldKind kind) {
+#if _QGIS_VERSION_INT >= 33800
+  const QMetaType::Type type = kind == FieldKind::Text      ? QMetaType::QString
+                               : kind == FieldKind::Integer ? QMetaType::Int
+                                                            : QMetaType::Double;
+#else
+  const QVariant::Type type = kind == FieldKind::Text      ? QVariant::String
+                              : kind == FieldKind::Integer ? QVariant::Int
+                                                           : QVariant::Double;
+#endif
+  return QgsField(name, type);
+}
+
+}  // namespace tsk::qgis

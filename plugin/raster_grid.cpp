@@ -1,0 +1,124 @@
+#include "raster_grid.h"
+
+#include <qgscoordinatetransform.h>
+#include <qgsexception.h>
+#include <qgsprocessingfeedback.h>
+#include <qgsrasterblock.h>
+#include <qgsrasterdataprovider.h>
+#include <qgsrasterlayer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <new>
+#include <vector>
+
+#include "errors.h"
+
+namespace tsk::qgis {
+namespace {
+
+// Ground metres per map unit at the raster's centre for Mercator projections, whose map units
+// grow away from the equator; 1 otherwise.
+double mercatorGroundScale(const QgsCoordinateReferenceSystem& crs, const QgsRectangle& extent,
+                           const QgsCoordinateTransformContext& transforms) {
+  if (!crs.toProj().contains(QStringLiteral("+proj=merc"))) return 1.0;
+  try {
+    const QgsCoordinateTransform toLonLat(
+        crs, QgsCoordinateReferenceSystem(QStringLiteral("EPSG:4326")), transforms);
+    const QgsPointXY centre = toLonLat.transform(extent.center());
+    return std::cos(centre.y() * M_PI / 180.0);
+  } catch (const QgsCsException&) {
+    return 1.0;
+  }
+}
+
+}  // namespace
+
+RasterGrid::RasterGrid(QgsRasterLayer* layer, int band,
+                       const QgsCoordinateTransformContext& transforms) {
+  if (!layer || !layer->isValid() || !layer->dataProvider()) {
+    throw QgsProcessingException(tr("The input raster layer is not valid."));
+  }
+  const int bands = layer->bandCount();
+  if (band < 1 || band > bands) {
+    throw QgsProcessingException(
+        tr("Band %1 does not exist: the raster has %2 band(s).").arg(band).arg(bands));
+  }
+  mBand = band;
+  mCols = layer->width();
+  mRows = layer->height();
+  mExtent = layer->extent();
+  mCrs = layer->crs();
+  if (mCols < 1 || mRows < 1) throw QgsProcessingException(tr("The raster has no cells."));
+  if (mCrs.isValid() && mCrs.isGeographic()) {
+    throw QgsProcessingException(
+        tr("The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres like "
+           "its heights. Reproject it to a metric CRS first, for example with Raster > "
+           "Projections > Warp (Reproject) to the UTM zone of the area.")
+            .arg(mCrs.authid()));
+  }
+  if (!mCrs.isValid()) {
+    mNotes << tr(
+        "The raster has no CRS: cell sizes are taken as metres and the outputs have no "
+        "CRS.");
+  } else {
+    mGroundScale = mercatorGroundScale(mCrs, mExtent, transforms);
+    if (mGroundScale != 1.0) {
+      mNotes << tr("Mercator projection: map units are not ground metres here; cell sizes are "
+                   "scaled by cos(latitude of the centre) = %1.")
+                    .arg(mGroundScale, 0, 'f', 4);
+    }
+  }
+  if (bands > 1) mNotes << tr("The raster has %1 bands; band %2 is used.").arg(bands).arg(band);
+  mProvider.reset(layer->dataProvider()->clone());
+  if (!mProvider) throw QgsProcessingException(tr("Could not open the raster's data provider."));
+}
+
+RasterGrid::~RasterGrid() = default;
+
+void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
+                      double progressTo) {
+  const double dx = mExtent.width() / mCols;
+  const double dy = mExtent.height() / mRows;
+  mGeoTransform.a = {mExtent.xMinimum(), dx, 0.0, mExtent.yMaximum(), 0.0, -dy};
+  try {
+    mFrame = make_frame(static_cast<std::size_t>(mRows), static_cast<std::size_t>(mCols),
+                        dx * mGroundScale, dy * mGroundScale, azimuthDeg);
+    mOriented = HeightGrid(mFrame.profiles, mFrame.length);
+  } catch (const Error& e) {
+    throw QgsProcessingException(QString::fromStdString(e.what()));
+  } catch (const std::bad_alloc&) {
+    throw QgsProcessingException(
+        tr("Not enough memory for a %1 x %2 raster.").arg(mCols).arg(mRows));
+  }
+  const auto cols = static_cast<std::size_t>(mCols);
+  const int blockRows = std::max(1, static_cast<int>((1 << 22) / cols));
+  std::vector<float> rows(static_cast<std::size_t>(std::min(blockRows, mRows)) * cols);
+  for (int top = 0; top < mRows; top += blockRows) {
+    if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
+    const int count = std::min(blockRows, mRows - top);
+    const QgsRectangle strip(mExtent.xMinimum(), mExtent.yMaximum() - (top + count) * dy,
+                             mExtent.xMaximum(), mExtent.yMaximum() - top * dy);
+    std::unique_ptr<QgsRasterBlock> block(mProvider->block(mBand, strip, mCols, count));
+    if (!block || !block->isValid()) {
+      throw QgsProcessingException(
+          tr("Could not read rows %1 to %2 of the raster.").arg(top).arg(top + count - 1));
+    }
+    for (int r = 0; r < count; ++r) {
+      float* out = rows.data() + static_cast<std::size_t>(r) * cols;
+      for (int c = 0; c < mCols; ++c) {
+        bool noData = false;
+        const double v = block->valueAndNoData(r, c, noData);
+        out[c] = noData ? kNoData : static_cast<float>(v);
+      }
+    }
+    scatter_dem_rows(mFrame, static_cast<std::size_t>(top), static_cast<std::size_t>(count),
+                     rows.data(), cols, mOriented);
+    if (feedback) {
+      feedback->setProgress(progressFrom + (progressTo - progressFrom) * (top + count) /
+                                               static_cast<double>(mRows));
+    }
+  }
+}
+
+}  // namespace tsk::qgis

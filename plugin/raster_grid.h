@@ -1,0 +1,58 @@
+// Adapter from a QGIS raster layer to the core's oriented grid: prepared on the main thread,
+// read on the worker thread through a clone of the layer's data provider.
+#pragma once
+
+#include <qgscoordinatereferencesystem.h>
+#include <qgsrectangle.h>
+
+#include <QCoreApplication>
+#include <QStringList>
+#include <memory>
+
+#include "orient.h"
+#include "strokes.h"
+
+class QgsRasterDataProvider;
+class QgsRasterLayer;
+class QgsProcessingFeedback;
+class QgsCoordinateTransformContext;
+
+namespace tsk::qgis {
+
+class RasterGrid {
+  Q_DECLARE_TR_FUNCTIONS(RasterGrid)
+
+ public:
+  // Main thread. Throws QgsProcessingException for a missing layer, a band that does not exist or
+  // a geographic CRS; notes() lists what the user should know (no CRS, Mercator scaling).
+  RasterGrid(QgsRasterLayer* layer, int band, const QgsCoordinateTransformContext& transforms);
+  ~RasterGrid();
+  RasterGrid(const RasterGrid&) = delete;
+  RasterGrid& operator=(const RasterGrid&) = delete;
+
+  // Worker thread. Reads the band in blocks of rows into the grid oriented for `azimuthDeg`,
+  // reporting progress from `progressFrom` to `progressTo` percent; throws on cancel.
+  void read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
+            double progressTo);
+
+  const HeightGrid& oriented() const { return mOriented; }
+  const OrientedFrame& frame() const { return mFrame; }
+  const GeoTransform& geotransform() const { return mGeoTransform; }
+  const QgsCoordinateReferenceSystem& crs() const { return mCrs; }
+  const QStringList& notes() const { return mNotes; }
+
+ private:
+  std::unique_ptr<QgsRasterDataProvider> mProvider;
+  int mBand = 1;
+  int mCols = 0;
+  int mRows = 0;
+  QgsRectangle mExtent;
+  QgsCoordinateReferenceSystem mCrs;
+  double mGroundScale = 1.0;
+  QStringList mNotes;
+  HeightGrid mOriented;
+  OrientedFrame mFrame;
+  GeoTransform mGeoTransform;
+};
+
+}  // namespace tsk::qgis

@@ -1,0 +1,43 @@
+#include "stroke_features.h"
+
+#include <qgsgeometry.h>
+#include <qgslinestring.h>
+
+#include <cmath>
+
+#include "qgis_compat.h"
+
+namespace tsk::qgis {
+
+QgsFields strokeFields() {
+  QgsFields fields;
+  fields.append(makeField(QStringLiteral("class"), FieldKind::Text));
+  fields.append(makeField(QStringLiteral("cells"), FieldKind::Integer));
+  for (const StrokeRealField& f : stroke_real_fields()) {
+    fields.append(makeField(QString::fromLatin1(f.name), FieldKind::Real));
+  }
+  return fields;
+}
+
+QgsFeature strokeFeature(const Stroke& stroke, const QgsFields& fields) {
+  QgsFeature feature(fields);
+  QgsAttributes attributes;
+  attributes.reserve(fields.count());
+  attributes << QString::fromLatin1(stroke_class_name(stroke.cls)) << stroke.cells;
+  for (const StrokeRealField& f : stroke_real_fields()) {
+    const double value = stroke.*(f.member);
+    attributes << (std::isfinite(value) ? QVariant(value) : QVariant());
+  }
+  feature.setAttributes(attributes);
+  QVector<double> xs, ys;
+  xs.reserve(static_cast<int>(stroke.points.size()));
+  ys.reserve(static_cast<int>(stroke.points.size()));
+  for (const StrokePoint& p : stroke.points) {
+    xs << p.x;
+    ys << p.y;
+  }
+  feature.setGeometry(QgsGeometry(new QgsLineString(xs, ys)));
+  return feature;
+}
+
+}  // namespace tsk::qgis

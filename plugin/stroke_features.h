@@ -1,0 +1,17 @@
+// Adapter from core strokes to QGIS features with the SPEC attribute fields.
+#pragma once
+
+#include <qgsfeature.h>
+#include <qgsfields.h>
+
+#include "strokes.h"
+
+namespace tsk::qgis {
+
+// class, cells, then the core's real-valued stroke fields in their order.
+QgsFields strokeFields();
+
+// A line feature for `stroke`; NaN attributes become null.
+QgsFeature strokeFeature(const Stroke& stroke, const QgsFields& fields);
+
+}  // namespace tsk::qgis
