@@ -8,7 +8,7 @@
 
 #include "plugin_paths.h"
 
-namespace tsk::qgis {
+namespace tsk::plugin {
 namespace {
 
 class QmlStyler : public QgsProcessingLayerPostProcessorInterface {
@@ -42,4 +42,4 @@ void styleOnCompletion(QgsProcessingContext& context, const QString& destination
   context.layerToLoadOnCompletionDetails(destinationId).setPostProcessor(new QmlStyler(qml));
 }
 
-}  // namespace tsk::qgis
+}  // namespace tsk::plugin

@@ -5,10 +5,10 @@
 
 #include <QString>
 
-namespace tsk::qgis {
+namespace tsk::plugin {
 
 // Main thread: if QGIS will load `destinationId` on completion, applies styles/<style>.qml to it.
 void styleOnCompletion(QgsProcessingContext& context, const QString& destinationId,
                        const QString& style);
 
-}  // namespace tsk::qgis
+}  // namespace tsk::plugin

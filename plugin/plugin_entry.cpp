@@ -13,7 +13,7 @@
 namespace {
 
 // The registered provider (owned by the registry while registered) and our translator.
-tsk::qgis::TerrainSketchProvider* gProvider = nullptr;
+tsk::plugin::TerrainSketchProvider* gProvider = nullptr;
 std::unique_ptr<QTranslator> gTranslator;
 
 void loadTranslation() {
@@ -21,7 +21,7 @@ void loadTranslation() {
   const QString locale = QgsApplication::locale();
   auto translator = std::make_unique<QTranslator>();
   if (translator->load(QStringLiteral("terrain_sketch_") + locale,
-                       tsk::qgis::pluginDir() + QStringLiteral("/i18n"))) {
+                       tsk::plugin::pluginDir() + QStringLiteral("/i18n"))) {
     QCoreApplication::installTranslator(translator.get());
     gTranslator = std::move(translator);
   }
@@ -32,7 +32,7 @@ void loadTranslation() {
 extern "C" __attribute__((visibility("default"))) int terrain_sketch_register_provider() {
   if (gProvider) return 1;
   loadTranslation();
-  auto provider = std::make_unique<tsk::qgis::TerrainSketchProvider>();
+  auto provider = std::make_unique<tsk::plugin::TerrainSketchProvider>();
   if (!QgsApplication::processingRegistry()->addProvider(provider.get())) return 0;
   gProvider = provider.release();  // the registry owns it now
   return 1;

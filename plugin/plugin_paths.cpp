@@ -4,7 +4,7 @@
 
 #include <QFileInfo>
 
-namespace tsk::qgis {
+namespace tsk::plugin {
 
 QString pluginDir() {
   Dl_info info{};
@@ -20,4 +20,4 @@ QString iconPath() {
   return pluginDir() + "/icons/terrain_sketch.svg";
 }
 
-}  // namespace tsk::qgis
+}  // namespace tsk::plugin

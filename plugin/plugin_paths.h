@@ -3,11 +3,11 @@
 
 #include <QString>
 
-namespace tsk::qgis {
+namespace tsk::plugin {
 
 // The folder holding this shared library.
 QString pluginDir();
 QString stylePath(const QString& name);  // e.g. "factual" -> <dir>/styles/factual.qml
 QString iconPath();
 
-}  // namespace tsk::qgis
+}  // namespace tsk::plugin

@@ -5,7 +5,7 @@
 #include "plugin_paths.h"
 #include "silhouettes_algorithm.h"
 
-namespace tsk::qgis {
+namespace tsk::plugin {
 
 QString TerrainSketchProvider::id() const {
   return QStringLiteral("terrainsketch");
@@ -27,4 +27,4 @@ void TerrainSketchProvider::loadAlgorithms() {
   addAlgorithm(new SilhouettesAlgorithm());
 }
 
-}  // namespace tsk::qgis
+}  // namespace tsk::plugin

@@ -5,7 +5,7 @@
 
 #include <QCoreApplication>
 
-namespace tsk::qgis {
+namespace tsk::plugin {
 
 class TerrainSketchProvider : public QgsProcessingProvider {
   Q_DECLARE_TR_FUNCTIONS(TerrainSketchProvider)
@@ -21,4 +21,4 @@ class TerrainSketchProvider : public QgsProcessingProvider {
   void loadAlgorithms() override;
 };
 
-}  // namespace tsk::qgis
+}  // namespace tsk::plugin

@@ -6,7 +6,7 @@
 #include <qgsprocessing.h>
 #include <qgsprocessingparameters.h>
 
-namespace tsk::qgis {
+namespace tsk::plugin {
 
 #if _QGIS_VERSION_INT >= 33600
 constexpr auto kLineLayer = Qgis::ProcessingSourceType::VectorLine;
@@ -38,4 +38,4 @@ inline QgsField makeField(const QString& name, FieldKind kind) {
   return QgsField(name, type);
 }
 
-}  // namespace tsk::qgis
+}  // namespace tsk::plugin

@@ -14,7 +14,7 @@
 
 #include "errors.h"
 
-namespace tsk::qgis {
+namespace tsk::plugin {
 namespace {
 
 // Ground metres per map unit at the raster's centre for Mercator projections, whose map units
@@ -121,4 +121,4 @@ void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double
   }
 }
 
-}  // namespace tsk::qgis
+}  // namespace tsk::plugin

@@ -17,7 +17,7 @@ class QgsRasterLayer;
 class QgsProcessingFeedback;
 class QgsCoordinateTransformContext;
 
-namespace tsk::qgis {
+namespace tsk::plugin {
 
 class RasterGrid {
   Q_DECLARE_TR_FUNCTIONS(RasterGrid)
@@ -55,4 +55,4 @@ class RasterGrid {
   GeoTransform mGeoTransform;
 };
 
-}  // namespace tsk::qgis
+}  // namespace tsk::plugin

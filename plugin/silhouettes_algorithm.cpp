@@ -15,7 +15,7 @@
 #include "silhouettes.h"
 #include "stroke_features.h"
 
-namespace tsk::qgis {
+namespace tsk::plugin {
 namespace {
 
 // Parameter keys.
@@ -268,4 +268,4 @@ QVariantMap SilhouettesAlgorithm::postProcessAlgorithm(QgsProcessingContext& con
   return {};
 }
 
-}  // namespace tsk::qgis
+}  // namespace tsk::plugin

@@ -8,7 +8,7 @@
 
 #include "params.h"
 
-namespace tsk::qgis {
+namespace tsk::plugin {
 
 class RasterGrid;
 
@@ -47,4 +47,4 @@ class SilhouettesAlgorithm : public QgsProcessingAlgorithm {
   QString mFormulatedId;
 };
 
-}  // namespace tsk::qgis
+}  // namespace tsk::plugin

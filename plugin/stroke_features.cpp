@@ -7,7 +7,7 @@
 
 #include "qgis_compat.h"
 
-namespace tsk::qgis {
+namespace tsk::plugin {
 
 QgsFields strokeFields() {
   QgsFields fields;
@@ -40,4 +40,4 @@ QgsFeature strokeFeature(const Stroke& stroke, const QgsFields& fields) {
   return feature;
 }
 
-}  // namespace tsk::qgis
+}  // namespace tsk::plugin

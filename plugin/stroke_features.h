@@ -6,7 +6,7 @@
 
 #include "strokes.h"
 
-namespace tsk::qgis {
+namespace tsk::plugin {
 
 // class, cells, then the core's real-valued stroke fields in their order.
 QgsFields strokeFields();
@@ -14,4 +14,4 @@ QgsFields strokeFields();
 // A line feature for `stroke`; NaN attributes become null.
 QgsFeature strokeFeature(const Stroke& stroke, const QgsFields& fields);
 
-}  // namespace tsk::qgis
+}  // namespace tsk::plugin

@@ -1,0 +1,198 @@
+// The Silhouettes algorithm run headless on real DEMs: features, fields, CRS and figures equal
+// the core's; bad input ends in a clear QgsProcessingException, never a crash.
+#include <gdal.h>
+#include <ogr_api.h>
+#include <ogr_srs_api.h>
+#include <qgsapplication.h>
+#include <qgsfeatureiterator.h>
+#include <qgsprocessingcontext.h>
+#include <qgsprocessingfeedback.h>
+#include <qgsprocessingregistry.h>
+#include <qgsrasterlayer.h>
+#include <qgsvectorlayer.h>
+
+#include <QTemporaryDir>
+#include <catch2/catch.hpp>
+#include <memory>
+
+#include "dem_reader.h"
+#include "provider.h"
+#include "silhouettes.h"
+
+using namespace tsk;
+
+namespace {
+
+const QString kData = QStringLiteral(TSK_TEST_DATA);
+
+QgsProcessingAlgorithm* algorithm() {
+  static bool registered = false;
+  if (!registered) {
+    QgsApplication::processingRegistry()->addProvider(new plugin::TerrainSketchProvider());
+    registered = true;
+  }
+  const QgsProcessingAlgorithm* alg = QgsApplication::processingRegistry()->algorithmById(
+      QStringLiteral("terrainsketch:silhouettes"));
+  REQUIRE(alg != nullptr);
+  return alg->create();
+}
+
+// Keeps what the algorithm writes to the log.
+class RecordingFeedback : public QgsProcessingFeedback {
+ public:
+  void reportError(const QString& error, bool fatal) override {
+    errors << error;
+    QgsProcessingFeedback::reportError(error, fatal);
+  }
+  void pushWarning(const QString& warning) override { warnings << warning; }
+  QStringList errors;
+  QStringList warnings;
+};
+
+struct Run {
+  bool ok = false;
+  QVariantMap results;
+  QString error;
+};
+
+// Runs the algorithm with `extra` parameters on top of INPUT/BAND and two outputs in `dir`.
+Run runAlgorithm(const QString& input, const QVariantMap& extra, const QTemporaryDir& dir,
+                 RecordingFeedback* feedback = nullptr) {
+  std::unique_ptr<QgsProcessingAlgorithm> alg(algorithm());
+  QVariantMap params{{"INPUT", input},
+                     {"BAND", 1},
+                     {"FACTUAL", dir.filePath("factual.gpkg")},
+                     {"FORMULATED", dir.filePath("formulated.gpkg")}};
+  for (auto it = extra.begin(); it != extra.end(); ++it) params.insert(it.key(), it.value());
+  QgsProcessingContext context;
+  RecordingFeedback defaultFeedback;
+  RecordingFeedback* log = feedback ? feedback : &defaultFeedback;
+  Run run;
+  run.results = alg->run(params, context, log, &run.ok);
+  run.error = log->errors.join('\n');
+  return run;
+}
+
+// Runs the core directly on the same file through the CLI's GDAL reader.
+SilhouetteResult coreResult(const QString& file, double azimuth, Geometry geometry) {
+  io::DemOptions options;
+  options.azimuth_deg = azimuth;
+  const io::Dem dem = io::read_dem(file.toStdString(), options);
+  SilhouetteParams params;
+  params.view.azimuth_deg = azimuth;
+  params.geometry = geometry;
+  return run_silhouettes(dem.oriented, dem.frame, dem.geotransform, params);
+}
+
+}  // namespace
+
+TEST_CASE("the algorithm's strokes equal the core's on real DEMs", "[plugin]") {
+  struct Case {
+    const char* file;
+    double azimuth;
+    int geometry;
+    int epsg;
+  };
+  for (const Case& c :
+       {Case{"jacksboro_utm16n.tif", 90, 0, 32616}, Case{"gorillas_utm32n.tif", 270, 1, 32632},
+        Case{"volcano.tif", 180, 0, 0}}) {
+    CAPTURE(c.file, c.azimuth);
+    QTemporaryDir dir;
+    const Run run =
+        runAlgorithm(kData + "/" + c.file, {{"AZIMUTH", c.azimuth}, {"GEOMETRY", c.geometry}}, dir);
+    INFO(run.error.toStdString());
+    REQUIRE(run.ok);
+    const SilhouetteResult core =
+        coreResult(kData + "/" + c.file, c.azimuth, c.geometry ? Geometry::oblique : Geometry::map);
+    CHECK(run.results.value("FACTUAL_STROKES").toDouble() == core.stats.factual_strokes);
+    CHECK(run.results.value("FSET_PCT").toDouble() == Approx(core.stats.pct(core.stats.filtered)));
+
+    QgsVectorLayer factual(run.results.value("FACTUAL").toString(), "f", "ogr");
+    QgsVectorLayer formulated(run.results.value("FORMULATED").toString(), "o", "ogr");
+    REQUIRE(factual.isValid());
+    REQUIRE(formulated.isValid());
+    CHECK(factual.featureCount() == static_cast<long long>(core.stats.factual_strokes));
+    CHECK(formulated.featureCount() == static_cast<long long>(core.stats.formulated_strokes));
+    if (c.epsg) {
+      CHECK(factual.crs().authid() == QStringLiteral("EPSG:%1").arg(c.epsg));
+    } else {
+      // QGIS gives a layer without CRS a default one on loading: ask GDAL what the file holds.
+      // GeoPackage records "no CRS" as its undefined SRS (srs_id 0).
+      GDALDatasetH ds = GDALOpenEx(run.results.value("FACTUAL").toString().toUtf8().constData(),
+                                   GDAL_OF_VECTOR, nullptr, nullptr, nullptr);
+      REQUIRE(ds != nullptr);
+      OGRSpatialReferenceH srs = OGR_L_GetSpatialRef(GDALDatasetGetLayer(ds, 0));
+      CHECK((srs == nullptr || std::string(OSRGetName(srs)).find("Undefined") == 0));
+      GDALClose(ds);
+    }
+    for (const char* field : {"class", "cells", "length", "mean_slope", "mean_row_slope",
+                              "mean_depth", "max_depth", "mean_dist", "mean_z"}) {
+      CHECK(factual.fields().indexOf(field) >= 0);
+    }
+    // Same strokes in the same order: compare every vertex of the factual ones.
+    QgsFeatureIterator it = factual.getFeatures();
+    QgsFeature feature;
+    std::size_t k = 0;
+    while (it.nextFeature(feature)) {
+      const Stroke& s = core.strokes[k++];
+      REQUIRE(feature.attribute("class").toString() == "factual");
+      REQUIRE(feature.attribute("cells").toInt() == s.cells);
+      const QgsGeometry g = feature.geometry();
+      const QgsPolylineXY line = g.asPolyline();
+      REQUIRE(static_cast<std::size_t>(line.size()) == s.points.size());
+      for (int q = 0; q < line.size(); ++q) {
+        REQUIRE(line[q].x() == Approx(s.points[static_cast<std::size_t>(q)].x));
+        REQUIRE(line[q].y() == Approx(s.points[static_cast<std::size_t>(q)].y));
+      }
+    }
+    QgsFeatureIterator fo = formulated.getFeatures();
+    while (fo.nextFeature(feature)) {
+      REQUIRE(feature.attribute("class").toString() == "formulated");
+      REQUIRE(feature.attribute("mean_depth").isNull());
+    }
+  }
+}
+
+TEST_CASE("bad input ends in a clear message, never a crash", "[plugin][robustness]") {
+  QTemporaryDir dir;
+  const QString sample = kData + "/jacksboro_utm16n.tif";
+  struct Bad {
+    QString input;
+    QVariantMap extra;
+    const char* message;
+  };
+  const Bad cases[] = {
+      {kData + "/jacksboro_geo.tif", {}, "geographic CRS"},
+      {sample, {{"BAND", 2}}, "Band 2 does not exist"},
+      {sample, {{"CTRL_COL", 12.5}}, "control point"},
+      {sample, {{"AZIMUTH", 45}}, "not a cardinal view"},
+      {dir.filePath("missing.tif"), {}, ""},
+  };
+  for (const Bad& b : cases) {
+    CAPTURE(b.input.toStdString(), b.message);
+    const Run run = runAlgorithm(b.input, b.extra, dir);
+    CHECK_FALSE(run.ok);
+    CHECK_THAT(run.error.toStdString(), Catch::Contains(b.message));
+  }
+}
+
+TEST_CASE("a raster without CRS runs with a warning in the log", "[plugin]") {
+  RecordingFeedback log;
+  QTemporaryDir dir;
+  const Run run = runAlgorithm(kData + "/bei_5m_local.tif", {}, dir, &log);
+  CHECK(run.ok);
+  CHECK(log.warnings.join(' ').contains("no CRS"));
+}
+
+TEST_CASE("cancelling stops the run with an error and no result", "[plugin]") {
+  class CancelAtStart : public RecordingFeedback {
+   public:
+    CancelAtStart() {
+      connect(this, &QgsFeedback::progressChanged, this, [this](double) { cancel(); });
+    }
+  } feedback;
+  QTemporaryDir dir;
+  const Run run = runAlgorithm(kData + "/jacksboro_utm16n.tif", {}, dir, &feedback);
+  CHECK_FALSE(run.ok);
+  CHECK(run.error.contains("Cancelled"));
+}
