@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# End-to-end test in the real QGIS desktop under Xvfb: the plugin loads from a fresh profile, the
+# algorithm runs from Processing, both styled layers are on the canvas, a screenshot is saved.
+# Usage: desktop_test.sh PLUGIN_BUILD_DIR DEM OUTPUT_DIR
+set -euo pipefail
+plugin_dir=$1 dem=$2 out=$3
+here=$(cd "$(dirname "$0")" && pwd)
+rm -rf "$out" && mkdir -p "$out"
+profiles="$out/profiles"
+profile="$profiles/profiles/default"
+cmake -DPLUGIN_DIR="$plugin_dir" -DPROFILE_DIR="$profile" -DPLUGIN_NAME=terrain_sketch \
+  -P "$here/../../plugin/install_plugin.cmake" > /dev/null
+cat >> "$profile/QGIS/QGIS3.ini" <<'INI'
+[app]
+askToSaveMemoryLayers=false
+[qgis]
+checkVersion=false
+showTips=false
+INI
+export TSK_E2E_OUT="$out" TSK_E2E_DEM="$dem"
+timeout 180 xvfb-run -a -s "-screen 0 1600x1000x24" /usr/bin/qgis.bin --profiles-path "$profiles" \
+  --nologo --noversioncheck --code "$here/desktop_run.py" > "$out/qgis.log" 2>&1 || true
+[ -f "$out/report.json" ] || { echo "no report; QGIS log:"; tail -40 "$out/qgis.log"; exit 1; }
+/usr/bin/python3 - "$out/report.json" <<'PY'
+import json, os, sys
+r = json.load(open(sys.argv[1]))
+errors = []
+def check(cond, what):
+    if not cond: errors.append(what)
+check(r.get("ok"), "run finished: %s" % r.get("error"))
+check(r.get("provider"), "provider registered")
+layers = {l["name"]: l for l in r.get("layers", [])}
+check(len(layers) == 2, "two layers loaded, got %s" % list(layers))
+for name, colour, field in (("Factual silhouettes", "#111111", "mean_depth"),
+                            ("Formulated silhouettes", "#787878", "mean_slope")):
+    l = layers.get(name, {})
+    check(l.get("features", 0) > 100, name + " has features")
+    check(l.get("crs") == "EPSG:32616", name + " CRS")
+    check(l.get("renderer") == "singleSymbol", name + " styled")
+    check(l.get("colour") == colour, name + " colour %s" % l.get("colour"))
+    check(field in (l.get("width_expression") or ""), name + " width by " + field)
+shot = r.get("screenshot", "")
+check(os.path.exists(shot) and os.path.getsize(shot) > 10000, "screenshot saved")
+if errors:
+    print("FAILED:\n  " + "\n  ".join(errors)); sys.exit(1)
+print("desktop end-to-end: 1 passed, 0 failed")
+PY
