@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
-# Builds and runs the whole test suite twice: a release build, then a build with
-# AddressSanitizer and UndefinedBehaviorSanitizer.
+# Builds and runs the whole test suite: a release build with the QGIS plugin and its end-to-end
+# tests, then the core and CLI tests again with AddressSanitizer and UndefinedBehaviorSanitizer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh core
+bash scripts/install-deps.sh qgis
 jobs=$(nproc)
 
-echo "== release build and tests"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
+echo "== release build and tests (core, CLI, QGIS plugin headless, qgis_process, desktop)"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTSK_BUILD_PLUGIN=ON > /dev/null
 cmake --build build -j "$jobs"
 ctest --test-dir build --output-on-failure -j "$jobs"
 
-echo "== sanitizer build (ASan + UBSan) and tests"
+echo "== sanitizer build (ASan + UBSan) of the core and CLI, and their tests"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DTSK_SANITIZE=ON -DTSK_BUILD_BENCH=OFF > /dev/null
 cmake --build build-asan -j "$jobs"
 # Leak checking is off: GDAL keeps driver-level caches alive until exit by design.

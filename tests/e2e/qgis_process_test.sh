@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# qgis_process end to end: the plugin installed in a fresh profile is listed, runs on the sample
+# DEM, refuses a geographic DEM with a message, and a Model Builder model chaining GDAL warp,
+# native hillshade and our algorithm runs.
+# Usage: qgis_process_test.sh PLUGIN_BUILD_DIR REPO_DIR OUTPUT_DIR
+set -uo pipefail
+plugin_dir=$1 repo=$2 out=$3
+rm -rf "$out" && mkdir -p "$out/home"
+export HOME="$out/home" QT_QPA_PLATFORM=offscreen
+cmake -DPLUGIN_DIR="$plugin_dir" -DPROFILE_DIR="$HOME/.local/share/QGIS/QGIS3/profiles/default" \
+  -DPLUGIN_NAME=terrain_sketch -P "$repo/plugin/install_plugin.cmake" > /dev/null
+qp() { timeout 300 /usr/bin/qgis_process.bin "$@" 2>&1; }
+passed=0 failed=0
+check() {  # check NAME CONDITION-EXIT-CODE
+  if [ "$2" -eq 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAILED: $1"; fi
+}
+features() { ogrinfo -so -al "$1" 2>/dev/null | sed -n 's/^Feature Count: //p'; }
+
+qp list > "$out/list.txt"
+grep -q "terrainsketch:silhouettes" "$out/list.txt"; check "provider listed" $?
+
+qp run terrainsketch:silhouettes --INPUT="$repo/resources/sample/jacksboro_utm16n.tif" --BAND=1 \
+  --FACTUAL="$out/f.gpkg" --FORMULATED="$out/o.gpkg" > "$out/run.txt"
+check "sample run exit code" $?
+[ "$(features "$out/f.gpkg")" -gt 100 ] 2>/dev/null; check "factual features" $?
+[ "$(features "$out/o.gpkg")" -gt 100 ] 2>/dev/null; check "formulated features" $?
+
+qp run terrainsketch:silhouettes --INPUT="$repo/tests/data/jacksboro_geo.tif" --BAND=1 \
+  --FACTUAL="$out/g.gpkg" --FORMULATED="$out/h.gpkg" > "$out/geo.txt"
+[ $? -ne 0 ]; check "geographic DEM fails" $?
+grep -q "geographic CRS" "$out/geo.txt"; check "geographic DEM message" $?
+[ ! -e "$out/g.gpkg" ]; check "no output for the refused DEM" $?
+
+qp run "$repo/resources/models/silhouettes_over_hillshade.model3" \
+  --dem="$repo/tests/data/jacksboro_geo.tif" --crs=EPSG:32616 --hillshade:Hillshade="$out/hs.tif" \
+  "--silhouettes:Factual silhouettes=$out/mf.gpkg" \
+  "--silhouettes:Formulated silhouettes=$out/mo.gpkg" > "$out/model.txt"
+check "model exit code" $?
+gdalinfo "$out/hs.tif" > /dev/null 2>&1; check "model hillshade raster" $?
+[ "$(features "$out/mf.gpkg")" -gt 100 ] 2>/dev/null; check "model factual features" $?
+
+echo "qgis_process end-to-end: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
