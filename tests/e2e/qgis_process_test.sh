@@ -39,5 +39,12 @@ check "model exit code" $?
 gdalinfo "$out/hs.tif" > /dev/null 2>&1; check "model hillshade raster" $?
 [ "$(features "$out/mf.gpkg")" -gt 100 ] 2>/dev/null; check "model factual features" $?
 
+# The German translation loads when the profile's locale is German.
+printf '\n[locale]\noverrideFlag=true\nuserLocale=de\n' \
+  >> "$HOME/.local/share/QGIS/QGIS3/profiles/default/QGIS/QGIS3.ini"
+qp help terrainsketch:silhouettes > "$out/help_de.txt"
+grep -q "Silhouetten (faktisch und formuliert)" "$out/help_de.txt"; check "German help title" $?
+grep -q "Überhöhung" "$out/help_de.txt"; check "German parameter names" $?
+
 echo "qgis_process end-to-end: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -18,6 +18,7 @@
 #include "dem_reader.h"
 #include "provider.h"
 #include "silhouettes.h"
+#include "translation.h"
 
 using namespace tsk;
 
@@ -195,4 +196,18 @@ TEST_CASE("cancelling stops the run with an error and no result", "[plugin]") {
   const Run run = runAlgorithm(kData + "/jacksboro_utm16n.tif", {}, dir, &feedback);
   CHECK_FALSE(run.ok);
   CHECK(run.error.contains("Cancelled"));
+}
+
+TEST_CASE("the German translation loads for the de locale", "[plugin][i18n]") {
+  // The code under test is linked into this binary, so name the built plugin's i18n folder.
+  const QString folder = QStringLiteral(TSK_PLUGIN_DIR "/i18n");
+  REQUIRE(plugin::installTranslation(QStringLiteral("de"), folder));
+  const plugin::TerrainSketchProvider provider;
+  CHECK(provider.name() == QStringLiteral("Geländeskizze"));
+  std::unique_ptr<QgsProcessingAlgorithm> alg(algorithm());
+  CHECK(alg->displayName() == QStringLiteral("Silhouetten (faktisch und formuliert)"));
+  CHECK(alg->parameterDefinition("VE")->description() == QStringLiteral("Überhöhung"));
+  plugin::removeTranslation();
+  CHECK(provider.name() == QStringLiteral("Terrain sketch"));
+  CHECK_FALSE(plugin::installTranslation(QStringLiteral("xx"), folder));
 }

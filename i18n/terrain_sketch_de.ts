@@ -1,0 +1,311 @@
+<?xml version='1.0' encoding='utf-8'?>
+<TS version="2.1" language="de_DE">
+<context>
+    <name>QmlStyler</name>
+    <message>
+        <location filename="../plugin/layer_style.cpp" line="26" />
+        <source>Could not apply style %1: %2</source>
+        <translation>Stil %1 konnte nicht angewendet werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>RasterGrid</name>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="40" />
+        <source>The input raster layer is not valid.</source>
+        <translation>Der Eingaberasterlayer ist ungültig.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="45" />
+        <source>Band %1 does not exist: the raster has %2 band(s).</source>
+        <translation>Kanal %1 existiert nicht: das Raster hat %2 Kanal/Kanäle.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="52" />
+        <source>The raster has no cells.</source>
+        <translation>Das Raster hat keine Zellen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="55" />
+        <source>The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres like its heights. Reproject it to a metric CRS first, for example with Raster &gt; Projections &gt; Warp (Reproject) to the UTM zone of the area.</source>
+        <translation>Das Raster liegt in einem geographischen KBS (%1): seine Zellgrößen sind Grad, nicht Meter wie seine Höhen. Projizieren Sie es zuerst in ein metrisches KBS, zum Beispiel mit Raster &gt; Projektionen &gt; Transformieren (Reprojizieren) in die UTM-Zone des Gebiets.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="61" />
+        <source>The raster has no CRS: cell sizes are taken as metres and the outputs have no CRS.</source>
+        <translation>Das Raster hat kein KBS: Zellgrößen werden als Meter angenommen, die Ausgaben haben kein KBS.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="67" />
+        <source>Mercator projection: map units are not ground metres here; cell sizes are scaled by cos(latitude of the centre) = %1.</source>
+        <translation>Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen werden mit cos(Breite der Mitte) = %1 skaliert.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="72" />
+        <source>The raster has %1 bands; band %2 is used.</source>
+        <translation>Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="74" />
+        <source>Could not open the raster's data provider.</source>
+        <translation>Der Datenanbieter des Rasters konnte nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="92" />
+        <source>Not enough memory for a %1 x %2 raster.</source>
+        <translation>Nicht genug Speicher für ein Raster von %1 x %2.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="98" />
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="105" />
+        <source>Could not read rows %1 to %2 of the raster.</source>
+        <translation>Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
+    </message>
+</context>
+<context>
+    <name>SilhouettesAlgorithm</name>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="53" />
+        <source>Silhouettes (factual and formulated)</source>
+        <translation>Silhouetten (faktisch und formuliert)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="57" />
+        <source>silhouette,occluding contour,sketch,oblique,panorama,block diagram,plan oblique,terrain,dem,hidden</source>
+        <translation>Silhouette,Verdeckungskontur,Skizze,Schrägansicht,Panorama,Blockbild,Plan oblique,Gelände,DGM,verdeckt</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="63" />
+        <source>Draws the silhouette lines of a DEM seen obliquely from above as vector strokes.</source>
+        <translation>Zeichnet die Silhouettenlinien eines schräg von oben gesehenen DGM als Vektorstriche.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="67" />
+        <source>Finds the lines a cartographer sketches first when drawing terrain seen obliquely from above.
+
+Factual Silhouettes are occluding contours: cells beyond which the terrain hides what lies behind it, in a parallel view with vertical exaggeration and a base slope added along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view brings into sight (the candidate set), kept where the slope filter finds them significant (outside the weak/weak corner of column slope against row slope), thinned to the cell furthest from the viewer and chained across profiles.
+
+The DEM's heights must be in metres and its CRS projected in metres; a geographic DEM is refused. The view is one of the four cardinal directions.
+
+Two line outputs: Factual silhouettes (styled bold black, width by hidden depth) and Formulated silhouettes (thinner grey, width by slope). Separate layers so each can be styled, filtered or switched off on its own, and routed separately in models. Each stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth and max_depth (m, factual only), mean_dist (distance from the front of the view) and mean_z.
+
+Reference: Beyond Factual to Formulated Silhouettes, PhD thesis, Department of Computer Science, University of Hull (chapters 4 and 5), extending the occluding contours of Visvalingam and Whelan (1998).</source>
+        <translation>Findet die Linien, die ein Kartograph zuerst skizziert, wenn er Gelände schräg von oben zeichnet.
+
+Faktische Silhouetten sind Verdeckungskonturen: Zellen, hinter denen das Gelände verbirgt, was dahinter liegt, in einer Parallelansicht mit Überhöhung und einer entlang der Blickrichtung addierten Grundneigung. Formulierte Silhouetten sind abgewandte Hänge, die der erhöhte Blick sichtbar macht (die Kandidatenmenge); sie bleiben erhalten, wo der Neigungsfilter sie für bedeutsam hält (außerhalb der schwach/schwach-Ecke von Spalten- gegen Zeilenneigung), werden auf die vom Betrachter entfernteste Zelle ausgedünnt und über die Profile verkettet.
+
+Die Höhen des DGM müssen in Metern vorliegen und sein KBS in Metern projiziert sein; ein geographisches DGM wird abgelehnt. Die Blickrichtung ist eine der vier Haupthimmelsrichtungen.
+
+Zwei Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter Tiefe) und Formulierte Silhouetten (dünner grau, Breite nach Neigung). Getrennte Layer, damit jeder für sich gestaltet, gefiltert oder ausgeblendet und in Modellen getrennt weitergeleitet werden kann. Jeder Strich trägt: class, cells, length, mean_slope und mean_row_slope (%), mean_depth und max_depth (m, nur faktisch), mean_dist (Abstand vom vorderen Bildrand) und mean_z.
+
+Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
+        <source>Elevation (DEM)</source>
+        <translation>Höhenmodell (DGM)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="114" />
+        <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
+        <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
+        <source>Band</source>
+        <translation>Kanal</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
+        <source>The band holding the heights.</source>
+        <translation>Der Kanal mit den Höhen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
+        <source>View azimuth (degrees)</source>
+        <translation>Blickrichtung (Grad)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="118" />
+        <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north) or 270 (from the east).</source>
+        <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden) oder 270 (von Osten).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="120" />
+        <source>Vertical exaggeration</source>
+        <translation>Überhöhung</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="121" />
+        <source>Factor applied to heights before occlusion is computed.</source>
+        <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
+        <source>Base slope (%)</source>
+        <translation>Grundneigung (%)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
+        <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
+        <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="125" />
+        <source>Row slope cut-off (%)</source>
+        <translation>Grenzwert Zeilenneigung (%)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="126" />
+        <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
+        <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="128" />
+        <source>Column slope cut-off (%)</source>
+        <translation>Grenzwert Spaltenneigung (%)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="129" />
+        <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
+        <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="130" />
+        <source>Control point column slope (%)</source>
+        <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="132" />
+        <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
+        <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="135" />
+        <source>Allow for diagonals</source>
+        <translation>Diagonalen berücksichtigen</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="137" />
+        <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
+        <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="139" />
+        <source>Chaining window (cells)</source>
+        <translation>Verkettungsfenster (Zellen)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="140" />
+        <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
+        <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="141" />
+        <source>Minimum stroke cells</source>
+        <translation>Mindestzahl Zellen je Strich</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="142" />
+        <source>Strokes with fewer cells are dropped (generalisation).</source>
+        <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="143" />
+        <source>Geometry</source>
+        <translation>Geometrie</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="144" />
+        <source>Map (cell centres)</source>
+        <translation>Karte (Zellmittelpunkte)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="144" />
+        <source>Plan oblique (the sketch)</source>
+        <translation>Plan oblique (die Skizze)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="146" />
+        <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
+        <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="149" />
+        <source>Formulated stroke placement</source>
+        <translation>Lage der formulierten Striche</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="150" />
+        <source>Far end of each zone</source>
+        <translation>Hinteres Ende jeder Zone</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="150" />
+        <source>Near and far ends</source>
+        <translation>Vorderes und hinteres Ende</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="152" />
+        <source>Which cells of a filtered zone become formulated silhouette points.</source>
+        <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="153" />
+        <source>Sub-cell occluding points</source>
+        <translation>Verdeckungspunkte zwischen Zellen</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="154" />
+        <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
+        <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="157" />
+        <source>Factual silhouettes</source>
+        <translation>Faktische Silhouetten</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="158" />
+        <source>Occluding contours as line strokes.</source>
+        <translation>Verdeckungskonturen als Linienstriche.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="159" />
+        <source>Formulated silhouettes</source>
+        <translation>Formulierte Silhouetten</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="160" />
+        <source>Formulated silhouettes as line strokes.</source>
+        <translation>Formulierte Silhouetten als Linienstriche.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="220" />
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="224" />
+        <source>Not enough memory for this raster.</source>
+        <translation>Nicht genug Speicher für dieses Raster.</translation>
+    </message>
+</context>
+<context>
+    <name>TerrainSketchProvider</name>
+    <message>
+        <location filename="../plugin/provider.cpp" line="14" />
+        <source>Terrain sketch</source>
+        <translation>Geländeskizze</translation>
+    </message>
+    <message>
+        <location filename="../plugin/provider.cpp" line="17" />
+        <source>Terrain sketch: factual and formulated silhouettes</source>
+        <translation>Geländeskizze: faktische und formulierte Silhouetten</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,172 @@
+"""Fills i18n/terrain_sketch_de.ts with the German translation (run after `update-translations`).
+
+    /usr/bin/python3 i18n/translate_de.py
+A source text without a German entry here stays unfinished and the script says which.
+"""
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+GERMAN = {
+    "Could not apply style %1: %2": "Stil %1 konnte nicht angewendet werden: %2",
+    "The input raster layer is not valid.": "Der Eingaberasterlayer ist ungültig.",
+    "Band %1 does not exist: the raster has %2 band(s).":
+        "Kanal %1 existiert nicht: das Raster hat %2 Kanal/Kanäle.",
+    "The raster has no cells.": "Das Raster hat keine Zellen.",
+    "The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres like its "
+    "heights. Reproject it to a metric CRS first, for example with Raster > Projections > Warp "
+    "(Reproject) to the UTM zone of the area.":
+        "Das Raster liegt in einem geographischen KBS (%1): seine Zellgrößen sind Grad, nicht "
+        "Meter wie seine Höhen. Projizieren Sie es zuerst in ein metrisches KBS, zum Beispiel mit "
+        "Raster > Projektionen > Transformieren (Reprojizieren) in die UTM-Zone des Gebiets.",
+    "The raster has no CRS: cell sizes are taken as metres and the outputs have no CRS.":
+        "Das Raster hat kein KBS: Zellgrößen werden als Meter angenommen, die Ausgaben haben kein "
+        "KBS.",
+    "Mercator projection: map units are not ground metres here; cell sizes are scaled by "
+    "cos(latitude of the centre) = %1.":
+        "Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen "
+        "werden mit cos(Breite der Mitte) = %1 skaliert.",
+    "The raster has %1 bands; band %2 is used.": "Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.",
+    "Could not open the raster's data provider.":
+        "Der Datenanbieter des Rasters konnte nicht geöffnet werden.",
+    "Not enough memory for a %1 x %2 raster.": "Nicht genug Speicher für ein Raster von %1 x %2.",
+    "Cancelled.": "Abgebrochen.",
+    "Could not read rows %1 to %2 of the raster.":
+        "Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.",
+    "Silhouettes (factual and formulated)": "Silhouetten (faktisch und formuliert)",
+    "silhouette,occluding contour,sketch,oblique,panorama,block diagram,plan oblique,terrain,dem,"
+    "hidden":
+        "Silhouette,Verdeckungskontur,Skizze,Schrägansicht,Panorama,Blockbild,Plan oblique,"
+        "Gelände,DGM,verdeckt",
+    "Draws the silhouette lines of a DEM seen obliquely from above as vector strokes.":
+        "Zeichnet die Silhouettenlinien eines schräg von oben gesehenen DGM als Vektorstriche.",
+    "Finds the lines a cartographer sketches first when drawing terrain seen obliquely from "
+    "above.\n\nFactual Silhouettes are occluding contours: cells beyond which the terrain hides "
+    "what lies behind it, in a parallel view with vertical exaggeration and a base slope added "
+    "along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view "
+    "brings into sight (the candidate set), kept where the slope filter finds them significant "
+    "(outside the weak/weak corner of column slope against row slope), thinned to the cell "
+    "furthest from the viewer and chained across profiles.\n\nThe DEM's heights must be in "
+    "metres and its CRS projected in metres; a geographic DEM is refused. The view is one of the "
+    "four cardinal directions.\n\nTwo line outputs: Factual silhouettes (styled bold black, width "
+    "by hidden depth) and Formulated silhouettes (thinner grey, width by slope). Separate layers "
+    "so each can be styled, filtered or switched off on its own, and routed separately in models. "
+    "Each stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth and "
+    "max_depth (m, factual only), mean_dist (distance from the front of the view) and mean_z.\n\n"
+    "Reference: Beyond Factual to Formulated Silhouettes, PhD thesis, Department of Computer "
+    "Science, University of Hull (chapters 4 and 5), extending the occluding contours of "
+    "Visvalingam and Whelan (1998).":
+        "Findet die Linien, die ein Kartograph zuerst skizziert, wenn er Gelände schräg von oben "
+        "zeichnet.\n\nFaktische Silhouetten sind Verdeckungskonturen: Zellen, hinter denen das "
+        "Gelände verbirgt, was dahinter liegt, in einer Parallelansicht mit Überhöhung und einer "
+        "entlang der Blickrichtung addierten Grundneigung. Formulierte Silhouetten sind "
+        "abgewandte Hänge, die der erhöhte Blick sichtbar macht (die Kandidatenmenge); sie bleiben "
+        "erhalten, wo der Neigungsfilter sie für bedeutsam hält (außerhalb der schwach/schwach-"
+        "Ecke von Spalten- gegen Zeilenneigung), werden auf die vom Betrachter entfernteste Zelle "
+        "ausgedünnt und über die Profile verkettet.\n\nDie Höhen des DGM müssen in Metern "
+        "vorliegen und sein KBS in Metern projiziert sein; ein geographisches DGM wird "
+        "abgelehnt. Die Blickrichtung ist eine der vier Haupthimmelsrichtungen.\n\nZwei "
+        "Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter Tiefe) und "
+        "Formulierte Silhouetten (dünner grau, Breite nach Neigung). Getrennte Layer, damit jeder "
+        "für sich gestaltet, gefiltert oder ausgeblendet und in Modellen getrennt weitergeleitet "
+        "werden kann. Jeder Strich trägt: class, cells, length, mean_slope und mean_row_slope (%), "
+        "mean_depth und max_depth (m, nur faktisch), mean_dist (Abstand vom vorderen Bildrand) "
+        "und mean_z.\n\nQuelle: Beyond Factual to Formulated Silhouettes, Dissertation, "
+        "Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der "
+        "Verdeckungskonturen von Visvalingam und Whelan (1998).",
+    "Elevation (DEM)": "Höhenmodell (DGM)",
+    "Digital elevation model with heights in metres, in a projected CRS in metres.":
+        "Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.",
+    "Band": "Kanal",
+    "The band holding the heights.": "Der Kanal mit den Höhen.",
+    "View azimuth (degrees)": "Blickrichtung (Grad)",
+    "Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from "
+    "the west, the default), 180 (from the north) or 270 (from the east).":
+        "Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), "
+        "90 (von Westen, Vorgabe), 180 (von Norden) oder 270 (von Osten).",
+    "Vertical exaggeration": "Überhöhung",
+    "Factor applied to heights before occlusion is computed.":
+        "Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.",
+    "Base slope (%)": "Grundneigung (%)",
+    "Slope added along the line of sight, in percent: the view elevation angle is atan(base "
+    "slope) above the exaggerated terrain (40 % = 21.8 degrees).":
+        "Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem "
+        "überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).",
+    "Row slope cut-off (%)": "Grenzwert Zeilenneigung (%)",
+    "Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is "
+    "Macgregor's critical slope.":
+        "Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt "
+        "werden; 20 % ist Macgregors kritische Neigung.",
+    "Column slope cut-off (%)": "Grenzwert Spaltenneigung (%)",
+    "Slope filter: column (along the view) slope below which weak candidates are removed.":
+        "Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt "
+        "werden.",
+    "Control point column slope (%)": "Spaltenneigung des Kontrollpunkts (%)",
+    "Slope filter: column slope of the control point joining the two cut-offs, on the "
+    "perpendicular through the origin. Smaller values keep more diagonal features; it must be "
+    "below the column cut-off.":
+        "Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, "
+        "auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; "
+        "der Wert muss unter dem Grenzwert der Spaltenneigung liegen.",
+    "Allow for diagonals": "Diagonalen berücksichtigen",
+    "If checked the removed region is the polygon through the control point; if not, the whole "
+    "rectangle below both cut-offs is removed.":
+        "Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze "
+        "Rechteck unter beiden Grenzwerten.",
+    "Chaining window (cells)": "Verkettungsfenster (Zellen)",
+    "Formulated strokes link cells on neighbouring profiles at most this many cells apart.":
+        "Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen "
+        "auseinander liegen.",
+    "Minimum stroke cells": "Mindestzahl Zellen je Strich",
+    "Strokes with fewer cells are dropped (generalisation).":
+        "Striche mit weniger Zellen werden verworfen (Generalisierung).",
+    "Geometry": "Geometrie",
+    "Map (cell centres)": "Karte (Zellmittelpunkte)",
+    "Plan oblique (the sketch)": "Plan oblique (die Skizze)",
+    "Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the "
+    "view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw "
+    "the oblique sketch in the same CRS.":
+        "Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird "
+        "entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) "
+        "verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.",
+    "Formulated stroke placement": "Lage der formulierten Striche",
+    "Far end of each zone": "Hinteres Ende jeder Zone",
+    "Near and far ends": "Vorderes und hinteres Ende",
+    "Which cells of a filtered zone become formulated silhouette points.":
+        "Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.",
+    "Sub-cell occluding points": "Verdeckungspunkte zwischen Zellen",
+    "Place factual points where the transformed profile peaks between cells instead of at cell "
+    "centres (removes the thesis's halo).":
+        "Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen "
+        "Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).",
+    "Factual silhouettes": "Faktische Silhouetten",
+    "Occluding contours as line strokes.": "Verdeckungskonturen als Linienstriche.",
+    "Formulated silhouettes": "Formulierte Silhouetten",
+    "Formulated silhouettes as line strokes.": "Formulierte Silhouetten als Linienstriche.",
+    "Not enough memory for this raster.": "Nicht genug Speicher für dieses Raster.",
+    "Terrain sketch": "Geländeskizze",
+    "Terrain sketch: factual and formulated silhouettes":
+        "Geländeskizze: faktische und formulierte Silhouetten",
+}
+
+
+def main():
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "terrain_sketch_de.ts")
+    tree = ET.parse(path)
+    missing = []
+    for message in tree.getroot().iter("message"):
+        source = message.find("source").text
+        translation = message.find("translation")
+        if source in GERMAN:
+            translation.text = GERMAN[source]
+            translation.attrib.pop("type", None)
+        else:
+            missing.append(source)
+    tree.write(path, encoding="utf-8", xml_declaration=True)
+    for source in missing:
+        print("no German for:", source[:80], file=sys.stderr)
+    return 1 if missing else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
