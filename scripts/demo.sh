@@ -1,13 +1,25 @@
 #!/usr/bin/env bash
-# Builds Terrain Sketch and draws the silhouettes of the bundled sample DEM (Jacksboro fault,
-# Tennessee): out/jacksboro_silhouettes.gpkg, out/jacksboro_stats.json, out/jacksboro_sketch.png.
+# Builds Terrain Sketch (library, command-line tool, QGIS plugin), installs the plugin into your
+# default QGIS profile, and draws the silhouettes of the bundled sample DEM (Jacksboro fault,
+# Tennessee) twice:
+#   through qgis_process:  out/jacksboro_factual.gpkg, out/jacksboro_formulated.gpkg
+#   with the CLI:          out/jacksboro_silhouettes.gpkg, out/jacksboro_stats.json,
+#                          out/jacksboro_sketch.png (a picture of the oblique sketch)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh core
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTSK_BUILD_TESTS=OFF > /dev/null
-cmake --build build -j "$(nproc)" --target terrain-sketch
+bash scripts/install-deps.sh qgis
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTSK_BUILD_PLUGIN=ON -DTSK_BUILD_TESTS=OFF \
+  -DTSK_BUILD_BENCH=OFF > /dev/null
+cmake --build build -j "$(nproc)"
+cmake --build build --target install-plugin
 mkdir -p out
-build/cli/terrain-sketch silhouettes resources/sample/jacksboro_utm16n.tif \
-  out/jacksboro_silhouettes.gpkg --geometry oblique \
+dem=resources/sample/jacksboro_utm16n.tif
+
+QT_QPA_PLATFORM=${QT_QPA_PLATFORM:-offscreen} /usr/bin/qgis_process.bin run \
+  terrainsketch:silhouettes --INPUT="$dem" --BAND=1 --GEOMETRY=1 \
+  --FACTUAL=out/jacksboro_factual.gpkg --FORMULATED=out/jacksboro_formulated.gpkg
+
+build/cli/terrain-sketch silhouettes "$dem" out/jacksboro_silhouettes.gpkg --geometry oblique \
   --stats-json out/jacksboro_stats.json --preview out/jacksboro_sketch.png
-echo "wrote out/jacksboro_silhouettes.gpkg, out/jacksboro_stats.json and out/jacksboro_sketch.png"
+echo "wrote out/jacksboro_factual.gpkg, out/jacksboro_formulated.gpkg (qgis_process),"
+echo "      out/jacksboro_silhouettes.gpkg, out/jacksboro_stats.json, out/jacksboro_sketch.png (CLI)"
