@@ -243,6 +243,7 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
           writeFeatureError(sink, parameters, isFactual ? kFactual : kFormulated));
     }
     if (feedback && ++written % 1000 == 0) {
+      if (feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
       feedback->setProgress(kCoreEnd + (100.0 - kCoreEnd) * written / total);
     }
   }

@@ -55,6 +55,8 @@ def save_screenshot():
 def run():
     try:
         import processing
+        import qgis.utils
+        report["plugin_active"] = "terrain_sketch" in qgis.utils.active_plugins
         report["provider"] = QgsApplication.processingRegistry().providerById(
             "terrainsketch") is not None
         results = processing.runAndLoadResults("terrainsketch:silhouettes", {

@@ -29,6 +29,7 @@ def check(cond, what):
     if not cond: errors.append(what)
 check(r.get("ok"), "run finished: %s" % r.get("error"))
 check(r.get("provider"), "provider registered")
+check(r.get("plugin_active"), "plugin active in the plugin manager")
 layers = {l["name"]: l for l in r.get("layers", [])}
 check(len(layers) == 2, "two layers loaded, got %s" % list(layers))
 for name, colour, field in (("Factual silhouettes", "#111111", "mean_depth"),
