@@ -24,7 +24,8 @@ INPUT is any raster GDAL reads (heights in metres, a projected CRS in metres);
 OUTPUT any OGR vector format, chosen by extension (.gpkg, .shp, .geojson, .fgb, ...).
 
 view:
-  --azimuth DEG        bearing the viewer faces, 0, 90, 180 or 270 (default 90: from the west)
+  --azimuth DEG        bearing the viewer faces, clockwise from north (default 90: from the
+                       west); 0, 90, 180, 270 are exact, others resample the DEM
   --ve X               vertical exaggeration, > 0 (default 2.5)
   --base-slope PCT     base slope added along the line of sight, percent (default 40)
 slope filter:

@@ -46,6 +46,32 @@ double mercator_ground_scale(const OGRSpatialReference& srs, const GeoTransform&
   return std::cos(y * M_PI / 180.0);
 }
 
+// Reads the band in blocks of rows, nodata to NaN, into dem.oriented.
+void read_band(const std::string& path, GDALRasterBand& band, Dem& dem,
+               const GdalErrorCapture& capture) {
+  int has_nodata = 0;
+  const double nodata = band.GetNoDataValue(&has_nodata);
+  const float nodata_f = static_cast<float>(nodata);
+  OrientedGridBuilder builder(dem.frame);
+  const std::size_t block_rows = std::max<std::size_t>(1, (1u << 22) / dem.cols);
+  std::vector<float> block(std::min(block_rows, dem.rows) * dem.cols);
+  for (std::size_t r = 0; r < dem.rows; r += block_rows) {
+    const std::size_t count = std::min(block_rows, dem.rows - r);
+    if (band.RasterIO(GF_Read, 0, static_cast<int>(r), static_cast<int>(dem.cols),
+                      static_cast<int>(count), block.data(), static_cast<int>(dem.cols),
+                      static_cast<int>(count), GDT_Float32, 0, 0) != CE_None) {
+      throw Error("reading '" + path + "' failed: " + capture.message());
+    }
+    if (has_nodata) {
+      for (std::size_t k = 0; k < count * dem.cols; ++k) {
+        if (block[k] == nodata_f) block[k] = kNoData;
+      }
+    }
+    builder.add_rows(r, count, block.data());
+  }
+  dem.oriented = builder.finish();
+}
+
 }  // namespace
 
 Dem read_dem(const std::string& path, const DemOptions& options) {
@@ -112,31 +138,10 @@ Dem read_dem(const std::string& path, const DemOptions& options) {
   const double dy = -dem.geotransform.a[5] * dem.ground_scale;
   dem.frame = make_frame(dem.rows, dem.cols, dx, dy, options.azimuth_deg);
   try {
-    dem.oriented = HeightGrid(dem.frame.profiles, dem.frame.length);
+    read_band(path, *dataset->GetRasterBand(options.band), dem, capture);
   } catch (const std::bad_alloc&) {
     throw Error("not enough memory for a " + std::to_string(dem.rows) + " x " +
                 std::to_string(dem.cols) + " DEM");
-  }
-
-  GDALRasterBand* band = dataset->GetRasterBand(options.band);
-  int has_nodata = 0;
-  const double nodata = band->GetNoDataValue(&has_nodata);
-  const float nodata_f = static_cast<float>(nodata);
-  const std::size_t block_rows = std::max<std::size_t>(1, (1u << 22) / dem.cols);
-  std::vector<float> block(std::min(block_rows, dem.rows) * dem.cols);
-  for (std::size_t r = 0; r < dem.rows; r += block_rows) {
-    const std::size_t count = std::min(block_rows, dem.rows - r);
-    if (band->RasterIO(GF_Read, 0, static_cast<int>(r), static_cast<int>(dem.cols),
-                       static_cast<int>(count), block.data(), static_cast<int>(dem.cols),
-                       static_cast<int>(count), GDT_Float32, 0, 0) != CE_None) {
-      throw Error("reading '" + path + "' failed: " + capture.message());
-    }
-    if (has_nodata) {
-      for (std::size_t k = 0; k < count * dem.cols; ++k) {
-        if (block[k] == nodata_f) block[k] = kNoData;
-      }
-    }
-    scatter_dem_rows(dem.frame, r, count, block.data(), dem.cols, dem.oriented);
   }
   return dem;
 }

@@ -1,29 +1,49 @@
 #include "orient.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
-namespace tsk {
+#include "parallel.h"
 
-OrientedFrame make_frame(std::size_t rows, std::size_t cols, double dx, double dy,
-                         double azimuth_deg) {
+namespace tsk {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+void check_dem(std::size_t rows, std::size_t cols, double dx, double dy) {
   if (rows == 0 || cols == 0) throw Error("the DEM has no cells");
   checked_cell_count(rows, cols);
   if (!std::isfinite(dx) || !std::isfinite(dy) || dx <= 0.0 || dy <= 0.0) {
     throw Error("cell sizes must be finite and positive, got " + std::to_string(dx) + " x " +
                 std::to_string(dy));
   }
-  double normalised = std::fmod(azimuth_deg, 360.0);
-  if (normalised < 0) normalised += 360.0;
-  const int azimuth = static_cast<int>(std::lround(normalised)) % 360;
-  if (std::fabs(normalised - std::round(normalised)) > 1e-9 || azimuth % 90 != 0) {
-    throw Error("azimuth " + std::to_string(azimuth_deg) +
-                " is not a cardinal view; use 0, 90, 180 or 270");
-  }
+}
+
+double normalise_azimuth(double azimuth_deg) {
+  if (!std::isfinite(azimuth_deg)) throw Error("the azimuth must be a finite number of degrees");
+  double a = std::fmod(azimuth_deg, 360.0);
+  if (a < 0) a += 360.0;
+  return a >= 360.0 ? 0.0 : a;
+}
+
+// Sets the affine pixel map from the integer one.
+void set_affine_from_integer_map(OrientedFrame& f) {
+  f.px_col0 = static_cast<double>(f.col0) + 0.5;
+  f.px_row0 = static_cast<double>(f.row0) + 0.5;
+  f.px_col_per_p = static_cast<double>(f.col_per_p);
+  f.px_col_per_i = static_cast<double>(f.col_per_i);
+  f.px_row_per_p = static_cast<double>(f.row_per_p);
+  f.px_row_per_i = static_cast<double>(f.row_per_i);
+}
+
+OrientedFrame cardinal_frame(std::size_t rows, std::size_t cols, double dx, double dy,
+                             int azimuth) {
   const auto last_row = static_cast<std::int64_t>(rows) - 1;
   const auto last_col = static_cast<std::int64_t>(cols) - 1;
   OrientedFrame f;
   f.azimuth_deg = azimuth;
+  f.dem_rows = rows, f.dem_cols = cols;
   switch (azimuth) {
     case 90:  // viewed from the west: profile = row (north first), cell = column (west first)
       f.profiles = rows, f.length = cols, f.d = dx, f.w = dy;
@@ -42,14 +62,71 @@ OrientedFrame make_frame(std::size_t rows, std::size_t cols, double dx, double d
       f.row_per_i = 1, f.col0 = last_col, f.col_per_p = -1;
       break;
   }
+  set_affine_from_integer_map(f);
   return f;
+}
+
+}  // namespace
+
+OrientedFrame make_resampled_frame(std::size_t rows, std::size_t cols, double dx, double dy,
+                                   double azimuth_deg) {
+  check_dem(rows, cols, dx, dy);
+  const double azimuth = normalise_azimuth(azimuth_deg);
+  const double theta = azimuth * kPi / 180.0;
+  // Ground unit vectors (east, north): forward along the line of sight, right across it.
+  const double f_e = std::sin(theta), f_n = std::cos(theta);
+  const double r_e = std::cos(theta), r_n = -std::sin(theta);
+  // The DEM's corners relative to its north-west corner, projected on both axes.
+  const double width = static_cast<double>(cols) * dx, height = static_cast<double>(rows) * dy;
+  const double corners[4][2] = {{0, 0}, {width, 0}, {0, -height}, {width, -height}};
+  double f_min = 1e300, f_max = -1e300, r_min = 1e300, r_max = -1e300;
+  for (const auto& c : corners) {
+    const double along = c[0] * f_e + c[1] * f_n;
+    const double across = c[0] * r_e + c[1] * r_n;
+    f_min = std::min(f_min, along), f_max = std::max(f_max, along);
+    r_min = std::min(r_min, across), r_max = std::max(r_max, across);
+  }
+  const double spacing = std::min(dx, dy);
+  const double profiles = std::max(1.0, std::ceil((r_max - r_min) / spacing - 1e-9));
+  const double length = std::max(1.0, std::ceil((f_max - f_min) / spacing - 1e-9));
+  if (profiles > static_cast<double>(kMaxGridSide) || length > static_cast<double>(kMaxGridSide)) {
+    throw Error("the DEM resampled for this azimuth would be too large");
+  }
+  OrientedFrame f;
+  f.azimuth_deg = azimuth;
+  f.resampled = true;
+  f.dem_rows = rows, f.dem_cols = cols;
+  f.profiles = static_cast<std::size_t>(profiles);
+  f.length = static_cast<std::size_t>(length);
+  checked_cell_count(f.profiles, f.length);
+  f.d = f.w = spacing;
+  // Centre of oriented cell (p, i): (r_min + (p + 0.5) s) right + (f_min + (i + 0.5) s) forward.
+  const double across0 = r_min + 0.5 * spacing, along0 = f_min + 0.5 * spacing;
+  f.px_col0 = (across0 * r_e + along0 * f_e) / dx;
+  f.px_row0 = -(across0 * r_n + along0 * f_n) / dy;
+  f.px_col_per_p = spacing * r_e / dx;
+  f.px_row_per_p = -spacing * r_n / dy;
+  f.px_col_per_i = spacing * f_e / dx;
+  f.px_row_per_i = -spacing * f_n / dy;
+  return f;
+}
+
+OrientedFrame make_frame(std::size_t rows, std::size_t cols, double dx, double dy,
+                         double azimuth_deg) {
+  check_dem(rows, cols, dx, dy);
+  const double azimuth = normalise_azimuth(azimuth_deg);
+  const double quarter = std::round(azimuth / 90.0);
+  if (std::fabs(azimuth - 90.0 * quarter) > 1e-9) {
+    return make_resampled_frame(rows, cols, dx, dy, azimuth);
+  }
+  return cardinal_frame(rows, cols, dx, dy, static_cast<int>(quarter) % 4 * 90);
 }
 
 void scatter_dem_rows(const OrientedFrame& frame, std::size_t first_row, std::size_t count,
                       const float* rows, std::size_t cols, HeightGrid& oriented) {
+  if (frame.resampled) throw Error("a resampled view needs the whole DEM (use orient)");
   const bool profiles_are_rows = frame.row_per_p != 0;
-  const std::size_t dem_rows = profiles_are_rows ? frame.profiles : frame.length;
-  if (cols != (profiles_are_rows ? frame.length : frame.profiles) || first_row + count > dem_rows ||
+  if (cols != frame.dem_cols || first_row + count > frame.dem_rows ||
       oriented.rows() != frame.profiles || oriented.cols() != frame.length) {
     throw Error("DEM block does not match the oriented frame");
   }
@@ -62,9 +139,9 @@ void scatter_dem_rows(const OrientedFrame& frame, std::size_t first_row, std::si
           static_cast<std::size_t>((static_cast<std::int64_t>(r) - frame.row0) * frame.row_per_p);
       float* dst = oriented.row(p);
       if (frame.col_per_i > 0) {
-        for (std::size_t c = 0; c < cols; ++c) dst[c] = src[c];
+        std::copy(src, src + cols, dst);
       } else {
-        for (std::size_t c = 0; c < cols; ++c) dst[cols - 1 - c] = src[c];
+        std::reverse_copy(src, src + cols, dst);
       }
     } else {
       // The row is cell i of every profile.
@@ -79,10 +156,75 @@ void scatter_dem_rows(const OrientedFrame& frame, std::size_t first_row, std::si
   }
 }
 
-HeightGrid orient(const HeightGrid& dem, const OrientedFrame& frame) {
+float sample_bilinear(const HeightGrid& dem, PixelPoint px) {
+  constexpr double kEdge = 1e-9;
+  const double u = px.col - 0.5, v = px.row - 0.5;
+  const auto last_col = static_cast<double>(dem.cols() - 1);
+  const auto last_row = static_cast<double>(dem.rows() - 1);
+  if (!(u >= -kEdge && u <= last_col + kEdge && v >= -kEdge && v <= last_row + kEdge)) {
+    return kNoData;
+  }
+  // The lower-left source cell, kept inside so that the far edge is reachable with weight 0.
+  const std::size_t c0 =
+      dem.cols() > 1
+          ? std::min(static_cast<std::size_t>(std::max(0.0, std::floor(u))), dem.cols() - 2)
+          : 0;
+  const std::size_t r0 =
+      dem.rows() > 1
+          ? std::min(static_cast<std::size_t>(std::max(0.0, std::floor(v))), dem.rows() - 2)
+          : 0;
+  const double fu = dem.cols() > 1 ? std::clamp(u - static_cast<double>(c0), 0.0, 1.0) : 0.0;
+  const double fv = dem.rows() > 1 ? std::clamp(v - static_cast<double>(r0), 0.0, 1.0) : 0.0;
+  const std::size_t c1 = dem.cols() > 1 ? c0 + 1 : c0, r1 = dem.rows() > 1 ? r0 + 1 : r0;
+  const double weights[4] = {(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
+  const float heights[4] = {dem(r0, c0), dem(r0, c1), dem(r1, c0), dem(r1, c1)};
+  double z = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    if (weights[k] < 1e-9) continue;  // a position on a cell centre line: the cell does not count
+    if (!is_data(heights[k])) return kNoData;
+    z += weights[k] * static_cast<double>(heights[k]);
+  }
+  return static_cast<float>(z);
+}
+
+HeightGrid orient(const HeightGrid& dem, const OrientedFrame& frame, unsigned threads) {
+  if (dem.rows() != frame.dem_rows || dem.cols() != frame.dem_cols) {
+    throw Error("the DEM does not match the oriented frame");
+  }
   HeightGrid oriented(frame.profiles, frame.length);
-  scatter_dem_rows(frame, 0, dem.rows(), dem.data(), dem.cols(), oriented);
+  if (!frame.resampled) {
+    scatter_dem_rows(frame, 0, dem.rows(), dem.data(), dem.cols(), oriented);
+    return oriented;
+  }
+  parallel_for(frame.profiles, threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t p = begin; p < end; ++p) {
+      float* out = oriented.row(p);
+      for (std::size_t i = 0; i < frame.length; ++i) {
+        out[i] =
+            sample_bilinear(dem, frame.to_pixel(static_cast<double>(p), static_cast<double>(i)));
+      }
+    }
+  });
   return oriented;
+}
+
+OrientedGridBuilder::OrientedGridBuilder(const OrientedFrame& frame)
+    : frame_(frame),
+      grid_(frame.resampled ? HeightGrid(frame.dem_rows, frame.dem_cols)
+                            : HeightGrid(frame.profiles, frame.length)) {}
+
+void OrientedGridBuilder::add_rows(std::size_t first_row, std::size_t count, const float* rows) {
+  if (!frame_.resampled) {
+    scatter_dem_rows(frame_, first_row, count, rows, frame_.dem_cols, grid_);
+    return;
+  }
+  if (first_row + count > frame_.dem_rows) throw Error("DEM block does not match the frame");
+  std::copy(rows, rows + count * frame_.dem_cols, grid_.row(first_row));
+}
+
+HeightGrid OrientedGridBuilder::finish(unsigned threads) {
+  if (!frame_.resampled) return std::move(grid_);
+  return orient(grid_, frame_, threads);
 }
 
 }  // namespace tsk

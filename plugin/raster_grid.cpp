@@ -84,14 +84,19 @@ void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double
   try {
     mFrame = make_frame(static_cast<std::size_t>(mRows), static_cast<std::size_t>(mCols),
                         dx * mGroundScale, dy * mGroundScale, azimuthDeg);
-    mOriented = HeightGrid(mFrame.profiles, mFrame.length);
+    readBlocks(feedback, progressFrom, progressTo, dy);
   } catch (const Error& e) {
     throw QgsProcessingException(QString::fromStdString(e.what()));
   } catch (const std::bad_alloc&) {
     throw QgsProcessingException(
         tr("Not enough memory for a %1 x %2 raster.").arg(mCols).arg(mRows));
   }
+}
+
+void RasterGrid::readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo,
+                            double dy) {
   const auto cols = static_cast<std::size_t>(mCols);
+  OrientedGridBuilder builder(mFrame);
   const int blockRows = std::max(1, static_cast<int>((1 << 22) / cols));
   std::vector<float> rows(static_cast<std::size_t>(std::min(blockRows, mRows)) * cols);
   for (int top = 0; top < mRows; top += blockRows) {
@@ -112,13 +117,13 @@ void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double
         out[c] = noData ? kNoData : static_cast<float>(v);
       }
     }
-    scatter_dem_rows(mFrame, static_cast<std::size_t>(top), static_cast<std::size_t>(count),
-                     rows.data(), cols, mOriented);
+    builder.add_rows(static_cast<std::size_t>(top), static_cast<std::size_t>(count), rows.data());
     if (feedback) {
       feedback->setProgress(progressFrom + (progressTo - progressFrom) * (top + count) /
                                                static_cast<double>(mRows));
     }
   }
+  mOriented = builder.finish();
 }
 
 }  // namespace tsk::plugin

@@ -30,7 +30,8 @@ class RasterGrid {
   RasterGrid(const RasterGrid&) = delete;
   RasterGrid& operator=(const RasterGrid&) = delete;
 
-  // Worker thread. Reads the band in blocks of rows into the grid oriented for `azimuthDeg`,
+  // Worker thread. Reads the band in blocks of rows into the grid oriented for `azimuthDeg`
+  // (resampled along the line of sight for a non-cardinal azimuth),
   // reporting progress from `progressFrom` to `progressTo` percent; throws on cancel.
   void read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
             double progressTo);
@@ -42,6 +43,10 @@ class RasterGrid {
   const QStringList& notes() const { return mNotes; }
 
  private:
+  // Reads the band in blocks of rows (dy: row height in map units) into mOriented.
+  void readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo,
+                  double dy);
+
   std::unique_ptr<QgsRasterDataProvider> mProvider;
   int mBand = 1;
   int mCols = 0;

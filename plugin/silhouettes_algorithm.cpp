@@ -74,7 +74,7 @@ QString SilhouettesAlgorithm::shortHelpString() const {
       "finds them significant (outside the weak/weak corner of column slope against row "
       "slope), thinned to the cell furthest from the viewer and chained across profiles.\n\n"
       "The DEM's heights must be in metres and its CRS projected in metres; a geographic "
-      "DEM is refused. The view is one of the four cardinal directions.\n\n"
+      "DEM is refused. Any view azimuth works; the four cardinal ones are exact.\n\n"
       "Two line outputs: Factual silhouettes (styled bold black, width by hidden depth) and "
       "Formulated silhouettes (thinner grey, width by slope). Separate layers so each can be "
       "styled, filtered or switched off on its own, and routed separately in models. Each "
@@ -116,7 +116,9 @@ void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
       tr("The band holding the heights."));
   add(number(kAzimuth, tr("View azimuth (degrees)"), defaults.view.azimuth_deg, 0, 360),
       tr("Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 "
-         "(from the west, the default), 180 (from the north) or 270 (from the east)."));
+         "(from the west, the default), 180 (from the north), 270 (from the east). These four "
+         "are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with "
+         "the line of sight, and the strokes are mapped back exactly into the DEM's CRS."));
   add(number(kVe, tr("Vertical exaggeration"), defaults.view.ve, 0.01, 1000),
       tr("Factor applied to heights before occlusion is computed."));
   add(number(kBaseSlope, tr("Base slope (%)"), defaults.view.base_slope_pct, 0.01, 10000),
@@ -190,7 +192,6 @@ bool SilhouettesAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
   mParams = readParameters(parameters, context);
   try {
     mParams.validate();
-    make_frame(1, 1, 1, 1, mParams.view.azimuth_deg);  // refuse a non-cardinal view early
   } catch (const Error& e) {
     throw QgsProcessingException(QString::fromStdString(e.what()));
   }

@@ -26,7 +26,7 @@ const Case kCases[] = {
     {"jacksboro_utm16n.tif", 90},  {"jacksboro_utm16n.tif", 0},  {"jacksboro_utm16n.tif", 180},
     {"jacksboro_utm16n.tif", 270}, {"volcano.tif", 90},          {"volcano.tif", 180},
     {"gorillas_utm32n.tif", 90},   {"gorillas_utm32n.tif", 270}, {"bei_5m_local.tif", 90},
-    {"topobathy_3857.tif", 90},
+    {"topobathy_3857.tif", 90},    {"jacksboro_utm16n.tif", 45}, {"gorillas_utm32n.tif", 135},
 };
 
 std::string key(const Case& c) {

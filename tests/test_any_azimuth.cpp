@@ -1,0 +1,232 @@
+// Any view azimuth (SPEC 1.1): resampling onto a grid aligned with the line of sight.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <vector>
+
+#include "test_support.h"
+
+using namespace tsk;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kCell = 10.0;
+
+// Ground coordinates (x east, y north) centred on an n x n DEM with 10 m cells.
+GeoTransform centred(std::size_t n) {
+  const double half = static_cast<double>(n) * kCell / 2;
+  GeoTransform gt;
+  gt.a = {-half, kCell, 0, half, 0, -kCell};
+  return gt;
+}
+
+// A DEM sampled from f(x, y) in ground metres, centred.
+template <typename F>
+HeightGrid sample(std::size_t n, F f) {
+  HeightGrid g(n, n);
+  const double half = static_cast<double>(n) * kCell / 2;
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t c = 0; c < n; ++c)
+      g(r, c) = static_cast<float>(f((c + 0.5) * kCell - half, half - (r + 0.5) * kCell));
+  return g;
+}
+
+// Hills inside a radius of 350 m, steep enough to occlude.
+double hills(double x, double y) {
+  const double centres[4][3] = {{-150, 80, 220}, {120, 150, 180}, {60, -160, 260}, {-90, -90, 150}};
+  double z = 0;
+  for (const auto& c : centres) {
+    const double d2 = (x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]);
+    z += c[2] * std::exp(-d2 / (2 * 70.0 * 70.0));
+  }
+  return z;
+}
+
+struct Run {
+  OrientedFrame frame;
+  SilhouetteResult result;
+};
+
+Run run(const HeightGrid& dem, double azimuth, const GeoTransform& gt) {
+  SilhouetteParams params;
+  params.view.azimuth_deg = azimuth;
+  Run r;
+  r.frame = make_frame(dem.rows(), dem.cols(), kCell, kCell, azimuth);
+  r.result = run_silhouettes(orient(dem, r.frame), r.frame, gt, params);
+  return r;
+}
+
+std::vector<StrokePoint> factual_points(const SilhouetteResult& r) {
+  std::vector<StrokePoint> points;
+  for (const Stroke& s : r.strokes)
+    if (s.cls == StrokeClass::factual)
+      points.insert(points.end(), s.points.begin(), s.points.end());
+  return points;
+}
+
+// Share of `a` within `tolerance` of some point of `b`.
+double share_near(const std::vector<StrokePoint>& a, const std::vector<StrokePoint>& b,
+                  double tolerance) {
+  std::size_t near = 0;
+  for (const StrokePoint& p : a) {
+    for (const StrokePoint& q : b) {
+      if (std::hypot(p.x - q.x, p.y - q.y) <= tolerance) {
+        ++near;
+        break;
+      }
+    }
+  }
+  return a.empty() ? 0.0 : static_cast<double>(near) / static_cast<double>(a.size());
+}
+
+}  // namespace
+
+TEST_CASE("cardinal views take the exact path, others are resampled", "[azimuth]") {
+  for (double az : {0.0, 90.0, 180.0, 270.0, 360.0, -90.0})
+    CHECK_FALSE(make_frame(4, 6, 10, 10, az).resampled);
+  for (double az : {30.0, 45.0, 90.5, 135.0, 359.0}) CHECK(make_frame(4, 6, 10, 10, az).resampled);
+  CHECK_THROWS_AS(make_frame(4, 6, 10, 10, std::nan("")), Error);
+}
+
+TEST_CASE("the resampled grid steps by the spacing along and across the line of sight",
+          "[azimuth]") {
+  const double dx = 10, dy = 25;
+  for (double az : {30.0, 45.0, 135.0, 200.0, 315.0}) {
+    CAPTURE(az);
+    const OrientedFrame f = make_frame(40, 30, dx, dy, az);
+    CHECK(f.d == 10);
+    CHECK(f.w == 10);
+    const double theta = az * kPi / 180;
+    const PixelPoint a = f.to_pixel(3, 4), along = f.to_pixel(3, 5), across = f.to_pixel(4, 4);
+    // Pixel steps back to ground (east, north): forward is (sin, cos), right is (cos, -sin).
+    CHECK((along.col - a.col) * dx == Approx(10 * std::sin(theta)).margin(1e-9));
+    CHECK(-(along.row - a.row) * dy == Approx(10 * std::cos(theta)).margin(1e-9));
+    CHECK((across.col - a.col) * dx == Approx(10 * std::cos(theta)).margin(1e-9));
+    CHECK(-(across.row - a.row) * dy == Approx(-10 * std::sin(theta)).margin(1e-9));
+    // The oriented grid covers the whole DEM: every DEM cell centre lies inside it.
+    for (double col : {0.5, 29.5})
+      for (double row : {0.5, 39.5}) {
+        const double e = (col - f.px_col0) * dx, n = -(row - f.px_row0) * dy;
+        const double along_m = e * std::sin(theta) + n * std::cos(theta);
+        const double across_m = e * std::cos(theta) - n * std::sin(theta);
+        CHECK(along_m / 10 >= -0.5 - 1e-9);
+        CHECK(along_m / 10 <= f.length - 0.5 + 1e-9);
+        CHECK(across_m / 10 >= -0.5 - 1e-9);
+        CHECK(across_m / 10 <= f.profiles - 0.5 + 1e-9);
+      }
+  }
+}
+
+TEST_CASE("resampling at a cardinal azimuth reproduces the exact flip", "[azimuth]") {
+  const HeightGrid dem = test::random_terrain(37, 52, 77, 0.02);
+  for (double az : {0.0, 90.0, 180.0, 270.0}) {
+    CAPTURE(az);
+    const OrientedFrame exact = make_frame(37, 52, 10, 10, az);
+    const OrientedFrame resampled = make_resampled_frame(37, 52, 10, 10, az);
+    REQUIRE(resampled.profiles == exact.profiles);
+    REQUIRE(resampled.length == exact.length);
+    const HeightGrid a = orient(dem, exact), b = orient(dem, resampled);
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      if (!is_data(a.data()[k])) {
+        REQUIRE_FALSE(is_data(b.data()[k]));
+      } else {
+        REQUIRE(b.data()[k] == Approx(a.data()[k]).margin(1e-3));
+      }
+    }
+    const SilhouetteResult ra = run_silhouettes(a, exact, GeoTransform{}, {});
+    const SilhouetteResult rb = run_silhouettes(b, resampled, GeoTransform{}, {});
+    CHECK(ra.stats.occluding == rb.stats.occluding);
+    CHECK(ra.strokes.size() == rb.strokes.size());
+  }
+}
+
+TEST_CASE("bilinear sampling: exact at centres, nodata outside or next to nodata", "[azimuth]") {
+  HeightGrid dem(2, 3);
+  dem(0, 0) = 0, dem(0, 1) = 10, dem(0, 2) = 20, dem(1, 0) = 100, dem(1, 1) = 110,
+         dem(1, 2) = kNoData;
+  CHECK(sample_bilinear(dem, {0.5, 0.5}) == 0.f);
+  CHECK(sample_bilinear(dem, {1.0, 0.5}) == Approx(5.0));
+  CHECK(sample_bilinear(dem, {1.0, 1.0}) == Approx(55.0));
+  CHECK(sample_bilinear(dem, {2.5, 0.5}) == Approx(20.0));  // far edge, zero weight on nodata
+  CHECK_FALSE(is_data(sample_bilinear(dem, {2.0, 1.0})));   // touches the nodata cell
+  CHECK_FALSE(is_data(sample_bilinear(dem, {0.2, 0.5})));   // outside the centres' hull
+  HeightGrid one(1, 1, 7.f);
+  CHECK(sample_bilinear(one, {0.5, 0.5}) == 7.f);
+}
+
+TEST_CASE("a DEM turned by 30 degrees with the view turned too gives the same strokes",
+          "[azimuth][invariance]") {
+  const std::size_t n = 90;
+  const double alpha = 30 * kPi / 180;
+  // B(q) = A(M q) with M turning counter-clockwise by alpha: a viewer of A facing azimuth az
+  // sees in B the same terrain facing az + 30, and B's point q is A's point M q.
+  const HeightGrid a = sample(n, hills);
+  const HeightGrid b = sample(n, [&](double x, double y) {
+    return hills(x * std::cos(alpha) - y * std::sin(alpha),
+                 x * std::sin(alpha) + y * std::cos(alpha));
+  });
+  const GeoTransform gt = centred(n);
+  for (double az : {90.0, 60.0, 200.0}) {
+    CAPTURE(az);
+    const auto pa = factual_points(run(a, az, gt).result);
+    auto pb = factual_points(run(b, az + 30, gt).result);
+    for (StrokePoint& q : pb) {
+      q = {q.x * std::cos(alpha) - q.y * std::sin(alpha),
+           q.x * std::sin(alpha) + q.y * std::cos(alpha)};
+    }
+    REQUIRE(pa.size() > 50);
+    CHECK(static_cast<double>(pb.size()) == Approx(static_cast<double>(pa.size())).epsilon(0.15));
+    // Within a cell and a half (resampling moves points by up to a cell): nearly all of them.
+    CHECK(share_near(pa, pb, 1.5 * kCell) > 0.9);
+    CHECK(share_near(pb, pa, 1.5 * kCell) > 0.9);
+  }
+}
+
+TEST_CASE("a steep cone occludes where theory says at 45 and 135 degrees", "[azimuth][analytic]") {
+  // Cone of slope s: on the line at lateral offset y from the apex, the transformed profile peaks
+  // where ve s x / r = B: forward x* = |y| k / sqrt(1 - k^2), k = B / (ve s).
+  const std::size_t n = 101;
+  const double s = 0.5, k = 0.4 / (2.5 * s);
+  const HeightGrid cone =
+      sample(n, [&](double x, double y) { return std::max(0.0, 400 - s * std::hypot(x, y)); });
+  const GeoTransform gt = centred(n);
+  for (double az : {45.0, 135.0, 90.0, 300.0}) {
+    CAPTURE(az);
+    const Run r = run(cone, az, gt);
+    const double theta = az * kPi / 180;
+    int checked = 0;
+    for (std::size_t p = 0; p < r.frame.profiles; ++p)
+      for (std::size_t i = 0; i < r.frame.length; ++i) {
+        if (!(r.result.flags(p, i) & cell::occluding)) continue;
+        double x, y;
+        gt.apply(r.frame.to_pixel(static_cast<double>(p), static_cast<double>(i)), x, y);
+        const double forward = x * std::sin(theta) + y * std::cos(theta);
+        const double lateral = x * std::cos(theta) - y * std::sin(theta);
+        if (std::fabs(lateral) > 200) continue;  // well inside the cone's foot (800 m radius)
+        CAPTURE(p, i, forward, lateral);
+        CHECK(std::fabs(forward - std::fabs(lateral) * k / std::sqrt(1 - k * k)) <= 1.5 * kCell);
+        ++checked;
+      }
+    CHECK(checked >= 30);
+  }
+}
+
+TEST_CASE("a Gaussian bump occludes only on its far side at 45 and 135 degrees",
+          "[azimuth][analytic]") {
+  const std::size_t n = 81;
+  const HeightGrid bump = sample(
+      n, [](double x, double y) { return 250 * std::exp(-(x * x + y * y) / (2 * 90.0 * 90.0)); });
+  const GeoTransform gt = centred(n);
+  for (double az : {45.0, 135.0}) {
+    CAPTURE(az);
+    const Run r = run(bump, az, gt);
+    REQUIRE(r.result.stats.factual_strokes >= 1);
+    const double theta = az * kPi / 180;
+    for (const Stroke& st : r.result.strokes) {
+      if (st.cls != StrokeClass::factual) continue;
+      for (const StrokePoint& pt : st.points) {
+        CHECK(pt.x * std::sin(theta) + pt.y * std::cos(theta) > 0);  // beyond the summit
+      }
+    }
+  }
+}
