@@ -56,12 +56,12 @@
         <translation>Nicht genug Speicher für ein Raster von %1 x %2.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="98" />
+        <location filename="../plugin/raster_grid.cpp" line="103" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="105" />
+        <location filename="../plugin/raster_grid.cpp" line="110" />
         <source>Could not read rows %1 to %2 of the raster.</source>
         <translation>Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
     </message>
@@ -82,27 +82,6 @@
         <location filename="../plugin/silhouettes_algorithm.cpp" line="63" />
         <source>Draws the silhouette lines of a DEM seen obliquely from above as vector strokes.</source>
         <translation>Zeichnet die Silhouettenlinien eines schräg von oben gesehenen DGM als Vektorstriche.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="67" />
-        <source>Finds the lines a cartographer sketches first when drawing terrain seen obliquely from above.
-
-Factual Silhouettes are occluding contours: cells beyond which the terrain hides what lies behind it, in a parallel view with vertical exaggeration and a base slope added along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view brings into sight (the candidate set), kept where the slope filter finds them significant (outside the weak/weak corner of column slope against row slope), thinned to the cell furthest from the viewer and chained across profiles.
-
-The DEM's heights must be in metres and its CRS projected in metres; a geographic DEM is refused. The view is one of the four cardinal directions.
-
-Two line outputs: Factual silhouettes (styled bold black, width by hidden depth) and Formulated silhouettes (thinner grey, width by slope). Separate layers so each can be styled, filtered or switched off on its own, and routed separately in models. Each stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth and max_depth (m, factual only), mean_dist (distance from the front of the view) and mean_z.
-
-Reference: Beyond Factual to Formulated Silhouettes, PhD thesis, Department of Computer Science, University of Hull (chapters 4 and 5), extending the occluding contours of Visvalingam and Whelan (1998).</source>
-        <translation>Findet die Linien, die ein Kartograph zuerst skizziert, wenn er Gelände schräg von oben zeichnet.
-
-Faktische Silhouetten sind Verdeckungskonturen: Zellen, hinter denen das Gelände verbirgt, was dahinter liegt, in einer Parallelansicht mit Überhöhung und einer entlang der Blickrichtung addierten Grundneigung. Formulierte Silhouetten sind abgewandte Hänge, die der erhöhte Blick sichtbar macht (die Kandidatenmenge); sie bleiben erhalten, wo der Neigungsfilter sie für bedeutsam hält (außerhalb der schwach/schwach-Ecke von Spalten- gegen Zeilenneigung), werden auf die vom Betrachter entfernteste Zelle ausgedünnt und über die Profile verkettet.
-
-Die Höhen des DGM müssen in Metern vorliegen und sein KBS in Metern projiziert sein; ein geographisches DGM wird abgelehnt. Die Blickrichtung ist eine der vier Haupthimmelsrichtungen.
-
-Zwei Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter Tiefe) und Formulierte Silhouetten (dünner grau, Breite nach Neigung). Getrennte Layer, damit jeder für sich gestaltet, gefiltert oder ausgeblendet und in Modellen getrennt weitergeleitet werden kann. Jeder Strich trägt: class, cells, length, mean_slope und mean_row_slope (%), mean_depth und max_depth (m, nur faktisch), mean_dist (Abstand vom vorderen Bildrand) und mean_z.
-
-Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
         <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
@@ -130,167 +109,189 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <translation>Blickrichtung (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="118" />
-        <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north) or 270 (from the east).</source>
-        <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden) oder 270 (von Osten).</translation>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="67" />
+        <source>Finds the lines a cartographer sketches first when drawing terrain seen obliquely from above.
+
+Factual Silhouettes are occluding contours: cells beyond which the terrain hides what lies behind it, in a parallel view with vertical exaggeration and a base slope added along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view brings into sight (the candidate set), kept where the slope filter finds them significant (outside the weak/weak corner of column slope against row slope), thinned to the cell furthest from the viewer and chained across profiles.
+
+The DEM's heights must be in metres and its CRS projected in metres; a geographic DEM is refused. Any view azimuth works; the four cardinal ones are exact.
+
+Two line outputs: Factual silhouettes (styled bold black, width by hidden depth) and Formulated silhouettes (thinner grey, width by slope). Separate layers so each can be styled, filtered or switched off on its own, and routed separately in models. Each stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth and max_depth (m, factual only), mean_dist (distance from the front of the view) and mean_z.
+
+Reference: Beyond Factual to Formulated Silhouettes, PhD thesis, Department of Computer Science, University of Hull (chapters 4 and 5), extending the occluding contours of Visvalingam and Whelan (1998).</source>
+        <translation>Findet die Linien, die ein Kartograph zuerst skizziert, wenn er Gelände schräg von oben zeichnet.
+
+Faktische Silhouetten sind Verdeckungskonturen: Zellen, hinter denen das Gelände verbirgt, was dahinter liegt, in einer Parallelansicht mit Überhöhung und einer entlang der Blickrichtung addierten Grundneigung. Formulierte Silhouetten sind abgewandte Hänge, die der erhöhte Blick sichtbar macht (die Kandidatenmenge); sie bleiben erhalten, wo der Neigungsfilter sie für bedeutsam hält (außerhalb der schwach/schwach-Ecke von Spalten- gegen Zeilenneigung), werden auf die vom Betrachter entfernteste Zelle ausgedünnt und über die Profile verkettet.
+
+Die Höhen des DGM müssen in Metern vorliegen und sein KBS in Metern projiziert sein; ein geographisches DGM wird abgelehnt. Jede Blickrichtung ist möglich; die vier Haupthimmelsrichtungen sind exakt.
+
+Zwei Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter Tiefe) und Formulierte Silhouetten (dünner grau, Breite nach Neigung). Getrennte Layer, damit jeder für sich gestaltet, gefiltert oder ausgeblendet und in Modellen getrennt weitergeleitet werden kann. Jeder Strich trägt: class, cells, length, mean_slope und mean_row_slope (%), mean_depth und max_depth (m, nur faktisch), mean_dist (Abstand vom vorderen Bildrand) und mean_z.
+
+Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="120" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="118" />
+        <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
+        <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
         <source>Vertical exaggeration</source>
         <translation>Überhöhung</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="121" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
         <source>Factor applied to heights before occlusion is computed.</source>
         <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="124" />
         <source>Base slope (%)</source>
         <translation>Grundneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="125" />
         <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
         <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="125" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="127" />
         <source>Row slope cut-off (%)</source>
         <translation>Grenzwert Zeilenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="126" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="128" />
         <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
         <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="128" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="130" />
         <source>Column slope cut-off (%)</source>
         <translation>Grenzwert Spaltenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="129" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="131" />
         <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
         <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="130" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="132" />
         <source>Control point column slope (%)</source>
         <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="132" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="134" />
         <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
         <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="135" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="137" />
         <source>Allow for diagonals</source>
         <translation>Diagonalen berücksichtigen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="137" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="139" />
         <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
         <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="139" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="141" />
         <source>Chaining window (cells)</source>
         <translation>Verkettungsfenster (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="140" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="142" />
         <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
         <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="141" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="143" />
         <source>Minimum stroke cells</source>
         <translation>Mindestzahl Zellen je Strich</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="142" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="144" />
         <source>Strokes with fewer cells are dropped (generalisation).</source>
         <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="143" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="145" />
         <source>Geometry</source>
         <translation>Geometrie</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="144" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="146" />
         <source>Map (cell centres)</source>
         <translation>Karte (Zellmittelpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="144" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="146" />
         <source>Plan oblique (the sketch)</source>
         <translation>Plan oblique (die Skizze)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="146" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="148" />
         <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
         <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="149" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="151" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="150" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="152" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="150" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="152" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="152" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="154" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="153" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="155" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="154" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="156" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="157" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="159" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="158" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="160" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="159" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="161" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="160" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="162" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="220" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="221" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="247" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="224" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="225" />
         <source>Not enough memory for this raster.</source>
         <translation>Nicht genug Speicher für dieses Raster.</translation>
     </message>

@@ -47,8 +47,9 @@ GERMAN = {
     "brings into sight (the candidate set), kept where the slope filter finds them significant "
     "(outside the weak/weak corner of column slope against row slope), thinned to the cell "
     "furthest from the viewer and chained across profiles.\n\nThe DEM's heights must be in "
-    "metres and its CRS projected in metres; a geographic DEM is refused. The view is one of the "
-    "four cardinal directions.\n\nTwo line outputs: Factual silhouettes (styled bold black, width "
+    "metres and its CRS projected in metres; a geographic DEM is refused. Any view azimuth "
+    "works; the four cardinal ones are exact.\n\nTwo line outputs: Factual silhouettes (styled "
+    "bold black, width "
     "by hidden depth) and Formulated silhouettes (thinner grey, width by slope). Separate layers "
     "so each can be styled, filtered or switched off on its own, and routed separately in models. "
     "Each stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth and "
@@ -65,7 +66,8 @@ GERMAN = {
         "Ecke von Spalten- gegen Zeilenneigung), werden auf die vom Betrachter entfernteste Zelle "
         "ausgedünnt und über die Profile verkettet.\n\nDie Höhen des DGM müssen in Metern "
         "vorliegen und sein KBS in Metern projiziert sein; ein geographisches DGM wird "
-        "abgelehnt. Die Blickrichtung ist eine der vier Haupthimmelsrichtungen.\n\nZwei "
+        "abgelehnt. Jede Blickrichtung ist möglich; die vier Haupthimmelsrichtungen sind "
+        "exakt.\n\nZwei "
         "Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter Tiefe) und "
         "Formulierte Silhouetten (dünner grau, Breite nach Neigung). Getrennte Layer, damit jeder "
         "für sich gestaltet, gefiltert oder ausgeblendet und in Modellen getrennt weitergeleitet "
@@ -81,9 +83,13 @@ GERMAN = {
     "The band holding the heights.": "Der Kanal mit den Höhen.",
     "View azimuth (degrees)": "Blickrichtung (Grad)",
     "Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from "
-    "the west, the default), 180 (from the north) or 270 (from the east).":
+    "the west, the default), 180 (from the north), 270 (from the east). These four are exact; "
+    "any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, "
+    "and the strokes are mapped back exactly into the DEM's CRS.":
         "Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), "
-        "90 (von Westen, Vorgabe), 180 (von Norden) oder 270 (von Osten).",
+        "90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; "
+        "jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes "
+        "Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.",
     "Vertical exaggeration": "Überhöhung",
     "Factor applied to heights before occlusion is computed.":
         "Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.",
