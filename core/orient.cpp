@@ -89,8 +89,18 @@ OrientedFrame make_resampled_frame(std::size_t rows, std::size_t cols, double dx
   const double spacing = std::min(dx, dy);
   const double profiles = std::max(1.0, std::ceil((r_max - r_min) / spacing - 1e-9));
   const double length = std::max(1.0, std::ceil((f_max - f_min) / spacing - 1e-9));
-  if (profiles > static_cast<double>(kMaxGridSide) || length > static_cast<double>(kMaxGridSide)) {
-    throw Error("the DEM resampled for this azimuth would be too large");
+  // A square-celled DEM turned by 45 degrees needs twice its cells; very elongated DEMs or very
+  // unequal cell sizes (spacing is the smaller one) need far more: refuse rather than exhaust
+  // memory.
+  const double dem_cells = static_cast<double>(rows) * static_cast<double>(cols);
+  const double limit = std::max(8.0 * dem_cells, static_cast<double>(1 << 24));
+  if (profiles * length > limit || profiles > static_cast<double>(kMaxGridSide) ||
+      length > static_cast<double>(kMaxGridSide)) {
+    throw Error("seen at azimuth " + std::to_string(azimuth) + " this DEM would need " +
+                std::to_string(static_cast<long long>(profiles * length)) +
+                " resampled cells (it is very elongated or its cells are far from square); "
+                "resample it to near-square cells (gdalwarp -tr), crop it, or use a cardinal "
+                "azimuth (0, 90, 180, 270)");
   }
   OrientedFrame f;
   f.azimuth_deg = azimuth;

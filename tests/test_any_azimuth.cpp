@@ -88,6 +88,13 @@ TEST_CASE("cardinal views take the exact path, others are resampled", "[azimuth]
   CHECK_THROWS_AS(make_frame(4, 6, 10, 10, std::nan("")), Error);
 }
 
+TEST_CASE("a resampled grid far larger than the DEM is refused, not allocated", "[azimuth]") {
+  // Found by the fuzzer: 0.01 m by 100 m cells resampled at 0.01 m spacing.
+  CHECK_THROWS_WITH(make_frame(45, 2, 0.01, 100, 45), Catch::Contains("near-square cells"));
+  // A one-row strip at 45 degrees stays allowed: its bounding square is small in absolute terms.
+  CHECK(make_frame(1, 1000, 10, 10, 45).resampled);
+}
+
 TEST_CASE("the resampled grid steps by the spacing along and across the line of sight",
           "[azimuth]") {
   const double dx = 10, dy = 25;

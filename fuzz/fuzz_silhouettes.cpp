@@ -1,0 +1,82 @@
+// libFuzzer target: the whole core pipeline on hostile grids and parameters.
+// Input bytes: a header choosing size, azimuth, view, filter and chaining parameters (some
+// deliberately out of range), then heights drawn from a palette of extreme values.
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+#include "terrain_sketch.h"
+
+namespace {
+
+struct Reader {
+  const std::uint8_t* data;
+  std::size_t size;
+  std::uint8_t byte() {
+    if (size == 0) return 0;
+    --size;
+    return *data++;
+  }
+  double unit() { return byte() / 255.0; }
+  float height() {
+    static const float special[] = {std::numeric_limits<float>::quiet_NaN(),
+                                    std::numeric_limits<float>::infinity(),
+                                    -std::numeric_limits<float>::infinity(),
+                                    std::numeric_limits<float>::max(),
+                                    -std::numeric_limits<float>::max(),
+                                    std::numeric_limits<float>::denorm_min(),
+                                    0.f,
+                                    -0.f};
+    const std::uint8_t b = byte();
+    if (b >= 248) return special[b - 248];
+    return static_cast<float>(b) * (byte() % 4 == 0 ? 100.f : 1.f);
+  }
+};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  Reader in{data, size};
+  const std::size_t rows = 1 + in.byte() % 48, cols = 1 + in.byte() % 48;
+  tsk::SilhouetteParams p;
+  const std::uint8_t az = in.byte();
+  p.view.azimuth_deg = az < 200 ? az * 90.0 / 50.0 : (az - 200) * 7.3 - 30;  // cardinal and not
+  p.view.ve = in.byte() % 32 == 0 ? 0.0 : 0.05 + 10 * in.unit();
+  p.view.base_slope_pct = in.byte() % 32 == 0 ? -1.0 : 0.5 + 200 * in.unit();
+  p.filter.row_cut_pct = 0.1 + 60 * in.unit();
+  p.filter.col_cut_pct = 0.1 + 60 * in.unit();
+  p.filter.ctrl_col_pct = 70 * in.unit();
+  p.filter.diagonals = in.byte() & 1;
+  p.chain.window = static_cast<int>(in.byte() % 12) - 1;
+  p.chain.min_cells = 1 + in.byte() % 6;
+  p.geometry = in.byte() & 1 ? tsk::Geometry::oblique : tsk::Geometry::map;
+  p.placement = in.byte() & 1 ? tsk::Placement::near_and_far : tsk::Placement::far;
+  p.subcell = in.byte() & 1;
+  p.threads = 1 + in.byte() % 2;
+  const double dx = in.byte() % 64 == 0 ? 0.0 : 0.01 + 100 * in.unit();
+  const double dy = 0.01 + 100 * in.unit();
+  tsk::HeightGrid dem(rows, cols);
+  for (std::size_t k = 0; k < dem.size(); ++k) dem.data()[k] = in.height();
+  try {
+    const tsk::OrientedFrame frame = tsk::make_frame(rows, cols, dx, dy, p.view.azimuth_deg);
+    const tsk::SilhouetteResult r =
+        tsk::run_silhouettes(tsk::orient(dem, frame), frame, tsk::GeoTransform{}, p);
+    // Invariants that must hold for any input.
+    if (r.stats.filtered > r.stats.candidate || r.stats.thinned > r.stats.filtered ||
+        r.stats.valid > frame.profiles * frame.length) {
+      __builtin_trap();
+    }
+    for (const tsk::Stroke& s : r.strokes) {
+      if (s.cells < p.chain.min_cells || s.points.size() != static_cast<std::size_t>(s.cells)) {
+        __builtin_trap();
+      }
+      for (const tsk::StrokePoint& pt : s.points) {
+        if (!std::isfinite(pt.x) || !std::isfinite(pt.y)) __builtin_trap();
+      }
+    }
+  } catch (const tsk::Error&) {
+    // Refused with a message: the expected outcome for bad parameters.
+  }
+  return 0;
+}
