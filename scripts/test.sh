@@ -17,3 +17,13 @@ cmake --build build-asan -j "$jobs"
 # Leak checking is off: GDAL keeps driver-level caches alive until exit by design.
 ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-asan --output-on-failure -j "$jobs"
+
+echo "== short fuzz run of the core (libFuzzer, ASan + UBSan)"
+CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTSK_FUZZ=ON \
+  -DTSK_BUILD_CLI=OFF -DTSK_BUILD_TESTS=OFF -DTSK_BUILD_BENCH=OFF > /dev/null
+cmake --build build-fuzz -j "$jobs"
+mkdir -p build-fuzz/corpus
+# Seeds from fuzz/seeds, then 60 s of mutations; any crash, leak or trap fails the run.
+build-fuzz/fuzz/fuzz_silhouettes -max_total_time=60 -max_len=4096 -rss_limit_mb=2048 \
+  -artifact_prefix=build-fuzz/ build-fuzz/corpus fuzz/seeds
+echo "fuzz: 1 passed, 0 failed"
