@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include "cli_app.h"
+#include "dem_reader.h"
 #endif
 
 namespace {
@@ -82,30 +83,62 @@ double time_command(const std::string& command) {
 }
 #endif
 
+void print_stages(const char* label, const tsk::StageTimings& t, double whole, double cells) {
+  std::printf(
+      "  %-22s visibility %.3f | candidates %.3f | filter %.3f | thinning %.3f | "
+      "chaining %.3f | strokes %.3f | whole %.3f s, %.1f Mcells/s\n",
+      label, t.visibility, t.candidates, t.filter, t.thinning, t.chaining, t.strokes, whole,
+      cells / whole / 1e6);
+}
+
+// Runs the pipeline and returns its wall time; `orient_first` includes turning the DEM.
+double timed_run(const tsk::HeightGrid& dem, double azimuth, unsigned threads, const char* label,
+                 tsk::SilhouetteResult* out = nullptr) {
+  tsk::SilhouetteParams params;
+  params.view.azimuth_deg = azimuth;
+  params.threads = threads;
+  const tsk::OrientedFrame frame = tsk::make_frame(dem.rows(), dem.cols(), 25, 25, azimuth);
+  const auto t = Clock::now();
+  // Viewed from the west the oriented grid is the DEM itself: no copy, as the reader does.
+  tsk::SilhouetteResult r;
+  double orient_s = 0;
+  if (frame.azimuth_deg == 90 && !frame.resampled) {
+    r = tsk::run_silhouettes(dem, frame, tsk::GeoTransform{}, params);
+  } else {
+    const auto t_orient = Clock::now();
+    const tsk::HeightGrid oriented = tsk::orient(dem, frame, threads);
+    orient_s = seconds_since(t_orient);
+    r = tsk::run_silhouettes(oriented, frame, tsk::GeoTransform{}, params);
+  }
+  const double whole = seconds_since(t);
+  print_stages(label, r.timings, whole, static_cast<double>(dem.size()));
+  if (orient_s > 0) std::printf("  %-22s (of which orienting/resampling %.3f s)\n", "", orient_s);
+  if (out) *out = std::move(r);
+  return whole;
+}
+
 void bench_size(std::size_t n, bool with_gdaldem) {
   const auto t_gen = Clock::now();
   const tsk::HeightGrid dem = synthetic_dem(n);
   const double gen = seconds_since(t_gen);
   const double raster_mib = static_cast<double>(dem.size() * sizeof(float)) / (1024.0 * 1024.0);
-  const tsk::OrientedFrame frame = tsk::make_frame(n, n, 25, 25, 90);
-  // Viewed from the west the oriented grid is the DEM itself: no copy, as the reader does.
-  const auto t_run = Clock::now();
-  const tsk::SilhouetteResult r = tsk::run_silhouettes(dem, frame, tsk::GeoTransform{}, {});
-  const double whole = seconds_since(t_run);
-  const tsk::StageTimings& t = r.timings;
-  const double cells = static_cast<double>(dem.size());
   std::printf("\n== synthetic %zux%zu (%.0f MiB Float32), generated in %.2f s\n", n, n, raster_mib,
               gen);
-  std::printf("  visibility %.3f s | candidates %.3f s | filter %.3f s | thinning %.3f s | "
-              "chaining %.3f s | strokes %.3f s\n",
-              t.visibility, t.candidates, t.filter, t.thinning, t.chaining, t.strokes);
-  std::printf("  whole pipeline %.3f s, %.1f Mcells/s, %zu factual + %zu formulated strokes\n",
-              whole, cells / whole / 1e6, r.stats.factual_strokes, r.stats.formulated_strokes);
-  std::printf("  c-set %.1f %%, f-set %.1f %%, t-set %.1f %%, g-set %.1f %%\n",
-              r.stats.pct(r.stats.candidate), r.stats.pct(r.stats.filtered),
-              r.stats.pct(r.stats.thinned), r.stats.pct(r.stats.generalised));
+  tsk::SilhouetteResult r;
+  const double whole = timed_run(dem, 90, 0, "azimuth 90, all cores", &r);
   const double peak = peak_rss_mib();
+  std::printf(
+      "  %zu factual + %zu formulated strokes; c-set %.1f %%, f-set %.1f %%, t-set %.1f %%, "
+      "g-set %.1f %%\n",
+      r.stats.factual_strokes, r.stats.formulated_strokes, r.stats.pct(r.stats.candidate),
+      r.stats.pct(r.stats.filtered), r.stats.pct(r.stats.thinned),
+      r.stats.pct(r.stats.generalised));
   std::printf("  peak memory %.0f MiB = %.2f x the raster's bytes\n", peak, peak / raster_mib);
+  const double single = timed_run(dem, 90, 1, "azimuth 90, 1 thread");
+  std::printf("  %-22s %.2f x on %u threads\n", "thread speed-up", single / whole,
+              std::thread::hardware_concurrency());
+  const double oblique = timed_run(dem, 45, 0, "azimuth 45, all cores");
+  std::printf("  %-22s %.2f x the cardinal time\n", "non-cardinal cost", oblique / whole);
 #ifdef TSK_BENCH_WITH_GDAL
   if (with_gdaldem) {
     const std::string dir = "/tmp/tsk-bench-" + std::to_string(getpid());
@@ -115,17 +148,41 @@ void bench_size(std::size_t n, bool with_gdaldem) {
     const double hillshade = time_command("gdaldem hillshade -q " + tif + " " + dir + "/hs.tif");
     std::ostringstream out, err;
     const auto t_cli = Clock::now();
-    const int code = tsk::cli::run({"silhouettes", tif, dir + "/out.gpkg"}, out, err);
+    const int code = tsk::cli::run({"silhouettes", tif, dir + "/out.gpkg", "--timings"}, out, err);
     const double cli = seconds_since(t_cli);
-    std::printf("  gdaldem hillshade %.3f s | terrain-sketch CLI end to end (read, silhouettes, "
-                "write GeoPackage) %.3f s%s | ratio CLI/hillshade %.2f | pipeline/hillshade %.2f\n",
-                hillshade, cli, code ? " (FAILED)" : "", cli / hillshade, whole / hillshade);
+    std::printf(
+        "  gdaldem hillshade %.3f s | terrain-sketch CLI end to end (read, silhouettes, "
+        "write GeoPackage) %.3f s%s | ratio CLI/hillshade %.2f | pipeline/hillshade %.2f\n",
+        hillshade, cli, code ? " (FAILED)" : "", cli / hillshade, whole / hillshade);
+    std::printf("  CLI %s", err.str().c_str());
     std::system(("rm -rf " + dir).c_str());
   }
 #else
   (void)with_gdaldem;
 #endif
 }
+
+#ifdef TSK_BENCH_WITH_GDAL
+void bench_real_dems() {
+  std::printf("\n== real DEMs (tests/data), all cores, read through GDAL\n");
+  for (const char* name : {"jacksboro_utm16n.tif", "gorillas_utm32n.tif", "volcano.tif",
+                           "bei_5m_local.tif", "topobathy_3857.tif"}) {
+    const std::string path = std::string(TSK_BENCH_DATA) + "/" + name;
+    tsk::io::DemOptions options;
+    const auto t_read = Clock::now();
+    const tsk::io::Dem dem = tsk::io::read_dem(path, options);
+    const double read_s = seconds_since(t_read);
+    const auto t = Clock::now();
+    const tsk::SilhouetteResult r =
+        tsk::run_silhouettes(dem.oriented, dem.frame, dem.geotransform, {});
+    const double whole = seconds_since(t);
+    std::printf(
+        "  %-22s %zux%zu: read %.3f s, pipeline %.4f s (%.1f Mcells/s), %zu + %zu strokes\n", name,
+        dem.rows, dem.cols, read_s, whole, static_cast<double>(dem.rows * dem.cols) / whole / 1e6,
+        r.stats.factual_strokes, r.stats.formulated_strokes);
+  }
+}
+#endif
 
 }  // namespace
 
@@ -149,7 +206,11 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  std::printf("terrain-sketch benchmark, %u hardware threads\n", std::thread::hardware_concurrency());
+  std::printf("terrain-sketch benchmark, %u hardware threads\n",
+              std::thread::hardware_concurrency());
+#ifdef TSK_BENCH_WITH_GDAL
+  bench_real_dems();
+#endif
   for (std::size_t n : sizes) {
     std::fflush(stdout);
     const pid_t child = fork();

@@ -1,5 +1,6 @@
 #include "cli_app.h"
 
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -46,6 +47,7 @@ input and output:
   --stats-json FILE    write the stage statistics as JSON
   --preview PNG        render the oblique sketch to a PNG picture
   --threads N          worker threads (default: all cores)
+  --timings            print the time of reading, each stage and writing to stderr
 )";
 
 // Parses a whole number or a finite decimal, refusing trailing junk.
@@ -71,6 +73,7 @@ int parse_int(const std::string& option, const std::string& text) {
 
 struct Options {
   std::string input, output, format, stats_json, preview;
+  bool timings = false;
   io::DemOptions dem;
   SilhouetteParams params;
 };
@@ -109,6 +112,8 @@ Options parse(const std::vector<std::string>& args) {
       o.params.filter.diagonals = false;
     } else if (a == "--subcell") {
       o.params.subcell = true;
+    } else if (a == "--timings") {
+      o.timings = true;
     } else if (auto it = with_value.find(a); it != with_value.end()) {
       if (k + 1 >= args.size()) throw Error(a + " needs a value");
       it->second(a, args[++k]);
@@ -154,11 +159,25 @@ void write_text(const std::string& path, const std::string& text) {
 int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
   io::vector_driver_for(o.output, o.format);  // an unknown format fails before any work
+  using Clock = std::chrono::steady_clock;
+  auto since = [](Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+  };
+  auto start = Clock::now();
   const io::Dem dem = io::read_dem(o.input, o.dem);
+  const double read_s = since(start);
   if (!dem.notes.empty()) err << "note: " << dem.notes;
   const SilhouetteResult result =
       run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
+  start = Clock::now();
   io::write_strokes(o.output, o.format, result.strokes, dem.srs_wkt);
+  const double write_s = since(start);
+  if (o.timings) {
+    const StageTimings& t = result.timings;
+    err << "timings (s): read " << read_s << ", visibility " << t.visibility << ", candidates "
+        << t.candidates << ", filter " << t.filter << ", thinning " << t.thinning << ", chaining "
+        << t.chaining << ", strokes " << t.strokes << ", write " << write_s << "\n";
+  }
   if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
   if (!o.preview.empty()) {
     io::write_preview(o.preview, result, dem.oriented, dem.frame, o.params.view);

@@ -54,8 +54,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   p.placement = in.byte() & 1 ? tsk::Placement::near_and_far : tsk::Placement::far;
   p.subcell = in.byte() & 1;
   p.threads = 1 + in.byte() % 2;
-  const double dx = in.byte() % 64 == 0 ? 0.0 : 0.01 + 100 * in.unit();
-  const double dy = 0.01 + 100 * in.unit();
+  // Cells up to 5:1, with rare zero and extreme (10^4:1) sizes that must be refused quickly.
+  const std::uint8_t shape = in.byte();
+  const double dx = shape == 0 ? 0.0 : 0.5 + 100 * in.unit();
+  const double dy = shape == 1 ? dx * 1e4 : dx * (0.2 + 4.8 * in.unit());
   tsk::HeightGrid dem(rows, cols);
   for (std::size_t k = 0; k < dem.size(); ++k) dem.data()[k] = in.height();
   try {
