@@ -10,6 +10,10 @@
 //   strokes.h         [1.8, 1.9] strokes, attributes, generalisation, map/oblique geometry
 //   silhouettes.h     [2] all stages in order with stage statistics and timings
 //
+// Applications and diagnostics:
+//   profile_plot.h    [3] cross-sections in plan-oblique geometry, hidden parts removed
+//   diagnostics.h     per-cell classification and row slope maps on the DEM grid
+//
 // Support: grid.h (the grid type, NaN nodata), flags.h (per-cell classification bits),
 // params.h (every parameter with its default), parallel.h (threads, progress, cancellation),
 // analytic_terrain.h (plane, step, bump, cone, ridge).
@@ -18,12 +22,14 @@
 #include "analytic_terrain.h"
 #include "candidates.h"
 #include "chaining.h"
+#include "diagnostics.h"
 #include "errors.h"
 #include "flags.h"
 #include "grid.h"
 #include "orient.h"
 #include "parallel.h"
 #include "params.h"
+#include "profile_plot.h"
 #include "silhouettes.h"
 #include "slope_filter.h"
 #include "strokes.h"

@@ -1,0 +1,113 @@
+// Diagnostics maps and the profile plot.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "test_support.h"
+
+using namespace tsk;
+
+namespace {
+
+struct Oriented {
+  OrientedFrame frame;
+  HeightGrid z;
+  SilhouetteResult result;
+};
+
+Oriented run_view(const HeightGrid& dem, double azimuth, double cell = 10) {
+  Oriented o;
+  o.frame = make_frame(dem.rows(), dem.cols(), cell, cell, azimuth);
+  o.z = orient(dem, o.frame);
+  SilhouetteParams params;
+  params.view.azimuth_deg = azimuth;
+  o.result = run_silhouettes(o.z, o.frame, GeoTransform{}, params);
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("each cell gets its most specific class", "[diagnostics]") {
+  CHECK(cell_class(0) == CellClass::nodata);
+  CHECK(cell_class(cell::valid) == CellClass::visible);
+  CHECK(cell_class(cell::valid | cell::hidden) == CellClass::hidden);
+  CHECK(cell_class(cell::valid | cell::hidden | cell::candidate) == CellClass::candidate);
+  CHECK(cell_class(cell::valid | cell::occluding) == CellClass::occluding);
+  CHECK(cell_class(cell::valid | cell::candidate | cell::filtered) == CellClass::filtered);
+  CHECK(cell_class(cell::valid | cell::candidate | cell::filtered | cell::thinned) ==
+        CellClass::thinned);
+  CHECK(std::string(cell_class_name(CellClass::filtered)) == "f-set");
+}
+
+TEST_CASE("the classification map lies on the DEM grid for every cardinal view",
+          "[diagnostics]") {
+  const HeightGrid dem = test::random_terrain(30, 45, 12, 0.05);
+  for (double az : {0.0, 90.0, 180.0, 270.0}) {
+    CAPTURE(az);
+    const Oriented o = run_view(dem, az);
+    const Grid<std::uint8_t> map = classification_map(o.result.flags, o.frame);
+    REQUIRE(map.rows() == 30);
+    REQUIRE(map.cols() == 45);
+    for (std::size_t p = 0; p < o.frame.profiles; ++p)
+      for (std::size_t i = 0; i < o.frame.length; ++i)
+        REQUIRE(map(o.frame.dem_row(p, i), o.frame.dem_col(p, i)) ==
+                static_cast<std::uint8_t>(cell_class(o.result.flags(p, i))));
+    for (std::size_t r = 0; r < 30; ++r)
+      for (std::size_t c = 0; c < 45; ++c)
+        REQUIRE((map(r, c) == 0) == !is_data(dem(r, c)));
+  }
+}
+
+TEST_CASE("a resampled view maps every interior DEM cell to a class", "[diagnostics]") {
+  const HeightGrid dem = test::random_terrain(40, 40, 13);
+  const Oriented o = run_view(dem, 30);
+  const Grid<std::uint8_t> map = classification_map(o.result.flags, o.frame);
+  for (std::size_t r = 2; r < 38; ++r)
+    for (std::size_t c = 2; c < 38; ++c) REQUIRE(map(r, c) != 0);
+}
+
+TEST_CASE("row slope is the slope across the line of sight", "[diagnostics]") {
+  // A plane rising 20 % to the north: across a view facing azimuth t its slope is 20 |sin t| %.
+  const double a = 0.2;
+  HeightGrid dem(40, 40);
+  for (std::size_t r = 0; r < 40; ++r)
+    for (std::size_t c = 0; c < 40; ++c) dem(r, c) = static_cast<float>(a * 10.0 * (40.0 - r));
+  for (double az : {90.0, 0.0, 45.0, 120.0}) {
+    CAPTURE(az);
+    const Oriented o = run_view(dem, az);
+    const HeightGrid slope = row_slope_map(o.z, o.frame);
+    const double expected = 100 * a * std::fabs(std::sin(az * 3.14159265358979 / 180));
+    for (std::size_t r = 5; r < 35; ++r)
+      for (std::size_t c = 5; c < 35; ++c) REQUIRE(slope(r, c) == Approx(expected).margin(1e-3));
+  }
+}
+
+TEST_CASE("the profile plot draws whole cross-sections over open ground", "[profile plot]") {
+  const HeightGrid dem = make_plane(20, 30, 10, 0.3, 0.0);  // rising away: all visible
+  const Oriented o = run_view(dem, 90);
+  const auto lines = profile_plot(o.z, o.result.flags, o.frame, ViewParams{}, GeoTransform{}, 5,
+                                  lowest_height(o.z));
+  REQUIRE(lines.size() == 6);  // i = 0, 5, ..., 25
+  for (const ProfileLine& line : lines) {
+    CHECK(line.points.size() == 20);
+    CHECK(line.distance == Approx(line.cross_section * 10.0));
+    // Shifted forward (east) by (ve / B) (z - z_min) = 6.25 * 0.3 * 10 * i / 10 cells.
+    const double x = line.cross_section + 0.5 + 6.25 * 0.3 * static_cast<double>(line.cross_section);
+    for (const StrokePoint& pt : line.points) CHECK(pt.x == Approx(x));
+  }
+  CHECK_THROWS_AS(profile_plot(o.z, o.result.flags, o.frame, ViewParams{}, GeoTransform{}, 0, 0),
+                  Error);
+}
+
+TEST_CASE("the profile plot removes hidden parts", "[profile plot]") {
+  // The cliff seen from the east hides cells 20..37 behind its edge (see test_strokes).
+  const HeightGrid dem = make_step(12, 40, 30.0, 20);
+  const Oriented o = run_view(dem, 270);
+  const auto lines = profile_plot(o.z, o.result.flags, o.frame, ViewParams{}, GeoTransform{}, 1,
+                                  lowest_height(o.z));
+  for (const ProfileLine& line : lines) {
+    CHECK((line.cross_section < 20 || line.cross_section > 37));
+    CHECK(line.points.size() == 12);
+  }
+  CHECK(lines.size() == 40 - 18);
+}
