@@ -1,7 +1,9 @@
 #include "cli_app.h"
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -12,17 +14,26 @@
 #include "dem_reader.h"
 #include "output_files.h"
 #include "preview.h"
+#include "raster_writer.h"
 #include "silhouettes.h"
+#include "terrain_sketch.h"
 #include "vector_writer.h"
 
 namespace tsk::cli {
 namespace {
 
-const char* const kUsage = R"(usage: terrain-sketch silhouettes INPUT OUTPUT [options]
+const char* const kUsage = R"(usage: terrain-sketch COMMAND INPUT OUTPUT [options]
 
-Factual and Formulated Silhouettes of a DEM seen obliquely from above, as vector strokes.
+commands:
+  silhouettes   Factual and Formulated Silhouettes as vector strokes (OUTPUT: vector)
+  profiles      the profile plot: cross-sections across the view in plan-oblique geometry,
+                hidden parts removed, every --every N cells (OUTPUT: vector)
+  classify      per-cell stage of the method (visible, hidden, occluding, c-set, f-set,
+                t-set) on the DEM grid, with a colour table (OUTPUT: GeoTIFF)
+  row-slope     |slope across the line of sight| in percent on the DEM grid (OUTPUT: GeoTIFF)
+
 INPUT is any raster GDAL reads (heights in metres, a projected CRS in metres);
-OUTPUT any OGR vector format, chosen by extension (.gpkg, .shp, .geojson, .fgb, ...).
+a vector OUTPUT is any OGR format, chosen by extension (.gpkg, .shp, .geojson, .fgb, ...).
 
 view:
   --azimuth DEG        bearing the viewer faces, clockwise from north (default 90: from the
@@ -48,6 +59,8 @@ input and output:
   --preview PNG        render the oblique sketch to a PNG picture
   --threads N          worker threads (default: all cores)
   --timings            print the time of reading, each stage and writing to stderr
+profiles:
+  --every N            draw every N-th cross-section (default 10)
 )";
 
 // Parses a whole number or a finite decimal, refusing trailing junk.
@@ -74,6 +87,7 @@ int parse_int(const std::string& option, const std::string& text) {
 struct Options {
   std::string input, output, format, stats_json, preview;
   bool timings = false;
+  int every = 10;
   io::DemOptions dem;
   SilhouetteParams params;
 };
@@ -103,6 +117,11 @@ Options parse(const std::vector<std::string>& args) {
          o.params.threads = static_cast<unsigned>(t);
        }},
       {"--format", [&](auto&, auto& v) { o.format = v; }},
+      {"--every",
+       [&](auto& n, auto& v) {
+         o.every = parse_int(n, v);
+         if (o.every < 1) throw Error("--every must be at least 1");
+       }},
       {"--stats-json", [&](auto&, auto& v) { o.stats_json = v; }},
       {"--preview", [&](auto&, auto& v) { o.preview = v; }},
   };
@@ -189,6 +208,54 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
   return 0;
 }
 
+void require_geotiff(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".tif" && ext != ".tiff") throw Error("the output raster must be a GeoTIFF (.tif)");
+}
+
+int classify(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Options o = parse(args);
+  require_geotiff(o.output);
+  const io::Dem dem = io::read_dem(o.input, o.dem);
+  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  const SilhouetteResult result =
+      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
+  io::write_classification(o.output, classification_map(result.flags, dem.frame), dem.geotransform,
+                           dem.srs_wkt);
+  if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
+  const StageStats& s = result.stats;
+  out << o.output << ": hidden " << s.pct(s.hidden) << " %, occluding " << s.pct(s.occluding)
+      << " %, c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered) << " %, t-set "
+      << s.pct(s.thinned) << " %\n";
+  return 0;
+}
+
+int row_slope(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Options o = parse(args);
+  require_geotiff(o.output);
+  const io::Dem dem = io::read_dem(o.input, o.dem);
+  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  io::write_float_raster(o.output, row_slope_map(dem.oriented, dem.frame), dem.geotransform,
+                         dem.srs_wkt);
+  out << o.output << ": row slope in percent across azimuth " << dem.frame.azimuth_deg << "\n";
+  return 0;
+}
+
+int profiles(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Options o = parse(args);
+  io::vector_driver_for(o.output, o.format);
+  const io::Dem dem = io::read_dem(o.input, o.dem);
+  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  CellFlags flags;
+  classify_visibility(dem.oriented, dem.frame.d, o.params.view, flags, o.params.threads);
+  const auto lines = profile_plot(dem.oriented, flags, dem.frame, o.params.view, dem.geotransform,
+                                  static_cast<std::size_t>(o.every), lowest_height(dem.oriented));
+  io::write_profile_lines(o.output, o.format, lines, dem.srs_wkt);
+  out << o.output << ": " << lines.size() << " visible cross-section pieces\n";
+  return 0;
+}
+
 }  // namespace
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -196,7 +263,13 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     (args.empty() ? err : out) << kUsage;
     return args.empty() ? 2 : 0;
   }
-  if (args[0] != "silhouettes") {
+  using Command = int (*)(const std::vector<std::string>&, std::ostream&, std::ostream&);
+  const std::map<std::string, Command> commands = {{"silhouettes", silhouettes},
+                                                   {"profiles", profiles},
+                                                   {"classify", classify},
+                                                   {"row-slope", row_slope}};
+  const auto command = commands.find(args[0]);
+  if (command == commands.end()) {
     err << "terrain-sketch: unknown command '" << args[0] << "'\n" << kUsage;
     return 2;
   }
@@ -206,7 +279,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     return 0;
   }
   try {
-    return silhouettes(rest, out, err);
+    return command->second(rest, out, err);
   } catch (const Error& e) {
     err << "terrain-sketch: " << e.what() << "\n";
   } catch (const std::bad_alloc&) {

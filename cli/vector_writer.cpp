@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
 
 #include "gdal_util.h"
@@ -39,9 +40,14 @@ std::string vector_driver_for(const std::string& path, const std::string& format
   return it->second;
 }
 
-void write_strokes(const std::string& path, const std::string& format,
-                   const std::vector<Stroke>& strokes, const std::string& srs_wkt,
-                   const std::string& layer_name) {
+namespace {
+
+// Creates `path` with one line layer, lets add_fields define its fields and add_features fill it,
+// all inside a transaction; whole or not at all.
+void write_line_layer(const std::string& path, const std::string& format,
+                      const std::string& srs_wkt, const std::string& layer_name,
+                      const std::function<void(OGRLayer&, const GdalErrorCapture&)>& add_fields,
+                      const std::function<void(OGRLayer&, const GdalErrorCapture&)>& add_features) {
   GdalErrorCapture capture;
   const std::string driver_name = vector_driver_for(path, format);
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
@@ -59,36 +65,9 @@ void write_strokes(const std::string& path, const std::string& format,
     OGRLayer* layer =
         ds->CreateLayer(layer_name.c_str(), has_srs ? &srs : nullptr, wkbLineString, nullptr);
     if (!layer) throw Error("cannot create layer in '" + path + "': " + capture.message());
-    OGRFieldDefn cls("class", OFTString);
-    cls.SetWidth(10);
-    check(layer->CreateField(&cls), "creating field 'class'", capture);
-    OGRFieldDefn cells("cells", OFTInteger);
-    check(layer->CreateField(&cells), "creating field 'cells'", capture);
-    for (const StrokeRealField& f : stroke_real_fields()) {
-      OGRFieldDefn defn(f.name, OFTReal);
-      check(layer->CreateField(&defn), std::string("creating field '") + f.name + "'", capture);
-    }
+    add_fields(*layer, capture);
     const bool transaction = ds->StartTransaction() == OGRERR_NONE;
-    for (const Stroke& s : strokes) {
-      OGRFeature feature(layer->GetLayerDefn());
-      feature.SetField("class", stroke_class_name(s.cls));
-      feature.SetField("cells", s.cells);
-      for (const StrokeRealField& f : stroke_real_fields()) {
-        const double value = s.*(f.member);
-        if (std::isfinite(value)) {
-          feature.SetField(f.name, value);
-        } else {
-          feature.SetFieldNull(feature.GetFieldIndex(f.name));
-        }
-      }
-      OGRLineString line;
-      line.setNumPoints(static_cast<int>(s.points.size()));
-      for (std::size_t k = 0; k < s.points.size(); ++k) {
-        line.setPoint(static_cast<int>(k), s.points[k].x, s.points[k].y);
-      }
-      feature.SetGeometry(&line);
-      check(layer->CreateFeature(&feature), "writing a stroke to '" + path + "'", capture);
-    }
+    add_features(*layer, capture);
     if (transaction) check(ds->CommitTransaction(), "committing '" + path + "'", capture);
     CPLErrorReset();
     ds.reset();  // closing flushes: a failure here means an incomplete file
@@ -96,6 +75,73 @@ void write_strokes(const std::string& path, const std::string& format,
       throw Error("closing '" + path + "' failed: " + capture.message());
     }
   });
+}
+
+void add_field(OGRLayer& layer, const char* name, OGRFieldType type,
+               const GdalErrorCapture& capture) {
+  OGRFieldDefn defn(name, type);
+  check(layer.CreateField(&defn), std::string("creating field '") + name + "'", capture);
+}
+
+// Writes one line feature whose attributes `set` has filled.
+void add_line(OGRLayer& layer, OGRFeature& feature, const std::vector<StrokePoint>& points,
+              const std::string& path, const GdalErrorCapture& capture) {
+  OGRLineString line;
+  line.setNumPoints(static_cast<int>(points.size()));
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    line.setPoint(static_cast<int>(k), points[k].x, points[k].y);
+  }
+  feature.SetGeometry(&line);
+  check(layer.CreateFeature(&feature), "writing a line to '" + path + "'", capture);
+}
+
+}  // namespace
+
+void write_strokes(const std::string& path, const std::string& format,
+                   const std::vector<Stroke>& strokes, const std::string& srs_wkt,
+                   const std::string& layer_name) {
+  write_line_layer(
+      path, format, srs_wkt, layer_name,
+      [](OGRLayer& layer, const GdalErrorCapture& capture) {
+        add_field(layer, "class", OFTString, capture);
+        add_field(layer, "cells", OFTInteger, capture);
+        for (const StrokeRealField& f : stroke_real_fields())
+          add_field(layer, f.name, OFTReal, capture);
+      },
+      [&](OGRLayer& layer, const GdalErrorCapture& capture) {
+        for (const Stroke& s : strokes) {
+          OGRFeature feature(layer.GetLayerDefn());
+          feature.SetField("class", stroke_class_name(s.cls));
+          feature.SetField("cells", s.cells);
+          for (const StrokeRealField& f : stroke_real_fields()) {
+            const double value = s.*(f.member);
+            if (std::isfinite(value)) {
+              feature.SetField(f.name, value);
+            } else {
+              feature.SetFieldNull(feature.GetFieldIndex(f.name));
+            }
+          }
+          add_line(layer, feature, s.points, path, capture);
+        }
+      });
+}
+
+void write_profile_lines(const std::string& path, const std::string& format,
+                         const std::vector<ProfileLine>& lines, const std::string& srs_wkt) {
+  write_line_layer(
+      path, format, srs_wkt, "profiles",
+      [](OGRLayer& layer, const GdalErrorCapture& capture) {
+        add_field(layer, "section", OFTInteger, capture);
+        add_field(layer, "distance", OFTReal, capture);
+      },
+      [&](OGRLayer& layer, const GdalErrorCapture& capture) {
+        for (const ProfileLine& line : lines) {
+          OGRFeature feature(layer.GetLayerDefn());
+          feature.SetField("section", static_cast<int>(line.cross_section));
+          feature.SetField("distance", line.distance);
+          add_line(layer, feature, line.points, path, capture);
+        }
+      });
 }
 
 }  // namespace tsk::io

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "profile_plot.h"
 #include "strokes.h"
 
 namespace tsk::io {
@@ -15,5 +16,9 @@ std::string vector_driver_for(const std::string& path, const std::string& format
 void write_strokes(const std::string& path, const std::string& format,
                    const std::vector<Stroke>& strokes, const std::string& srs_wkt,
                    const std::string& layer_name = "silhouettes");
+
+// Writes profile-plot lines (fields: section, distance) to `path`, whole or not at all.
+void write_profile_lines(const std::string& path, const std::string& format,
+                         const std::vector<ProfileLine>& lines, const std::string& srs_wkt);
 
 }  // namespace tsk::io

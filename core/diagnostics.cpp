@@ -40,8 +40,8 @@ Grid<T> to_dem_grid(const OrientedFrame& frame, T outside, F value) {
 }  // namespace
 
 const char* cell_class_name(CellClass c) {
-  static const char* const names[kCellClassCount] = {
-      "nodata", "visible", "hidden", "occluding", "c-set", "f-set", "t-set"};
+  static const char* const names[kCellClassCount] = {"nodata", "visible", "hidden", "occluding",
+                                                     "c-set",  "f-set",   "t-set"};
   return names[static_cast<int>(c)];
 }
 

@@ -12,7 +12,7 @@ namespace tsk {
 // One class per cell, the most specific stage it reached.
 enum class CellClass : std::uint8_t {
   nodata = 0,
-  visible = 1,    // valid, none of the below
+  visible = 1,  // valid, none of the below
   hidden = 2,
   occluding = 3,  // Factual Silhouette cell
   candidate = 4,  // c-set (visible or hidden)

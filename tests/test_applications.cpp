@@ -1,6 +1,5 @@
 // Diagnostics maps and the profile plot.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "test_support.h"
@@ -39,8 +38,7 @@ TEST_CASE("each cell gets its most specific class", "[diagnostics]") {
   CHECK(std::string(cell_class_name(CellClass::filtered)) == "f-set");
 }
 
-TEST_CASE("the classification map lies on the DEM grid for every cardinal view",
-          "[diagnostics]") {
+TEST_CASE("the classification map lies on the DEM grid for every cardinal view", "[diagnostics]") {
   const HeightGrid dem = test::random_terrain(30, 45, 12, 0.05);
   for (double az : {0.0, 90.0, 180.0, 270.0}) {
     CAPTURE(az);
@@ -53,8 +51,7 @@ TEST_CASE("the classification map lies on the DEM grid for every cardinal view",
         REQUIRE(map(o.frame.dem_row(p, i), o.frame.dem_col(p, i)) ==
                 static_cast<std::uint8_t>(cell_class(o.result.flags(p, i))));
     for (std::size_t r = 0; r < 30; ++r)
-      for (std::size_t c = 0; c < 45; ++c)
-        REQUIRE((map(r, c) == 0) == !is_data(dem(r, c)));
+      for (std::size_t c = 0; c < 45; ++c) REQUIRE((map(r, c) == 0) == !is_data(dem(r, c)));
   }
 }
 
@@ -92,7 +89,8 @@ TEST_CASE("the profile plot draws whole cross-sections over open ground", "[prof
     CHECK(line.points.size() == 20);
     CHECK(line.distance == Approx(line.cross_section * 10.0));
     // Shifted forward (east) by (ve / B) (z - z_min) = 6.25 * 0.3 * 10 * i / 10 cells.
-    const double x = line.cross_section + 0.5 + 6.25 * 0.3 * static_cast<double>(line.cross_section);
+    const double x =
+        line.cross_section + 0.5 + 6.25 * 0.3 * static_cast<double>(line.cross_section);
     for (const StrokePoint& pt : line.points) CHECK(pt.x == Approx(x));
   }
   CHECK_THROWS_AS(profile_plot(o.z, o.result.flags, o.frame, ViewParams{}, GeoTransform{}, 0, 0),

@@ -251,3 +251,51 @@ TEST_CASE("Web Mercator cells are scaled to ground metres with a note", "[cli]")
   CHECK(dem.frame.d == Approx(3710.65 * dem.ground_scale).epsilon(1e-6));
   CHECK_THAT(dem.notes, Catch::Contains("Mercator"));
 }
+
+TEST_CASE("classify writes the stage of every DEM cell with a colour table", "[cli][diagnostics]") {
+  ScratchDir dir("classify");
+  const CliRun run = run_cli({"silhouettes", kSample, dir / "s.gpkg"});
+  REQUIRE(run.code == 0);
+  const CliRun cls = run_cli({"classify", kSample, dir / "classes.tif"});
+  INFO(cls.err);
+  REQUIRE(cls.code == 0);
+  GDALDataset* ds = static_cast<GDALDataset*>(GDALOpen((dir / "classes.tif").c_str(), GA_ReadOnly));
+  REQUIRE(ds != nullptr);
+  GDALRasterBand* band = ds->GetRasterBand(1);
+  CHECK(band->GetColorTable() != nullptr);
+  REQUIRE(band->GetCategoryNames() != nullptr);
+  CHECK(std::string(band->GetCategoryNames()[3]) == "occluding");
+  // Class counts equal the core's stage counts (cardinal view: one DEM cell per oriented cell).
+  io::DemOptions options;
+  const io::Dem dem = io::read_dem(kSample, options);
+  const SilhouetteResult core = run_silhouettes(dem.oriented, dem.frame, dem.geotransform, {});
+  std::vector<GByte> pixels(dem.rows * dem.cols);
+  REQUIRE(band->RasterIO(GF_Read, 0, 0, static_cast<int>(dem.cols), static_cast<int>(dem.rows),
+                         pixels.data(), static_cast<int>(dem.cols), static_cast<int>(dem.rows),
+                         GDT_Byte, 0, 0) == CE_None);
+  std::size_t thinned = 0, valid = 0;
+  for (GByte v : pixels) thinned += v == 6, valid += v != 0;
+  CHECK(thinned == core.stats.thinned);
+  CHECK(valid == core.stats.valid);
+  GDALClose(ds);
+  CHECK(run_cli({"classify", kSample, dir / "classes.png"}).code == 1);
+}
+
+TEST_CASE("row-slope and profiles write their outputs", "[cli][profile plot]") {
+  ScratchDir dir("apps");
+  const CliRun slope = run_cli({"row-slope", kSample, dir / "rs.tif", "--azimuth", "30"});
+  INFO(slope.err);
+  REQUIRE(slope.code == 0);
+  GDALDataset* ds = static_cast<GDALDataset*>(GDALOpen((dir / "rs.tif").c_str(), GA_ReadOnly));
+  REQUIRE(ds != nullptr);
+  double minmax[2];
+  REQUIRE(ds->GetRasterBand(1)->ComputeRasterMinMax(FALSE, minmax) == CE_None);
+  CHECK(minmax[0] >= 0.0);
+  CHECK(minmax[1] > 20.0);  // the Jacksboro ridges are steep
+  GDALClose(ds);
+  const CliRun prof = run_cli({"profiles", kSample, dir / "p.geojson", "--every", "20"});
+  INFO(prof.err);
+  REQUIRE(prof.code == 0);
+  CHECK(summarise(dir / "p.geojson").features > 20);
+  CHECK(run_cli({"profiles", kSample, dir / "q.geojson", "--every", "0"}).code == 1);
+}

@@ -1,0 +1,77 @@
+#include "raster_writer.h"
+
+#include <gdal_priv.h>
+
+#include <limits>
+
+#include "gdal_util.h"
+#include "output_files.h"
+
+namespace tsk::io {
+namespace {
+
+// Creates a one-band GeoTIFF at `staged`, lets `fill` set up the band, writes `pixels`.
+template <typename Fill>
+void write_tiff(const std::string& path, const std::filesystem::path& staged, std::size_t rows,
+                std::size_t cols, GDALDataType type, const void* pixels, const GeoTransform& gt,
+                const std::string& srs_wkt, Fill fill) {
+  GdalErrorCapture capture;
+  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
+  if (!driver) throw Error("GDAL has no GTiff driver");
+  const char* options[] = {"COMPRESS=DEFLATE", "TILED=YES", "BIGTIFF=IF_SAFER", nullptr};
+  DatasetPtr ds(driver->Create(staged.c_str(), static_cast<int>(cols), static_cast<int>(rows), 1,
+                               type, const_cast<char**>(options)));
+  if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
+  double transform[6];
+  std::copy(gt.a.begin(), gt.a.end(), transform);
+  ds->SetGeoTransform(transform);
+  if (!srs_wkt.empty()) ds->SetProjection(srs_wkt.c_str());
+  GDALRasterBand* band = ds->GetRasterBand(1);
+  fill(*band);
+  if (band->RasterIO(GF_Write, 0, 0, static_cast<int>(cols), static_cast<int>(rows),
+                     const_cast<void*>(pixels), static_cast<int>(cols), static_cast<int>(rows),
+                     type, 0, 0) != CE_None) {
+    throw Error("writing '" + path + "' failed: " + capture.message());
+  }
+  CPLErrorReset();
+  ds.reset();
+  if (CPLGetLastErrorType() >= CE_Failure) {
+    throw Error("closing '" + path + "' failed: " + capture.message());
+  }
+}
+
+}  // namespace
+
+void write_float_raster(const std::string& path, const HeightGrid& grid, const GeoTransform& gt,
+                        const std::string& srs_wkt) {
+  write_atomically(path, [&](const std::filesystem::path& staged) {
+    write_tiff(path, staged, grid.rows(), grid.cols(), GDT_Float32, grid.data(), gt, srs_wkt,
+               [](GDALRasterBand& band) {
+                 band.SetNoDataValue(std::numeric_limits<double>::quiet_NaN());
+               });
+  });
+}
+
+void write_classification(const std::string& path, const Grid<std::uint8_t>& classes,
+                          const GeoTransform& gt, const std::string& srs_wkt) {
+  // Colours as in the thesis's map views: occlusion red, c-set light grey, f-set dark grey.
+  static const GDALColorEntry colours[kCellClassCount] = {
+      {0, 0, 0, 0},         {255, 255, 255, 255}, {190, 210, 235, 255}, {220, 30, 30, 255},
+      {215, 215, 215, 255}, {120, 120, 120, 255}, {20, 20, 20, 255}};
+  write_atomically(path, [&](const std::filesystem::path& staged) {
+    write_tiff(path, staged, classes.rows(), classes.cols(), GDT_Byte, classes.data(), gt, srs_wkt,
+               [](GDALRasterBand& band) {
+                 band.SetNoDataValue(0);
+                 GDALColorTable table;
+                 CPLStringList names;
+                 for (int k = 0; k < kCellClassCount; ++k) {
+                   table.SetColorEntry(k, &colours[k]);
+                   names.AddString(cell_class_name(static_cast<CellClass>(k)));
+                 }
+                 band.SetColorTable(&table);
+                 band.SetCategoryNames(names.List());
+               });
+  });
+}
+
+}  // namespace tsk::io

@@ -1,0 +1,20 @@
+// Grids on the DEM's grid to GeoTIFF, whole or not at all.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "diagnostics.h"
+#include "strokes.h"
+
+namespace tsk::io {
+
+// Float32 with NaN as nodata.
+void write_float_raster(const std::string& path, const HeightGrid& grid, const GeoTransform& gt,
+                        const std::string& srs_wkt);
+
+// Byte classes with a colour table and class names (0 is nodata), for QGIS and other viewers.
+void write_classification(const std::string& path, const Grid<std::uint8_t>& classes,
+                          const GeoTransform& gt, const std::string& srs_wkt);
+
+}  // namespace tsk::io
