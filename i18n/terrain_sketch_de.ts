@@ -1,6 +1,165 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>ClassificationAlgorithm</name>
+    <message>
+        <location filename="../plugin/classification_algorithm.cpp" line="18" />
+        <source>Silhouette stages (classification raster)</source>
+        <translation>Silhouetten-Stufen (Klassifikationsraster)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/classification_algorithm.cpp" line="22" />
+        <source>Shows what the silhouette method does to every cell of the DEM, on the DEM's own grid: 1 visible, 2 hidden, 3 occluding (Factual Silhouette), 4 c-set (back-facing slope brought into view), 5 f-set (kept by the slope filter), 6 t-set (kept by thinning); 0 is nodata. Styled like the thesis's map views: occlusion red, hidden zones blue, c-set light grey, f-set dark grey. The stage statistics are in the results and the log.</source>
+        <translation>Zeigt, was das Silhouettenverfahren mit jeder Zelle des DGM macht, auf dem eigenen Gitter des DGM: 1 sichtbar, 2 verdeckt, 3 verdeckend (faktische Silhouette), 4 c-Menge (abgewandter Hang, der sichtbar wird), 5 f-Menge (vom Neigungsfilter behalten), 6 t-Menge (von der Ausdünnung behalten); 0 ist NoData. Gestaltet wie die Kartenansichten der Dissertation: Verdeckung rot, verdeckte Zonen blau, c-Menge hellgrau, f-Menge dunkelgrau. Die Stufenstatistik steht in den Ergebnissen und im Protokoll.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/classification_algorithm.cpp" line="38" />
+        <source>Silhouette stages</source>
+        <translation>Silhouetten-Stufen</translation>
+    </message>
+    <message>
+        <location filename="../plugin/classification_algorithm.cpp" line="39" />
+        <source>Byte raster of stage classes on the DEM's grid.</source>
+        <translation>Byte-Raster der Stufenklassen auf dem Gitter des DGM.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/classification_algorithm.cpp" line="67" />
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+</context>
+<context>
+    <name>DemViewAlgorithm</name>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="39" />
+        <source>Elevation (DEM)</source>
+        <translation>Höhenmodell (DGM)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="40" />
+        <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
+        <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="41" />
+        <source>Band</source>
+        <translation>Kanal</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="43" />
+        <source>The band holding the heights.</source>
+        <translation>Der Kanal mit den Höhen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="44" />
+        <source>View azimuth (degrees)</source>
+        <translation>Blickrichtung (Grad)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="46" />
+        <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
+        <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="52" />
+        <source>Vertical exaggeration</source>
+        <translation>Überhöhung</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="53" />
+        <source>Factor applied to heights before occlusion is computed.</source>
+        <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="54" />
+        <source>Base slope (%)</source>
+        <translation>Grundneigung (%)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="56" />
+        <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
+        <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="62" />
+        <source>Row slope cut-off (%)</source>
+        <translation>Grenzwert Zeilenneigung (%)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="64" />
+        <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
+        <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="66" />
+        <source>Column slope cut-off (%)</source>
+        <translation>Grenzwert Spaltenneigung (%)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="68" />
+        <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
+        <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="70" />
+        <source>Control point column slope (%)</source>
+        <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="72" />
+        <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
+        <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="76" />
+        <source>Allow for diagonals</source>
+        <translation>Diagonalen berücksichtigen</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="77" />
+        <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
+        <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
+    </message>
+</context>
+<context>
+    <name>ProfilePlotAlgorithm</name>
+    <message>
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="18" />
+        <source>Profile plot (ridgelines)</source>
+        <translation>Profildarstellung (Kammlinien)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="21" />
+        <source>Draws every n-th cross-section across the line of sight as it appears in the oblique view: in plan-oblique geometry (each point moved along the view azimuth by exaggeration / base slope x (height - lowest height)), with the parts hidden behind nearer terrain removed. The classic ridgeline sketch; it overlays the plan-oblique silhouettes exactly. Each line carries its cross-section number and its distance from the front of the view.</source>
+        <translation>Zeichnet jeden n-ten Querschnitt quer zur Blickrichtung so, wie er in der Schrägansicht erscheint: in Plan-oblique-Geometrie (jeder Punkt entlang der Blickrichtung um Überhöhung / Grundneigung x (Höhe - niedrigste Höhe) verschoben), ohne die hinter näherem Gelände verdeckten Teile. Die klassische Kammlinienskizze; sie deckt sich genau mit den Plan-oblique-Silhouetten. Jede Linie trägt die Nummer ihres Querschnitts und ihren Abstand vom vorderen Bildrand.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="35" />
+        <source>Every n-th cross-section</source>
+        <translation>Jeder n-te Querschnitt</translation>
+    </message>
+    <message>
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="37" />
+        <source>Distance between drawn cross-sections, in cells along the line of sight.</source>
+        <translation>Abstand der gezeichneten Querschnitte in Zellen entlang der Blickrichtung.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="38" />
+        <source>Profile plot</source>
+        <translation>Profildarstellung</translation>
+    </message>
+    <message>
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="40" />
+        <source>Visible pieces of the cross-sections as lines.</source>
+        <translation>Sichtbare Teile der Querschnitte als Linien.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="83" />
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+</context>
+<context>
     <name>QmlStyler</name>
     <message>
         <location filename="../plugin/layer_style.cpp" line="26" />
@@ -67,49 +226,60 @@
     </message>
 </context>
 <context>
+    <name>RasterOutput</name>
+    <message>
+        <location filename="../plugin/raster_output.cpp" line="31" />
+        <source>Could not create the raster %1.</source>
+        <translation>Das Raster %1 konnte nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_output.cpp" line="39" />
+        <source>Could not write the raster %1.</source>
+        <translation>Das Raster %1 konnte nicht geschrieben werden.</translation>
+    </message>
+</context>
+<context>
+    <name>RowSlopeAlgorithm</name>
+    <message>
+        <location filename="../plugin/row_slope_algorithm.cpp" line="13" />
+        <source>Row slope map</source>
+        <translation>Karte der Zeilenneigung</translation>
+    </message>
+    <message>
+        <location filename="../plugin/row_slope_algorithm.cpp" line="16" />
+        <source>The magnitude of the slope across the line of sight, in percent, on the DEM's grid (central differences across the view). Styled light where the terrain is flat across the view and dark where it is steep, the backdrop the thesis uses under its silhouettes. Only the azimuth matters.</source>
+        <translation>Der Betrag der Neigung quer zur Blickrichtung in Prozent auf dem Gitter des DGM (zentrale Differenzen quer zur Ansicht). Hell, wo das Gelände quer zur Ansicht flach ist, dunkel, wo es steil ist: der Hintergrund, den die Dissertation unter ihre Silhouetten legt. Nur die Blickrichtung zählt.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/row_slope_algorithm.cpp" line="27" />
+        <source>Row slope</source>
+        <translation>Zeilenneigung</translation>
+    </message>
+    <message>
+        <location filename="../plugin/row_slope_algorithm.cpp" line="28" />
+        <source>Float32 raster of |row slope| in percent.</source>
+        <translation>Float32-Raster der |Zeilenneigung| in Prozent.</translation>
+    </message>
+</context>
+<context>
     <name>SilhouettesAlgorithm</name>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="53" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="39" />
         <source>Silhouettes (factual and formulated)</source>
         <translation>Silhouetten (faktisch und formuliert)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="57" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="43" />
         <source>silhouette,occluding contour,sketch,oblique,panorama,block diagram,plan oblique,terrain,dem,hidden</source>
         <translation>Silhouette,Verdeckungskontur,Skizze,Schrägansicht,Panorama,Blockbild,Plan oblique,Gelände,DGM,verdeckt</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="63" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="49" />
         <source>Draws the silhouette lines of a DEM seen obliquely from above as vector strokes.</source>
         <translation>Zeichnet die Silhouettenlinien eines schräg von oben gesehenen DGM als Vektorstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
-        <source>Elevation (DEM)</source>
-        <translation>Höhenmodell (DGM)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="114" />
-        <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
-        <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
-        <source>Band</source>
-        <translation>Kanal</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
-        <source>The band holding the heights.</source>
-        <translation>Der Kanal mit den Höhen.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
-        <source>View azimuth (degrees)</source>
-        <translation>Blickrichtung (Grad)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="67" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="53" />
         <source>Finds the lines a cartographer sketches first when drawing terrain seen obliquely from above.
 
 Factual Silhouettes are occluding contours: cells beyond which the terrain hides what lies behind it, in a parallel view with vertical exaggeration and a base slope added along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view brings into sight (the candidate set), kept where the slope filter finds them significant (outside the weak/weak corner of column slope against row slope), thinned to the cell furthest from the viewer and chained across profiles.
@@ -130,168 +300,103 @@ Zwei Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter
 Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="118" />
-        <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
-        <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
-        <source>Vertical exaggeration</source>
-        <translation>Überhöhung</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
-        <source>Factor applied to heights before occlusion is computed.</source>
-        <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="124" />
-        <source>Base slope (%)</source>
-        <translation>Grundneigung (%)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="125" />
-        <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
-        <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="127" />
-        <source>Row slope cut-off (%)</source>
-        <translation>Grenzwert Zeilenneigung (%)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="128" />
-        <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
-        <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="130" />
-        <source>Column slope cut-off (%)</source>
-        <translation>Grenzwert Spaltenneigung (%)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="131" />
-        <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
-        <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="132" />
-        <source>Control point column slope (%)</source>
-        <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="134" />
-        <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
-        <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="137" />
-        <source>Allow for diagonals</source>
-        <translation>Diagonalen berücksichtigen</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="139" />
-        <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
-        <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="141" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="88" />
         <source>Chaining window (cells)</source>
         <translation>Verkettungsfenster (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="142" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="89" />
         <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
         <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="143" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="90" />
         <source>Minimum stroke cells</source>
         <translation>Mindestzahl Zellen je Strich</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="144" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="91" />
         <source>Strokes with fewer cells are dropped (generalisation).</source>
         <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="145" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="92" />
         <source>Geometry</source>
         <translation>Geometrie</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="146" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
         <source>Map (cell centres)</source>
         <translation>Karte (Zellmittelpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="146" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
         <source>Plan oblique (the sketch)</source>
         <translation>Plan oblique (die Skizze)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="148" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="95" />
         <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
         <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="151" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="98" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="152" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="99" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="152" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="99" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="154" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="101" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="155" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="156" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="103" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="159" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="106" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="160" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="107" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="161" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="108" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="162" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="109" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="221" />
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="247" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="145" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="171" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="225" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="149" />
         <source>Not enough memory for this raster.</source>
         <translation>Nicht genug Speicher für dieses Raster.</translation>
     </message>
@@ -299,12 +404,12 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
 <context>
     <name>TerrainSketchProvider</name>
     <message>
-        <location filename="../plugin/provider.cpp" line="14" />
+        <location filename="../plugin/provider.cpp" line="17" />
         <source>Terrain sketch</source>
         <translation>Geländeskizze</translation>
     </message>
     <message>
-        <location filename="../plugin/provider.cpp" line="17" />
+        <location filename="../plugin/provider.cpp" line="20" />
         <source>Terrain sketch: factual and formulated silhouettes</source>
         <translation>Geländeskizze: faktische und formulierte Silhouetten</translation>
     </message>

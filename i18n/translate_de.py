@@ -151,6 +151,51 @@ GERMAN = {
     "Formulated silhouettes as line strokes.": "Formulierte Silhouetten als Linienstriche.",
     "Not enough memory for this raster.": "Nicht genug Speicher für dieses Raster.",
     "Terrain sketch": "Geländeskizze",
+    "Silhouette stages (classification raster)": "Silhouetten-Stufen (Klassifikationsraster)",
+    "Shows what the silhouette method does to every cell of the DEM, on the DEM's own grid: 1 "
+    "visible, 2 hidden, 3 occluding (Factual Silhouette), 4 c-set (back-facing slope brought into "
+    "view), 5 f-set (kept by the slope filter), 6 t-set (kept by thinning); 0 is nodata. Styled "
+    "like the thesis's map views: occlusion red, hidden zones blue, c-set light grey, f-set dark "
+    "grey. The stage statistics are in the results and the log.":
+        "Zeigt, was das Silhouettenverfahren mit jeder Zelle des DGM macht, auf dem eigenen Gitter "
+        "des DGM: 1 sichtbar, 2 verdeckt, 3 verdeckend (faktische Silhouette), 4 c-Menge "
+        "(abgewandter Hang, der sichtbar wird), 5 f-Menge (vom Neigungsfilter behalten), 6 "
+        "t-Menge (von der Ausdünnung behalten); 0 ist NoData. Gestaltet wie die Kartenansichten "
+        "der Dissertation: Verdeckung rot, verdeckte Zonen blau, c-Menge hellgrau, f-Menge "
+        "dunkelgrau. Die Stufenstatistik steht in den Ergebnissen und im Protokoll.",
+    "Silhouette stages": "Silhouetten-Stufen",
+    "Byte raster of stage classes on the DEM's grid.":
+        "Byte-Raster der Stufenklassen auf dem Gitter des DGM.",
+    "Profile plot (ridgelines)": "Profildarstellung (Kammlinien)",
+    "Draws every n-th cross-section across the line of sight as it appears in the oblique view: "
+    "in plan-oblique geometry (each point moved along the view azimuth by exaggeration / base "
+    "slope x (height - lowest height)), with the parts hidden behind nearer terrain removed. The "
+    "classic ridgeline sketch; it overlays the plan-oblique silhouettes exactly. Each line carries "
+    "its cross-section number and its distance from the front of the view.":
+        "Zeichnet jeden n-ten Querschnitt quer zur Blickrichtung so, wie er in der Schrägansicht "
+        "erscheint: in Plan-oblique-Geometrie (jeder Punkt entlang der Blickrichtung um Überhöhung "
+        "/ Grundneigung x (Höhe - niedrigste Höhe) verschoben), ohne die hinter näherem Gelände "
+        "verdeckten Teile. Die klassische Kammlinienskizze; sie deckt sich genau mit den "
+        "Plan-oblique-Silhouetten. Jede Linie trägt die Nummer ihres Querschnitts und ihren "
+        "Abstand vom vorderen Bildrand.",
+    "Every n-th cross-section": "Jeder n-te Querschnitt",
+    "Distance between drawn cross-sections, in cells along the line of sight.":
+        "Abstand der gezeichneten Querschnitte in Zellen entlang der Blickrichtung.",
+    "Profile plot": "Profildarstellung",
+    "Visible pieces of the cross-sections as lines.": "Sichtbare Teile der Querschnitte als Linien.",
+    "Could not create the raster %1.": "Das Raster %1 konnte nicht angelegt werden.",
+    "Could not write the raster %1.": "Das Raster %1 konnte nicht geschrieben werden.",
+    "Row slope map": "Karte der Zeilenneigung",
+    "The magnitude of the slope across the line of sight, in percent, on the DEM's grid (central "
+    "differences across the view). Styled light where the terrain is flat across the view and "
+    "dark where it is steep, the backdrop the thesis uses under its silhouettes. Only the azimuth "
+    "matters.":
+        "Der Betrag der Neigung quer zur Blickrichtung in Prozent auf dem Gitter des DGM "
+        "(zentrale Differenzen quer zur Ansicht). Hell, wo das Gelände quer zur Ansicht flach "
+        "ist, dunkel, wo es steil ist: der Hintergrund, den die Dissertation unter ihre "
+        "Silhouetten legt. Nur die Blickrichtung zählt.",
+    "Row slope": "Zeilenneigung",
+    "Float32 raster of |row slope| in percent.": "Float32-Raster der |Zeilenneigung| in Prozent.",
     "Terrain sketch: factual and formulated silhouettes":
         "Geländeskizze: faktische und formulierte Silhouetten",
 }

@@ -2,7 +2,10 @@
 
 #include <QIcon>
 
+#include "classification_algorithm.h"
 #include "plugin_paths.h"
+#include "profile_plot_algorithm.h"
+#include "row_slope_algorithm.h"
 #include "silhouettes_algorithm.h"
 
 namespace tsk::plugin {
@@ -25,6 +28,9 @@ QString TerrainSketchProvider::svgIconPath() const {
 
 void TerrainSketchProvider::loadAlgorithms() {
   addAlgorithm(new SilhouettesAlgorithm());
+  addAlgorithm(new ProfilePlotAlgorithm());
+  addAlgorithm(new ClassificationAlgorithm());
+  addAlgorithm(new RowSlopeAlgorithm());
 }
 
 }  // namespace tsk::plugin

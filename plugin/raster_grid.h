@@ -40,6 +40,7 @@ class RasterGrid {
   const OrientedFrame& frame() const { return mFrame; }
   const GeoTransform& geotransform() const { return mGeoTransform; }
   const QgsCoordinateReferenceSystem& crs() const { return mCrs; }
+  const QgsRectangle& extent() const { return mExtent; }
   const QStringList& notes() const { return mNotes; }
 
  private:

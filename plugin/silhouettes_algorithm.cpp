@@ -4,12 +4,10 @@
 #include <qgsprocessingoutputs.h>
 #include <qgsrasterlayer.h>
 
-#include <QIcon>
 #include <new>
 
 #include "errors.h"
 #include "layer_style.h"
-#include "plugin_paths.h"
 #include "qgis_compat.h"
 #include "raster_grid.h"
 #include "silhouettes.h"
@@ -19,15 +17,6 @@ namespace tsk::plugin {
 namespace {
 
 // Parameter keys.
-const QString kInput = QStringLiteral("INPUT");
-const QString kBand = QStringLiteral("BAND");
-const QString kAzimuth = QStringLiteral("AZIMUTH");
-const QString kVe = QStringLiteral("VE");
-const QString kBaseSlope = QStringLiteral("BASE_SLOPE");
-const QString kRowCut = QStringLiteral("ROW_CUT");
-const QString kColCut = QStringLiteral("COL_CUT");
-const QString kCtrl = QStringLiteral("CTRL_COL");
-const QString kDiagonals = QStringLiteral("DIAGONALS");
 const QString kWindow = QStringLiteral("WINDOW");
 const QString kMinCells = QStringLiteral("MIN_CELLS");
 const QString kGeometry = QStringLiteral("GEOMETRY");
@@ -41,9 +30,6 @@ constexpr double kReadEnd = 25.0;
 constexpr double kCoreEnd = 90.0;
 
 }  // namespace
-
-SilhouettesAlgorithm::SilhouettesAlgorithm() = default;
-SilhouettesAlgorithm::~SilhouettesAlgorithm() = default;
 
 QString SilhouettesAlgorithm::name() const {
   return QStringLiteral("silhouettes");
@@ -86,61 +72,22 @@ QString SilhouettesAlgorithm::shortHelpString() const {
       "contours of Visvalingam and Whelan (1998).");
 }
 
-QIcon SilhouettesAlgorithm::icon() const {
-  return QIcon(iconPath());
-}
-QString SilhouettesAlgorithm::svgIconPath() const {
-  return iconPath();
-}
-
 SilhouettesAlgorithm* SilhouettesAlgorithm::createInstance() const {
   return new SilhouettesAlgorithm();
 }
 
 void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
   const SilhouetteParams defaults;
+  addDemAndViewParameters(true);
+  addFilterParameters();
   auto add = [this](QgsProcessingParameterDefinition* p, const QString& help,
-                    bool advanced = false) {
-    p->setHelp(help);
-    if (advanced) p->setFlags(p->flags() | kAdvanced);
-    addParameter(p);
+                    bool advanced = false) { addWithHelp(p, help, advanced); };
+  auto integer = [](const QString& key, const QString& label, int value, int min, int max) {
+    return new QgsProcessingParameterNumber(key, label, kIntegerNumber, value, false, min, max);
   };
-  auto number = [](const QString& key, const QString& label, double value, double min, double max,
-                   bool integer = false) {
-    return new QgsProcessingParameterNumber(key, label, integer ? kIntegerNumber : kDoubleNumber,
-                                            value, false, min, max);
-  };
-  add(new QgsProcessingParameterRasterLayer(kInput, tr("Elevation (DEM)")),
-      tr("Digital elevation model with heights in metres, in a projected CRS in metres."));
-  add(new QgsProcessingParameterBand(kBand, tr("Band"), 1, kInput),
-      tr("The band holding the heights."));
-  add(number(kAzimuth, tr("View azimuth (degrees)"), defaults.view.azimuth_deg, 0, 360),
-      tr("Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 "
-         "(from the west, the default), 180 (from the north), 270 (from the east). These four "
-         "are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with "
-         "the line of sight, and the strokes are mapped back exactly into the DEM's CRS."));
-  add(number(kVe, tr("Vertical exaggeration"), defaults.view.ve, 0.01, 1000),
-      tr("Factor applied to heights before occlusion is computed."));
-  add(number(kBaseSlope, tr("Base slope (%)"), defaults.view.base_slope_pct, 0.01, 10000),
-      tr("Slope added along the line of sight, in percent: the view elevation angle is "
-         "atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees)."));
-  add(number(kRowCut, tr("Row slope cut-off (%)"), defaults.filter.row_cut_pct, 0.01, 10000),
-      tr("Slope filter: row (across the view) slope below which weak candidates are removed; "
-         "20 % is Macgregor's critical slope."));
-  add(number(kColCut, tr("Column slope cut-off (%)"), defaults.filter.col_cut_pct, 0.01, 10000),
-      tr("Slope filter: column (along the view) slope below which weak candidates are removed."));
-  add(number(kCtrl, tr("Control point column slope (%)"), defaults.filter.ctrl_col_pct, 0.001,
-             10000),
-      tr("Slope filter: column slope of the control point joining the two cut-offs, on the "
-         "perpendicular through the origin. Smaller values keep more diagonal features; it must "
-         "be below the column cut-off."));
-  add(new QgsProcessingParameterBoolean(kDiagonals, tr("Allow for diagonals"),
-                                        defaults.filter.diagonals),
-      tr("If checked the removed region is the polygon through the control point; if not, the "
-         "whole rectangle below both cut-offs is removed."));
-  add(number(kWindow, tr("Chaining window (cells)"), defaults.chain.window, 0, 1000, true),
+  add(integer(kWindow, tr("Chaining window (cells)"), defaults.chain.window, 0, 1000),
       tr("Formulated strokes link cells on neighbouring profiles at most this many cells apart."));
-  add(number(kMinCells, tr("Minimum stroke cells"), defaults.chain.min_cells, 2, 1000000, true),
+  add(integer(kMinCells, tr("Minimum stroke cells"), defaults.chain.min_cells, 2, 1000000),
       tr("Strokes with fewer cells are dropped (generalisation)."));
   add(new QgsProcessingParameterEnum(kGeometry, tr("Geometry"),
                                      {tr("Map (cell centres)"), tr("Plan oblique (the sketch)")},
@@ -166,16 +113,11 @@ void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
   }
 }
 
-SilhouetteParams SilhouettesAlgorithm::readParameters(const QVariantMap& parameters,
-                                                      QgsProcessingContext& context) const {
-  SilhouetteParams p;
-  p.view.azimuth_deg = parameterAsDouble(parameters, kAzimuth, context);
-  p.view.ve = parameterAsDouble(parameters, kVe, context);
-  p.view.base_slope_pct = parameterAsDouble(parameters, kBaseSlope, context);
-  p.filter.row_cut_pct = parameterAsDouble(parameters, kRowCut, context);
-  p.filter.col_cut_pct = parameterAsDouble(parameters, kColCut, context);
-  p.filter.ctrl_col_pct = parameterAsDouble(parameters, kCtrl, context);
-  p.filter.diagonals = parameterAsBool(parameters, kDiagonals, context);
+double SilhouettesAlgorithm::readParameters(const QVariantMap& parameters,
+                                            QgsProcessingContext& context) {
+  SilhouetteParams& p = mParams;
+  p.view = readView(parameters, context);
+  p.filter = readFilter(parameters, context);
   p.chain.window = parameterAsInt(parameters, kWindow, context);
   p.chain.min_cells = parameterAsInt(parameters, kMinCells, context);
   p.geometry =
@@ -183,36 +125,18 @@ SilhouetteParams SilhouettesAlgorithm::readParameters(const QVariantMap& paramet
   p.placement = parameterAsEnum(parameters, kPlacement, context) == 1 ? Placement::near_and_far
                                                                       : Placement::far;
   p.subcell = parameterAsBool(parameters, kSubcell, context);
-  return p;
-}
-
-bool SilhouettesAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
-                                            QgsProcessingContext& context,
-                                            QgsProcessingFeedback* feedback) {
-  mParams = readParameters(parameters, context);
-  try {
-    mParams.validate();
-  } catch (const Error& e) {
-    throw QgsProcessingException(QString::fromStdString(e.what()));
-  }
-  QgsRasterLayer* layer = parameterAsRasterLayer(parameters, kInput, context);
-  if (!layer) throw QgsProcessingException(invalidRasterError(parameters, kInput));
-  mRaster = std::make_unique<RasterGrid>(layer, parameterAsInt(parameters, kBand, context),
-                                         context.transformContext());
-  for (const QString& note : mRaster->notes()) {
-    if (feedback) feedback->pushWarning(note);
-  }
-  return true;
+  p.validate();
+  return p.view.azimuth_deg;
 }
 
 QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters,
                                                    QgsProcessingContext& context,
                                                    QgsProcessingFeedback* feedback) {
-  mRaster->read(mParams.view.azimuth_deg, feedback, 0.0, kReadEnd);
+  const RasterGrid& raster = readRaster(feedback, kReadEnd);
   SilhouetteResult result;
   try {
-    result = run_silhouettes(mRaster->oriented(), mRaster->frame(), mRaster->geotransform(),
-                             mParams, [feedback](double fraction) {
+    result = run_silhouettes(raster.oriented(), raster.frame(), raster.geotransform(), mParams,
+                             [feedback](double fraction) {
                                if (!feedback) return true;
                                feedback->setProgress(kReadEnd + (kCoreEnd - kReadEnd) * fraction);
                                return !feedback->isCanceled();
@@ -227,10 +151,10 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
 
   const QgsFields fields = strokeFields();
   std::unique_ptr<QgsFeatureSink> factual(parameterAsSink(parameters, kFactual, context, mFactualId,
-                                                          fields, kLineString, mRaster->crs()));
+                                                          fields, kLineString, raster.crs()));
   if (!factual) throw QgsProcessingException(invalidSinkError(parameters, kFactual));
   std::unique_ptr<QgsFeatureSink> formulated(parameterAsSink(
-      parameters, kFormulated, context, mFormulatedId, fields, kLineString, mRaster->crs()));
+      parameters, kFormulated, context, mFormulatedId, fields, kLineString, raster.crs()));
   if (!formulated) throw QgsProcessingException(invalidSinkError(parameters, kFormulated));
 
   const double total = std::max<std::size_t>(1, result.strokes.size());
@@ -259,7 +183,7 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
     outputs.insert(key.toUpper(), f.value);
     if (feedback) feedback->pushInfo(QStringLiteral("%1: %2").arg(key).arg(f.value));
   }
-  mRaster.reset();  // release the grid before QGIS loads the outputs
+  releaseRaster();  // release the grid before QGIS loads the outputs
   return outputs;
 }
 

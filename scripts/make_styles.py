@@ -6,8 +6,12 @@ Run with Debian's Python that has the qgis module:
 import os
 import sys
 
-from qgis.core import (QgsApplication, QgsLineSymbol, QgsProperty, QgsSingleSymbolRenderer,
-                       QgsSymbolLayer, QgsVectorLayer)
+from osgeo import gdal
+from qgis.core import (QgsApplication, QgsContrastEnhancement, QgsLineSymbol,
+                       QgsPalettedRasterRenderer, QgsProperty, QgsRasterLayer,
+                       QgsSingleBandGrayRenderer, QgsSingleSymbolRenderer, QgsSymbolLayer,
+                       QgsVectorLayer)
+from qgis.PyQt.QtGui import QColor
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 OUT = os.path.join(HERE, "..", "resources", "styles")
@@ -22,7 +26,41 @@ STYLES = [
      'coalesce(scale_linear("mean_depth", 0, 150, 0.45, 1.4), 0.6)'),
     ("formulated", "120,120,120",
      'coalesce(scale_linear("mean_slope", 0, 40, 0.2, 0.55), 0.3)'),
+    ("profiles", "60,60,60", "0.25"),
 ]
+
+# Stage classes as in the thesis's map views (same colours as the CLI's colour table).
+CLASSES = [(1, "visible", "#ffffff"), (2, "hidden", "#bed2eb"), (3, "occluding", "#dc1e1e"),
+           (4, "c-set", "#d7d7d7"), (5, "f-set", "#787878"), (6, "t-set", "#141414")]
+
+
+def save(layer, name):
+    path = os.path.join(OUT, name + ".qml")
+    message, ok = layer.saveNamedStyle(path)
+    if not ok:
+        raise RuntimeError("failed: %s %s" % (path, message))
+    print("wrote", os.path.normpath(path))
+
+
+def raster_styles(tmp):
+    path = os.path.join(tmp, "r.tif")
+    ds = gdal.GetDriverByName("GTiff").Create(path, 4, 4, 1, gdal.GDT_Byte)
+    ds.SetGeoTransform([0, 1, 0, 4, 0, -1])
+    ds = None
+    layer = QgsRasterLayer(path, "classes")
+    classes = [QgsPalettedRasterRenderer.Class(v, QColor(c), label) for v, label, c in CLASSES]
+    layer.setRenderer(QgsPalettedRasterRenderer(layer.dataProvider(), 1, classes))
+    save(layer, "classification")
+    # Row slope: white where flat across the view, black from 60 %.
+    gray = QgsSingleBandGrayRenderer(layer.dataProvider(), 1)
+    gray.setGradient(QgsSingleBandGrayRenderer.WhiteToBlack)
+    enhancement = QgsContrastEnhancement(layer.dataProvider().dataType(1))
+    enhancement.setContrastEnhancementAlgorithm(QgsContrastEnhancement.StretchToMinimumMaximum)
+    enhancement.setMinimumValue(0)
+    enhancement.setMaximumValue(60)
+    gray.setContrastEnhancement(enhancement)
+    layer.setRenderer(gray)
+    save(layer, "row_slope")
 
 
 def main():
@@ -34,15 +72,16 @@ def main():
         symbol = QgsLineSymbol.createSimple({"line_color": colour, "line_width": "0.5",
                                              "line_width_unit": "MM", "capstyle": "round",
                                              "joinstyle": "round"})
-        symbol.symbolLayer(0).setDataDefinedProperty(QgsSymbolLayer.PropertyStrokeWidth,
-                                                     QgsProperty.fromExpression(width))
+        if name != "profiles":
+            symbol.symbolLayer(0).setDataDefinedProperty(QgsSymbolLayer.PropertyStrokeWidth,
+                                                         QgsProperty.fromExpression(width))
+        else:
+            symbol.setWidth(float(width))
         layer.setRenderer(QgsSingleSymbolRenderer(symbol))
-        path = os.path.join(OUT, name + ".qml")
-        message, ok = layer.saveNamedStyle(path)
-        if not ok:
-            print("failed:", path, message, file=sys.stderr)
-            return 1
-        print("wrote", os.path.normpath(path))
+        save(layer, name)
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        raster_styles(tmp)
     app.exitQgis()
     return 0
 

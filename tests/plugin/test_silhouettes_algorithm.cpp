@@ -8,6 +8,8 @@
 #include <qgsprocessingcontext.h>
 #include <qgsprocessingfeedback.h>
 #include <qgsprocessingregistry.h>
+#include <qgsrasterblock.h>
+#include <qgsrasterdataprovider.h>
 #include <qgsrasterlayer.h>
 #include <qgsvectorlayer.h>
 
@@ -16,9 +18,12 @@
 #include <memory>
 
 #include "dem_reader.h"
+#include "diagnostics.h"
+#include "profile_plot.h"
 #include "provider.h"
 #include "silhouettes.h"
 #include "translation.h"
+#include "visibility.h"
 
 using namespace tsk;
 
@@ -56,14 +61,18 @@ struct Run {
   QString error;
 };
 
-// Runs the algorithm with `extra` parameters on top of INPUT/BAND and two outputs in `dir`.
+// Runs algorithm `id` with `extra` parameters on top of INPUT/BAND and outputs in `dir`.
 Run runAlgorithm(const QString& input, const QVariantMap& extra, const QTemporaryDir& dir,
-                 RecordingFeedback* feedback = nullptr) {
-  std::unique_ptr<QgsProcessingAlgorithm> alg(algorithm());
+                 RecordingFeedback* feedback = nullptr,
+                 const QString& id = QStringLiteral("silhouettes")) {
+  algorithm();  // registers the provider
+  std::unique_ptr<QgsProcessingAlgorithm> alg(
+      QgsApplication::processingRegistry()->algorithmById("terrainsketch:" + id)->create());
   QVariantMap params{{"INPUT", input},
                      {"BAND", 1},
                      {"FACTUAL", dir.filePath("factual.gpkg")},
-                     {"FORMULATED", dir.filePath("formulated.gpkg")}};
+                     {"FORMULATED", dir.filePath("formulated.gpkg")},
+                     {"OUTPUT", dir.filePath(id == "profileplot" ? "out.gpkg" : "out.tif")}};
   for (auto it = extra.begin(); it != extra.end(); ++it) params.insert(it.key(), it.value());
   QgsProcessingContext context;
   RecordingFeedback defaultFeedback;
@@ -209,4 +218,78 @@ TEST_CASE("the German translation loads for the de locale", "[plugin][i18n]") {
   plugin::removeTranslation();
   CHECK(provider.name() == QStringLiteral("Terrain sketch"));
   CHECK_FALSE(plugin::installTranslation(QStringLiteral("xx"), folder));
+}
+
+TEST_CASE("the classification raster holds the core's stage counts", "[plugin][diagnostics]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/jacksboro_utm16n.tif";
+  const Run run = runAlgorithm(dem, {}, dir, nullptr, QStringLiteral("classification"));
+  INFO(run.error.toStdString());
+  REQUIRE(run.ok);
+  const SilhouetteResult core = coreResult(dem, 90, Geometry::map);
+  QgsRasterLayer layer(run.results.value("OUTPUT").toString(), "c", "gdal");
+  REQUIRE(layer.isValid());
+  CHECK(layer.crs().authid() == "EPSG:32616");
+  std::unique_ptr<QgsRasterBlock> block(
+      layer.dataProvider()->block(1, layer.extent(), layer.width(), layer.height()));
+  std::size_t thinned = 0, occluding = 0;
+  for (int r = 0; r < layer.height(); ++r)
+    for (int c = 0; c < layer.width(); ++c) {
+      const double v = block->value(r, c);
+      thinned += v == 6, occluding += v == 3;
+    }
+  CHECK(thinned == core.stats.thinned);
+  CHECK(run.results.value("TSET_PCT").toDouble() == Approx(core.stats.pct(core.stats.thinned)));
+  CHECK(occluding > 0);
+}
+
+TEST_CASE("the row slope map equals the core's", "[plugin][diagnostics]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/volcano.tif";
+  const Run run = runAlgorithm(dem, {{"AZIMUTH", 30}}, dir, nullptr, QStringLiteral("rowslope"));
+  INFO(run.error.toStdString());
+  REQUIRE(run.ok);
+  io::DemOptions options;
+  options.azimuth_deg = 30;
+  const io::Dem core = io::read_dem(dem.toStdString(), options);
+  const HeightGrid expected = row_slope_map(core.oriented, core.frame);
+  QgsRasterLayer layer(run.results.value("OUTPUT").toString(), "r", "gdal");
+  REQUIRE(layer.isValid());
+  std::unique_ptr<QgsRasterBlock> block(
+      layer.dataProvider()->block(1, layer.extent(), layer.width(), layer.height()));
+  int compared = 0;
+  for (int r = 0; r < layer.height(); ++r)
+    for (int c = 0; c < layer.width(); ++c) {
+      const float e = expected(static_cast<std::size_t>(r), static_cast<std::size_t>(c));
+      bool noData = false;
+      const double v = block->valueAndNoData(r, c, noData);
+      if (!is_data(e)) {
+        REQUIRE((noData || std::isnan(v)));
+      } else {
+        REQUIRE(v == Approx(e).margin(1e-4));
+        ++compared;
+      }
+    }
+  CHECK(compared > 3000);
+}
+
+TEST_CASE("the profile plot algorithm draws the core's lines", "[plugin][profile plot]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/jacksboro_utm16n.tif";
+  const Run run = runAlgorithm(dem, {{"EVERY", 12}}, dir, nullptr, QStringLiteral("profileplot"));
+  INFO(run.error.toStdString());
+  REQUIRE(run.ok);
+  io::DemOptions options;
+  const io::Dem core = io::read_dem(dem.toStdString(), options);
+  CellFlags flags;
+  classify_visibility(core.oriented, core.frame.d, ViewParams{}, flags);
+  const auto lines = profile_plot(core.oriented, flags, core.frame, ViewParams{}, core.geotransform,
+                                  12, lowest_height(core.oriented));
+  QgsVectorLayer layer(run.results.value("OUTPUT").toString(), "p", "ogr");
+  REQUIRE(layer.isValid());
+  CHECK(layer.featureCount() == static_cast<long long>(lines.size()));
+  CHECK(layer.fields().indexOf("section") >= 0);
+  CHECK(layer.fields().indexOf("distance") >= 0);
+  const Run bad = runAlgorithm(dem, {{"EVERY", 0}}, dir, nullptr, QStringLiteral("profileplot"));
+  CHECK_FALSE(bad.ok);
 }

@@ -1,0 +1,92 @@
+#include "classification_algorithm.h"
+
+#include <qgsprocessingfeedback.h>
+#include <qgsprocessingoutputs.h>
+
+#include "diagnostics.h"
+#include "errors.h"
+#include "layer_style.h"
+#include "raster_grid.h"
+#include "raster_output.h"
+#include "silhouettes.h"
+
+namespace tsk::plugin {
+
+QString ClassificationAlgorithm::name() const {
+  return QStringLiteral("classification");
+}
+
+QString ClassificationAlgorithm::displayName() const {
+  return tr("Silhouette stages (classification raster)");
+}
+
+QString ClassificationAlgorithm::shortHelpString() const {
+  return tr(
+      "Shows what the silhouette method does to every cell of the DEM, on the DEM's own "
+      "grid: 1 visible, 2 hidden, 3 occluding (Factual Silhouette), 4 c-set (back-facing "
+      "slope brought into view), 5 f-set (kept by the slope filter), 6 t-set (kept by "
+      "thinning); 0 is nodata. Styled like the thesis's map views: occlusion red, hidden "
+      "zones blue, c-set light grey, f-set dark grey. The stage statistics are in the "
+      "results and the log.");
+}
+
+ClassificationAlgorithm* ClassificationAlgorithm::createInstance() const {
+  return new ClassificationAlgorithm();
+}
+
+void ClassificationAlgorithm::initAlgorithm(const QVariantMap&) {
+  addDemAndViewParameters(true);
+  addFilterParameters();
+  addWithHelp(new QgsProcessingParameterRasterDestination(QStringLiteral("OUTPUT"),
+                                                          tr("Silhouette stages")),
+              tr("Byte raster of stage classes on the DEM's grid."));
+  for (const StageFigure& f : stage_figures(StageStats{})) {
+    addOutput(new QgsProcessingOutputNumber(QString::fromLatin1(f.key).toUpper(),
+                                            QString::fromLatin1(f.key)));
+  }
+}
+
+double ClassificationAlgorithm::readParameters(const QVariantMap& parameters,
+                                               QgsProcessingContext& context) {
+  mParams.view = readView(parameters, context);
+  mParams.filter = readFilter(parameters, context);
+  mParams.validate();
+  return mParams.view.azimuth_deg;
+}
+
+QVariantMap ClassificationAlgorithm::processAlgorithm(const QVariantMap& parameters,
+                                                      QgsProcessingContext& context,
+                                                      QgsProcessingFeedback* feedback) {
+  const RasterGrid& raster = readRaster(feedback, 25);
+  SilhouetteResult result;
+  try {
+    result = run_silhouettes(raster.oriented(), raster.frame(), raster.geotransform(), mParams,
+                             [feedback](double fraction) {
+                               if (!feedback) return true;
+                               feedback->setProgress(25 + 65 * fraction);
+                               return !feedback->isCanceled();
+                             });
+  } catch (const Cancelled&) {
+    throw QgsProcessingException(tr("Cancelled."));
+  } catch (const Error& e) {
+    throw QgsProcessingException(QString::fromStdString(e.what()));
+  }
+  mOutput = parameterAsOutputLayer(parameters, QStringLiteral("OUTPUT"), context);
+  writeByteRaster(mOutput, classification_map(result.flags, raster.frame()), raster);
+  QVariantMap outputs{{QStringLiteral("OUTPUT"), mOutput}};
+  for (const StageFigure& f : stage_figures(result.stats)) {
+    outputs.insert(QString::fromLatin1(f.key).toUpper(), f.value);
+    if (feedback)
+      feedback->pushInfo(QStringLiteral("%1: %2").arg(QLatin1String(f.key)).arg(f.value));
+  }
+  releaseRaster();
+  return outputs;
+}
+
+QVariantMap ClassificationAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
+                                                          QgsProcessingFeedback*) {
+  styleOnCompletion(context, mOutput, QStringLiteral("classification"));
+  return {};
+}
+
+}  // namespace tsk::plugin

@@ -1,0 +1,134 @@
+#include "dem_view_algorithm.h"
+
+#include <qgsprocessingfeedback.h>
+#include <qgsrasterlayer.h>
+
+#include <QIcon>
+
+#include "errors.h"
+#include "plugin_paths.h"
+#include "qgis_compat.h"
+#include "raster_grid.h"
+
+namespace tsk::plugin {
+
+DemViewAlgorithm::DemViewAlgorithm() = default;
+DemViewAlgorithm::~DemViewAlgorithm() = default;
+
+QIcon DemViewAlgorithm::icon() const {
+  return QIcon(iconPath());
+}
+QString DemViewAlgorithm::svgIconPath() const {
+  return iconPath();
+}
+
+void DemViewAlgorithm::addWithHelp(QgsProcessingParameterDefinition* parameter, const QString& help,
+                                   bool advanced) {
+  parameter->setHelp(help);
+  if (advanced) parameter->setFlags(parameter->flags() | kAdvanced);
+  addParameter(parameter);
+}
+
+namespace {
+
+QgsProcessingParameterNumber* number(const QString& key, const QString& label, double value,
+                                     double min, double max) {
+  return new QgsProcessingParameterNumber(key, label, kDoubleNumber, value, false, min, max);
+}
+
+}  // namespace
+
+void DemViewAlgorithm::addDemAndViewParameters(bool exaggeration) {
+  const ViewParams defaults;
+  addWithHelp(new QgsProcessingParameterRasterLayer(QStringLiteral("INPUT"), tr("Elevation (DEM)")),
+              tr("Digital elevation model with heights in metres, in a projected CRS in metres."));
+  addWithHelp(new QgsProcessingParameterBand(QStringLiteral("BAND"), tr("Band"), 1,
+                                             QStringLiteral("INPUT")),
+              tr("The band holding the heights."));
+  addWithHelp(
+      number(QStringLiteral("AZIMUTH"), tr("View azimuth (degrees)"), defaults.azimuth_deg, 0, 360),
+      tr("Compass bearing the viewer faces, clockwise from grid north: 0 (from the "
+         "south), 90 (from the west, the default), 180 (from the north), 270 (from the "
+         "east). These four are exact; any other azimuth resamples the DEM bilinearly "
+         "onto a grid aligned with the line of sight, and the strokes are mapped back "
+         "exactly into the DEM's CRS."));
+  if (!exaggeration) return;
+  addWithHelp(number(QStringLiteral("VE"), tr("Vertical exaggeration"), defaults.ve, 0.01, 1000),
+              tr("Factor applied to heights before occlusion is computed."));
+  addWithHelp(number(QStringLiteral("BASE_SLOPE"), tr("Base slope (%)"), defaults.base_slope_pct,
+                     0.01, 10000),
+              tr("Slope added along the line of sight, in percent: the view elevation angle is "
+                 "atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees)."));
+}
+
+void DemViewAlgorithm::addFilterParameters() {
+  const FilterParams defaults;
+  addWithHelp(number(QStringLiteral("ROW_CUT"), tr("Row slope cut-off (%)"), defaults.row_cut_pct,
+                     0.01, 10000),
+              tr("Slope filter: row (across the view) slope below which weak candidates are "
+                 "removed; 20 % is Macgregor's critical slope."));
+  addWithHelp(number(QStringLiteral("COL_CUT"), tr("Column slope cut-off (%)"),
+                     defaults.col_cut_pct, 0.01, 10000),
+              tr("Slope filter: column (along the view) slope below which weak candidates are "
+                 "removed."));
+  addWithHelp(number(QStringLiteral("CTRL_COL"), tr("Control point column slope (%)"),
+                     defaults.ctrl_col_pct, 0.001, 10000),
+              tr("Slope filter: column slope of the control point joining the two cut-offs, on "
+                 "the perpendicular through the origin. Smaller values keep more diagonal "
+                 "features; it must be below the column cut-off."));
+  addWithHelp(new QgsProcessingParameterBoolean(QStringLiteral("DIAGONALS"),
+                                                tr("Allow for diagonals"), defaults.diagonals),
+              tr("If checked the removed region is the polygon through the control point; if "
+                 "not, the whole rectangle below both cut-offs is removed."));
+}
+
+ViewParams DemViewAlgorithm::readView(const QVariantMap& parameters,
+                                      QgsProcessingContext& context) const {
+  ViewParams view;
+  view.azimuth_deg = parameterAsDouble(parameters, QStringLiteral("AZIMUTH"), context);
+  if (parameterDefinition(QStringLiteral("VE"))) {
+    view.ve = parameterAsDouble(parameters, QStringLiteral("VE"), context);
+    view.base_slope_pct = parameterAsDouble(parameters, QStringLiteral("BASE_SLOPE"), context);
+  }
+  return view;
+}
+
+FilterParams DemViewAlgorithm::readFilter(const QVariantMap& parameters,
+                                          QgsProcessingContext& context) const {
+  FilterParams filter;
+  filter.row_cut_pct = parameterAsDouble(parameters, QStringLiteral("ROW_CUT"), context);
+  filter.col_cut_pct = parameterAsDouble(parameters, QStringLiteral("COL_CUT"), context);
+  filter.ctrl_col_pct = parameterAsDouble(parameters, QStringLiteral("CTRL_COL"), context);
+  filter.diagonals = parameterAsBool(parameters, QStringLiteral("DIAGONALS"), context);
+  return filter;
+}
+
+bool DemViewAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
+                                        QgsProcessingContext& context,
+                                        QgsProcessingFeedback* feedback) {
+  try {
+    mAzimuth = readParameters(parameters, context);
+  } catch (const Error& e) {
+    throw QgsProcessingException(QString::fromStdString(e.what()));
+  }
+  QgsRasterLayer* layer = parameterAsRasterLayer(parameters, QStringLiteral("INPUT"), context);
+  if (!layer) throw QgsProcessingException(invalidRasterError(parameters, QStringLiteral("INPUT")));
+  mRaster = std::make_unique<RasterGrid>(
+      layer, parameterAsInt(parameters, QStringLiteral("BAND"), context),
+      context.transformContext());
+  for (const QString& note : mRaster->notes()) {
+    if (feedback) feedback->pushWarning(note);
+  }
+  return true;
+}
+
+RasterGrid& DemViewAlgorithm::readRaster(QgsProcessingFeedback* feedback, double progressTo) {
+  mRaster->read(mAzimuth, feedback, 0.0, progressTo);
+  return *mRaster;
+}
+
+void DemViewAlgorithm::releaseRaster() {
+  mRaster.reset();
+}
+
+}  // namespace tsk::plugin

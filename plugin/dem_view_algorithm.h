@@ -1,0 +1,52 @@
+// Base of the algorithms that look at a DEM from a viewpoint: the shared DEM, view and slope
+// filter parameters, their help, and reading the raster (prepared on the main thread).
+#pragma once
+
+#include <qgsprocessingalgorithm.h>
+
+#include <QCoreApplication>
+#include <memory>
+
+#include "params.h"
+
+namespace tsk::plugin {
+
+class RasterGrid;
+
+class DemViewAlgorithm : public QgsProcessingAlgorithm {
+  Q_DECLARE_TR_FUNCTIONS(DemViewAlgorithm)
+
+ public:
+  DemViewAlgorithm();
+  ~DemViewAlgorithm() override;
+  QIcon icon() const override;
+  QString svgIconPath() const override;
+
+ protected:
+  // Adds `parameter` with its help text, optionally as an advanced parameter.
+  void addWithHelp(QgsProcessingParameterDefinition* parameter, const QString& help,
+                   bool advanced = false);
+  // INPUT, BAND and AZIMUTH; with `exaggeration` also VE and BASE_SLOPE.
+  void addDemAndViewParameters(bool exaggeration);
+  // ROW_CUT, COL_CUT, CTRL_COL, DIAGONALS.
+  void addFilterParameters();
+  ViewParams readView(const QVariantMap& parameters, QgsProcessingContext& context) const;
+  FilterParams readFilter(const QVariantMap& parameters, QgsProcessingContext& context) const;
+
+  // Subclasses read and validate their own parameters here (throw tsk::Error when invalid) and
+  // return the azimuth the raster is read for.
+  virtual double readParameters(const QVariantMap& parameters, QgsProcessingContext& context) = 0;
+
+  bool prepareAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,
+                        QgsProcessingFeedback* feedback) override;
+
+  // Worker thread: reads the DEM oriented for the azimuth, progress 0 to `progressTo` percent.
+  RasterGrid& readRaster(QgsProcessingFeedback* feedback, double progressTo);
+  void releaseRaster();
+
+ private:
+  std::unique_ptr<RasterGrid> mRaster;
+  double mAzimuth = 90;
+};
+
+}  // namespace tsk::plugin

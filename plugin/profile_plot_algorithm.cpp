@@ -1,0 +1,103 @@
+#include "profile_plot_algorithm.h"
+
+#include <qgsfeaturesink.h>
+#include <qgsgeometry.h>
+#include <qgslinestring.h>
+#include <qgsprocessingfeedback.h>
+
+#include "errors.h"
+#include "layer_style.h"
+#include "profile_plot.h"
+#include "qgis_compat.h"
+#include "raster_grid.h"
+#include "visibility.h"
+
+namespace tsk::plugin {
+
+QString ProfilePlotAlgorithm::name() const {
+  return QStringLiteral("profileplot");
+}
+QString ProfilePlotAlgorithm::displayName() const {
+  return tr("Profile plot (ridgelines)");
+}
+
+QString ProfilePlotAlgorithm::shortHelpString() const {
+  return tr(
+      "Draws every n-th cross-section across the line of sight as it appears in the "
+      "oblique view: in plan-oblique geometry (each point moved along the view azimuth by "
+      "exaggeration / base slope x (height - lowest height)), with the parts hidden behind "
+      "nearer terrain removed. The classic ridgeline sketch; it overlays the plan-oblique "
+      "silhouettes exactly. Each line carries its cross-section number and its distance "
+      "from the front of the view.");
+}
+
+ProfilePlotAlgorithm* ProfilePlotAlgorithm::createInstance() const {
+  return new ProfilePlotAlgorithm();
+}
+
+void ProfilePlotAlgorithm::initAlgorithm(const QVariantMap&) {
+  addDemAndViewParameters(true);
+  addWithHelp(
+      new QgsProcessingParameterNumber(QStringLiteral("EVERY"), tr("Every n-th cross-section"),
+                                       kIntegerNumber, 10, false, 1, 100000),
+      tr("Distance between drawn cross-sections, in cells along the line of sight."));
+  addWithHelp(new QgsProcessingParameterFeatureSink(QStringLiteral("OUTPUT"), tr("Profile plot"),
+                                                    kLineLayer),
+              tr("Visible pieces of the cross-sections as lines."));
+}
+
+double ProfilePlotAlgorithm::readParameters(const QVariantMap& parameters,
+                                            QgsProcessingContext& context) {
+  mView = readView(parameters, context);
+  mView.validate();
+  mEvery = parameterAsInt(parameters, QStringLiteral("EVERY"), context);
+  if (mEvery < 1) throw Error("the cross-section step must be at least 1");
+  return mView.azimuth_deg;
+}
+
+QVariantMap ProfilePlotAlgorithm::processAlgorithm(const QVariantMap& parameters,
+                                                   QgsProcessingContext& context,
+                                                   QgsProcessingFeedback* feedback) {
+  const RasterGrid& raster = readRaster(feedback, 50);
+  CellFlags flags;
+  std::vector<ProfileLine> lines;
+  try {
+    classify_visibility(raster.oriented(), raster.frame().d, mView, flags);
+    lines = profile_plot(raster.oriented(), flags, raster.frame(), mView, raster.geotransform(),
+                         static_cast<std::size_t>(mEvery), lowest_height(raster.oriented()));
+  } catch (const Error& e) {
+    throw QgsProcessingException(QString::fromStdString(e.what()));
+  }
+  QgsFields fields;
+  fields.append(makeField(QStringLiteral("section"), FieldKind::Integer));
+  fields.append(makeField(QStringLiteral("distance"), FieldKind::Real));
+  std::unique_ptr<QgsFeatureSink> sink(parameterAsSink(
+      parameters, QStringLiteral("OUTPUT"), context, mOutput, fields, kLineString, raster.crs()));
+  if (!sink) throw QgsProcessingException(invalidSinkError(parameters, QStringLiteral("OUTPUT")));
+  std::size_t written = 0;
+  for (const ProfileLine& line : lines) {
+    QgsFeature feature(fields);
+    feature.setAttributes({static_cast<int>(line.cross_section), line.distance});
+    QVector<double> xs, ys;
+    for (const StrokePoint& p : line.points) xs << p.x, ys << p.y;
+    feature.setGeometry(QgsGeometry(new QgsLineString(xs, ys)));
+    if (!sink->addFeature(feature, QgsFeatureSink::FastInsert)) {
+      throw QgsProcessingException(
+          writeFeatureError(sink.get(), parameters, QStringLiteral("OUTPUT")));
+    }
+    if (feedback && ++written % 500 == 0) {
+      if (feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
+      feedback->setProgress(50 + 50.0 * written / lines.size());
+    }
+  }
+  releaseRaster();
+  return {{QStringLiteral("OUTPUT"), mOutput}};
+}
+
+QVariantMap ProfilePlotAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
+                                                       QgsProcessingFeedback*) {
+  styleOnCompletion(context, mOutput, QStringLiteral("profiles"));
+  return {};
+}
+
+}  // namespace tsk::plugin

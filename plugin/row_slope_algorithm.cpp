@@ -1,0 +1,61 @@
+#include "row_slope_algorithm.h"
+
+#include <qgsprocessingfeedback.h>
+
+#include "diagnostics.h"
+#include "layer_style.h"
+#include "raster_grid.h"
+#include "raster_output.h"
+
+namespace tsk::plugin {
+
+QString RowSlopeAlgorithm::name() const {
+  return QStringLiteral("rowslope");
+}
+QString RowSlopeAlgorithm::displayName() const {
+  return tr("Row slope map");
+}
+
+QString RowSlopeAlgorithm::shortHelpString() const {
+  return tr(
+      "The magnitude of the slope across the line of sight, in percent, on the DEM's grid "
+      "(central differences across the view). Styled light where the terrain is flat "
+      "across the view and dark where it is steep, the backdrop the thesis uses under its "
+      "silhouettes. Only the azimuth matters.");
+}
+
+RowSlopeAlgorithm* RowSlopeAlgorithm::createInstance() const {
+  return new RowSlopeAlgorithm();
+}
+
+void RowSlopeAlgorithm::initAlgorithm(const QVariantMap&) {
+  addDemAndViewParameters(false);
+  addWithHelp(
+      new QgsProcessingParameterRasterDestination(QStringLiteral("OUTPUT"), tr("Row slope")),
+      tr("Float32 raster of |row slope| in percent."));
+}
+
+double RowSlopeAlgorithm::readParameters(const QVariantMap& parameters,
+                                         QgsProcessingContext& context) {
+  const ViewParams view = readView(parameters, context);
+  view.validate();
+  return view.azimuth_deg;
+}
+
+QVariantMap RowSlopeAlgorithm::processAlgorithm(const QVariantMap& parameters,
+                                                QgsProcessingContext& context,
+                                                QgsProcessingFeedback* feedback) {
+  const RasterGrid& raster = readRaster(feedback, 70);
+  mOutput = parameterAsOutputLayer(parameters, QStringLiteral("OUTPUT"), context);
+  writeFloatRaster(mOutput, row_slope_map(raster.oriented(), raster.frame()), raster);
+  releaseRaster();
+  return {{QStringLiteral("OUTPUT"), mOutput}};
+}
+
+QVariantMap RowSlopeAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
+                                                    QgsProcessingFeedback*) {
+  styleOnCompletion(context, mOutput, QStringLiteral("row_slope"));
+  return {};
+}
+
+}  // namespace tsk::plugin
