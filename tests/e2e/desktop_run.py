@@ -1,5 +1,5 @@
-"""Runs inside the real QGIS desktop (qgis.bin --code): runs the Terrain sketch algorithm from
-Processing, loads the styled outputs, saves a screenshot of the canvas and writes what it found
+"""Runs inside the real QGIS desktop (qgis.bin --code): runs the Terrain sketch algorithms from
+Processing, loads their styled outputs, saves screenshots of the canvas and writes what it found
 to a JSON report for desktop_test.sh to check. Always exits QGIS."""
 import json
 import os
@@ -11,7 +11,7 @@ from qgis.utils import iface
 
 OUT = os.environ["TSK_E2E_OUT"]
 DEM = os.environ["TSK_E2E_DEM"]
-report = {"ok": False}
+report = {"ok": False, "screenshots": []}
 
 
 def finish():
@@ -23,33 +23,53 @@ def finish():
 
 def describe(layer):
     renderer = layer.renderer()
-    symbol = renderer.symbol() if hasattr(renderer, "symbol") else None
-    width_prop = None
-    if symbol is not None:
-        prop = symbol.symbolLayer(0).dataDefinedProperties().property(
-            symbol.symbolLayer(0).PropertyStrokeWidth)
-        width_prop = prop.expressionString() if prop.isActive() else None
-    return {
-        "name": layer.name(),
-        "features": layer.featureCount(),
-        "crs": layer.crs().authid(),
-        "renderer": renderer.type(),
-        "colour": symbol.color().name() if symbol else None,
-        "width_expression": width_prop,
-    }
+    info = {"name": layer.name(), "crs": layer.crs().authid(), "renderer": renderer.type()}
+    if layer.type() == layer.VectorLayer:
+        symbol = renderer.symbol() if hasattr(renderer, "symbol") else None
+        info["features"] = layer.featureCount()
+        if symbol is not None:
+            sl = symbol.symbolLayer(0)
+            prop = sl.dataDefinedProperties().property(sl.PropertyStrokeWidth)
+            info["colour"] = symbol.color().name()
+            info["width_expression"] = prop.expressionString() if prop.isActive() else None
+    return info
 
 
-def save_screenshot():
-    if "screenshot" in report:
-        return
+def show_only(names, rotation):
+    root = QgsProject.instance().layerTreeRoot()
+    extent = QgsRectangle()
+    for layer in QgsProject.instance().mapLayers().values():
+        visible = layer.name() in names
+        root.findLayer(layer.id()).setItemVisibilityChecked(visible)
+        if visible:
+            extent.combineExtentWith(layer.extent())
+    canvas = iface.mapCanvas()
+    canvas.setRotation(rotation)
+    canvas.setExtent(extent)
+    canvas.refresh()
+
+
+# (file, visible layers, canvas rotation): the oblique sketch with the azimuth (90) up, then
+# the classification map north up.
+SHOTS = [("qgis_desktop.png", {"Factual silhouettes", "Formulated silhouettes", "Profile plot"}, -90),
+         ("qgis_classification.png", {"Silhouette stages"}, 0)]
+
+
+def take(index):
     try:
-        path = os.path.join(OUT, "qgis_desktop.png")
-        iface.mapCanvas().saveAsImage(path)
-        report["screenshot"] = path
-        report["ok"] = True
+        if index > 0:
+            path = os.path.join(OUT, SHOTS[index - 1][0])
+            iface.mapCanvas().saveAsImage(path)
+            report["screenshots"].append(path)
+        if index == len(SHOTS):
+            report["ok"] = True
+            finish()
+            return
+        show_only(SHOTS[index][1], SHOTS[index][2])
+        QTimer.singleShot(4000, lambda: take(index + 1))
     except Exception:
         report["error"] = traceback.format_exc()
-    finish()
+        finish()
 
 
 def run():
@@ -59,23 +79,21 @@ def run():
         report["plugin_active"] = "terrain_sketch" in qgis.utils.active_plugins
         report["provider"] = QgsApplication.processingRegistry().providerById(
             "terrainsketch") is not None
-        results = processing.runAndLoadResults("terrainsketch:silhouettes", {
-            "INPUT": DEM, "BAND": 1, "GEOMETRY": 1,
-            "FACTUAL": os.path.join(OUT, "factual.gpkg"),
-            "FORMULATED": os.path.join(OUT, "formulated.gpkg")})
-        report["results"] = {k: (v if isinstance(v, (int, float)) else str(v))
-                             for k, v in results.items()}
-        layers = [l for l in QgsProject.instance().mapLayers().values()]
-        report["layers"] = [describe(l) for l in layers]
-        extent = QgsRectangle()
-        for layer in layers:
-            extent.combineExtentWith(layer.extent())
-        canvas = iface.mapCanvas()
-        canvas.setRotation(-90)  # azimuth 90 up: the plan-oblique strokes read as the sketch
-        canvas.setExtent(extent)
-        canvas.refresh()
-        canvas.mapCanvasRefreshed.connect(save_screenshot)
-        QTimer.singleShot(20000, save_screenshot)  # in case no refresh signal comes
+        common = {"INPUT": DEM, "BAND": 1}
+        runs = [("terrainsketch:silhouettes", {"GEOMETRY": 1,
+                                               "FACTUAL": os.path.join(OUT, "factual.gpkg"),
+                                               "FORMULATED": os.path.join(OUT, "formulated.gpkg")}),
+                ("terrainsketch:profileplot", {"EVERY": 12,
+                                               "OUTPUT": os.path.join(OUT, "profiles.gpkg")}),
+                ("terrainsketch:classification", {"OUTPUT": os.path.join(OUT, "classes.tif")}),
+                ("terrainsketch:rowslope", {"OUTPUT": os.path.join(OUT, "rowslope.tif")})]
+        report["results"] = {}
+        for alg, params in runs:
+            results = processing.runAndLoadResults(alg, dict(common, **params))
+            report["results"][alg] = {k: (v if isinstance(v, (int, float)) else str(v))
+                                      for k, v in results.items()}
+        report["layers"] = [describe(l) for l in QgsProject.instance().mapLayers().values()]
+        take(0)
     except Exception:
         report["error"] = traceback.format_exc()
         finish()

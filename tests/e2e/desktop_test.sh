@@ -31,7 +31,7 @@ check(r.get("ok"), "run finished: %s" % r.get("error"))
 check(r.get("provider"), "provider registered")
 check(r.get("plugin_active"), "plugin active in the plugin manager")
 layers = {l["name"]: l for l in r.get("layers", [])}
-check(len(layers) == 2, "two layers loaded, got %s" % list(layers))
+check(len(layers) == 5, "five layers loaded, got %s" % list(layers))
 for name, colour, field in (("Factual silhouettes", "#111111", "mean_depth"),
                             ("Formulated silhouettes", "#787878", "mean_slope")):
     l = layers.get(name, {})
@@ -40,8 +40,13 @@ for name, colour, field in (("Factual silhouettes", "#111111", "mean_depth"),
     check(l.get("renderer") == "singleSymbol", name + " styled")
     check(l.get("colour") == colour, name + " colour %s" % l.get("colour"))
     check(field in (l.get("width_expression") or ""), name + " width by " + field)
-shot = r.get("screenshot", "")
-check(os.path.exists(shot) and os.path.getsize(shot) > 10000, "screenshot saved")
+check(layers.get("Profile plot", {}).get("features", 0) > 20, "profile plot lines")
+check(layers.get("Silhouette stages", {}).get("renderer") == "paletted", "classes paletted")
+check(layers.get("Row slope", {}).get("renderer") == "singlebandgray", "row slope grey")
+shots = r.get("screenshots", [])
+check(len(shots) == 2, "two screenshots")
+for shot in shots:
+    check(os.path.exists(shot) and os.path.getsize(shot) > 10000, "screenshot " + shot)
 if errors:
     print("FAILED:\n  " + "\n  ".join(errors)); sys.exit(1)
 print("desktop end-to-end: 1 passed, 0 failed")
