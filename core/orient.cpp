@@ -93,7 +93,7 @@ OrientedFrame make_resampled_frame(std::size_t rows, std::size_t cols, double dx
   // unequal cell sizes (spacing is the smaller one) need far more: refuse rather than exhaust
   // memory.
   const double dem_cells = static_cast<double>(rows) * static_cast<double>(cols);
-  const double limit = std::max(8.0 * dem_cells, static_cast<double>(1 << 24));
+  const double limit = std::max(8.0 * dem_cells, static_cast<double>(1 << 20));
   if (profiles * length > limit || profiles > static_cast<double>(kMaxGridSide) ||
       length > static_cast<double>(kMaxGridSide)) {
     throw Error("seen at azimuth " + std::to_string(azimuth) + " this DEM would need " +
