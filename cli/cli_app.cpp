@@ -31,6 +31,8 @@ commands:
   classify      per-cell stage of the method (visible, hidden, occluding, c-set, f-set,
                 t-set) on the DEM grid, with a colour table (OUTPUT: GeoTIFF)
   row-slope     |slope across the line of sight| in percent on the DEM grid (OUTPUT: GeoTIFF)
+  filter-plot   column against row slope with the c-set and the slope filter's removal region,
+                to tune the control point (OUTPUT: HTML page with an SVG diagram)
 
 INPUT is any raster GDAL reads (heights in metres, a projected CRS in metres);
 a vector OUTPUT is any OGR format, chosen by extension (.gpkg, .shp, .geojson, .fgb, ...).
@@ -256,6 +258,24 @@ int profiles(const std::vector<std::string>& args, std::ostream& out, std::ostre
   return 0;
 }
 
+int filter_plot(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Options o = parse(args);
+  const io::Dem dem = io::read_dem(o.input, o.dem);
+  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  const SilhouetteResult result =
+      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
+  const double range =
+      std::max(60.0, 2.5 * std::max(o.params.filter.row_cut_pct, o.params.filter.col_cut_pct));
+  const SlopeScatter scatter =
+      slope_scatter(dem.oriented, result.flags, dem.frame.d, dem.frame.w, range);
+  write_text(o.output, filter_diagram_html(
+                           scatter, o.params.filter,
+                           "Slope filter: " + std::filesystem::path(o.input).filename().string()));
+  out << o.output << ": c-set " << result.stats.pct(result.stats.candidate) << " %, f-set "
+      << result.stats.pct(result.stats.filtered) << " %\n";
+  return 0;
+}
+
 }  // namespace
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -267,7 +287,8 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   const std::map<std::string, Command> commands = {{"silhouettes", silhouettes},
                                                    {"profiles", profiles},
                                                    {"classify", classify},
-                                                   {"row-slope", row_slope}};
+                                                   {"row-slope", row_slope},
+                                                   {"filter-plot", filter_plot}};
   const auto command = commands.find(args[0]);
   if (command == commands.end()) {
     err << "terrain-sketch: unknown command '" << args[0] << "'\n" << kUsage;

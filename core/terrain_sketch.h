@@ -13,6 +13,7 @@
 // Applications and diagnostics:
 //   profile_plot.h    [3] cross-sections in plan-oblique geometry, hidden parts removed
 //   diagnostics.h     per-cell classification and row slope maps on the DEM grid
+//   filter_diagram.h  column against row slope scatter with the filter's removal region (HTML)
 //
 // Support: grid.h (the grid type, NaN nodata), flags.h (per-cell classification bits),
 // params.h (every parameter with its default), parallel.h (threads, progress, cancellation),
@@ -24,6 +25,7 @@
 #include "chaining.h"
 #include "diagnostics.h"
 #include "errors.h"
+#include "filter_diagram.h"
 #include "flags.h"
 #include "grid.h"
 #include "orient.h"

@@ -3,27 +3,27 @@
 <context>
     <name>ClassificationAlgorithm</name>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="18" />
+        <location filename="../plugin/classification_algorithm.cpp" line="20" />
         <source>Silhouette stages (classification raster)</source>
         <translation>Silhouetten-Stufen (Klassifikationsraster)</translation>
     </message>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="22" />
+        <location filename="../plugin/classification_algorithm.cpp" line="24" />
         <source>Shows what the silhouette method does to every cell of the DEM, on the DEM's own grid: 1 visible, 2 hidden, 3 occluding (Factual Silhouette), 4 c-set (back-facing slope brought into view), 5 f-set (kept by the slope filter), 6 t-set (kept by thinning); 0 is nodata. Styled like the thesis's map views: occlusion red, hidden zones blue, c-set light grey, f-set dark grey. The stage statistics are in the results and the log.</source>
         <translation>Zeigt, was das Silhouettenverfahren mit jeder Zelle des DGM macht, auf dem eigenen Gitter des DGM: 1 sichtbar, 2 verdeckt, 3 verdeckend (faktische Silhouette), 4 c-Menge (abgewandter Hang, der sichtbar wird), 5 f-Menge (vom Neigungsfilter behalten), 6 t-Menge (von der Ausdünnung behalten); 0 ist NoData. Gestaltet wie die Kartenansichten der Dissertation: Verdeckung rot, verdeckte Zonen blau, c-Menge hellgrau, f-Menge dunkelgrau. Die Stufenstatistik steht in den Ergebnissen und im Protokoll.</translation>
     </message>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="38" />
+        <location filename="../plugin/classification_algorithm.cpp" line="41" />
         <source>Silhouette stages</source>
         <translation>Silhouetten-Stufen</translation>
     </message>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="39" />
+        <location filename="../plugin/classification_algorithm.cpp" line="42" />
         <source>Byte raster of stage classes on the DEM's grid.</source>
         <translation>Byte-Raster der Stufenklassen auf dem Gitter des DGM.</translation>
     </message>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="67" />
+        <location filename="../plugin/classification_algorithm.cpp" line="70" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -31,130 +31,164 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="39" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="43" />
         <source>Elevation (DEM)</source>
         <translation>Höhenmodell (DGM)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="40" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="44" />
         <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
         <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="41" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="45" />
         <source>Band</source>
         <translation>Kanal</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="43" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="47" />
         <source>The band holding the heights.</source>
         <translation>Der Kanal mit den Höhen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="44" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="49" />
         <source>View azimuth (degrees)</source>
         <translation>Blickrichtung (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="46" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="50" />
         <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
         <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="52" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="56" />
         <source>Vertical exaggeration</source>
         <translation>Überhöhung</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="53" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="57" />
         <source>Factor applied to heights before occlusion is computed.</source>
         <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="54" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
         <source>Base slope (%)</source>
         <translation>Grundneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="56" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="60" />
         <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
         <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="62" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="66" />
         <source>Row slope cut-off (%)</source>
         <translation>Grenzwert Zeilenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="64" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="68" />
         <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
         <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="66" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="70" />
         <source>Column slope cut-off (%)</source>
         <translation>Grenzwert Spaltenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="68" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="72" />
         <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
         <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="70" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="74" />
         <source>Control point column slope (%)</source>
         <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="72" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="76" />
         <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
         <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="76" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="80" />
         <source>Allow for diagonals</source>
         <translation>Diagonalen berücksichtigen</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="77" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="81" />
         <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
         <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
     </message>
 </context>
 <context>
+    <name>FilterDiagramAlgorithm</name>
+    <message>
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="16" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="34" />
+        <source>Slope filter diagram</source>
+        <translation>Diagramm des Neigungsfilters</translation>
+    </message>
+    <message>
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="19" />
+        <source>Plots, for every cell, the magnitude of its column slope (along the view) against its row slope (across the view): all cells grey, the candidate set red, the cells the slope filter keeps black, over the filter's removal region in grey with the control point circled. Run it with different filter parameters to see what they keep before drawing the silhouettes. The page opens in the Results Viewer.</source>
+        <translation>Trägt für jede Zelle den Betrag ihrer Spaltenneigung (entlang der Blickrichtung) gegen ihre Zeilenneigung (quer dazu) auf: alle Zellen grau, die Kandidatenmenge rot, die vom Neigungsfilter behaltenen Zellen schwarz, über dem grauen Entfernungsbereich des Filters mit eingekreistem Kontrollpunkt. Mit verschiedenen Filterparametern ausführen, um vor dem Zeichnen der Silhouetten zu sehen, was sie behalten. Die Seite öffnet sich im Ergebnisanzeiger.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="35" />
+        <source>HTML files (*.html)</source>
+        <translation>HTML-Dateien (*.html)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="36" />
+        <source>HTML page with the diagram as SVG.</source>
+        <translation>HTML-Seite mit dem Diagramm als SVG.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="59" />
+        <source>Slope filter</source>
+        <translation>Neigungsfilter</translation>
+    </message>
+    <message>
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="68" />
+        <source>Could not write %1.</source>
+        <translation>%1 konnte nicht geschrieben werden.</translation>
+    </message>
+</context>
+<context>
     <name>ProfilePlotAlgorithm</name>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="18" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="21" />
         <source>Profile plot (ridgelines)</source>
         <translation>Profildarstellung (Kammlinien)</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="21" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="25" />
         <source>Draws every n-th cross-section across the line of sight as it appears in the oblique view: in plan-oblique geometry (each point moved along the view azimuth by exaggeration / base slope x (height - lowest height)), with the parts hidden behind nearer terrain removed. The classic ridgeline sketch; it overlays the plan-oblique silhouettes exactly. Each line carries its cross-section number and its distance from the front of the view.</source>
         <translation>Zeichnet jeden n-ten Querschnitt quer zur Blickrichtung so, wie er in der Schrägansicht erscheint: in Plan-oblique-Geometrie (jeder Punkt entlang der Blickrichtung um Überhöhung / Grundneigung x (Höhe - niedrigste Höhe) verschoben), ohne die hinter näherem Gelände verdeckten Teile. Die klassische Kammlinienskizze; sie deckt sich genau mit den Plan-oblique-Silhouetten. Jede Linie trägt die Nummer ihres Querschnitts und ihren Abstand vom vorderen Bildrand.</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="35" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="41" />
         <source>Every n-th cross-section</source>
         <translation>Jeder n-te Querschnitt</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="37" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="43" />
         <source>Distance between drawn cross-sections, in cells along the line of sight.</source>
         <translation>Abstand der gezeichneten Querschnitte in Zellen entlang der Blickrichtung.</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="38" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="44" />
         <source>Profile plot</source>
         <translation>Profildarstellung</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="40" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="46" />
         <source>Visible pieces of the cross-sections as lines.</source>
         <translation>Sichtbare Teile der Querschnitte als Linien.</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="83" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="89" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -241,22 +275,22 @@
 <context>
     <name>RowSlopeAlgorithm</name>
     <message>
-        <location filename="../plugin/row_slope_algorithm.cpp" line="13" />
+        <location filename="../plugin/row_slope_algorithm.cpp" line="16" />
         <source>Row slope map</source>
         <translation>Karte der Zeilenneigung</translation>
     </message>
     <message>
-        <location filename="../plugin/row_slope_algorithm.cpp" line="16" />
+        <location filename="../plugin/row_slope_algorithm.cpp" line="20" />
         <source>The magnitude of the slope across the line of sight, in percent, on the DEM's grid (central differences across the view). Styled light where the terrain is flat across the view and dark where it is steep, the backdrop the thesis uses under its silhouettes. Only the azimuth matters.</source>
         <translation>Der Betrag der Neigung quer zur Blickrichtung in Prozent auf dem Gitter des DGM (zentrale Differenzen quer zur Ansicht). Hell, wo das Gelände quer zur Ansicht flach ist, dunkel, wo es steil ist: der Hintergrund, den die Dissertation unter ihre Silhouetten legt. Nur die Blickrichtung zählt.</translation>
     </message>
     <message>
-        <location filename="../plugin/row_slope_algorithm.cpp" line="27" />
+        <location filename="../plugin/row_slope_algorithm.cpp" line="34" />
         <source>Row slope</source>
         <translation>Zeilenneigung</translation>
     </message>
     <message>
-        <location filename="../plugin/row_slope_algorithm.cpp" line="28" />
+        <location filename="../plugin/row_slope_algorithm.cpp" line="35" />
         <source>Float32 raster of |row slope| in percent.</source>
         <translation>Float32-Raster der |Zeilenneigung| in Prozent.</translation>
     </message>
@@ -404,12 +438,12 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
 <context>
     <name>TerrainSketchProvider</name>
     <message>
-        <location filename="../plugin/provider.cpp" line="17" />
+        <location filename="../plugin/provider.cpp" line="18" />
         <source>Terrain sketch</source>
         <translation>Geländeskizze</translation>
     </message>
     <message>
-        <location filename="../plugin/provider.cpp" line="20" />
+        <location filename="../plugin/provider.cpp" line="21" />
         <source>Terrain sketch: factual and formulated silhouettes</source>
         <translation>Geländeskizze: faktische und formulierte Silhouetten</translation>
     </message>

@@ -195,6 +195,22 @@ GERMAN = {
         "ist, dunkel, wo es steil ist: der Hintergrund, den die Dissertation unter ihre "
         "Silhouetten legt. Nur die Blickrichtung zählt.",
     "Row slope": "Zeilenneigung",
+    "Slope filter diagram": "Diagramm des Neigungsfilters",
+    "Plots, for every cell, the magnitude of its column slope (along the view) against its row "
+    "slope (across the view): all cells grey, the candidate set red, the cells the slope filter "
+    "keeps black, over the filter's removal region in grey with the control point circled. Run it "
+    "with different filter parameters to see what they keep before drawing the silhouettes. The "
+    "page opens in the Results Viewer.":
+        "Trägt für jede Zelle den Betrag ihrer Spaltenneigung (entlang der Blickrichtung) gegen "
+        "ihre Zeilenneigung (quer dazu) auf: alle Zellen grau, die Kandidatenmenge rot, die vom "
+        "Neigungsfilter behaltenen Zellen schwarz, über dem grauen Entfernungsbereich des Filters "
+        "mit eingekreistem Kontrollpunkt. Mit verschiedenen Filterparametern ausführen, um vor dem "
+        "Zeichnen der Silhouetten zu sehen, was sie behalten. Die Seite öffnet sich im "
+        "Ergebnisanzeiger.",
+    "HTML files (*.html)": "HTML-Dateien (*.html)",
+    "HTML page with the diagram as SVG.": "HTML-Seite mit dem Diagramm als SVG.",
+    "Slope filter": "Neigungsfilter",
+    "Could not write %1.": "%1 konnte nicht geschrieben werden.",
     "Float32 raster of |row slope| in percent.": "Float32-Raster der |Zeilenneigung| in Prozent.",
     "Terrain sketch: factual and formulated silhouettes":
         "Geländeskizze: faktische und formulierte Silhouetten",

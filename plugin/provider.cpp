@@ -3,6 +3,7 @@
 #include <QIcon>
 
 #include "classification_algorithm.h"
+#include "filter_diagram_algorithm.h"
 #include "plugin_paths.h"
 #include "profile_plot_algorithm.h"
 #include "row_slope_algorithm.h"
@@ -31,6 +32,7 @@ void TerrainSketchProvider::loadAlgorithms() {
   addAlgorithm(new ProfilePlotAlgorithm());
   addAlgorithm(new ClassificationAlgorithm());
   addAlgorithm(new RowSlopeAlgorithm());
+  addAlgorithm(new FilterDiagramAlgorithm());
 }
 
 }  // namespace tsk::plugin

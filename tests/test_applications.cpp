@@ -109,3 +109,38 @@ TEST_CASE("the profile plot removes hidden parts", "[profile plot]") {
   }
   CHECK(lines.size() == 40 - 18);
 }
+
+TEST_CASE("the filter diagram counts every stage and draws the removal polygon",
+          "[filter diagram]") {
+  const HeightGrid dem = test::random_terrain(60, 70, 41, 0.02);
+  const Oriented o = run_view(dem, 90);
+  const FilterParams filter;
+  const SlopeScatter s = slope_scatter(o.z, o.result.flags, o.frame.d, o.frame.w, 60.0, 60);
+  std::size_t candidate = 0, filtered = 0;
+  for (std::size_t k = 0; k < s.all.size(); ++k) {
+    candidate += s.candidate[k], filtered += s.filtered[k];
+    REQUIRE(s.candidate[k] <= s.all[k]);
+    REQUIRE(s.filtered[k] <= s.candidate[k]);
+  }
+  CHECK(candidate == o.result.stats.candidate);
+  CHECK(filtered == o.result.stats.filtered);
+  // A bin whose corners all lie in the removal region holds no f-set cell.
+  const double step = s.max_pct / s.bins;
+  for (int r = 0; r < s.bins; ++r)
+    for (int c = 0; c < s.bins; ++c) {
+      bool removed = true;
+      for (double dc : {0.0, 1.0})
+        for (double dr : {0.0, 1.0})
+          removed = removed && !filter_accepts(filter, (c + dc) * step, (r + dr) * step);
+      if (removed) REQUIRE(s.filtered[static_cast<std::size_t>(r * s.bins + c)] == 0);
+    }
+  const std::string html = filter_diagram_html(s, filter, "test");
+  // Control point (8.75, 5.25) at x = 60 + 8.75 * 560 / 60, y = 60 + 560 - 5.25 * 560 / 60.
+  CHECK_THAT(html, Catch::Contains("<circle id=\"control\" cx=\"141.7\" cy=\"571\""));
+  CHECK_THAT(html, Catch::Contains("points=\"60,620 172,620 141.7,571 60,433.3\""));
+  FilterParams rectangle;
+  rectangle.diagonals = false;
+  CHECK_THAT(filter_diagram_html(s, rectangle, "t"),
+             Catch::Contains("points=\"60,620 172,620 172,433.3 60,433.3\""));
+  CHECK_THROWS_AS(slope_scatter(o.z, o.result.flags, 10, 10, 0.0), Error);
+}

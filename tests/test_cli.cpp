@@ -299,3 +299,13 @@ TEST_CASE("row-slope and profiles write their outputs", "[cli][profile plot]") {
   CHECK(summarise(dir / "p.geojson").features > 20);
   CHECK(run_cli({"profiles", kSample, dir / "q.geojson", "--every", "0"}).code == 1);
 }
+
+TEST_CASE("filter-plot writes the diagram page", "[cli][filter diagram]") {
+  ScratchDir dir("filter");
+  const CliRun run = run_cli({"filter-plot", kSample, dir / "f.html", "--no-diagonals"});
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  const std::string html = slurp(dir / "f.html");
+  CHECK_THAT(html, Catch::Contains("<svg"));
+  CHECK_THAT(html, Catch::Contains("no diagonals"));
+}

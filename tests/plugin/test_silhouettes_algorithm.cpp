@@ -13,6 +13,7 @@
 #include <qgsrasterlayer.h>
 #include <qgsvectorlayer.h>
 
+#include <QFile>
 #include <QTemporaryDir>
 #include <catch2/catch.hpp>
 #include <memory>
@@ -292,4 +293,20 @@ TEST_CASE("the profile plot algorithm draws the core's lines", "[plugin][profile
   CHECK(layer.fields().indexOf("distance") >= 0);
   const Run bad = runAlgorithm(dem, {{"EVERY", 0}}, dir, nullptr, QStringLiteral("profileplot"));
   CHECK_FALSE(bad.ok);
+}
+
+TEST_CASE("the slope filter diagram is an HTML page with the filter drawn",
+          "[plugin][filter diagram]") {
+  QTemporaryDir dir;
+  const Run run = runAlgorithm(kData + "/volcano.tif",
+                               {{"CTRL_COL", 6}, {"OUTPUT", dir.filePath("filter.html")}}, dir,
+                               nullptr, QStringLiteral("filterdiagram"));
+  INFO(run.error.toStdString());
+  REQUIRE(run.ok);
+  QFile file(run.results.value("OUTPUT").toString());
+  REQUIRE(file.open(QIODevice::ReadOnly));
+  const QString html = QString::fromUtf8(file.readAll());
+  CHECK(html.startsWith("<!DOCTYPE html>"));
+  CHECK(html.contains("<polygon id=\"removal\""));
+  CHECK(html.contains("control point (6 %, 3.6 %)"));
 }

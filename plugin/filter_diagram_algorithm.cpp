@@ -1,0 +1,78 @@
+#include "filter_diagram_algorithm.h"
+
+#include <qgsprocessingfeedback.h>
+
+#include <QFile>
+#include <algorithm>
+
+#include "errors.h"
+#include "filter_diagram.h"
+#include "raster_grid.h"
+#include "silhouettes.h"
+
+namespace tsk::plugin {
+
+QString FilterDiagramAlgorithm::name() const {
+  return QStringLiteral("filterdiagram");
+}
+QString FilterDiagramAlgorithm::displayName() const {
+  return tr("Slope filter diagram");
+}
+
+QString FilterDiagramAlgorithm::shortHelpString() const {
+  return tr(
+      "Plots, for every cell, the magnitude of its column slope (along the view) against "
+      "its row slope (across the view): all cells grey, the candidate set red, the cells "
+      "the slope filter keeps black, over the filter's removal region in grey with the "
+      "control point circled. Run it with different filter parameters to see what they "
+      "keep before drawing the silhouettes. The page opens in the Results Viewer.");
+}
+
+FilterDiagramAlgorithm* FilterDiagramAlgorithm::createInstance() const {
+  return new FilterDiagramAlgorithm();
+}
+
+void FilterDiagramAlgorithm::initAlgorithm(const QVariantMap&) {
+  addDemAndViewParameters(true);
+  addFilterParameters();
+  addWithHelp(new QgsProcessingParameterFileDestination(
+                  QStringLiteral("OUTPUT"), tr("Slope filter diagram"), tr("HTML files (*.html)")),
+              tr("HTML page with the diagram as SVG."));
+}
+
+double FilterDiagramAlgorithm::readParameters(const QVariantMap& parameters,
+                                              QgsProcessingContext& context) {
+  mParams.view = readView(parameters, context);
+  mParams.filter = readFilter(parameters, context);
+  mParams.validate();
+  return mParams.view.azimuth_deg;
+}
+
+QVariantMap FilterDiagramAlgorithm::processAlgorithm(const QVariantMap& parameters,
+                                                     QgsProcessingContext& context,
+                                                     QgsProcessingFeedback* feedback) {
+  const RasterGrid& raster = readRaster(feedback, 40);
+  std::string html;
+  try {
+    const SilhouetteResult result =
+        run_silhouettes(raster.oriented(), raster.frame(), raster.geotransform(), mParams);
+    const double range =
+        std::max(60.0, 2.5 * std::max(mParams.filter.row_cut_pct, mParams.filter.col_cut_pct));
+    html = filter_diagram_html(
+        slope_scatter(raster.oriented(), result.flags, raster.frame().d, raster.frame().w, range),
+        mParams.filter, tr("Slope filter").toStdString());
+  } catch (const Error& e) {
+    throw QgsProcessingException(QString::fromStdString(e.what()));
+  }
+  const QString path = parameterAsFileOutput(parameters, QStringLiteral("OUTPUT"), context);
+  QFile file(path);
+  if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
+      file.write(html.data(), static_cast<qint64>(html.size())) !=
+          static_cast<qint64>(html.size())) {
+    throw QgsProcessingException(tr("Could not write %1.").arg(path));
+  }
+  releaseRaster();
+  return {{QStringLiteral("OUTPUT"), path}};
+}
+
+}  // namespace tsk::plugin
