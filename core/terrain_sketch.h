@@ -12,6 +12,7 @@
 //
 // Applications and diagnostics:
 //   profile_plot.h    [3] cross-sections in plan-oblique geometry, hidden parts removed
+//   drape.h           [3] any raster on the DEM grid projected into plan-oblique space
 //   diagnostics.h     per-cell classification and row slope maps on the DEM grid
 //   filter_diagram.h  column against row slope scatter with the filter's removal region (HTML)
 //
@@ -24,6 +25,7 @@
 #include "candidates.h"
 #include "chaining.h"
 #include "diagnostics.h"
+#include "drape.h"
 #include "errors.h"
 #include "filter_diagram.h"
 #include "flags.h"

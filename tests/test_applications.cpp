@@ -144,3 +144,77 @@ TEST_CASE("the filter diagram counts every stage and draws the removal polygon",
              Catch::Contains("points=\"60,620 172,620 172,433.3 60,433.3\""));
   CHECK_THROWS_AS(slope_scatter(o.z, o.result.flags, 10, 10, 0.0), Error);
 }
+
+namespace {
+
+// Source values that name their DEM cell: row * 1000 + col.
+HeightGrid cell_ids(std::size_t rows, std::size_t cols) {
+  HeightGrid g(rows, cols);
+  for (std::size_t r = 0; r < rows; ++r)
+    for (std::size_t c = 0; c < cols; ++c) g(r, c) = static_cast<float>(r * 1000 + c);
+  return g;
+}
+
+PlanObliqueDrape drape_of(const Oriented& o) {
+  return PlanObliqueDrape(o.z, o.result.flags, o.frame, ViewParams{o.frame.azimuth_deg, 2.5, 40},
+                          lowest_height(o.z));
+}
+
+}  // namespace
+
+TEST_CASE("draping over flat ground changes nothing", "[drape]") {
+  const HeightGrid dem(15, 20, 100.f);
+  const Oriented o = run_view(dem, 90);
+  const PlanObliqueDrape drape = drape_of(o);
+  REQUIRE(drape.rows() == 15);
+  REQUIRE(drape.cols() == 20);
+  const HeightGrid ids = cell_ids(15, 20);
+  const HeightGrid out = drape.drape(ids);
+  for (std::size_t k = 0; k < ids.size(); ++k) REQUIRE(out.data()[k] == ids.data()[k]);
+  GeoTransform gt;
+  gt.a = {1000, 10, 0, 5000, 0, -10};
+  CHECK(drape.geotransform(gt).a == gt.a);
+}
+
+TEST_CASE("a slope facing the viewer is stretched by the drape", "[drape]") {
+  // z rises 16 % eastwards on 10 m cells: plan-oblique position i + 6.25 * 0.16 * i = 2 i.
+  HeightGrid dem(5, 30);
+  for (std::size_t r = 0; r < 5; ++r)
+    for (std::size_t c = 0; c < 30; ++c) dem(r, c) = static_cast<float>(0.16 * 10 * c);
+  const Oriented o = run_view(dem, 90);
+  const HeightGrid out = drape_of(o).drape(cell_ids(5, 30));
+  REQUIRE(out.cols() == 59);
+  for (std::size_t i = 0; i < 29; ++i) {
+    CAPTURE(i);
+    REQUIRE(out(2, 2 * i) == static_cast<float>(2000 + i));
+    // Half-way between two cells: either neighbour (a tie up to rounding).
+    const float between = out(2, 2 * i + 1);
+    REQUIRE((between == static_cast<float>(2000 + i) || between == static_cast<float>(2001 + i)));
+  }
+}
+
+TEST_CASE("hidden terrain never shows in the drape", "[drape]") {
+  const HeightGrid dem = make_step(12, 40, 30.0, 20);  // seen from the east: 20..37 hidden
+  const Oriented o = run_view(dem, 270);
+  const HeightGrid out = drape_of(o).drape(cell_ids(12, 40));
+  std::size_t shown = 0;
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    if (!is_data(out.data()[k])) continue;
+    ++shown;
+    const auto col = static_cast<std::size_t>(out.data()[k]) % 1000;
+    // Oriented cell i = 39 - col; hidden cells are i = 20..37, columns 2..19.
+    REQUIRE((col < 2 || col > 19));
+  }
+  CHECK(shown > 0);
+}
+
+TEST_CASE("any azimuth drapes, and a raster off the DEM grid is refused", "[drape]") {
+  const HeightGrid dem = test::random_terrain(40, 50, 9);
+  const Oriented o = run_view(dem, 135);
+  const PlanObliqueDrape drape = drape_of(o);
+  const HeightGrid out = drape.drape(dem);
+  std::size_t shown = 0;
+  for (std::size_t k = 0; k < out.size(); ++k) shown += is_data(out.data()[k]);
+  CHECK(shown > 1000);
+  CHECK_THROWS_AS(drape.drape(HeightGrid(40, 49)), Error);
+}

@@ -1,0 +1,89 @@
+#include "drape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "errors.h"
+
+namespace tsk {
+
+PlanObliqueDrape::PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& flags,
+                                   const OrientedFrame& frame, const ViewParams& view, double z_ref)
+    : frame_(frame) {
+  const double k = view.ve / (view.base_slope() * frame.d);
+  // Plan-oblique positions along each profile. Visible cells have non-decreasing transformed
+  // height, so their positions i + k (z - z_ref) are sorted.
+  std::vector<std::vector<double>> position(frame.profiles);
+  std::vector<std::vector<std::int64_t>> cell(frame.profiles);
+  double col_min = 1e300, col_max = -1e300, row_min = 1e300, row_max = -1e300;
+  for (std::size_t p = 0; p < frame.profiles; ++p) {
+    for (std::size_t i = 0; i < frame.length; ++i) {
+      const std::uint8_t f = flags(p, i);
+      if (!(f & cell::valid) || (f & cell::hidden)) continue;
+      const double s = static_cast<double>(i) + k * (static_cast<double>(oriented(p, i)) - z_ref);
+      position[p].push_back(s);
+      cell[p].push_back(static_cast<std::int64_t>(p * frame.length + i));
+      const PixelPoint px = frame.to_pixel(static_cast<double>(p), s);
+      col_min = std::min(col_min, px.col), col_max = std::max(col_max, px.col);
+      row_min = std::min(row_min, px.row), row_max = std::max(row_max, px.row);
+    }
+  }
+  if (col_min > col_max) return;   // nothing visible: an empty drape
+  constexpr double kSlack = 1e-6;  // positions a hair past a cell edge stay in that cell
+  col0_ = static_cast<std::int64_t>(std::floor(col_min - 0.5 + kSlack));
+  row0_ = static_cast<std::int64_t>(std::floor(row_min - 0.5 + kSlack));
+  cols_ = static_cast<std::size_t>(std::ceil(col_max + 0.5 - kSlack) - static_cast<double>(col0_));
+  rows_ = static_cast<std::size_t>(std::ceil(row_max + 0.5 - kSlack) - static_cast<double>(row0_));
+  const double dem_cells =
+      static_cast<double>(frame.dem_rows) * static_cast<double>(frame.dem_cols);
+  if (static_cast<double>(rows_) * static_cast<double>(cols_) > 16.0 * dem_cells + 1e6) {
+    throw Error(
+        "the plan-oblique drape would be far larger than the DEM; lower the vertical "
+        "exaggeration or raise the base slope");
+  }
+  source_cell_.assign(checked_cell_count(rows_, cols_), -1);
+  // Invert the affine pixel map to find each output cell's profile and position.
+  const double a = frame.px_col_per_p, b = frame.px_col_per_i;
+  const double c = frame.px_row_per_p, d = frame.px_row_per_i;
+  const double det = a * d - b * c;
+  for (std::size_t r = 0; r < rows_; ++r) {
+    for (std::size_t col = 0; col < cols_; ++col) {
+      const double u =
+          static_cast<double>(col0_ + static_cast<std::int64_t>(col)) + 0.5 - frame.px_col0;
+      const double v =
+          static_cast<double>(row0_ + static_cast<std::int64_t>(r)) + 0.5 - frame.px_row0;
+      const double pf = std::round((d * u - b * v) / det);
+      const double s = (a * v - c * u) / det;
+      if (pf < 0 || pf >= static_cast<double>(frame.profiles)) continue;
+      const auto& pos = position[static_cast<std::size_t>(pf)];
+      if (pos.empty() || s < pos.front() - 0.5 || s > pos.back() + 0.5) continue;
+      const auto above = std::upper_bound(pos.begin(), pos.end(), s);
+      std::size_t best = static_cast<std::size_t>(above - pos.begin());
+      if (best == pos.size() || (best > 0 && s - pos[best - 1] <= pos[best] - s)) --best;
+      source_cell_[r * cols_ + col] = cell[static_cast<std::size_t>(pf)][best];
+    }
+  }
+}
+
+GeoTransform PlanObliqueDrape::geotransform(const GeoTransform& dem) const {
+  GeoTransform out = dem;
+  dem.apply({static_cast<double>(col0_), static_cast<double>(row0_)}, out.a[0], out.a[3]);
+  return out;
+}
+
+HeightGrid PlanObliqueDrape::drape(const HeightGrid& source_on_dem) const {
+  if (source_on_dem.rows() != frame_.dem_rows || source_on_dem.cols() != frame_.dem_cols) {
+    throw Error("the raster to drape must be on the DEM's grid (" +
+                std::to_string(frame_.dem_cols) + " x " + std::to_string(frame_.dem_rows) +
+                " cells); resample it first");
+  }
+  const HeightGrid oriented = orient(source_on_dem, frame_);
+  HeightGrid out(rows_, cols_, kNoData);
+  for (std::size_t k = 0; k < source_cell_.size(); ++k) {
+    if (source_cell_[k] >= 0) out.data()[k] = oriented.data()[source_cell_[k]];
+  }
+  return out;
+}
+
+}  // namespace tsk

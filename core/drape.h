@@ -1,0 +1,40 @@
+// Application (SPEC 3, thesis section 8.2): drape any raster on the DEM's grid (a slope map, a
+// hillshade, an image band) into plan-oblique space with hidden areas removed, so that the
+// plan-oblique silhouettes overlay it exactly.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "flags.h"
+#include "orient.h"
+#include "params.h"
+#include "strokes.h"
+
+namespace tsk {
+
+class PlanObliqueDrape {
+ public:
+  // Needs the visibility flags of `oriented`; z_ref is the height that stays in place.
+  PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& flags, const OrientedFrame& frame,
+                   const ViewParams& view, double z_ref);
+
+  // The output lattice: north-up, the DEM's cell size, covering every visible cell's
+  // plan-oblique position; output cell (r, c) is DEM pixel cell (row0 + r, col0 + c).
+  std::size_t rows() const { return rows_; }
+  std::size_t cols() const { return cols_; }
+  GeoTransform geotransform(const GeoTransform& dem) const;
+
+  // One band of values on the DEM's grid, draped: each output cell takes the value of the
+  // visible cell of its profile nearest in plan-oblique position (the nearer one on a tie);
+  // NaN where no visible terrain lands.
+  HeightGrid drape(const HeightGrid& source_on_dem) const;
+
+ private:
+  const OrientedFrame& frame_;
+  std::int64_t row0_ = 0, col0_ = 0;
+  std::size_t rows_ = 0, cols_ = 0;
+  std::vector<std::int64_t> source_cell_;  // per output cell: oriented cell index, -1 for none
+};
+
+}  // namespace tsk
