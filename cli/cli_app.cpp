@@ -31,6 +31,8 @@ commands:
   classify      per-cell stage of the method (visible, hidden, occluding, c-set, f-set,
                 t-set) on the DEM grid, with a colour table (OUTPUT: GeoTIFF)
   row-slope     |slope across the line of sight| in percent on the DEM grid (OUTPUT: GeoTIFF)
+  drape         project --source RASTER (on the DEM's grid, all bands: a hillshade, a slope
+                map, an image) into plan-oblique space, hidden areas removed (OUTPUT: GeoTIFF)
   filter-plot   column against row slope with the c-set and the slope filter's removal region,
                 to tune the control point (OUTPUT: HTML page with an SVG diagram)
 
@@ -63,6 +65,8 @@ input and output:
   --timings            print the time of reading, each stage and writing to stderr
 profiles:
   --every N            draw every N-th cross-section (default 10)
+drape:
+  --source RASTER      the raster to drape, on the DEM's grid
 )";
 
 // Parses a whole number or a finite decimal, refusing trailing junk.
@@ -87,7 +91,7 @@ int parse_int(const std::string& option, const std::string& text) {
 }
 
 struct Options {
-  std::string input, output, format, stats_json, preview;
+  std::string input, output, format, stats_json, preview, source;
   bool timings = false;
   int every = 10;
   io::DemOptions dem;
@@ -119,6 +123,7 @@ Options parse(const std::vector<std::string>& args) {
          o.params.threads = static_cast<unsigned>(t);
        }},
       {"--format", [&](auto&, auto& v) { o.format = v; }},
+      {"--source", [&](auto&, auto& v) { o.source = v; }},
       {"--every",
        [&](auto& n, auto& v) {
          o.every = parse_int(n, v);
@@ -238,7 +243,7 @@ int row_slope(const std::vector<std::string>& args, std::ostream& out, std::ostr
   require_geotiff(o.output);
   const io::Dem dem = io::read_dem(o.input, o.dem);
   if (!dem.notes.empty()) err << "note: " << dem.notes;
-  io::write_float_raster(o.output, row_slope_map(dem.oriented, dem.frame), dem.geotransform,
+  io::write_float_raster(o.output, {row_slope_map(dem.oriented, dem.frame)}, dem.geotransform,
                          dem.srs_wkt);
   out << o.output << ": row slope in percent across azimuth " << dem.frame.azimuth_deg << "\n";
   return 0;
@@ -255,6 +260,25 @@ int profiles(const std::vector<std::string>& args, std::ostream& out, std::ostre
                                   static_cast<std::size_t>(o.every), lowest_height(dem.oriented));
   io::write_profile_lines(o.output, o.format, lines, dem.srs_wkt);
   out << o.output << ": " << lines.size() << " visible cross-section pieces\n";
+  return 0;
+}
+
+int drape(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Options o = parse(args);
+  require_geotiff(o.output);
+  if (o.source.empty()) throw Error("drape needs --source RASTER, the raster to drape");
+  const io::Dem dem = io::read_dem(o.input, o.dem);
+  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  const std::vector<HeightGrid> source = io::read_bands(o.source);
+  CellFlags flags;
+  classify_visibility(dem.oriented, dem.frame.d, o.params.view, flags, o.params.threads);
+  const PlanObliqueDrape drape(dem.oriented, flags, dem.frame, o.params.view,
+                               lowest_height(dem.oriented));
+  std::vector<HeightGrid> bands;
+  for (const HeightGrid& band : source) bands.push_back(drape.drape(band));
+  io::write_float_raster(o.output, bands, drape.geotransform(dem.geotransform), dem.srs_wkt);
+  out << o.output << ": " << bands.size() << " band(s) draped, " << drape.cols() << " x "
+      << drape.rows() << " cells\n";
   return 0;
 }
 
@@ -284,11 +308,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     return args.empty() ? 2 : 0;
   }
   using Command = int (*)(const std::vector<std::string>&, std::ostream&, std::ostream&);
-  const std::map<std::string, Command> commands = {{"silhouettes", silhouettes},
-                                                   {"profiles", profiles},
-                                                   {"classify", classify},
-                                                   {"row-slope", row_slope},
-                                                   {"filter-plot", filter_plot}};
+  const std::map<std::string, Command> commands = {
+      {"silhouettes", silhouettes}, {"profiles", profiles},       {"classify", classify},
+      {"row-slope", row_slope},     {"filter-plot", filter_plot}, {"drape", drape}};
   const auto command = commands.find(args[0]);
   if (command == commands.end()) {
     err << "terrain-sketch: unknown command '" << args[0] << "'\n" << kUsage;

@@ -146,4 +146,26 @@ Dem read_dem(const std::string& path, const DemOptions& options) {
   return dem;
 }
 
+std::vector<HeightGrid> read_bands(const std::string& path) {
+  GdalErrorCapture capture;
+  auto dataset = open_raster(path);
+  const auto rows = static_cast<std::size_t>(dataset->GetRasterYSize());
+  const auto cols = static_cast<std::size_t>(dataset->GetRasterXSize());
+  std::vector<HeightGrid> bands;
+  for (int b = 1; b <= dataset->GetRasterCount(); ++b) {
+    HeightGrid grid(rows, cols);
+    GDALRasterBand* band = dataset->GetRasterBand(b);
+    if (band->RasterIO(GF_Read, 0, 0, static_cast<int>(cols), static_cast<int>(rows), grid.data(),
+                       static_cast<int>(cols), static_cast<int>(rows), GDT_Float32, 0,
+                       0) != CE_None) {
+      throw Error("reading '" + path + "' failed: " + capture.message());
+    }
+    int has_nodata = 0;
+    const auto nodata = static_cast<float>(band->GetNoDataValue(&has_nodata));
+    if (has_nodata) std::replace(grid.data(), grid.data() + grid.size(), nodata, kNoData);
+    bands.push_back(std::move(grid));
+  }
+  return bands;
+}
+
 }  // namespace tsk::io

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "orient.h"
 #include "strokes.h"
@@ -27,5 +28,9 @@ struct Dem {
 // Throws tsk::Error with a message for the user on anything it cannot read faithfully:
 // not a raster, bad band, rotated or south-up georeferencing, a geographic CRS.
 Dem read_dem(const std::string& path, const DemOptions& options);
+
+// Every band of a raster as grids on its own pixel grid (row 0 north), nodata as NaN: the
+// rasters to drape.
+std::vector<HeightGrid> read_bands(const std::string& path);
 
 }  // namespace tsk::io

@@ -10,28 +10,31 @@
 namespace tsk::io {
 namespace {
 
-// Creates a one-band GeoTIFF at `staged`, lets `fill` set up the band, writes `pixels`.
+// Creates a GeoTIFF of pixels.size() bands at `staged`, lets `fill` set up each band, writes
+// the pixels.
 template <typename Fill>
 void write_tiff(const std::string& path, const std::filesystem::path& staged, std::size_t rows,
-                std::size_t cols, GDALDataType type, const void* pixels, const GeoTransform& gt,
-                const std::string& srs_wkt, Fill fill) {
+                std::size_t cols, GDALDataType type, const std::vector<const void*>& pixels,
+                const GeoTransform& gt, const std::string& srs_wkt, Fill fill) {
   GdalErrorCapture capture;
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
   if (!driver) throw Error("GDAL has no GTiff driver");
   const char* options[] = {"COMPRESS=DEFLATE", "TILED=YES", "BIGTIFF=IF_SAFER", nullptr};
-  DatasetPtr ds(driver->Create(staged.c_str(), static_cast<int>(cols), static_cast<int>(rows), 1,
-                               type, const_cast<char**>(options)));
+  DatasetPtr ds(driver->Create(staged.c_str(), static_cast<int>(cols), static_cast<int>(rows),
+                               static_cast<int>(pixels.size()), type, const_cast<char**>(options)));
   if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
   double transform[6];
   std::copy(gt.a.begin(), gt.a.end(), transform);
   ds->SetGeoTransform(transform);
   if (!srs_wkt.empty()) ds->SetProjection(srs_wkt.c_str());
-  GDALRasterBand* band = ds->GetRasterBand(1);
-  fill(*band);
-  if (band->RasterIO(GF_Write, 0, 0, static_cast<int>(cols), static_cast<int>(rows),
-                     const_cast<void*>(pixels), static_cast<int>(cols), static_cast<int>(rows),
-                     type, 0, 0) != CE_None) {
-    throw Error("writing '" + path + "' failed: " + capture.message());
+  for (std::size_t b = 0; b < pixels.size(); ++b) {
+    GDALRasterBand* band = ds->GetRasterBand(static_cast<int>(b) + 1);
+    fill(*band);
+    if (band->RasterIO(GF_Write, 0, 0, static_cast<int>(cols), static_cast<int>(rows),
+                       const_cast<void*>(pixels[b]), static_cast<int>(cols), static_cast<int>(rows),
+                       type, 0, 0) != CE_None) {
+      throw Error("writing '" + path + "' failed: " + capture.message());
+    }
   }
   CPLErrorReset();
   ds.reset();
@@ -42,10 +45,13 @@ void write_tiff(const std::string& path, const std::filesystem::path& staged, st
 
 }  // namespace
 
-void write_float_raster(const std::string& path, const HeightGrid& grid, const GeoTransform& gt,
-                        const std::string& srs_wkt) {
+void write_float_raster(const std::string& path, const std::vector<HeightGrid>& bands,
+                        const GeoTransform& gt, const std::string& srs_wkt) {
+  if (bands.empty()) throw Error("nothing to write to '" + path + "'");
+  std::vector<const void*> pixels;
+  for (const HeightGrid& b : bands) pixels.push_back(b.data());
   write_atomically(path, [&](const std::filesystem::path& staged) {
-    write_tiff(path, staged, grid.rows(), grid.cols(), GDT_Float32, grid.data(), gt, srs_wkt,
+    write_tiff(path, staged, bands[0].rows(), bands[0].cols(), GDT_Float32, pixels, gt, srs_wkt,
                [](GDALRasterBand& band) {
                  band.SetNoDataValue(std::numeric_limits<double>::quiet_NaN());
                });
@@ -59,8 +65,8 @@ void write_classification(const std::string& path, const Grid<std::uint8_t>& cla
       {0, 0, 0, 0},         {255, 255, 255, 255}, {190, 210, 235, 255}, {220, 30, 30, 255},
       {215, 215, 215, 255}, {120, 120, 120, 255}, {20, 20, 20, 255}};
   write_atomically(path, [&](const std::filesystem::path& staged) {
-    write_tiff(path, staged, classes.rows(), classes.cols(), GDT_Byte, classes.data(), gt, srs_wkt,
-               [](GDALRasterBand& band) {
+    write_tiff(path, staged, classes.rows(), classes.cols(), GDT_Byte, {classes.data()}, gt,
+               srs_wkt, [](GDALRasterBand& band) {
                  band.SetNoDataValue(0);
                  GDALColorTable table;
                  CPLStringList names;

@@ -3,15 +3,16 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "diagnostics.h"
 #include "strokes.h"
 
 namespace tsk::io {
 
-// Float32 with NaN as nodata.
-void write_float_raster(const std::string& path, const HeightGrid& grid, const GeoTransform& gt,
-                        const std::string& srs_wkt);
+// Float32, nodata NaN, one band per grid (all of one size).
+void write_float_raster(const std::string& path, const std::vector<HeightGrid>& bands,
+                        const GeoTransform& gt, const std::string& srs_wkt);
 
 // Byte classes with a colour table and class names (0 is nodata), for QGIS and other viewers.
 void write_classification(const std::string& path, const Grid<std::uint8_t>& classes,

@@ -122,35 +122,78 @@
     </message>
 </context>
 <context>
+    <name>DrapeAlgorithm</name>
+    <message>
+        <location filename="../plugin/drape_algorithm.cpp" line="22" />
+        <source>Drape raster (plan oblique)</source>
+        <translation>Raster drapieren (Plan oblique)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/drape_algorithm.cpp" line="25" />
+        <source>Projects a raster on the DEM's grid (a hillshade, a slope or row slope map, an image; every band) into plan-oblique space: each visible cell moves along the view azimuth by exaggeration / base slope x (height - lowest height), terrain hidden behind nearer terrain is removed and slopes facing the viewer are stretched. The result lies exactly under the plan-oblique silhouettes and the profile plot made with the same view. The raster to drape must have the DEM's size (resample it to the DEM's grid first).</source>
+        <translation>Projiziert ein Raster auf dem Gitter des DGM (eine Schummerung, eine Neigungs- oder Zeilenneigungskarte, ein Bild; alle Kanäle) in den Plan-oblique-Raum: jede sichtbare Zelle wird entlang der Blickrichtung um Überhöhung / Grundneigung x (Höhe - niedrigste Höhe) verschoben, hinter näherem Gelände verdecktes Gelände wird entfernt und dem Betrachter zugewandte Hänge werden gedehnt. Das Ergebnis liegt genau unter den Plan-oblique-Silhouetten und der Profildarstellung derselben Ansicht. Das Raster muss die Größe des DGM haben (zuerst auf das Gitter des DGM umtasten).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/drape_algorithm.cpp" line="38" />
+        <source>Raster to drape</source>
+        <translation>Zu drapierendes Raster</translation>
+    </message>
+    <message>
+        <location filename="../plugin/drape_algorithm.cpp" line="39" />
+        <source>A raster with the DEM's number of rows and columns; all its bands are draped.</source>
+        <translation>Ein Raster mit der Zeilen- und Spaltenzahl des DGM; alle seine Kanäle werden drapiert.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/drape_algorithm.cpp" line="41" />
+        <source>Draped raster</source>
+        <translation>Drapiertes Raster</translation>
+    </message>
+    <message>
+        <location filename="../plugin/drape_algorithm.cpp" line="42" />
+        <source>Float32 raster in plan-oblique space, one band per source band.</source>
+        <translation>Float32-Raster im Plan-oblique-Raum, ein Kanal je Quellkanal.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/drape_algorithm.cpp" line="61" />
+        <source>The raster to drape has %1 x %2 cells, the DEM %3 x %4: resample it to the DEM's grid first (Raster &gt; Projections &gt; Warp with the DEM's extent and resolution).</source>
+        <translation>Das zu drapierende Raster hat %1 x %2 Zellen, das DGM %3 x %4: tasten Sie es zuerst auf das Gitter des DGM um (Raster &gt; Projektionen &gt; Transformieren mit Ausdehnung und Auflösung des DGM).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/drape_algorithm.cpp" line="89" />
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+</context>
+<context>
     <name>FilterDiagramAlgorithm</name>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="16" />
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="34" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="19" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="39" />
         <source>Slope filter diagram</source>
         <translation>Diagramm des Neigungsfilters</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="19" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="23" />
         <source>Plots, for every cell, the magnitude of its column slope (along the view) against its row slope (across the view): all cells grey, the candidate set red, the cells the slope filter keeps black, over the filter's removal region in grey with the control point circled. Run it with different filter parameters to see what they keep before drawing the silhouettes. The page opens in the Results Viewer.</source>
         <translation>Trägt für jede Zelle den Betrag ihrer Spaltenneigung (entlang der Blickrichtung) gegen ihre Zeilenneigung (quer dazu) auf: alle Zellen grau, die Kandidatenmenge rot, die vom Neigungsfilter behaltenen Zellen schwarz, über dem grauen Entfernungsbereich des Filters mit eingekreistem Kontrollpunkt. Mit verschiedenen Filterparametern ausführen, um vor dem Zeichnen der Silhouetten zu sehen, was sie behalten. Die Seite öffnet sich im Ergebnisanzeiger.</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="35" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="39" />
         <source>HTML files (*.html)</source>
         <translation>HTML-Dateien (*.html)</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="36" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="40" />
         <source>HTML page with the diagram as SVG.</source>
         <translation>HTML-Seite mit dem Diagramm als SVG.</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="59" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="63" />
         <source>Slope filter</source>
         <translation>Neigungsfilter</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="68" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="72" />
         <source>Could not write %1.</source>
         <translation>%1 konnte nicht geschrieben werden.</translation>
     </message>
@@ -262,12 +305,12 @@
 <context>
     <name>RasterOutput</name>
     <message>
-        <location filename="../plugin/raster_output.cpp" line="31" />
+        <location filename="../plugin/raster_output.cpp" line="33" />
         <source>Could not create the raster %1.</source>
         <translation>Das Raster %1 konnte nicht angelegt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_output.cpp" line="39" />
+        <location filename="../plugin/raster_output.cpp" line="43" />
         <source>Could not write the raster %1.</source>
         <translation>Das Raster %1 konnte nicht geschrieben werden.</translation>
     </message>
@@ -438,12 +481,12 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
 <context>
     <name>TerrainSketchProvider</name>
     <message>
-        <location filename="../plugin/provider.cpp" line="18" />
+        <location filename="../plugin/provider.cpp" line="19" />
         <source>Terrain sketch</source>
         <translation>Geländeskizze</translation>
     </message>
     <message>
-        <location filename="../plugin/provider.cpp" line="21" />
+        <location filename="../plugin/provider.cpp" line="22" />
         <source>Terrain sketch: factual and formulated silhouettes</source>
         <translation>Geländeskizze: faktische und formulierte Silhouetten</translation>
     </message>

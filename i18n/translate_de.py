@@ -210,6 +210,31 @@ GERMAN = {
     "HTML files (*.html)": "HTML-Dateien (*.html)",
     "HTML page with the diagram as SVG.": "HTML-Seite mit dem Diagramm als SVG.",
     "Slope filter": "Neigungsfilter",
+    "Drape raster (plan oblique)": "Raster drapieren (Plan oblique)",
+    "Projects a raster on the DEM's grid (a hillshade, a slope or row slope map, an image; every "
+    "band) into plan-oblique space: each visible cell moves along the view azimuth by "
+    "exaggeration / base slope x (height - lowest height), terrain hidden behind nearer terrain "
+    "is removed and slopes facing the viewer are stretched. The result lies exactly under the "
+    "plan-oblique silhouettes and the profile plot made with the same view. The raster to drape "
+    "must have the DEM's size (resample it to the DEM's grid first).":
+        "Projiziert ein Raster auf dem Gitter des DGM (eine Schummerung, eine Neigungs- oder "
+        "Zeilenneigungskarte, ein Bild; alle Kanäle) in den Plan-oblique-Raum: jede sichtbare "
+        "Zelle wird entlang der Blickrichtung um Überhöhung / Grundneigung x (Höhe - niedrigste "
+        "Höhe) verschoben, hinter näherem Gelände verdecktes Gelände wird entfernt und dem "
+        "Betrachter zugewandte Hänge werden gedehnt. Das Ergebnis liegt genau unter den "
+        "Plan-oblique-Silhouetten und der Profildarstellung derselben Ansicht. Das Raster muss "
+        "die Größe des DGM haben (zuerst auf das Gitter des DGM umtasten).",
+    "Raster to drape": "Zu drapierendes Raster",
+    "A raster with the DEM's number of rows and columns; all its bands are draped.":
+        "Ein Raster mit der Zeilen- und Spaltenzahl des DGM; alle seine Kanäle werden drapiert.",
+    "Draped raster": "Drapiertes Raster",
+    "Float32 raster in plan-oblique space, one band per source band.":
+        "Float32-Raster im Plan-oblique-Raum, ein Kanal je Quellkanal.",
+    "The raster to drape has %1 x %2 cells, the DEM %3 x %4: resample it to the DEM's grid first "
+    "(Raster > Projections > Warp with the DEM's extent and resolution).":
+        "Das zu drapierende Raster hat %1 x %2 Zellen, das DGM %3 x %4: tasten Sie es zuerst auf "
+        "das Gitter des DGM um (Raster > Projektionen > Transformieren mit Ausdehnung und "
+        "Auflösung des DGM).",
     "Could not write %1.": "%1 konnte nicht geschrieben werden.",
     "Float32 raster of |row slope| in percent.": "Float32-Raster der |Zeilenneigung| in Prozent.",
     "Terrain sketch: factual and formulated silhouettes":

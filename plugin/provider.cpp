@@ -3,6 +3,7 @@
 #include <QIcon>
 
 #include "classification_algorithm.h"
+#include "drape_algorithm.h"
 #include "filter_diagram_algorithm.h"
 #include "plugin_paths.h"
 #include "profile_plot_algorithm.h"
@@ -33,6 +34,7 @@ void TerrainSketchProvider::loadAlgorithms() {
   addAlgorithm(new ClassificationAlgorithm());
   addAlgorithm(new RowSlopeAlgorithm());
   addAlgorithm(new FilterDiagramAlgorithm());
+  addAlgorithm(new DrapeAlgorithm());
 }
 
 }  // namespace tsk::plugin

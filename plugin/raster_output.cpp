@@ -19,24 +19,29 @@ class RasterOutput {
   Q_DECLARE_TR_FUNCTIONS(RasterOutput)
 
  public:
-  static void write(const QString& path, Qgis::DataType type, const void* data,
+  // Writes one band per entry of `bands` (cells of `bytesPerCell` bytes, rows x cols each).
+  static void write(const QString& path, Qgis::DataType type, const std::vector<const void*>& bands,
                     std::size_t bytesPerCell, std::size_t rows, std::size_t cols, double noData,
-                    const RasterGrid& dem) {
+                    const QgsRectangle& extent, const QgsCoordinateReferenceSystem& crs) {
     QgsRasterFileWriter writer(path);
     writer.setOutputProviderKey(QStringLiteral("gdal"));
     writer.setOutputFormat(QgsRasterFileWriter::driverForExtension(QFileInfo(path).suffix()));
-    std::unique_ptr<QgsRasterDataProvider> provider(writer.createOneBandRaster(
-        type, static_cast<int>(cols), static_cast<int>(rows), dem.extent(), dem.crs()));
+    std::unique_ptr<QgsRasterDataProvider> provider(
+        writer.createMultiBandRaster(type, static_cast<int>(cols), static_cast<int>(rows), extent,
+                                     crs, static_cast<int>(bands.size())));
     if (!provider || !provider->isValid()) {
       throw QgsProcessingException(tr("Could not create the raster %1.").arg(path));
     }
-    QgsRasterBlock block(type, static_cast<int>(cols), static_cast<int>(rows));
-    block.setData(QByteArray::fromRawData(static_cast<const char*>(data),
-                                          static_cast<int>(rows * cols * bytesPerCell)));
-    provider->setNoDataValue(1, noData);
-    // The provider made by createOneBandRaster is open for writing already.
-    if (!provider->writeBlock(&block, 1, 0, 0)) {
-      throw QgsProcessingException(tr("Could not write the raster %1.").arg(path));
+    for (std::size_t b = 0; b < bands.size(); ++b) {
+      const int band = static_cast<int>(b) + 1;
+      QgsRasterBlock block(type, static_cast<int>(cols), static_cast<int>(rows));
+      block.setData(QByteArray::fromRawData(static_cast<const char*>(bands[b]),
+                                            static_cast<int>(rows * cols * bytesPerCell)));
+      provider->setNoDataValue(band, noData);
+      // The provider made by createMultiBandRaster is open for writing already.
+      if (!provider->writeBlock(&block, band, 0, 0)) {
+        throw QgsProcessingException(tr("Could not write the raster %1.").arg(path));
+      }
     }
   }
 };
@@ -44,12 +49,16 @@ class RasterOutput {
 }  // namespace
 
 void writeByteRaster(const QString& path, const Grid<std::uint8_t>& grid, const RasterGrid& dem) {
-  RasterOutput::write(path, Qgis::DataType::Byte, grid.data(), 1, grid.rows(), grid.cols(), 0, dem);
+  RasterOutput::write(path, Qgis::DataType::Byte, {grid.data()}, 1, grid.rows(), grid.cols(), 0,
+                      dem.extent(), dem.crs());
 }
 
-void writeFloatRaster(const QString& path, const HeightGrid& grid, const RasterGrid& dem) {
-  RasterOutput::write(path, Qgis::DataType::Float32, grid.data(), sizeof(float), grid.rows(),
-                      grid.cols(), std::numeric_limits<double>::quiet_NaN(), dem);
+void writeFloatRaster(const QString& path, const std::vector<HeightGrid>& bands,
+                      const QgsRectangle& extent, const QgsCoordinateReferenceSystem& crs) {
+  std::vector<const void*> data;
+  for (const HeightGrid& b : bands) data.push_back(b.data());
+  RasterOutput::write(path, Qgis::DataType::Float32, data, sizeof(float), bands.at(0).rows(),
+                      bands.at(0).cols(), std::numeric_limits<double>::quiet_NaN(), extent, crs);
 }
 
 }  // namespace tsk::plugin

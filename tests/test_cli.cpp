@@ -309,3 +309,25 @@ TEST_CASE("filter-plot writes the diagram page", "[cli][filter diagram]") {
   CHECK_THAT(html, Catch::Contains("<svg"));
   CHECK_THAT(html, Catch::Contains("no diagonals"));
 }
+
+TEST_CASE("drape projects every band of a raster on the DEM's grid", "[cli][drape]") {
+  ScratchDir dir("drape");
+  test::write_tiff(
+      dir / "rgb.tif", 87, 61, 3,
+      [](int b, int r, int c) { return static_cast<float>(b * 1000 + r + c); }, nullptr, 0);
+  const CliRun run =
+      run_cli({"drape", kData + "/volcano.tif", dir / "d.tif", "--source", dir / "rgb.tif"});
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  GDALDataset* ds = static_cast<GDALDataset*>(GDALOpen((dir / "d.tif").c_str(), GA_ReadOnly));
+  REQUIRE(ds != nullptr);
+  CHECK(ds->GetRasterCount() == 3);
+  double minmax[2];
+  REQUIRE(ds->GetRasterBand(3)->ComputeRasterMinMax(FALSE, minmax) == CE_None);
+  CHECK(minmax[0] >= 3000);
+  GDALClose(ds);
+  const CliRun off = run_cli({"drape", kSample, dir / "e.tif", "--source", dir / "rgb.tif"});
+  CHECK(off.code == 1);
+  CHECK_THAT(off.err, Catch::Contains("on the DEM's grid"));
+  CHECK(run_cli({"drape", kSample, dir / "f.tif"}).code == 1);
+}

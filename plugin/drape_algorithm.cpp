@@ -1,0 +1,118 @@
+#include "drape_algorithm.h"
+
+#include <qgsprocessingfeedback.h>
+#include <qgsrasterblock.h>
+#include <qgsrasterdataprovider.h>
+#include <qgsrasterlayer.h>
+
+#include "drape.h"
+#include "errors.h"
+#include "profile_plot.h"
+#include "raster_grid.h"
+#include "raster_output.h"
+#include "visibility.h"
+
+namespace tsk::plugin {
+
+DrapeAlgorithm::DrapeAlgorithm() = default;
+DrapeAlgorithm::~DrapeAlgorithm() = default;
+
+QString DrapeAlgorithm::name() const {
+  return QStringLiteral("drape");
+}
+QString DrapeAlgorithm::displayName() const {
+  return tr("Drape raster (plan oblique)");
+}
+
+QString DrapeAlgorithm::shortHelpString() const {
+  return tr(
+      "Projects a raster on the DEM's grid (a hillshade, a slope or row slope map, an "
+      "image; every band) into plan-oblique space: each visible cell moves along the view "
+      "azimuth by exaggeration / base slope x (height - lowest height), terrain hidden "
+      "behind nearer terrain is removed and slopes facing the viewer are stretched. The "
+      "result lies exactly under the plan-oblique silhouettes and the profile plot made "
+      "with the same view. The raster to drape must have the DEM's size (resample it to "
+      "the DEM's grid first).");
+}
+
+DrapeAlgorithm* DrapeAlgorithm::createInstance() const {
+  return new DrapeAlgorithm();
+}
+
+void DrapeAlgorithm::initAlgorithm(const QVariantMap&) {
+  addDemAndViewParameters(true);
+  addWithHelp(
+      new QgsProcessingParameterRasterLayer(QStringLiteral("SOURCE"), tr("Raster to drape")),
+      tr("A raster with the DEM's number of rows and columns; all its bands are draped."));
+  addWithHelp(
+      new QgsProcessingParameterRasterDestination(QStringLiteral("OUTPUT"), tr("Draped raster")),
+      tr("Float32 raster in plan-oblique space, one band per source band."));
+}
+
+double DrapeAlgorithm::readParameters(const QVariantMap& parameters,
+                                      QgsProcessingContext& context) {
+  mView = readView(parameters, context);
+  mView.validate();
+  return mView.azimuth_deg;
+}
+
+bool DrapeAlgorithm::prepareAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,
+                                      QgsProcessingFeedback* feedback) {
+  DemViewAlgorithm::prepareAlgorithm(parameters, context, feedback);
+  QgsRasterLayer* dem = parameterAsRasterLayer(parameters, QStringLiteral("INPUT"), context);
+  QgsRasterLayer* source = parameterAsRasterLayer(parameters, QStringLiteral("SOURCE"), context);
+  if (!source)
+    throw QgsProcessingException(invalidRasterError(parameters, QStringLiteral("SOURCE")));
+  if (source->width() != dem->width() || source->height() != dem->height()) {
+    throw QgsProcessingException(
+        tr("The raster to drape has %1 x %2 cells, the DEM %3 x %4: resample it to the DEM's "
+           "grid first (Raster > Projections > Warp with the DEM's extent and resolution).")
+            .arg(source->width())
+            .arg(source->height())
+            .arg(dem->width())
+            .arg(dem->height()));
+  }
+  mSource.reset(source->dataProvider()->clone());
+  mSourceBands = source->bandCount();
+  return true;
+}
+
+QVariantMap DrapeAlgorithm::processAlgorithm(const QVariantMap& parameters,
+                                             QgsProcessingContext& context,
+                                             QgsProcessingFeedback* feedback) {
+  const RasterGrid& raster = readRaster(feedback, 30);
+  const std::size_t rows = raster.frame().dem_rows, cols = raster.frame().dem_cols;
+  const QString path = parameterAsOutputLayer(parameters, QStringLiteral("OUTPUT"), context);
+  try {
+    CellFlags flags;
+    classify_visibility(raster.oriented(), raster.frame().d, mView, flags);
+    const PlanObliqueDrape drape(raster.oriented(), flags, raster.frame(), mView,
+                                 lowest_height(raster.oriented()));
+    const GeoTransform gt = drape.geotransform(raster.geotransform());
+    const QgsRectangle extent(gt.a[0], gt.a[3] + gt.a[5] * static_cast<double>(drape.rows()),
+                              gt.a[0] + gt.a[1] * static_cast<double>(drape.cols()), gt.a[3]);
+    std::vector<HeightGrid> bands;
+    for (int band = 1; band <= mSourceBands; ++band) {
+      if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
+      std::unique_ptr<QgsRasterBlock> block(
+          mSource->block(band, mSource->extent(), static_cast<int>(cols), static_cast<int>(rows)));
+      HeightGrid values(rows, cols);
+      for (std::size_t r = 0; r < rows; ++r)
+        for (std::size_t c = 0; c < cols; ++c) {
+          bool noData = false;
+          const double v = block->valueAndNoData(static_cast<int>(r), static_cast<int>(c), noData);
+          values(r, c) = noData ? kNoData : static_cast<float>(v);
+        }
+      bands.push_back(drape.drape(values));
+      if (feedback) feedback->setProgress(30 + 60.0 * band / mSourceBands);
+    }
+    writeFloatRaster(path, bands, extent, raster.crs());
+  } catch (const Error& e) {
+    throw QgsProcessingException(QString::fromStdString(e.what()));
+  }
+  releaseRaster();
+  mSource.reset();
+  return {{QStringLiteral("OUTPUT"), path}};
+}
+
+}  // namespace tsk::plugin

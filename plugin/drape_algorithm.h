@@ -1,0 +1,38 @@
+// Processing algorithm "Drape raster (plan oblique)": any raster on the DEM's grid projected into
+// plan-oblique space with hidden areas removed, under the plan-oblique silhouettes.
+#pragma once
+
+#include <memory>
+
+#include "dem_view_algorithm.h"
+
+class QgsRasterDataProvider;
+
+namespace tsk::plugin {
+
+class DrapeAlgorithm : public DemViewAlgorithm {
+  Q_DECLARE_TR_FUNCTIONS(DrapeAlgorithm)
+
+ public:
+  DrapeAlgorithm();
+  ~DrapeAlgorithm() override;
+  QString name() const override;
+  QString displayName() const override;
+  QString shortHelpString() const override;
+  DrapeAlgorithm* createInstance() const override;
+
+ protected:
+  void initAlgorithm(const QVariantMap& configuration = QVariantMap()) override;
+  double readParameters(const QVariantMap& parameters, QgsProcessingContext& context) override;
+  bool prepareAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,
+                        QgsProcessingFeedback* feedback) override;
+  QVariantMap processAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,
+                               QgsProcessingFeedback* feedback) override;
+
+ private:
+  ViewParams mView;
+  std::unique_ptr<QgsRasterDataProvider> mSource;
+  int mSourceBands = 0;
+};
+
+}  // namespace tsk::plugin
