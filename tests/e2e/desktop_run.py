@@ -52,6 +52,7 @@ def show_only(names, rotation):
 # (file, visible layers, canvas rotation): the oblique sketch with the azimuth (90) up, then
 # the classification map north up.
 SHOTS = [("qgis_desktop.png", {"Factual silhouettes", "Formulated silhouettes", "Profile plot"}, -90),
+         ("qgis_drape.png", {"Factual silhouettes", "Formulated silhouettes", "Draped raster"}, -90),
          ("qgis_classification.png", {"Silhouette stages"}, 0)]
 
 
@@ -92,6 +93,17 @@ def run():
             results = processing.runAndLoadResults(alg, dict(common, **params))
             report["results"][alg] = {k: (v if isinstance(v, (int, float)) else str(v))
                                       for k, v in results.items()}
+        hillshade = processing.run("native:hillshade", {"INPUT": DEM, "Z_FACTOR": 2.5,
+                                                         "AZIMUTH": 300, "V_ANGLE": 40,
+                                                         "OUTPUT": os.path.join(OUT, "hs.tif")})
+        processing.runAndLoadResults("terrainsketch:drape", dict(
+            common, SOURCE=hillshade["OUTPUT"], OUTPUT=os.path.join(OUT, "draped.tif")))
+        # The draped raster goes to the bottom, under the strokes.
+        root = QgsProject.instance().layerTreeRoot()
+        draped = QgsProject.instance().mapLayersByName("Draped raster")[0]
+        node = root.findLayer(draped.id())
+        root.insertChildNode(-1, node.clone())
+        node.parent().removeChildNode(node)
         report["layers"] = [describe(l) for l in QgsProject.instance().mapLayers().values()]
         take(0)
     except Exception:
