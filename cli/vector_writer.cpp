@@ -109,17 +109,20 @@ void write_strokes(const std::string& path, const std::string& format,
           add_field(layer, f.name, OFTReal, capture);
       },
       [&](OGRLayer& layer, const GdalErrorCapture& capture) {
+        // Fields by position: drivers may shorten names (shapefile: 10 characters).
         for (const Stroke& s : strokes) {
           OGRFeature feature(layer.GetLayerDefn());
-          feature.SetField("class", stroke_class_name(s.cls));
-          feature.SetField("cells", s.cells);
+          feature.SetField(0, stroke_class_name(s.cls));
+          feature.SetField(1, s.cells);
+          int index = 2;
           for (const StrokeRealField& f : stroke_real_fields()) {
             const double value = s.*(f.member);
             if (std::isfinite(value)) {
-              feature.SetField(f.name, value);
+              feature.SetField(index, value);
             } else {
-              feature.SetFieldNull(feature.GetFieldIndex(f.name));
+              feature.SetFieldNull(index);
             }
+            ++index;
           }
           add_line(layer, feature, s.points, path, capture);
         }
@@ -137,8 +140,8 @@ void write_profile_lines(const std::string& path, const std::string& format,
       [&](OGRLayer& layer, const GdalErrorCapture& capture) {
         for (const ProfileLine& line : lines) {
           OGRFeature feature(layer.GetLayerDefn());
-          feature.SetField("section", static_cast<int>(line.cross_section));
-          feature.SetField("distance", line.distance);
+          feature.SetField(0, static_cast<int>(line.cross_section));
+          feature.SetField(1, line.distance);
           add_line(layer, feature, line.points, path, capture);
         }
       });

@@ -114,10 +114,11 @@ SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame
   count_cells(oriented, flags, threads, stats, z_min);
   const StrokeContext context{oriented,     flags,           frame,          view,
                               geotransform, params.geometry, params.subcell, z_min};
-  make_strokes(factual, StrokeClass::factual, params.chain.min_cells, context, result.strokes);
+  make_strokes(factual, StrokeClass::factual, params.chain.min_cells, context, result.strokes,
+               threads);
   stats.factual_strokes = result.strokes.size();
-  make_strokes(formulated, StrokeClass::formulated, params.chain.min_cells, context,
-               result.strokes);
+  make_strokes(formulated, StrokeClass::formulated, params.chain.min_cells, context, result.strokes,
+               threads);
   stats.formulated_strokes = result.strokes.size() - stats.factual_strokes;
   for (const Stroke& s : result.strokes) stats.generalised += static_cast<std::size_t>(s.cells);
   time.strokes = seconds_since(start);

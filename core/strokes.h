@@ -69,6 +69,6 @@ double subcell_peak(const float* z, std::size_t length, std::size_t i, double d,
 
 // Appends the strokes of `chains` with at least `min_cells` cells to `out`.
 void make_strokes(const std::vector<Chain>& chains, StrokeClass cls, int min_cells,
-                  const StrokeContext& ctx, std::vector<Stroke>& out);
+                  const StrokeContext& ctx, std::vector<Stroke>& out, unsigned threads = 0);
 
 }  // namespace tsk

@@ -105,6 +105,23 @@ TEST_CASE("the sample DEM becomes a GeoPackage equal to the core's result", "[cl
   CHECK(dir.file_count() == 3);  // no temporary leftovers
 }
 
+TEST_CASE("a shapefile keeps every attribute under its shortened name", "[cli]") {
+  ScratchDir dir("shp");
+  const CliRun run = run_cli({"silhouettes", kData + "/volcano.tif", dir / "s.shp"});
+  REQUIRE(run.code == 0);
+  GDALDataset* ds = static_cast<GDALDataset*>(
+      GDALOpenEx((dir / "s.shp").c_str(), GDAL_OF_VECTOR, nullptr, nullptr, nullptr));
+  REQUIRE(ds != nullptr);
+  OGRLayer* layer = ds->GetLayer(0);
+  const int row_slope = layer->GetLayerDefn()->GetFieldIndex("mean_row_s");
+  REQUIRE(row_slope >= 0);
+  bool any = false;
+  for (auto& f : *layer)
+    any = any || (f->IsFieldSetAndNotNull(row_slope) && f->GetFieldAsDouble(row_slope) > 0);
+  CHECK(any);
+  GDALClose(ds);
+}
+
 TEST_CASE("output formats follow the extension", "[cli]") {
   ScratchDir dir("formats");
   for (const char* name : {"out.geojson", "out.shp", "out.fgb"}) {
