@@ -12,6 +12,7 @@
 //
 // Applications and diagnostics:
 //   profile_plot.h    [3] cross-sections in plan-oblique geometry, hidden parts removed
+//   pstrokes.h        [3] P-stroke sketch: Visvalingam effective areas, strokes across the view
 //   drape.h           [3] any raster on the DEM grid projected into plan-oblique space
 //   diagnostics.h     per-cell classification and row slope maps on the DEM grid
 //   filter_diagram.h  column against row slope scatter with the filter's removal region (HTML)
@@ -34,6 +35,7 @@
 #include "parallel.h"
 #include "params.h"
 #include "profile_plot.h"
+#include "pstrokes.h"
 #include "silhouettes.h"
 #include "slope_filter.h"
 #include "strokes.h"
