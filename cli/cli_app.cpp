@@ -31,6 +31,8 @@ commands:
   classify      per-cell stage of the method (visible, hidden, occluding, c-set, f-set,
                 t-set) on the DEM grid, with a colour table (OUTPUT: GeoTIFF)
   row-slope     |slope across the line of sight| in percent on the DEM grid (OUTPUT: GeoTIFF)
+  pstrokes      the P-stroke sketch: short strokes across the view where profiles along or
+                across it bend (Visvalingam effective areas), kept out of the f-set (OUTPUT: vector)
   drape         project --source RASTER (on the DEM's grid, all bands: a hillshade, a slope
                 map, an image) into plan-oblique space, hidden areas removed (OUTPUT: GeoTIFF)
   filter-plot   column against row slope with the c-set and the slope filter's removal region,
@@ -65,6 +67,10 @@ input and output:
   --timings            print the time of reading, each stage and writing to stderr
 profiles:
   --every N            draw every N-th cross-section (default 10)
+pstrokes (tolerances: effective areas in m2 of the profiles' distance-height triangles):
+  --convex-column M2   (default 15000)   --concave-column M2  (default 60000)
+  --convex-row M2      (default 30000)   --concave-row M2     (default 15000)
+  --half-length N      cells drawn each side of a seed across the view (default 1)
 drape:
   --source RASTER      the raster to drape, on the DEM's grid
 )";
@@ -96,6 +102,7 @@ struct Options {
   int every = 10;
   io::DemOptions dem;
   SilhouetteParams params;
+  PStrokeParams pstrokes;
 };
 
 Options parse(const std::vector<std::string>& args) {
@@ -124,6 +131,13 @@ Options parse(const std::vector<std::string>& args) {
        }},
       {"--format", [&](auto&, auto& v) { o.format = v; }},
       {"--source", [&](auto&, auto& v) { o.source = v; }},
+      {"--convex-column",
+       [&](auto& n, auto& v) { o.pstrokes.convex_column_m2 = parse_number(n, v); }},
+      {"--concave-column",
+       [&](auto& n, auto& v) { o.pstrokes.concave_column_m2 = parse_number(n, v); }},
+      {"--convex-row", [&](auto& n, auto& v) { o.pstrokes.convex_row_m2 = parse_number(n, v); }},
+      {"--concave-row", [&](auto& n, auto& v) { o.pstrokes.concave_row_m2 = parse_number(n, v); }},
+      {"--half-length", [&](auto& n, auto& v) { o.pstrokes.half_length = parse_int(n, v); }},
       {"--every",
        [&](auto& n, auto& v) {
          o.every = parse_int(n, v);
@@ -263,6 +277,22 @@ int profiles(const std::vector<std::string>& args, std::ostream& out, std::ostre
   return 0;
 }
 
+int pstrokes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Options o = parse(args);
+  o.pstrokes.validate();
+  io::vector_driver_for(o.output, o.format);
+  const io::Dem dem = io::read_dem(o.input, o.dem);
+  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  const SilhouetteResult result =
+      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
+  const auto strokes =
+      pstroke_sketch(dem.oriented, result.flags, dem.frame, o.params.view, dem.geotransform,
+                     o.params.geometry, o.pstrokes, o.params.threads);
+  io::write_pstrokes(o.output, o.format, strokes, dem.srs_wkt);
+  out << o.output << ": " << strokes.size() << " P-strokes\n";
+  return 0;
+}
+
 int drape(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
   require_geotiff(o.output);
@@ -310,7 +340,8 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   using Command = int (*)(const std::vector<std::string>&, std::ostream&, std::ostream&);
   const std::map<std::string, Command> commands = {
       {"silhouettes", silhouettes}, {"profiles", profiles},       {"classify", classify},
-      {"row-slope", row_slope},     {"filter-plot", filter_plot}, {"drape", drape}};
+      {"row-slope", row_slope},     {"filter-plot", filter_plot}, {"drape", drape},
+      {"pstrokes", pstrokes}};
   const auto command = commands.find(args[0]);
   if (command == commands.end()) {
     err << "terrain-sketch: unknown command '" << args[0] << "'\n" << kUsage;

@@ -147,4 +147,22 @@ void write_profile_lines(const std::string& path, const std::string& format,
       });
 }
 
+void write_pstrokes(const std::string& path, const std::string& format,
+                    const std::vector<PStroke>& strokes, const std::string& srs_wkt) {
+  write_line_layer(
+      path, format, srs_wkt, "pstrokes",
+      [](OGRLayer& layer, const GdalErrorCapture& capture) {
+        add_field(layer, "class", OFTString, capture);
+        add_field(layer, "score_m2", OFTReal, capture);
+      },
+      [&](OGRLayer& layer, const GdalErrorCapture& capture) {
+        for (const PStroke& s : strokes) {
+          OGRFeature feature(layer.GetLayerDefn());
+          feature.SetField(0, pstroke_class_name(s.cls));
+          feature.SetField(1, s.score_m2);
+          add_line(layer, feature, s.points, path, capture);
+        }
+      });
+}
+
 }  // namespace tsk::io

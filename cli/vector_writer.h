@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "profile_plot.h"
+#include "pstrokes.h"
 #include "strokes.h"
 
 namespace tsk::io {
@@ -20,5 +21,9 @@ void write_strokes(const std::string& path, const std::string& format,
 // Writes profile-plot lines (fields: section, distance) to `path`, whole or not at all.
 void write_profile_lines(const std::string& path, const std::string& format,
                          const std::vector<ProfileLine>& lines, const std::string& srs_wkt);
+
+// Writes P-strokes (fields: class, score_m2) to `path`, whole or not at all.
+void write_pstrokes(const std::string& path, const std::string& format,
+                    const std::vector<PStroke>& strokes, const std::string& srs_wkt);
 
 }  // namespace tsk::io

@@ -124,42 +124,42 @@
 <context>
     <name>DrapeAlgorithm</name>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="22" />
+        <location filename="../plugin/drape_algorithm.cpp" line="24" />
         <source>Drape raster (plan oblique)</source>
         <translation>Raster drapieren (Plan oblique)</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="25" />
+        <location filename="../plugin/drape_algorithm.cpp" line="28" />
         <source>Projects a raster on the DEM's grid (a hillshade, a slope or row slope map, an image; every band) into plan-oblique space: each visible cell moves along the view azimuth by exaggeration / base slope x (height - lowest height), terrain hidden behind nearer terrain is removed and slopes facing the viewer are stretched. The result lies exactly under the plan-oblique silhouettes and the profile plot made with the same view. The raster to drape must have the DEM's size (resample it to the DEM's grid first).</source>
         <translation>Projiziert ein Raster auf dem Gitter des DGM (eine Schummerung, eine Neigungs- oder Zeilenneigungskarte, ein Bild; alle Kanäle) in den Plan-oblique-Raum: jede sichtbare Zelle wird entlang der Blickrichtung um Überhöhung / Grundneigung x (Höhe - niedrigste Höhe) verschoben, hinter näherem Gelände verdecktes Gelände wird entfernt und dem Betrachter zugewandte Hänge werden gedehnt. Das Ergebnis liegt genau unter den Plan-oblique-Silhouetten und der Profildarstellung derselben Ansicht. Das Raster muss die Größe des DGM haben (zuerst auf das Gitter des DGM umtasten).</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="38" />
+        <location filename="../plugin/drape_algorithm.cpp" line="45" />
         <source>Raster to drape</source>
         <translation>Zu drapierendes Raster</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="39" />
+        <location filename="../plugin/drape_algorithm.cpp" line="46" />
         <source>A raster with the DEM's number of rows and columns; all its bands are draped.</source>
         <translation>Ein Raster mit der Zeilen- und Spaltenzahl des DGM; alle seine Kanäle werden drapiert.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="41" />
+        <location filename="../plugin/drape_algorithm.cpp" line="48" />
         <source>Draped raster</source>
         <translation>Drapiertes Raster</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="42" />
+        <location filename="../plugin/drape_algorithm.cpp" line="49" />
         <source>Float32 raster in plan-oblique space, one band per source band.</source>
         <translation>Float32-Raster im Plan-oblique-Raum, ein Kanal je Quellkanal.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="61" />
+        <location filename="../plugin/drape_algorithm.cpp" line="68" />
         <source>The raster to drape has %1 x %2 cells, the DEM %3 x %4: resample it to the DEM's grid first (Raster &gt; Projections &gt; Warp with the DEM's extent and resolution).</source>
         <translation>Das zu drapierende Raster hat %1 x %2 Zellen, das DGM %3 x %4: tasten Sie es zuerst auf das Gitter des DGM um (Raster &gt; Projektionen &gt; Transformieren mit Ausdehnung und Auflösung des DGM).</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="89" />
+        <location filename="../plugin/drape_algorithm.cpp" line="96" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -196,6 +196,105 @@
         <location filename="../plugin/filter_diagram_algorithm.cpp" line="72" />
         <source>Could not write %1.</source>
         <translation>%1 konnte nicht geschrieben werden.</translation>
+    </message>
+</context>
+<context>
+    <name>PStrokeAlgorithm</name>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="17" />
+        <source>P-stroke sketch</source>
+        <translation>P-Strich-Skizze</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="20" />
+        <source>Short strokes drawn across the line of sight where the terrain bends (Visvalingam and Dowson 1998). Every profile along the view (column) and across it (row) is scored with Visvalingam's effective-area line generalisation; a visible cell whose convex or concave score reaches its class's tolerance seeds a stroke along the cross-section. Tolerances are effective areas in square metres of the triangles formed by distance (m) and unexaggerated height (m) along the profiles; the defaults are the thesis's sparse sketch of a 50 m DEM. Combined with the silhouettes: no P-stroke is seeded in an f-set cell and none is extended into one.</source>
+        <translation>Kurze Striche quer zur Blickrichtung, wo das Gelände knickt (Visvalingam und Dowson 1998). Jedes Profil entlang der Ansicht (Spalte) und quer dazu (Zeile) wird mit Visvalingams Linienvereinfachung nach effektiver Fläche bewertet; eine sichtbare Zelle, deren konvexe oder konkave Bewertung die Toleranz ihrer Klasse erreicht, setzt einen Strich entlang des Querschnitts. Die Toleranzen sind effektive Flächen in Quadratmetern der Dreiecke aus Abstand (m) und nicht überhöhter Höhe (m) entlang der Profile; die Vorgaben sind die der spärlichen Skizze eines 50-m-DGM in der Dissertation. Zusammen mit den Silhouetten: kein P-Strich beginnt in einer Zelle der f-Menge, und keiner wird in eine hinein verlängert.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="41" />
+        <source>Convex column tolerance (m²)</source>
+        <translation>Toleranz konvex entlang (m²)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="42" />
+        <source>Effective area a convex bend along the view must reach.</source>
+        <translation>Effektive Fläche, die ein konvexer Knick entlang der Ansicht erreichen muss.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="43" />
+        <source>Concave column tolerance (m²)</source>
+        <translation>Toleranz konkav entlang (m²)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="44" />
+        <source>Effective area a concave bend along the view must reach.</source>
+        <translation>Effektive Fläche, die ein konkaver Knick entlang der Ansicht erreichen muss.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="45" />
+        <source>Convex row tolerance (m²)</source>
+        <translation>Toleranz konvex quer (m²)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="46" />
+        <source>Effective area a convex bend across the view must reach.</source>
+        <translation>Effektive Fläche, die ein konvexer Knick quer zur Ansicht erreichen muss.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="47" />
+        <source>Concave row tolerance (m²)</source>
+        <translation>Toleranz konkav quer (m²)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="48" />
+        <source>Effective area a concave bend across the view must reach.</source>
+        <translation>Effektive Fläche, die ein konkaver Knick quer zur Ansicht erreichen muss.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="50" />
+        <source>Stroke half length (cells)</source>
+        <translation>Halbe Strichlänge (Zellen)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="52" />
+        <source>Cells drawn on each side of a seed along the cross-section.</source>
+        <translation>Zellen, die auf jeder Seite eines Startpunkts entlang des Querschnitts gezeichnet werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="53" />
+        <source>Geometry</source>
+        <translation>Geometrie</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="54" />
+        <source>Map (cell centres)</source>
+        <translation>Karte (Zellmittelpunkte)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="55" />
+        <source>Plan oblique (the sketch)</source>
+        <translation>Plan oblique (die Skizze)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="57" />
+        <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
+        <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="60" />
+        <source>P-strokes</source>
+        <translation>P-Striche</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="62" />
+        <source>P-strokes as lines with their class and score.</source>
+        <translation>P-Striche als Linien mit ihrer Klasse und Bewertung.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/pstroke_algorithm.cpp" line="90" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="115" />
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
     </message>
 </context>
 <context>
@@ -481,12 +580,12 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
 <context>
     <name>TerrainSketchProvider</name>
     <message>
-        <location filename="../plugin/provider.cpp" line="19" />
+        <location filename="../plugin/provider.cpp" line="20" />
         <source>Terrain sketch</source>
         <translation>Geländeskizze</translation>
     </message>
     <message>
-        <location filename="../plugin/provider.cpp" line="22" />
+        <location filename="../plugin/provider.cpp" line="23" />
         <source>Terrain sketch: factual and formulated silhouettes</source>
         <translation>Geländeskizze: faktische und formulierte Silhouetten</translation>
     </message>

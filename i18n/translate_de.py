@@ -225,6 +225,42 @@ GERMAN = {
         "Plan-oblique-Silhouetten und der Profildarstellung derselben Ansicht. Das Raster muss "
         "die Größe des DGM haben (zuerst auf das Gitter des DGM umtasten).",
     "Raster to drape": "Zu drapierendes Raster",
+    "P-stroke sketch": "P-Strich-Skizze",
+    "Short strokes drawn across the line of sight where the terrain bends (Visvalingam and Dowson "
+    "1998). Every profile along the view (column) and across it (row) is scored with "
+    "Visvalingam's effective-area line generalisation; a visible cell whose convex or concave "
+    "score reaches its class's tolerance seeds a stroke along the cross-section. Tolerances are "
+    "effective areas in square metres of the triangles formed by distance (m) and unexaggerated "
+    "height (m) along the profiles; the defaults are the thesis's sparse sketch of a 50 m DEM. "
+    "Combined with the silhouettes: no P-stroke is seeded in an f-set cell and none is extended "
+    "into one.":
+        "Kurze Striche quer zur Blickrichtung, wo das Gelände knickt (Visvalingam und Dowson "
+        "1998). Jedes Profil entlang der Ansicht (Spalte) und quer dazu (Zeile) wird mit "
+        "Visvalingams Linienvereinfachung nach effektiver Fläche bewertet; eine sichtbare Zelle, "
+        "deren konvexe oder konkave Bewertung die Toleranz ihrer Klasse erreicht, setzt einen "
+        "Strich entlang des Querschnitts. Die Toleranzen sind effektive Flächen in "
+        "Quadratmetern der Dreiecke aus Abstand (m) und nicht überhöhter Höhe (m) entlang der "
+        "Profile; die Vorgaben sind die der spärlichen Skizze eines 50-m-DGM in der "
+        "Dissertation. Zusammen mit den Silhouetten: kein P-Strich beginnt in einer Zelle der "
+        "f-Menge, und keiner wird in eine hinein verlängert.",
+    "Convex column tolerance (m²)": "Toleranz konvex entlang (m²)",
+    "Effective area a convex bend along the view must reach.":
+        "Effektive Fläche, die ein konvexer Knick entlang der Ansicht erreichen muss.",
+    "Concave column tolerance (m²)": "Toleranz konkav entlang (m²)",
+    "Effective area a concave bend along the view must reach.":
+        "Effektive Fläche, die ein konkaver Knick entlang der Ansicht erreichen muss.",
+    "Convex row tolerance (m²)": "Toleranz konvex quer (m²)",
+    "Effective area a convex bend across the view must reach.":
+        "Effektive Fläche, die ein konvexer Knick quer zur Ansicht erreichen muss.",
+    "Concave row tolerance (m²)": "Toleranz konkav quer (m²)",
+    "Effective area a concave bend across the view must reach.":
+        "Effektive Fläche, die ein konkaver Knick quer zur Ansicht erreichen muss.",
+    "Stroke half length (cells)": "Halbe Strichlänge (Zellen)",
+    "Cells drawn on each side of a seed along the cross-section.":
+        "Zellen, die auf jeder Seite eines Startpunkts entlang des Querschnitts gezeichnet werden.",
+    "P-strokes": "P-Striche",
+    "P-strokes as lines with their class and score.":
+        "P-Striche als Linien mit ihrer Klasse und Bewertung.",
     "A raster with the DEM's number of rows and columns; all its bands are draped.":
         "Ein Raster mit der Zeilen- und Spaltenzahl des DGM; alle seine Kanäle werden drapiert.",
     "Draped raster": "Drapiertes Raster",

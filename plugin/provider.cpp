@@ -7,6 +7,7 @@
 #include "filter_diagram_algorithm.h"
 #include "plugin_paths.h"
 #include "profile_plot_algorithm.h"
+#include "pstroke_algorithm.h"
 #include "row_slope_algorithm.h"
 #include "silhouettes_algorithm.h"
 
@@ -35,6 +36,7 @@ void TerrainSketchProvider::loadAlgorithms() {
   addAlgorithm(new RowSlopeAlgorithm());
   addAlgorithm(new FilterDiagramAlgorithm());
   addAlgorithm(new DrapeAlgorithm());
+  addAlgorithm(new PStrokeAlgorithm());
 }
 
 }  // namespace tsk::plugin

@@ -27,6 +27,7 @@ STYLES = [
     ("formulated", "120,120,120",
      'coalesce(scale_linear("mean_slope", 0, 40, 0.2, 0.55), 0.3)'),
     ("profiles", "60,60,60", "0.25"),
+    ("pstrokes", "150,70,20", "0.3"),
 ]
 
 # Stage classes as in the thesis's map views (same colours as the CLI's colour table).
@@ -72,7 +73,7 @@ def main():
         symbol = QgsLineSymbol.createSimple({"line_color": colour, "line_width": "0.5",
                                              "line_width_unit": "MM", "capstyle": "round",
                                              "joinstyle": "round"})
-        if name != "profiles":
+        if name not in ("profiles", "pstrokes"):
             symbol.symbolLayer(0).setDataDefinedProperty(QgsSymbolLayer.PropertyStrokeWidth,
                                                          QgsProperty.fromExpression(width))
         else:

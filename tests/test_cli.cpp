@@ -348,3 +348,14 @@ TEST_CASE("drape projects every band of a raster on the DEM's grid", "[cli][drap
   CHECK_THAT(off.err, Catch::Contains("on the DEM's grid"));
   CHECK(run_cli({"drape", kSample, dir / "f.tif"}).code == 1);
 }
+
+TEST_CASE("pstrokes writes classes and scores, and refuses bad tolerances", "[cli][pstrokes]") {
+  ScratchDir dir("pstrokes");
+  const CliRun run = run_cli({"pstrokes", kSample, dir / "p.geojson", "--geometry", "oblique"});
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  CHECK(summarise(dir / "p.geojson").features > 100);
+  const CliRun bad = run_cli({"pstrokes", kSample, dir / "q.geojson", "--convex-row", "-1"});
+  CHECK(bad.code == 1);
+  CHECK_THAT(bad.err, Catch::Contains("tolerances"));
+}

@@ -1,12 +1,12 @@
 <!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>
-<qgis version="3.22.16-Białowieża" minScale="1e+08" maxScale="0" hasScaleBasedVisibilityFlag="0" styleCategories="AllStyleCategories">
+<qgis minScale="1e+08" maxScale="0" styleCategories="AllStyleCategories" version="3.22.16-Białowieża" hasScaleBasedVisibilityFlag="0">
   <flags>
     <Identifiable>1</Identifiable>
     <Removable>1</Removable>
     <Searchable>1</Searchable>
     <Private>0</Private>
   </flags>
-  <temporal mode="0" enabled="0" fetchMode="0">
+  <temporal enabled="0" fetchMode="0" mode="0">
     <fixedRange>
       <start></start>
       <end></end>
@@ -14,21 +14,21 @@
   </temporal>
   <customproperties>
     <Option type="Map">
-      <Option name="identify/format" value="Value" type="QString"/>
+      <Option value="Value" name="identify/format" type="QString"/>
     </Option>
   </customproperties>
   <pipe-data-defined-properties>
     <Option type="Map">
-      <Option name="name" value="" type="QString"/>
+      <Option value="" name="name" type="QString"/>
       <Option name="properties"/>
-      <Option name="type" value="collection" type="QString"/>
+      <Option value="collection" name="type" type="QString"/>
     </Option>
   </pipe-data-defined-properties>
   <pipe>
     <provider>
-      <resampling zoomedInResamplingMethod="nearestNeighbour" maxOversampling="2" zoomedOutResamplingMethod="nearestNeighbour" enabled="false"/>
+      <resampling maxOversampling="2" zoomedOutResamplingMethod="nearestNeighbour" enabled="false" zoomedInResamplingMethod="nearestNeighbour"/>
     </provider>
-    <rasterrenderer gradient="WhiteToBlack" opacity="1" grayBand="1" alphaBand="-1" type="singlebandgray" nodataColor="">
+    <rasterrenderer grayBand="1" alphaBand="-1" nodataColor="" opacity="1" gradient="WhiteToBlack" type="singlebandgray">
       <minMaxOrigin>
         <limits>None</limits>
         <extent>WholeRaster</extent>
@@ -42,22 +42,22 @@
         <maxValue>60</maxValue>
         <algorithm>StretchToMinimumMaximum</algorithm>
       </contrastEnhancement>
-      <rampLegendSettings prefix="" direction="0" suffix="" orientation="2" minimumLabel="" useContinuousLegend="1" maximumLabel="">
+      <rampLegendSettings direction="0" prefix="" minimumLabel="" maximumLabel="" orientation="2" useContinuousLegend="1" suffix="">
         <numericFormat id="basic">
           <Option type="Map">
-            <Option name="decimal_separator" value="" type="QChar"/>
-            <Option name="decimals" value="6" type="int"/>
-            <Option name="rounding_type" value="0" type="int"/>
-            <Option name="show_plus" value="false" type="bool"/>
-            <Option name="show_thousand_separator" value="true" type="bool"/>
-            <Option name="show_trailing_zeros" value="false" type="bool"/>
-            <Option name="thousand_separator" value="" type="QChar"/>
+            <Option value="" name="decimal_separator" type="QChar"/>
+            <Option value="6" name="decimals" type="int"/>
+            <Option value="0" name="rounding_type" type="int"/>
+            <Option value="false" name="show_plus" type="bool"/>
+            <Option value="true" name="show_thousand_separator" type="bool"/>
+            <Option value="false" name="show_trailing_zeros" type="bool"/>
+            <Option value="" name="thousand_separator" type="QChar"/>
           </Option>
         </numericFormat>
       </rampLegendSettings>
     </rasterrenderer>
-    <brightnesscontrast brightness="0" gamma="1" contrast="0"/>
-    <huesaturation colorizeOn="0" colorizeGreen="128" invertColors="0" saturation="0" colorizeBlue="128" colorizeStrength="100" colorizeRed="255" grayscaleMode="0"/>
+    <brightnesscontrast gamma="1" brightness="0" contrast="0"/>
+    <huesaturation saturation="0" grayscaleMode="0" colorizeRed="255" colorizeGreen="128" colorizeStrength="100" colorizeBlue="128" colorizeOn="0" invertColors="0"/>
     <rasterresampler maxOversampling="2"/>
     <resamplingStage>resamplingFilter</resamplingStage>
   </pipe>

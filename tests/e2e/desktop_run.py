@@ -53,6 +53,7 @@ def show_only(names, rotation):
 # the classification map north up.
 SHOTS = [("qgis_desktop.png", {"Factual silhouettes", "Formulated silhouettes", "Profile plot"}, -90),
          ("qgis_drape.png", {"Factual silhouettes", "Formulated silhouettes", "Draped raster"}, -90),
+         ("qgis_pstrokes.png", {"Factual silhouettes", "Formulated silhouettes", "P-strokes"}, -90),
          ("qgis_classification.png", {"Silhouette stages"}, 0)]
 
 
@@ -87,7 +88,9 @@ def run():
                 ("terrainsketch:profileplot", {"EVERY": 12,
                                                "OUTPUT": os.path.join(OUT, "profiles.gpkg")}),
                 ("terrainsketch:classification", {"OUTPUT": os.path.join(OUT, "classes.tif")}),
-                ("terrainsketch:rowslope", {"OUTPUT": os.path.join(OUT, "rowslope.tif")})]
+                ("terrainsketch:rowslope", {"OUTPUT": os.path.join(OUT, "rowslope.tif")}),
+                ("terrainsketch:pstrokes", {"GEOMETRY": 1,
+                                            "OUTPUT": os.path.join(OUT, "pstrokes.gpkg")})]
         report["results"] = {}
         for alg, params in runs:
             results = processing.runAndLoadResults(alg, dict(common, **params))

@@ -31,7 +31,7 @@ check(r.get("ok"), "run finished: %s" % r.get("error"))
 check(r.get("provider"), "provider registered")
 check(r.get("plugin_active"), "plugin active in the plugin manager")
 layers = {l["name"]: l for l in r.get("layers", [])}
-check(len(layers) == 6, "six layers loaded, got %s" % list(layers))
+check(len(layers) == 7, "seven layers loaded, got %s" % list(layers))
 for name, colour, field in (("Factual silhouettes", "#111111", "mean_depth"),
                             ("Formulated silhouettes", "#787878", "mean_slope")):
     l = layers.get(name, {})
@@ -44,7 +44,8 @@ check(layers.get("Profile plot", {}).get("features", 0) > 20, "profile plot line
 check(layers.get("Silhouette stages", {}).get("renderer") == "paletted", "classes paletted")
 check(layers.get("Row slope", {}).get("renderer") == "singlebandgray", "row slope grey")
 shots = r.get("screenshots", [])
-check(len(shots) == 3, "three screenshots")
+check(len(shots) == 4, "four screenshots")
+check(layers.get("P-strokes", {}).get("features", 0) > 100, "P-strokes drawn")
 check("Draped raster" in layers, "draped raster loaded")
 for shot in shots:
     check(os.path.exists(shot) and os.path.getsize(shot) > 10000, "screenshot " + shot)

@@ -1,0 +1,138 @@
+#include "pstroke_algorithm.h"
+
+#include <qgsfeaturesink.h>
+#include <qgsgeometry.h>
+#include <qgslinestring.h>
+#include <qgsprocessingfeedback.h>
+
+#include "errors.h"
+#include "layer_style.h"
+#include "qgis_compat.h"
+#include "raster_grid.h"
+#include "silhouettes.h"
+
+namespace tsk::plugin {
+
+QString PStrokeAlgorithm::name() const {
+  return QStringLiteral("pstrokes");
+}
+QString PStrokeAlgorithm::displayName() const {
+  return tr("P-stroke sketch");
+}
+
+QString PStrokeAlgorithm::shortHelpString() const {
+  return tr(
+      "Short strokes drawn across the line of sight where the terrain bends (Visvalingam "
+      "and Dowson 1998). Every profile along the view (column) and across it (row) is "
+      "scored with Visvalingam's effective-area line generalisation; a visible cell whose "
+      "convex or concave score reaches its class's tolerance seeds a stroke along the "
+      "cross-section. Tolerances are effective areas in square metres of the triangles "
+      "formed by distance (m) and unexaggerated height (m) along the profiles; the "
+      "defaults are the thesis's sparse sketch of a 50 m DEM. Combined with the "
+      "silhouettes: no P-stroke is seeded in an f-set cell and none is extended into one.");
+}
+
+PStrokeAlgorithm* PStrokeAlgorithm::createInstance() const {
+  return new PStrokeAlgorithm();
+}
+
+void PStrokeAlgorithm::initAlgorithm(const QVariantMap&) {
+  addDemAndViewParameters(true);
+  addFilterParameters();
+  const PStrokeParams defaults;
+  auto area = [this](const QString& key, const QString& label, double value, const QString& help) {
+    addWithHelp(
+        new QgsProcessingParameterNumber(key, label, kDoubleNumber, value, false, 0.001, 1e12),
+        help);
+  };
+  area(QStringLiteral("CONVEX_COLUMN"), tr("Convex column tolerance (m²)"),
+       defaults.convex_column_m2, tr("Effective area a convex bend along the view must reach."));
+  area(QStringLiteral("CONCAVE_COLUMN"), tr("Concave column tolerance (m²)"),
+       defaults.concave_column_m2, tr("Effective area a concave bend along the view must reach."));
+  area(QStringLiteral("CONVEX_ROW"), tr("Convex row tolerance (m²)"), defaults.convex_row_m2,
+       tr("Effective area a convex bend across the view must reach."));
+  area(QStringLiteral("CONCAVE_ROW"), tr("Concave row tolerance (m²)"), defaults.concave_row_m2,
+       tr("Effective area a concave bend across the view must reach."));
+  addWithHelp(new QgsProcessingParameterNumber(QStringLiteral("HALF_LENGTH"),
+                                               tr("Stroke half length (cells)"), kIntegerNumber,
+                                               defaults.half_length, false, 1, 100),
+              tr("Cells drawn on each side of a seed along the cross-section."));
+  addWithHelp(new QgsProcessingParameterEnum(
+                  QStringLiteral("GEOMETRY"), tr("Geometry"),
+                  {tr("Map (cell centres)"), tr("Plan oblique (the sketch)")}, false, 1),
+              tr("Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point "
+                 "moved along the view azimuth by (exaggeration / base slope) x (height - lowest "
+                 "height), so the strokes draw the oblique sketch in the same CRS."));
+  addWithHelp(
+      new QgsProcessingParameterFeatureSink(QStringLiteral("OUTPUT"), tr("P-strokes"), kLineLayer),
+      tr("P-strokes as lines with their class and score."));
+}
+
+double PStrokeAlgorithm::readParameters(const QVariantMap& parameters,
+                                        QgsProcessingContext& context) {
+  mParams.view = readView(parameters, context);
+  mParams.filter = readFilter(parameters, context);
+  mParams.validate();
+  mPStrokes.convex_column_m2 =
+      parameterAsDouble(parameters, QStringLiteral("CONVEX_COLUMN"), context);
+  mPStrokes.concave_column_m2 =
+      parameterAsDouble(parameters, QStringLiteral("CONCAVE_COLUMN"), context);
+  mPStrokes.convex_row_m2 = parameterAsDouble(parameters, QStringLiteral("CONVEX_ROW"), context);
+  mPStrokes.concave_row_m2 = parameterAsDouble(parameters, QStringLiteral("CONCAVE_ROW"), context);
+  mPStrokes.half_length = parameterAsInt(parameters, QStringLiteral("HALF_LENGTH"), context);
+  mPStrokes.validate();
+  mParams.geometry = parameterAsEnum(parameters, QStringLiteral("GEOMETRY"), context) == 1
+                         ? Geometry::oblique
+                         : Geometry::map;
+  return mParams.view.azimuth_deg;
+}
+
+QVariantMap PStrokeAlgorithm::processAlgorithm(const QVariantMap& parameters,
+                                               QgsProcessingContext& context,
+                                               QgsProcessingFeedback* feedback) {
+  const RasterGrid& raster = readRaster(feedback, 25);
+  std::vector<PStroke> strokes;
+  try {
+    const SilhouetteResult result =
+        run_silhouettes(raster.oriented(), raster.frame(), raster.geotransform(), mParams);
+    if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
+    strokes = pstroke_sketch(raster.oriented(), result.flags, raster.frame(), mParams.view,
+                             raster.geotransform(), mParams.geometry, mPStrokes);
+  } catch (const Error& e) {
+    throw QgsProcessingException(QString::fromStdString(e.what()));
+  }
+  QgsFields fields;
+  fields.append(makeField(QStringLiteral("class"), FieldKind::Text));
+  fields.append(makeField(QStringLiteral("score_m2"), FieldKind::Real));
+  std::unique_ptr<QgsFeatureSink> sink(parameterAsSink(
+      parameters, QStringLiteral("OUTPUT"), context, mOutput, fields, kLineString, raster.crs()));
+  if (!sink) throw QgsProcessingException(invalidSinkError(parameters, QStringLiteral("OUTPUT")));
+  std::size_t written = 0;
+  for (const PStroke& s : strokes) {
+    QgsFeature feature(fields);
+    QgsAttributes attributes;
+    attributes << QString::fromLatin1(pstroke_class_name(s.cls)) << s.score_m2;
+    feature.setAttributes(attributes);
+    QVector<double> xs, ys;
+    for (const StrokePoint& p : s.points) xs << p.x, ys << p.y;
+    feature.setGeometry(QgsGeometry(new QgsLineString(xs, ys)));
+    if (!sink->addFeature(feature, QgsFeatureSink::FastInsert)) {
+      throw QgsProcessingException(
+          writeFeatureError(sink.get(), parameters, QStringLiteral("OUTPUT")));
+    }
+    if (feedback && ++written % 1000 == 0) {
+      if (feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
+      feedback->setProgress(50 + 50.0 * written / strokes.size());
+    }
+  }
+  releaseRaster();
+  return {{QStringLiteral("OUTPUT"), mOutput}};
+}
+
+QVariantMap PStrokeAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
+                                                   QgsProcessingFeedback*) {
+  styleOnCompletion(context, mOutput, QStringLiteral("pstrokes"));
+  return {};
+}
+
+}  // namespace tsk::plugin
