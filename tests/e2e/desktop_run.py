@@ -54,7 +54,8 @@ def show_only(names, rotation):
 SHOTS = [("qgis_desktop.png", {"Factual silhouettes", "Formulated silhouettes", "Profile plot"}, -90),
          ("qgis_drape.png", {"Factual silhouettes", "Formulated silhouettes", "Draped raster"}, -90),
          ("qgis_pstrokes.png", {"Factual silhouettes", "Formulated silhouettes", "P-strokes"}, -90),
-         ("qgis_classification.png", {"Silhouette stages"}, 0)]
+         ("qgis_classification.png", {"Silhouette stages"}, 0),
+         ("qgis_rowslope.png", {"Row slope"}, 0)]
 
 
 def take(index):

@@ -44,7 +44,7 @@ check(layers.get("Profile plot", {}).get("features", 0) > 20, "profile plot line
 check(layers.get("Silhouette stages", {}).get("renderer") == "paletted", "classes paletted")
 check(layers.get("Row slope", {}).get("renderer") == "singlebandgray", "row slope grey")
 shots = r.get("screenshots", [])
-check(len(shots) == 4, "four screenshots")
+check(len(shots) == 5, "five screenshots")
 check(layers.get("P-strokes", {}).get("features", 0) > 100, "P-strokes drawn")
 check("Draped raster" in layers, "draped raster loaded")
 for shot in shots:
