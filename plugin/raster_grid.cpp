@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <new>
 #include <vector>
 
@@ -29,6 +30,29 @@ double mercatorGroundScale(const QgsCoordinateReferenceSystem& crs, const QgsRec
     return std::cos(centre.y() * M_PI / 180.0);
   } catch (const QgsCsException&) {
     return 1.0;
+  }
+}
+
+// Copies a block of `count` rows into `out` as floats with NaN for nodata. Float32 blocks whose
+// nodata is a plain value (or absent) are copied in bulk; anything else cell by cell.
+void copyHeights(QgsRasterBlock& block, int count, float* out) {
+  const auto cells = static_cast<std::size_t>(count) * static_cast<std::size_t>(block.width());
+  const bool plainNoData = block.hasNoDataValue() || !block.hasNoData();
+  if (block.dataType() == Qgis::DataType::Float32 && plainNoData) {
+    std::memcpy(out, block.bits(0), cells * sizeof(float));
+    if (block.hasNoDataValue()) {
+      const auto noData = static_cast<float>(block.noDataValue());
+      std::replace(out, out + cells, noData, kNoData);
+    }
+    return;
+  }
+  for (int r = 0; r < count; ++r) {
+    for (int c = 0; c < block.width(); ++c) {
+      bool noData = false;
+      const double v = block.valueAndNoData(r, c, noData);
+      out[static_cast<std::size_t>(r) * static_cast<std::size_t>(block.width()) + c] =
+          noData ? kNoData : static_cast<float>(v);
+    }
   }
 }
 
@@ -109,14 +133,7 @@ void RasterGrid::readBlocks(QgsProcessingFeedback* feedback, double progressFrom
       throw QgsProcessingException(
           tr("Could not read rows %1 to %2 of the raster.").arg(top).arg(top + count - 1));
     }
-    for (int r = 0; r < count; ++r) {
-      float* out = rows.data() + static_cast<std::size_t>(r) * cols;
-      for (int c = 0; c < mCols; ++c) {
-        bool noData = false;
-        const double v = block->valueAndNoData(r, c, noData);
-        out[c] = noData ? kNoData : static_cast<float>(v);
-      }
-    }
+    copyHeights(*block, count, rows.data());
     builder.add_rows(static_cast<std::size_t>(top), static_cast<std::size_t>(count), rows.data());
     if (feedback) {
       feedback->setProgress(progressFrom + (progressTo - progressFrom) * (top + count) /
