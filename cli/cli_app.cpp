@@ -1,5 +1,8 @@
 #include "cli_app.h"
 
+#include <cpl_conv.h>
+#include <gdal.h>
+
 #include <cctype>
 #include <chrono>
 #include <cstdio>
@@ -352,6 +355,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     out << kUsage;
     return 0;
   }
+  // Every raster block is read once: GDAL's default cache (5 % of RAM) would only hold a second
+  // copy of the DEM. Keep it small unless the user chose a size.
+  if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(64 << 20);
   try {
     return command->second(rest, out, err);
   } catch (const Error& e) {
