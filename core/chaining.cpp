@@ -68,33 +68,75 @@ std::ptrdiff_t nearest_overlapping(const ProfileCells& next, std::int32_t i, std
   return best;
 }
 
-// Scans profiles left to right and cells front to back, growing each chain to the right.
-std::vector<Chain> link(std::vector<ProfileCells>& profiles, bool factual, int window) {
-  std::vector<Chain> chains;
-  Chain chain;
-  for (std::size_t p = 0; p < profiles.size(); ++p) {
-    for (std::size_t k = 0; k < profiles[p].cell.size(); ++k) {
-      if (profiles[p].used[k]) continue;
-      profiles[p].used[k] = 1;
-      chain.clear();
-      std::size_t cur_p = p;
-      std::size_t cur_k = k;
-      chain.push_back({static_cast<std::int32_t>(p), profiles[p].cell[k]});
-      while (cur_p + 1 < profiles.size()) {
-        const std::int32_t i = profiles[cur_p].cell[cur_k];
-        const std::int32_t lo = factual ? i : i - window;
-        const std::int32_t hi = factual ? profiles[cur_p].reach[cur_k] : i + window;
-        const std::ptrdiff_t found = nearest_overlapping(profiles[cur_p + 1], i, lo, hi);
-        if (found < 0) break;
-        ++cur_p;
-        cur_k = static_cast<std::size_t>(found);
-        profiles[cur_p].used[cur_k] = 1;
-        chain.push_back({static_cast<std::int32_t>(cur_p), profiles[cur_p].cell[cur_k]});
+// Links profiles one at a time, left to right. This equals the scan of SPEC 1.7 (each chain grown
+// fully to the right before the next unused cell, front to back, starts one): in every new
+// profile the open chains pick their cell in the order they were started, then the cells left
+// unused start new chains front to back. Needs only two profiles at a time.
+class StreamingLinker {
+ public:
+  StreamingLinker(bool factual, int window) : factual_(factual), window_(window) {}
+
+  void add_profile(ProfileCells&& next, std::int32_t p) {
+    std::vector<Open> still_open;
+    for (Open& o : open_) {
+      const std::int32_t i = last_.cell[o.k];
+      const std::int32_t lo = factual_ ? i : i - window_;
+      const std::int32_t hi = factual_ ? last_.reach[o.k] : i + window_;
+      const std::ptrdiff_t found = nearest_overlapping(next, i, lo, hi);
+      if (found < 0) {
+        close(std::move(o));
+        continue;
       }
-      if (chain.size() >= 2) chains.push_back(chain);
+      o.k = static_cast<std::size_t>(found);
+      next.used[o.k] = 1;
+      o.chain.push_back({p, next.cell[o.k]});
+      still_open.push_back(std::move(o));
     }
+    for (std::size_t k = 0; k < next.cell.size(); ++k) {
+      if (next.used[k]) continue;
+      next.used[k] = 1;
+      still_open.push_back({Chain{{p, next.cell[k]}}, k, started_++});
+    }
+    open_ = std::move(still_open);
+    last_ = std::move(next);
   }
-  return chains;
+
+  // The chains of two cells or more, in the order they were started.
+  std::vector<Chain> finish() {
+    for (Open& o : open_) close(std::move(o));
+    open_.clear();
+    std::sort(done_.begin(), done_.end(),
+              [](const Open& a, const Open& b) { return a.order < b.order; });
+    std::vector<Chain> chains;
+    chains.reserve(done_.size());
+    for (Open& o : done_) chains.push_back(std::move(o.chain));
+    return chains;
+  }
+
+ private:
+  struct Open {
+    Chain chain;
+    std::size_t k;      // index of the chain's last cell in the last profile
+    std::size_t order;  // when it was started
+  };
+
+  void close(Open&& o) {
+    if (o.chain.size() >= 2) done_.push_back(std::move(o));
+  }
+
+  bool factual_;
+  int window_;
+  ProfileCells last_;
+  std::vector<Open> open_, done_;
+  std::size_t started_ = 0;
+};
+
+std::vector<Chain> link(std::vector<ProfileCells>& profiles, bool factual, int window) {
+  StreamingLinker linker(factual, window);
+  for (std::size_t p = 0; p < profiles.size(); ++p) {
+    linker.add_profile(std::move(profiles[p]), static_cast<std::int32_t>(p));
+  }
+  return linker.finish();
 }
 
 }  // namespace

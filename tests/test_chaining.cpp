@@ -97,3 +97,66 @@ TEST_CASE("every chained cell is used once and links neighbouring profiles", "[c
     }
   }
 }
+
+namespace {
+
+// The oracle: SPEC 1.7 taken literally on the flags, quadratic and simple. Each chain is grown
+// to the right as far as it goes before the next unused cell (profiles left to right, cells
+// front to back) starts one.
+std::vector<Cells> scan_oracle(const CellFlags& flags, bool factual, int window) {
+  const std::uint8_t bit = factual ? cell::occluding : cell::thinned;
+  auto reach = [&](std::size_t p, std::size_t i) {  // end of the hidden zone behind (p, i)
+    if (!factual) return i;
+    std::size_t last = i;
+    for (std::size_t j = i + 1; j < flags.cols(); ++j) {
+      if (!(flags(p, j) & cell::valid)) continue;
+      if (!(flags(p, j) & cell::hidden)) break;
+      last = j;
+    }
+    return last;
+  };
+  CellFlags used(flags.rows(), flags.cols());
+  std::vector<Cells> chains;
+  for (std::size_t p = 0; p < flags.rows(); ++p)
+    for (std::size_t i = 0; i < flags.cols(); ++i) {
+      if (!(flags(p, i) & bit) || used(p, i)) continue;
+      used(p, i) = 1;
+      Cells chain{{static_cast<int>(p), static_cast<int>(i)}};
+      std::size_t cp = p, ci = i;
+      while (cp + 1 < flags.rows()) {
+        const long lo = factual ? static_cast<long>(ci) : static_cast<long>(ci) - window;
+        const long hi = factual ? static_cast<long>(reach(cp, ci)) : static_cast<long>(ci) + window;
+        long best = -1, best_gap = 1L << 40;
+        for (std::size_t j = 0; j < flags.cols(); ++j) {
+          if (!(flags(cp + 1, j) & bit) || used(cp + 1, j)) continue;
+          const long start = static_cast<long>(j), end = static_cast<long>(reach(cp + 1, j));
+          if (end < lo || start > hi) continue;
+          const long gap = std::labs(start - static_cast<long>(ci));
+          if (gap < best_gap) best = start, best_gap = gap;
+        }
+        if (best < 0) break;
+        ++cp, ci = static_cast<std::size_t>(best);
+        used(cp, ci) = 1;
+        chain.emplace_back(static_cast<int>(cp), static_cast<int>(ci));
+      }
+      if (chain.size() >= 2) chains.push_back(chain);
+    }
+  return chains;
+}
+
+}  // namespace
+
+TEST_CASE("both chainers equal the literal scan of SPEC 1.7 on random terrains",
+          "[chaining][oracle]") {
+  for (std::uint32_t seed : {1u, 2u, 3u, 4u, 5u, 6u}) {
+    INFO("seed " << seed);
+    const HeightGrid dem = test::random_terrain(40, 50, seed, 0.05);
+    const SilhouetteResult r = test::run_on_dem(dem, SilhouetteParams{});
+    for (bool factual : {true, false}) {
+      const auto fast = factual ? chain_factual(r.flags) : chain_formulated(r.flags, 3);
+      const auto slow = scan_oracle(r.flags, factual, 3);
+      REQUIRE(fast.size() == slow.size());
+      for (std::size_t k = 0; k < fast.size(); ++k) REQUIRE(cells(fast[k]) == slow[k]);
+    }
+  }
+}
