@@ -1,9 +1,11 @@
 #include "dem_view_algorithm.h"
 
+#include <qgsfeaturesink.h>
 #include <qgsprocessingfeedback.h>
 #include <qgsrasterlayer.h>
 
 #include <QIcon>
+#include <algorithm>
 
 #include "errors.h"
 #include "plugin_paths.h"
@@ -122,7 +124,21 @@ bool DemViewAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
   return true;
 }
 
+void DemViewAlgorithm::addToSink(QgsFeatureSink& sink, QgsFeature& feature,
+                                 const QVariantMap& parameters, const QString& key,
+                                 QgsProcessingFeedback* feedback, std::size_t total, double from) {
+  if (!sink.addFeature(feature, QgsFeatureSink::FastInsert)) {
+    throw QgsProcessingException(writeFeatureError(&sink, parameters, key));
+  }
+  if (feedback && ++mWritten % 500 == 0) {
+    if (feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
+    feedback->setProgress(from + (100.0 - from) * static_cast<double>(mWritten) /
+                                     static_cast<double>(std::max<std::size_t>(1, total)));
+  }
+}
+
 RasterGrid& DemViewAlgorithm::readRaster(QgsProcessingFeedback* feedback, double progressTo) {
+  mWritten = 0;
   mRaster->read(mAzimuth, feedback, 0.0, progressTo);
   return *mRaster;
 }

@@ -40,6 +40,12 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   bool prepareAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,
                         QgsProcessingFeedback* feedback) override;
 
+  // Adds `feature` to the sink of output `key`, failing with QGIS's write error. Every 500
+  // features it checks for cancellation and moves progress from `from` towards 100 %.
+  void addToSink(QgsFeatureSink& sink, QgsFeature& feature, const QVariantMap& parameters,
+                 const QString& key, QgsProcessingFeedback* feedback, std::size_t total,
+                 double from);
+
   // Worker thread: reads the DEM oriented for the azimuth, progress 0 to `progressTo` percent.
   RasterGrid& readRaster(QgsProcessingFeedback* feedback, double progressTo);
   void releaseRaster();
@@ -47,6 +53,7 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
  private:
   std::unique_ptr<RasterGrid> mRaster;
   double mAzimuth = 90;
+  std::size_t mWritten = 0;
 };
 
 }  // namespace tsk::plugin

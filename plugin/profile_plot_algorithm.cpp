@@ -1,8 +1,6 @@
 #include "profile_plot_algorithm.h"
 
 #include <qgsfeaturesink.h>
-#include <qgsgeometry.h>
-#include <qgslinestring.h>
 #include <qgsprocessingfeedback.h>
 
 #include "errors.h"
@@ -10,6 +8,7 @@
 #include "profile_plot.h"
 #include "qgis_compat.h"
 #include "raster_grid.h"
+#include "stroke_features.h"
 #include "visibility.h"
 
 namespace tsk::plugin {
@@ -74,21 +73,11 @@ QVariantMap ProfilePlotAlgorithm::processAlgorithm(const QVariantMap& parameters
   std::unique_ptr<QgsFeatureSink> sink(parameterAsSink(
       parameters, QStringLiteral("OUTPUT"), context, mOutput, fields, kLineString, raster.crs()));
   if (!sink) throw QgsProcessingException(invalidSinkError(parameters, QStringLiteral("OUTPUT")));
-  std::size_t written = 0;
   for (const ProfileLine& line : lines) {
     QgsFeature feature(fields);
     feature.setAttributes({static_cast<int>(line.cross_section), line.distance});
-    QVector<double> xs, ys;
-    for (const StrokePoint& p : line.points) xs << p.x, ys << p.y;
-    feature.setGeometry(QgsGeometry(new QgsLineString(xs, ys)));
-    if (!sink->addFeature(feature, QgsFeatureSink::FastInsert)) {
-      throw QgsProcessingException(
-          writeFeatureError(sink.get(), parameters, QStringLiteral("OUTPUT")));
-    }
-    if (feedback && ++written % 500 == 0) {
-      if (feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
-      feedback->setProgress(50 + 50.0 * written / lines.size());
-    }
+    feature.setGeometry(lineGeometry(line.points));
+    addToSink(*sink, feature, parameters, QStringLiteral("OUTPUT"), feedback, lines.size(), 50);
   }
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), mOutput}};

@@ -1,8 +1,6 @@
 #include "pstroke_algorithm.h"
 
 #include <qgsfeaturesink.h>
-#include <qgsgeometry.h>
-#include <qgslinestring.h>
 #include <qgsprocessingfeedback.h>
 
 #include "errors.h"
@@ -10,6 +8,7 @@
 #include "qgis_compat.h"
 #include "raster_grid.h"
 #include "silhouettes.h"
+#include "stroke_features.h"
 
 namespace tsk::plugin {
 
@@ -107,23 +106,13 @@ QVariantMap PStrokeAlgorithm::processAlgorithm(const QVariantMap& parameters,
   std::unique_ptr<QgsFeatureSink> sink(parameterAsSink(
       parameters, QStringLiteral("OUTPUT"), context, mOutput, fields, kLineString, raster.crs()));
   if (!sink) throw QgsProcessingException(invalidSinkError(parameters, QStringLiteral("OUTPUT")));
-  std::size_t written = 0;
   for (const PStroke& s : strokes) {
     QgsFeature feature(fields);
     QgsAttributes attributes;
     attributes << QString::fromLatin1(pstroke_class_name(s.cls)) << s.score_m2;
     feature.setAttributes(attributes);
-    QVector<double> xs, ys;
-    for (const StrokePoint& p : s.points) xs << p.x, ys << p.y;
-    feature.setGeometry(QgsGeometry(new QgsLineString(xs, ys)));
-    if (!sink->addFeature(feature, QgsFeatureSink::FastInsert)) {
-      throw QgsProcessingException(
-          writeFeatureError(sink.get(), parameters, QStringLiteral("OUTPUT")));
-    }
-    if (feedback && ++written % 1000 == 0) {
-      if (feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
-      feedback->setProgress(50 + 50.0 * written / strokes.size());
-    }
+    feature.setGeometry(lineGeometry(s.points));
+    addToSink(*sink, feature, parameters, QStringLiteral("OUTPUT"), feedback, strokes.size(), 50);
   }
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), mOutput}};

@@ -157,20 +157,11 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
       parameters, kFormulated, context, mFormulatedId, fields, kLineString, raster.crs()));
   if (!formulated) throw QgsProcessingException(invalidSinkError(parameters, kFormulated));
 
-  const double total = std::max<std::size_t>(1, result.strokes.size());
-  std::size_t written = 0;
   for (const Stroke& stroke : result.strokes) {
     const bool isFactual = stroke.cls == StrokeClass::factual;
     QgsFeature feature = strokeFeature(stroke, fields);
-    QgsFeatureSink* sink = isFactual ? factual.get() : formulated.get();
-    if (!sink->addFeature(feature, QgsFeatureSink::FastInsert)) {
-      throw QgsProcessingException(
-          writeFeatureError(sink, parameters, isFactual ? kFactual : kFormulated));
-    }
-    if (feedback && ++written % 1000 == 0) {
-      if (feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
-      feedback->setProgress(kCoreEnd + (100.0 - kCoreEnd) * written / total);
-    }
+    addToSink(isFactual ? *factual : *formulated, feature, parameters,
+              isFactual ? kFactual : kFormulated, feedback, result.strokes.size(), kCoreEnd);
   }
   factual.reset();
   formulated.reset();

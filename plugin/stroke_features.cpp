@@ -19,6 +19,17 @@ QgsFields strokeFields() {
   return fields;
 }
 
+QgsGeometry lineGeometry(const std::vector<StrokePoint>& points) {
+  QVector<double> xs, ys;
+  xs.reserve(static_cast<int>(points.size()));
+  ys.reserve(static_cast<int>(points.size()));
+  for (const StrokePoint& p : points) {
+    xs << p.x;
+    ys << p.y;
+  }
+  return QgsGeometry(new QgsLineString(xs, ys));
+}
+
 QgsFeature strokeFeature(const Stroke& stroke, const QgsFields& fields) {
   QgsFeature feature(fields);
   QgsAttributes attributes;
@@ -29,14 +40,7 @@ QgsFeature strokeFeature(const Stroke& stroke, const QgsFields& fields) {
     attributes << (std::isfinite(value) ? QVariant(value) : QVariant());
   }
   feature.setAttributes(attributes);
-  QVector<double> xs, ys;
-  xs.reserve(static_cast<int>(stroke.points.size()));
-  ys.reserve(static_cast<int>(stroke.points.size()));
-  for (const StrokePoint& p : stroke.points) {
-    xs << p.x;
-    ys << p.y;
-  }
-  feature.setGeometry(QgsGeometry(new QgsLineString(xs, ys)));
+  feature.setGeometry(lineGeometry(stroke.points));
   return feature;
 }
 

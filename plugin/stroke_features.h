@@ -3,6 +3,9 @@
 
 #include <qgsfeature.h>
 #include <qgsfields.h>
+#include <qgsgeometry.h>
+
+#include <vector>
 
 #include "strokes.h"
 
@@ -10,6 +13,9 @@ namespace tsk::plugin {
 
 // class, cells, then the core's real-valued stroke fields in their order.
 QgsFields strokeFields();
+
+// A line through `points`.
+QgsGeometry lineGeometry(const std::vector<StrokePoint>& points);
 
 // A line feature for `stroke`; NaN attributes become null.
 QgsFeature strokeFeature(const Stroke& stroke, const QgsFields& fields);
