@@ -17,14 +17,51 @@ struct ChainCell {
 // Cells of one chain, one per profile, in consecutive profiles left to right.
 using Chain = std::vector<ChainCell>;
 
+// The cells of one profile that may join chains, front to back. For factual chaining `reach` is
+// the last cell of the hidden zone behind each cell; for formulated chaining the cell itself.
+struct ProfileCandidates {
+  std::vector<std::int32_t> cell;
+  std::vector<std::int32_t> reach;
+};
+
+// The candidates of profile p: occluding cells with their hidden zones (factual) or t-set cells.
+ProfileCandidates profile_candidates(const std::uint8_t* flags, std::size_t length, bool factual);
+
+// Links profiles given one at a time, left to right, as SPEC 1.7 scans them: every chain is grown
+// as far right as it goes before the next unused cell (front to back) starts one. In each new
+// profile the open chains pick their cell in the order they were started (older first), nearest
+// first, ties to the front; the cells left over start new chains. Holds two profiles at a time.
+class ChainLinker {
+ public:
+  ChainLinker(bool factual, int window);
+
+  // Links the next profile. Returns, for each of its candidates, the id of the chain it joined
+  // (ids count up in the order chains are started).
+  const std::vector<std::size_t>& add_profile(ProfileCandidates candidates);
+  // The chains that the last add_profile() could not extend: they are complete.
+  const std::vector<std::size_t>& closed() const { return closed_; }
+  // Closes every chain still open (after the last profile) and returns their ids.
+  const std::vector<std::size_t>& close_all();
+
+ private:
+  struct Open {
+    std::size_t id;
+    std::size_t k;  // index of the chain's last cell in the last profile
+  };
+  bool factual_;
+  int window_;
+  ProfileCandidates last_;
+  std::vector<Open> open_;
+  std::vector<std::size_t> joined_, closed_;
+  std::size_t started_ = 0;
+};
+
 // Factual Silhouettes: an occluding cell links to the unused occluding cell on the next profile
 // whose [cell, end of hidden zone] interval overlaps its own, nearest first, ties to the front.
-std::vector<Chain> chain_factual(const CellFlags& flags, unsigned threads = 0,
-                                 const ProgressFn& progress = {});
+std::vector<Chain> chain_factual(const CellFlags& flags);
 
 // Formulated Silhouettes: a t-set cell links to the unused t-set cell on the next profile within
 // `window` cells, nearest first, ties to the front. Chains of one cell are never returned.
-std::vector<Chain> chain_formulated(const CellFlags& flags, int window, unsigned threads = 0,
-                                    const ProgressFn& progress = {});
+std::vector<Chain> chain_formulated(const CellFlags& flags, int window);
 
 }  // namespace tsk

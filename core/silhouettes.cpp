@@ -5,9 +5,11 @@
 #include <chrono>
 #include <limits>
 #include <mutex>
+#include <unordered_map>
 
 #include "candidates.h"
 #include "chaining.h"
+#include "profile_plot.h"
 #include "slope_filter.h"
 #include "thinning.h"
 #include "visibility.h"
@@ -21,17 +23,14 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Counts each classification bit over the grid and finds the lowest height.
-void count_cells(const HeightGrid& z, const CellFlags& flags, unsigned threads, StageStats& stats,
-                 double& z_min) {
+// Adds the classification counts of rows [first_row, first_row + rows) to `stats`.
+void count_cells(const CellFlags& flags, std::size_t first_row, std::size_t rows, unsigned threads,
+                 StageStats& stats) {
   std::mutex merge;
-  z_min = std::numeric_limits<double>::infinity();
-  parallel_for(flags.rows(), threads, [&](std::size_t begin, std::size_t end) {
+  parallel_for(rows, threads, [&](std::size_t begin, std::size_t end) {
     StageStats local;
-    float lowest = std::numeric_limits<float>::infinity();
-    for (std::size_t p = begin; p < end; ++p) {
+    for (std::size_t p = first_row + begin; p < first_row + end; ++p) {
       const std::uint8_t* f = flags.row(p);
-      const float* zp = z.row(p);
       for (std::size_t i = 0; i < flags.cols(); ++i) {
         const std::uint8_t v = f[i];
         if (!v) continue;
@@ -41,21 +40,13 @@ void count_cells(const HeightGrid& z, const CellFlags& flags, unsigned threads, 
         local.candidate += (v & cell::candidate) != 0;
         local.filtered += (v & cell::filtered) != 0;
         local.thinned += (v & cell::thinned) != 0;
-        lowest = std::min(lowest, zp[i]);
       }
     }
     std::lock_guard<std::mutex> lock(merge);
     stats.valid += local.valid, stats.hidden += local.hidden, stats.occluding += local.occluding;
     stats.candidate += local.candidate, stats.filtered += local.filtered;
     stats.thinned += local.thinned;
-    z_min = std::min(z_min, static_cast<double>(lowest));
   });
-}
-
-// Maps the progress of stage `index` of `count` onto the whole run.
-ProgressFn stage_progress(const ProgressFn& progress, int index, int count) {
-  if (!progress) return {};
-  return [progress, index, count](double fraction) { return progress((index + fraction) / count); };
 }
 
 }  // namespace
@@ -71,6 +62,162 @@ std::vector<StageFigure> stage_figures(const StageStats& s) {
           {"formulated_strokes", static_cast<double>(s.formulated_strokes), true}};
 }
 
+struct SilhouetteStream::State {
+  OrientedFrame frame;
+  GeoTransform geotransform;
+  SilhouetteParams params;
+  double z_ref;
+  ProgressFn progress;
+  std::size_t next_profile = 0;
+  ChainLinker factual{true, 0}, formulated{false, 0};
+  // Cells of the chains still open, by chain id, and the strokes of the closed ones with their id.
+  std::unordered_map<std::size_t, std::vector<StrokeCell>> open_factual, open_formulated;
+  std::vector<std::pair<std::size_t, Stroke>> done_factual, done_formulated;
+  SilhouetteResult result;
+
+  State(const OrientedFrame& f, const GeoTransform& gt, const SilhouetteParams& p, double z,
+        const ProgressFn& pr)
+      : frame(f),
+        geotransform(gt),
+        params(p),
+        z_ref(z),
+        progress(pr),
+        formulated(false, p.chain.window) {}
+
+  // Moves the cells of profile candidates into their chains and finishes the closed chains.
+  void link(ChainLinker& linker, ProfileCandidates&& candidates, std::vector<StrokeCell>&& cells,
+            std::unordered_map<std::size_t, std::vector<StrokeCell>>& open,
+            std::vector<std::pair<std::size_t, Stroke>>& done, StrokeClass cls) {
+    const auto& ids = linker.add_profile(std::move(candidates));
+    for (std::size_t k = 0; k < ids.size(); ++k) open[ids[k]].push_back(std::move(cells[k]));
+    close(linker.closed(), open, done, cls);
+  }
+
+  void close(const std::vector<std::size_t>& ids,
+             std::unordered_map<std::size_t, std::vector<StrokeCell>>& open,
+             std::vector<std::pair<std::size_t, Stroke>>& done, StrokeClass cls) {
+    for (std::size_t id : ids) {
+      auto it = open.find(id);
+      if (static_cast<int>(it->second.size()) >= params.chain.min_cells) {
+        done.emplace_back(id, stroke_from_cells(it->second, cls));
+      }
+      open.erase(it);
+    }
+  }
+};
+
+SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransform& geotransform,
+                                   const SilhouetteParams& params, double z_ref,
+                                   const ProgressFn& progress)
+    : state_(std::make_unique<State>(frame, geotransform, params, z_ref, progress)) {
+  params.validate();
+}
+
+SilhouetteStream::~SilhouetteStream() = default;
+
+void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::size_t count,
+                                 bool keep_flags) {
+  State& st = *state_;
+  const OrientedFrame& frame = st.frame;
+  const std::size_t before = first > 0 ? 1 : 0;
+  const std::size_t after = first + count < frame.profiles ? 1 : 0;
+  if (first != st.next_profile || count == 0 || z.rows() != before + count + after ||
+      z.cols() != frame.length) {
+    throw Error("strip of profiles does not follow the previous one or does not match the frame");
+  }
+  st.next_profile = first + count;
+  const unsigned threads = st.params.threads;
+  const ViewParams& view = st.params.view;
+  StageTimings& time = st.result.timings;
+  // Progress of stage `index` (of 6) within this strip, mapped onto the whole grid.
+  auto progress_of = [&](int index) -> ProgressFn {
+    if (!st.progress) return {};
+    return [&st, first, count, index, total = frame.profiles](double fraction) {
+      return st.progress(
+          (static_cast<double>(first) + static_cast<double>(count) * (index + fraction) / 6.0) /
+          static_cast<double>(total));
+    };
+  };
+
+  CellFlags flags;
+  auto start = Clock::now();
+  classify_visibility(z, frame.d, view, flags, threads, progress_of(0));
+  time.visibility += seconds_since(start);
+  start = Clock::now();
+  select_candidates(z, frame.d, view, flags, threads, progress_of(1));
+  time.candidates += seconds_since(start);
+  start = Clock::now();
+  apply_slope_filter(z, frame.d, frame.w, st.params.filter, flags, threads, progress_of(2));
+  time.filter += seconds_since(start);
+  start = Clock::now();
+  thin(flags, st.params.placement, threads, progress_of(3));
+  time.thinning += seconds_since(start);
+
+  start = Clock::now();
+  count_cells(flags, before, count, threads, st.result.stats);
+  const StrokeContext context{
+      z,        flags,         frame, view, st.geotransform, st.params.geometry, st.params.subcell,
+      st.z_ref, first - before};
+  // Batches of profiles: candidates and their cell records in parallel, then linked in order.
+  constexpr std::size_t kBatch = 256;
+  struct Collected {
+    ProfileCandidates factual, formulated;
+    std::vector<StrokeCell> factual_cells, formulated_cells;
+  };
+  std::vector<Collected> batch;
+  const ProgressFn link_progress = progress_of(4);
+  for (std::size_t b0 = 0; b0 < count; b0 += kBatch) {
+    const std::size_t n = std::min(kBatch, count - b0);
+    batch.assign(n, {});
+    parallel_for(n, threads, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t k = lo; k < hi; ++k) {
+        const std::size_t row = before + b0 + k, p = first + b0 + k;
+        Collected& c = batch[k];
+        c.factual = profile_candidates(flags.row(row), frame.length, true);
+        c.formulated = profile_candidates(flags.row(row), frame.length, false);
+        for (std::int32_t i : c.factual.cell)
+          c.factual_cells.push_back(stroke_cell(context, p, static_cast<std::size_t>(i), true));
+        for (std::int32_t i : c.formulated.cell)
+          c.formulated_cells.push_back(stroke_cell(context, p, static_cast<std::size_t>(i), false));
+      }
+    });
+    for (Collected& c : batch) {
+      st.link(st.factual, std::move(c.factual), std::move(c.factual_cells), st.open_factual,
+              st.done_factual, StrokeClass::factual);
+      st.link(st.formulated, std::move(c.formulated), std::move(c.formulated_cells),
+              st.open_formulated, st.done_formulated, StrokeClass::formulated);
+    }
+    if (link_progress && !link_progress(static_cast<double>(b0 + n) / count)) throw Cancelled();
+  }
+  time.chaining += seconds_since(start);
+  if (keep_flags) st.result.flags = std::move(flags);
+}
+
+SilhouetteResult SilhouetteStream::finish() {
+  State& st = *state_;
+  if (st.next_profile != st.frame.profiles) throw Error("not every profile was delivered");
+  const auto start = Clock::now();
+  st.close(st.factual.close_all(), st.open_factual, st.done_factual, StrokeClass::factual);
+  st.close(st.formulated.close_all(), st.open_formulated, st.done_formulated,
+           StrokeClass::formulated);
+  SilhouetteResult& result = st.result;
+  StageStats& stats = result.stats;
+  // Strokes in the order their chains were started: the order of SPEC 1.7's scan.
+  for (auto* done : {&st.done_factual, &st.done_formulated}) {
+    std::sort(done->begin(), done->end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (auto& entry : *done) {
+      stats.generalised += static_cast<std::size_t>(entry.second.cells);
+      result.strokes.push_back(std::move(entry.second));
+    }
+  }
+  stats.factual_strokes = st.done_factual.size();
+  stats.formulated_strokes = st.done_formulated.size();
+  result.timings.strokes += seconds_since(start);
+  if (st.progress && !st.progress(1.0)) throw Cancelled();
+  return std::move(result);
+}
+
 SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,
                                  const GeoTransform& geotransform, const SilhouetteParams& params,
                                  const ProgressFn& progress) {
@@ -78,52 +225,9 @@ SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame
   if (oriented.rows() != frame.profiles || oriented.cols() != frame.length) {
     throw Error("oriented grid does not match its frame");
   }
-  const unsigned threads = params.threads;
-  const ViewParams& view = params.view;
-  constexpr int kStages = 6;
-  SilhouetteResult result;
-  StageTimings& time = result.timings;
-  CellFlags& flags = result.flags;
-
-  auto start = Clock::now();
-  classify_visibility(oriented, frame.d, view, flags, threads,
-                      stage_progress(progress, 0, kStages));
-  time.visibility = seconds_since(start);
-
-  start = Clock::now();
-  select_candidates(oriented, frame.d, view, flags, threads, stage_progress(progress, 1, kStages));
-  time.candidates = seconds_since(start);
-
-  start = Clock::now();
-  apply_slope_filter(oriented, frame.d, frame.w, params.filter, flags, threads,
-                     stage_progress(progress, 2, kStages));
-  time.filter = seconds_since(start);
-
-  start = Clock::now();
-  thin(flags, params.placement, threads, stage_progress(progress, 3, kStages));
-  time.thinning = seconds_since(start);
-
-  start = Clock::now();
-  const auto factual = chain_factual(flags, threads, stage_progress(progress, 4, kStages));
-  const auto formulated = chain_formulated(flags, params.chain.window, threads);
-  time.chaining = seconds_since(start);
-
-  start = Clock::now();
-  StageStats& stats = result.stats;
-  double z_min = 0.0;
-  count_cells(oriented, flags, threads, stats, z_min);
-  const StrokeContext context{oriented,     flags,           frame,          view,
-                              geotransform, params.geometry, params.subcell, z_min};
-  make_strokes(factual, StrokeClass::factual, params.chain.min_cells, context, result.strokes,
-               threads);
-  stats.factual_strokes = result.strokes.size();
-  make_strokes(formulated, StrokeClass::formulated, params.chain.min_cells, context, result.strokes,
-               threads);
-  stats.formulated_strokes = result.strokes.size() - stats.factual_strokes;
-  for (const Stroke& s : result.strokes) stats.generalised += static_cast<std::size_t>(s.cells);
-  time.strokes = seconds_since(start);
-  if (progress && !progress(1.0)) throw Cancelled();
-  return result;
+  SilhouetteStream stream(frame, geotransform, params, lowest_height(oriented), progress);
+  stream.add_strip(oriented, 0, frame.profiles, true);
+  return stream.finish();
 }
 
 }  // namespace tsk

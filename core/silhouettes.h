@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "flags.h"
@@ -46,6 +47,29 @@ struct SilhouetteResult {
   StageStats stats;
   StageTimings timings;
   CellFlags flags;  // the per-cell classification, for diagnostics and tests
+};
+
+// Runs the stages on profiles delivered in strips, left to right, holding one strip at a time:
+// for DEMs larger than memory. Memory beyond the strip is that of the strokes. run_silhouettes
+// is one strip.
+class SilhouetteStream {
+ public:
+  // z_ref: the DEM's lowest height (plan-oblique geometry needs it before the first strip).
+  SilhouetteStream(const OrientedFrame& frame, const GeoTransform& geotransform,
+                   const SilhouetteParams& params, double z_ref, const ProgressFn& progress = {});
+  ~SilhouetteStream();
+
+  // Profiles [first, first + count) with their neighbours for the row slope: `z` holds profiles
+  // [first - 1, first + count + 1), without the ones beyond the grid's ends. Strips must follow
+  // each other without gaps. keep_flags: hand this strip's classification to the result (for a
+  // single strip covering the grid).
+  void add_strip(const HeightGrid& z, std::size_t first, std::size_t count,
+                 bool keep_flags = false);
+  SilhouetteResult finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
 };
 
 // Runs every stage on an oriented grid (see orient.h). Throws Error on bad parameters or a grid

@@ -5,7 +5,6 @@
 #include <limits>
 
 #include "candidates.h"
-#include "parallel.h"
 #include "slope_filter.h"
 #include "visibility.h"
 
@@ -56,47 +55,51 @@ double subcell_peak(const float* z, std::size_t length, std::size_t i, double d,
   return at + std::clamp(offset, -0.5, 0.5);
 }
 
-namespace {
-
-// The stroke of one chain, with its points in the chosen geometry and its attributes.
-Stroke make_stroke(const Chain& chain, StrokeClass cls, const StrokeContext& ctx) {
+StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, bool factual) {
   const std::size_t length = ctx.z.cols();
   const double d = ctx.frame.d;
-  const double oblique_cells_per_metre = ctx.view.ve / (ctx.view.base_slope() * d);
+  const std::size_t row = p - ctx.first_profile;
+  const float* zp = ctx.z.row(row);
+  StrokeCell c;
+  c.cell = {static_cast<std::int32_t>(p), static_cast<std::int32_t>(i)};
+  c.z = static_cast<double>(zp[i]);
+  const double along =
+      factual && ctx.subcell ? subcell_peak(zp, length, i, d, ctx.view) : static_cast<double>(i);
+  ctx.geotransform.apply(ctx.frame.to_pixel(static_cast<double>(p), along), c.map.x, c.map.y);
+  c.point = c.map;
+  if (ctx.geometry == Geometry::oblique) {
+    const double shifted = along + ctx.view.ve / (ctx.view.base_slope() * d) * (c.z - ctx.z_ref);
+    ctx.geotransform.apply(ctx.frame.to_pixel(static_cast<double>(p), shifted), c.point.x,
+                           c.point.y);
+  }
+  c.dist = along * d;
+  c.slope_pct = std::fabs(column_slope(zp, length, i, d)) * 100.0;
+  c.row_slope_pct = std::fabs(row_slope(ctx.z, row, i, ctx.frame.w)) * 100.0;
+  c.depth_m = factual ? hidden_zone(zp, ctx.flags.row(row), length, i, d, ctx.view).depth_m : kNaN;
+  return c;
+}
+
+Stroke stroke_from_cells(const std::vector<StrokeCell>& cells, StrokeClass cls) {
   const bool factual = cls == StrokeClass::factual;
   Stroke s;
   s.cls = cls;
-  s.cells = static_cast<int>(chain.size());
-  s.chain = chain;
-  s.points.reserve(chain.size());
+  s.cells = static_cast<int>(cells.size());
+  s.chain.reserve(cells.size());
+  s.points.reserve(cells.size());
   Mean slope, row, depth, dist, height;
   double max_depth = factual ? 0.0 : kNaN;
-  double prev_x = 0.0, prev_y = 0.0;
-  for (std::size_t k = 0; k < chain.size(); ++k) {
-    const auto p = static_cast<std::size_t>(chain[k].p);
-    const auto i = static_cast<std::size_t>(chain[k].i);
-    const float* zp = ctx.z.row(p);
-    const double zi = static_cast<double>(zp[i]);
-    const double along =
-        factual && ctx.subcell ? subcell_peak(zp, length, i, d, ctx.view) : static_cast<double>(i);
-    double map_x, map_y;
-    ctx.geotransform.apply(ctx.frame.to_pixel(static_cast<double>(p), along), map_x, map_y);
-    if (k > 0) s.length += std::hypot(map_x - prev_x, map_y - prev_y);
-    prev_x = map_x, prev_y = map_y;
-    StrokePoint pt{map_x, map_y};
-    if (ctx.geometry == Geometry::oblique) {
-      const double shifted = along + oblique_cells_per_metre * (zi - ctx.z_ref);
-      ctx.geotransform.apply(ctx.frame.to_pixel(static_cast<double>(p), shifted), pt.x, pt.y);
-    }
-    s.points.push_back(pt);
-    slope.add(std::fabs(column_slope(zp, length, i, d)) * 100.0);
-    row.add(std::fabs(row_slope(ctx.z, p, i, ctx.frame.w)) * 100.0);
-    dist.add(along * d);
-    height.add(zi);
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const StrokeCell& c = cells[k];
+    if (k > 0) s.length += std::hypot(c.map.x - cells[k - 1].map.x, c.map.y - cells[k - 1].map.y);
+    s.chain.push_back(c.cell);
+    s.points.push_back(c.point);
+    slope.add(c.slope_pct);
+    row.add(c.row_slope_pct);
+    dist.add(c.dist);
+    height.add(c.z);
     if (factual) {
-      const HiddenZone zone = hidden_zone(zp, ctx.flags.row(p), length, i, d, ctx.view);
-      depth.add(zone.depth_m);
-      max_depth = std::max(max_depth, zone.depth_m);
+      depth.add(c.depth_m);
+      max_depth = std::max(max_depth, c.depth_m);
     }
   }
   s.mean_slope_pct = slope.value();
@@ -106,22 +109,6 @@ Stroke make_stroke(const Chain& chain, StrokeClass cls, const StrokeContext& ctx
   s.mean_dist = dist.value();
   s.mean_z = height.value();
   return s;
-}
-
-}  // namespace
-
-void make_strokes(const std::vector<Chain>& chains, StrokeClass cls, int min_cells,
-                  const StrokeContext& ctx, std::vector<Stroke>& out, unsigned threads) {
-  std::vector<const Chain*> kept;
-  for (const Chain& chain : chains) {
-    if (static_cast<int>(chain.size()) >= min_cells) kept.push_back(&chain);
-  }
-  const std::size_t first = out.size();
-  out.resize(first + kept.size());
-  // Strokes are independent: build them on every thread, in chain order.
-  parallel_for(kept.size(), threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) out[first + k] = make_stroke(*kept[k], cls, ctx);
-  });
 }
 
 }  // namespace tsk

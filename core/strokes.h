@@ -50,7 +50,8 @@ struct StrokeRealField {
 };
 const std::vector<StrokeRealField>& stroke_real_fields();
 
-// What turning chains into strokes needs to know about the grid and the view.
+// What placing stroke cells needs to know about the grid and the view. The grid may hold only a
+// strip of profiles: its row 0 is profile `first_profile`.
 struct StrokeContext {
   const HeightGrid& z;
   const CellFlags& flags;
@@ -60,6 +61,16 @@ struct StrokeContext {
   Geometry geometry = Geometry::map;
   bool subcell = false;
   double z_ref = 0.0;  // height that stays in place in plan-oblique geometry (the DEM minimum)
+  std::size_t first_profile = 0;
+};
+
+// One cell of a stroke with what the stroke's geometry and attributes need from it.
+struct StrokeCell {
+  ChainCell cell;
+  StrokePoint map;    // cell centre (or sub-cell peak) in map geometry
+  StrokePoint point;  // in the chosen geometry
+  double dist = 0.0;  // distance from the front of the view, ground units
+  double slope_pct = 0.0, row_slope_pct = 0.0, depth_m = 0.0, z = 0.0;
 };
 
 // Position of an occluding cell along its profile, refined to the peak of the parabola through
@@ -67,8 +78,10 @@ struct StrokeContext {
 double subcell_peak(const float* z, std::size_t length, std::size_t i, double d,
                     const ViewParams& view);
 
-// Appends the strokes of `chains` with at least `min_cells` cells to `out`.
-void make_strokes(const std::vector<Chain>& chains, StrokeClass cls, int min_cells,
-                  const StrokeContext& ctx, std::vector<Stroke>& out, unsigned threads = 0);
+// The record of cell i of profile p (a global profile index; the grid row is p - first_profile).
+StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, bool factual);
+
+// A stroke through `cells` (consecutive profiles) with its attributes.
+Stroke stroke_from_cells(const std::vector<StrokeCell>& cells, StrokeClass cls);
 
 }  // namespace tsk

@@ -227,3 +227,63 @@ TEST_CASE("a grid that does not match its frame is refused", "[pipeline]") {
   const OrientedFrame f = make_frame(10, 20, 10, 10, 90);
   CHECK_THROWS_AS(run_silhouettes(HeightGrid(20, 10), f, GeoTransform{}, {}), Error);
 }
+
+namespace {
+
+// Rows [first - 1, first + count + 1) of `z`, clipped to the grid: a strip with its neighbours.
+HeightGrid strip_of(const HeightGrid& z, std::size_t first, std::size_t count) {
+  const std::size_t lo = first > 0 ? first - 1 : 0;
+  const std::size_t hi = std::min(z.rows(), first + count + 1);
+  HeightGrid s(hi - lo, z.cols());
+  for (std::size_t r = lo; r < hi; ++r) std::copy(z.row(r), z.row(r) + z.cols(), s.row(r - lo));
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("strips of any width give exactly the result of the whole grid", "[pipeline][strips]") {
+  const HeightGrid dem = test::random_terrain(90, 70, 77, 0.03);
+  for (double az : {90.0, 180.0, 30.0}) {
+    SilhouetteParams params;
+    params.view.azimuth_deg = az;
+    params.geometry = Geometry::oblique;
+    params.subcell = true;
+    const OrientedFrame frame = make_frame(90, 70, 10, 10, az);
+    const HeightGrid z = orient(dem, frame);
+    const SilhouetteResult whole = run_silhouettes(z, frame, GeoTransform{}, params);
+    for (std::size_t width : {1u, 7u, 64u}) {
+      CAPTURE(az, width);
+      SilhouetteStream stream(frame, GeoTransform{}, params, lowest_height(z));
+      for (std::size_t first = 0; first < frame.profiles; first += width) {
+        const std::size_t count = std::min(width, frame.profiles - first);
+        stream.add_strip(strip_of(z, first, count), first, count);
+      }
+      const SilhouetteResult strips = stream.finish();
+      CHECK(strips.stats.valid == whole.stats.valid);
+      CHECK(strips.stats.filtered == whole.stats.filtered);
+      CHECK(strips.stats.thinned == whole.stats.thinned);
+      CHECK(strips.stats.generalised == whole.stats.generalised);
+      REQUIRE(strips.strokes.size() == whole.strokes.size());
+      for (std::size_t k = 0; k < whole.strokes.size(); ++k) {
+        const Stroke& a = whole.strokes[k];
+        const Stroke& b = strips.strokes[k];
+        REQUIRE(a.cls == b.cls);
+        REQUIRE(a.cells == b.cells);
+        REQUIRE(a.mean_row_slope_pct == b.mean_row_slope_pct);
+        for (std::size_t q = 0; q < a.points.size(); ++q) {
+          REQUIRE(a.points[q].x == b.points[q].x);
+          REQUIRE(a.points[q].y == b.points[q].y);
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("strips must arrive in order and cover the grid", "[pipeline][strips]") {
+  const HeightGrid z = test::random_terrain(10, 12, 3);
+  const OrientedFrame frame = make_frame(10, 12, 10, 10, 90);
+  SilhouetteStream stream(frame, GeoTransform{}, {}, 0.0);
+  CHECK_THROWS_AS(stream.add_strip(strip_of(z, 2, 3), 2, 3), Error);  // a gap
+  stream.add_strip(strip_of(z, 0, 4), 0, 4);
+  CHECK_THROWS_AS(stream.finish(), Error);  // profiles 4..9 missing
+}
