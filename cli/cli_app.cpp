@@ -2,6 +2,7 @@
 
 #include <cpl_conv.h>
 #include <gdal.h>
+#include <unistd.h>
 
 #include <cctype>
 #include <chrono>
@@ -15,6 +16,7 @@
 #include <sstream>
 
 #include "dem_reader.h"
+#include "gdal_util.h"
 #include "output_files.h"
 #include "preview.h"
 #include "raster_writer.h"
@@ -68,6 +70,8 @@ input and output:
   --preview PNG        render the oblique sketch to a PNG picture
   --threads N          worker threads (default: all cores)
   --timings            print the time of reading, each stage and writing to stderr
+  --strips N           read and process N profiles at a time (cardinal views), for DEMs larger
+                       than memory; chosen automatically when the DEM would not fit in half of it
 profiles:
   --every N            draw every N-th cross-section (default 10)
 pstrokes (tolerances: effective areas in m2 of the profiles' distance-height triangles):
@@ -103,6 +107,7 @@ struct Options {
   std::string input, output, format, stats_json, preview, source;
   bool timings = false;
   int every = 10;
+  int strips = 0;
   io::DemOptions dem;
   SilhouetteParams params;
   PStrokeParams pstrokes;
@@ -133,6 +138,11 @@ Options parse(const std::vector<std::string>& args) {
          o.params.threads = static_cast<unsigned>(t);
        }},
       {"--format", [&](auto&, auto& v) { o.format = v; }},
+      {"--strips",
+       [&](auto& n, auto& v) {
+         o.strips = parse_int(n, v);
+         if (o.strips < 1) throw Error("--strips needs at least 1 profile per strip");
+       }},
       {"--source", [&](auto&, auto& v) { o.source = v; }},
       {"--convex-column",
        [&](auto& n, auto& v) { o.pstrokes.convex_column_m2 = parse_number(n, v); }},
@@ -199,9 +209,54 @@ void write_text(const std::string& path, const std::string& text) {
   });
 }
 
+// Profiles per strip when the DEM, held whole (5 bytes a cell), would not fit in half of the
+// memory; 0 when it fits.
+std::size_t automatic_strips(const std::string& path) {
+  const auto dataset = io::open_raster(path);
+  const double cells = static_cast<double>(dataset->GetRasterXSize()) *
+                       static_cast<double>(dataset->GetRasterYSize());
+  const double memory =
+      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+  if (memory <= 0 || 5.0 * cells < 0.5 * memory) return 0;
+  return 1024;
+}
+
+// The silhouettes read and processed strip by strip: bounded memory for any DEM size.
+SilhouetteResult silhouettes_in_strips(const Options& o, std::size_t strip, io::Dem& info,
+                                       std::ostream& err) {
+  io::DemStripReader reader(o.input, o.dem);
+  info = reader.info();
+  if (!info.notes.empty()) err << "note: " << info.notes;
+  const OrientedFrame& frame = info.frame;
+  const double z_ref = o.params.geometry == Geometry::oblique ? reader.lowest_height() : 0.0;
+  SilhouetteStream stream(frame, info.geotransform, o.params, z_ref);
+  for (std::size_t first = 0; first < frame.profiles; first += strip) {
+    const std::size_t count = std::min(strip, frame.profiles - first);
+    const std::size_t lo = first > 0 ? first - 1 : 0;
+    const std::size_t hi = std::min(frame.profiles, first + count + 1);
+    stream.add_strip(reader.read_profiles(lo, hi - lo), first, count);
+  }
+  return stream.finish();
+}
+
 int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
   io::vector_driver_for(o.output, o.format);  // an unknown format fails before any work
+  const std::size_t strip =
+      o.strips > 0 ? static_cast<std::size_t>(o.strips) : automatic_strips(o.input);
+  if (strip > 0) {
+    if (!o.preview.empty()) throw Error("--preview needs the whole DEM in memory; drop --strips");
+    if (o.strips == 0)
+      err << "note: the DEM is large: processing it in strips of " << strip << " profiles\n";
+    io::Dem info;
+    const SilhouetteResult result = silhouettes_in_strips(o, strip, info, err);
+    io::write_strokes(o.output, o.format, result.strokes, info.srs_wkt);
+    if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
+    out << o.output << ": " << result.stats.factual_strokes << " factual and "
+        << result.stats.formulated_strokes << " formulated strokes (in strips of " << strip
+        << " profiles)\n";
+    return 0;
+  }
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();

@@ -74,9 +74,11 @@ void read_band(const std::string& path, GDALRasterBand& band, Dem& dem,
 
 }  // namespace
 
-Dem read_dem(const std::string& path, const DemOptions& options) {
-  GdalErrorCapture capture;
-  auto dataset = open_raster(path);
+namespace {
+
+// Checks the band and the georeferencing of an open DEM and fills everything but the heights.
+Dem describe_dem(GDALDataset& dataset_ref, const std::string& path, const DemOptions& options) {
+  GDALDataset* dataset = &dataset_ref;
   const int bands = dataset->GetRasterCount();
   if (bands < 1) throw Error("'" + path + "' has no raster bands");
   if (options.band < 1 || options.band > bands) {
@@ -137,6 +139,15 @@ Dem read_dem(const std::string& path, const DemOptions& options) {
   const double dx = dem.geotransform.a[1] * dem.ground_scale;
   const double dy = -dem.geotransform.a[5] * dem.ground_scale;
   dem.frame = make_frame(dem.rows, dem.cols, dx, dy, options.azimuth_deg);
+  return dem;
+}
+
+}  // namespace
+
+Dem read_dem(const std::string& path, const DemOptions& options) {
+  GdalErrorCapture capture;
+  auto dataset = open_raster(path);
+  Dem dem = describe_dem(*dataset, path, options);
   try {
     read_band(path, *dataset->GetRasterBand(options.band), dem, capture);
   } catch (const std::bad_alloc&) {
@@ -166,6 +177,58 @@ std::vector<HeightGrid> read_bands(const std::string& path) {
     bands.push_back(std::move(grid));
   }
   return bands;
+}
+
+struct DemStripReader::Source {
+  DatasetPtr dataset;
+  GDALRasterBand* band = nullptr;
+};
+
+DemStripReader::DemStripReader(const std::string& path, const DemOptions& options)
+    : path_(path), options_(options), source_(std::make_unique<Source>()) {
+  GdalErrorCapture capture;
+  source_->dataset = open_raster(path);
+  dem_ = describe_dem(*source_->dataset, path, options);
+  if (dem_.frame.resampled) {
+    throw Error("strip processing works for the cardinal views (azimuth 0, 90, 180, 270)");
+  }
+  source_->band = source_->dataset->GetRasterBand(options.band);
+}
+
+DemStripReader::~DemStripReader() = default;
+
+HeightGrid DemStripReader::read_profiles(std::size_t first, std::size_t count) {
+  GdalErrorCapture capture;
+  const OrientedFrame& f = dem_.frame;
+  const bool by_rows = f.row_per_p != 0;  // views from the west or east: profiles are rows
+  const std::size_t lo = first, hi = first + count;
+  // The DEM window holding profiles [lo, hi): rows or columns, counted from the far end when the
+  // view runs against the DEM's order.
+  const bool reversed = by_rows ? f.row_per_p < 0 : f.col_per_p < 0;
+  const std::size_t extent = by_rows ? dem_.rows : dem_.cols;
+  const std::size_t start = reversed ? extent - hi : lo;
+  const std::size_t win_rows = by_rows ? count : dem_.rows;
+  const std::size_t win_cols = by_rows ? dem_.cols : count;
+  HeightGrid window(win_rows, win_cols);
+  if (source_->band->RasterIO(GF_Read, by_rows ? 0 : static_cast<int>(start),
+                              by_rows ? static_cast<int>(start) : 0, static_cast<int>(win_cols),
+                              static_cast<int>(win_rows), window.data(), static_cast<int>(win_cols),
+                              static_cast<int>(win_rows), GDT_Float32, 0, 0) != CE_None) {
+    throw Error("reading '" + path_ + "' failed: " + capture.message());
+  }
+  int has_nodata = 0;
+  const auto nodata = static_cast<float>(source_->band->GetNoDataValue(&has_nodata));
+  if (has_nodata) std::replace(window.data(), window.data() + window.size(), nodata, kNoData);
+  // The window seen from the same side is exactly profiles [lo, hi).
+  const OrientedFrame sub = make_frame(win_rows, win_cols, 1, 1, f.azimuth_deg);
+  return orient(window, sub);
+}
+
+double DemStripReader::lowest_height() {
+  GdalErrorCapture capture;
+  double minmax[2] = {0, 0};
+  if (source_->band->ComputeRasterMinMax(FALSE, minmax) != CE_None) return 0.0;
+  return minmax[0];
 }
 
 }  // namespace tsk::io

@@ -1,6 +1,7 @@
 // Reads a DEM through GDAL straight into the core's oriented grid, with its georeferencing.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,25 @@ struct Dem {
 // Throws tsk::Error with a message for the user on anything it cannot read faithfully:
 // not a raster, bad band, rotated or south-up georeferencing, a geographic CRS.
 Dem read_dem(const std::string& path, const DemOptions& options);
+
+// Reads a DEM strip by strip for views too large for memory: profiles [first, first + count)
+// are a window of DEM rows (views from west or east) or columns (from south or north), turned
+// into oriented rows. Cardinal views only.
+class DemStripReader {
+ public:
+  DemStripReader(const std::string& path, const DemOptions& options);
+  ~DemStripReader();
+  const Dem& info() const { return dem_; }  // georeferencing and frame; `oriented` stays empty
+  HeightGrid read_profiles(std::size_t first, std::size_t count);
+  double lowest_height();  // a full pass over the band
+
+ private:
+  std::string path_;
+  DemOptions options_;
+  Dem dem_;
+  struct Source;
+  std::unique_ptr<Source> source_;
+};
 
 // Every band of a raster as grids on its own pixel grid (row 0 north), nodata as NaN: the
 // rasters to drape.

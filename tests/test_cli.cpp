@@ -359,3 +359,28 @@ TEST_CASE("pstrokes writes classes and scores, and refuses bad tolerances", "[cl
   CHECK(bad.code == 1);
   CHECK_THAT(bad.err, Catch::Contains("tolerances"));
 }
+
+TEST_CASE("strips give byte-identical output to the whole DEM", "[cli][strips]") {
+  ScratchDir dir("strips");
+  for (const char* az : {"0", "90", "180", "270"}) {
+    CAPTURE(az);
+    const CliRun whole = run_cli({"silhouettes", kSample, dir / "w.geojson", "--azimuth", az,
+                                  "--geometry", "oblique", "--stats-json", dir / "w.json"});
+    const CliRun strips =
+        run_cli({"silhouettes", kSample, dir / "s.geojson", "--azimuth", az, "--geometry",
+                 "oblique", "--stats-json", dir / "s.json", "--strips", "23"});
+    INFO(strips.err);
+    REQUIRE(whole.code == 0);
+    REQUIRE(strips.code == 0);
+    CHECK(slurp(dir / "w.geojson") == slurp(dir / "s.geojson"));
+    CHECK(slurp(dir / "w.json") == slurp(dir / "s.json"));
+  }
+  CHECK(
+      run_cli({"silhouettes", kSample, dir / "x.gpkg", "--strips", "10", "--azimuth", "45"}).code ==
+      1);
+  const CliRun preview = run_cli(
+      {"silhouettes", kSample, dir / "y.gpkg", "--strips", "10", "--preview", dir / "p.png"});
+  CHECK(preview.code == 1);
+  CHECK_THAT(preview.err, Catch::Contains("--preview needs the whole DEM"));
+  CHECK(run_cli({"silhouettes", kSample, dir / "z.gpkg", "--strips", "0"}).code == 1);
+}
