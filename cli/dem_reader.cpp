@@ -199,29 +199,18 @@ DemStripReader::~DemStripReader() = default;
 
 HeightGrid DemStripReader::read_profiles(std::size_t first, std::size_t count) {
   GdalErrorCapture capture;
-  const OrientedFrame& f = dem_.frame;
-  const bool by_rows = f.row_per_p != 0;  // views from the west or east: profiles are rows
-  const std::size_t lo = first, hi = first + count;
-  // The DEM window holding profiles [lo, hi): rows or columns, counted from the far end when the
-  // view runs against the DEM's order.
-  const bool reversed = by_rows ? f.row_per_p < 0 : f.col_per_p < 0;
-  const std::size_t extent = by_rows ? dem_.rows : dem_.cols;
-  const std::size_t start = reversed ? extent - hi : lo;
-  const std::size_t win_rows = by_rows ? count : dem_.rows;
-  const std::size_t win_cols = by_rows ? dem_.cols : count;
-  HeightGrid window(win_rows, win_cols);
-  if (source_->band->RasterIO(GF_Read, by_rows ? 0 : static_cast<int>(start),
-                              by_rows ? static_cast<int>(start) : 0, static_cast<int>(win_cols),
-                              static_cast<int>(win_rows), window.data(), static_cast<int>(win_cols),
-                              static_cast<int>(win_rows), GDT_Float32, 0, 0) != CE_None) {
+  const DemWindow w = profile_window(dem_.frame, first, count);
+  HeightGrid window(w.rows, w.cols);
+  if (source_->band->RasterIO(GF_Read, static_cast<int>(w.col0), static_cast<int>(w.row0),
+                              static_cast<int>(w.cols), static_cast<int>(w.rows), window.data(),
+                              static_cast<int>(w.cols), static_cast<int>(w.rows), GDT_Float32, 0,
+                              0) != CE_None) {
     throw Error("reading '" + path_ + "' failed: " + capture.message());
   }
   int has_nodata = 0;
   const auto nodata = static_cast<float>(source_->band->GetNoDataValue(&has_nodata));
   if (has_nodata) std::replace(window.data(), window.data() + window.size(), nodata, kNoData);
-  // The window seen from the same side is exactly profiles [lo, hi).
-  const OrientedFrame sub = make_frame(win_rows, win_cols, 1, 1, f.azimuth_deg);
-  return orient(window, sub);
+  return orient_window(dem_.frame, window);
 }
 
 double DemStripReader::lowest_height() {

@@ -166,6 +166,26 @@ void scatter_dem_rows(const OrientedFrame& frame, std::size_t first_row, std::si
   }
 }
 
+DemWindow profile_window(const OrientedFrame& frame, std::size_t first, std::size_t count) {
+  if (frame.resampled) throw Error("strips work for the cardinal views (azimuth 0, 90, 180, 270)");
+  if (count == 0 || first + count > frame.profiles) throw Error("strip outside the grid");
+  const bool by_rows = frame.row_per_p != 0;  // views from the west or east: profiles are rows
+  const bool reversed = by_rows ? frame.row_per_p < 0 : frame.col_per_p < 0;
+  const std::size_t extent = by_rows ? frame.dem_rows : frame.dem_cols;
+  const std::size_t start = reversed ? extent - (first + count) : first;
+  DemWindow w;
+  w.row0 = by_rows ? start : 0;
+  w.col0 = by_rows ? 0 : start;
+  w.rows = by_rows ? count : frame.dem_rows;
+  w.cols = by_rows ? frame.dem_cols : count;
+  return w;
+}
+
+HeightGrid orient_window(const OrientedFrame& frame, const HeightGrid& window) {
+  // The window seen from the same side is exactly its run of profiles, in order.
+  return orient(window, make_frame(window.rows(), window.cols(), 1, 1, frame.azimuth_deg));
+}
+
 float sample_bilinear(const HeightGrid& dem, PixelPoint px) {
   constexpr double kEdge = 1e-9;
   const double u = px.col - 0.5, v = px.row - 0.5;

@@ -84,6 +84,16 @@ class OrientedGridBuilder {
   HeightGrid grid_;  // the oriented grid (cardinal) or the DEM (resampled)
 };
 
+// The DEM window (rows or columns, by view) that holds oriented profiles [first, first + count)
+// of a cardinal frame, for readers that load a DEM strip by strip.
+struct DemWindow {
+  std::size_t row0 = 0, col0 = 0, rows = 0, cols = 0;
+};
+DemWindow profile_window(const OrientedFrame& frame, std::size_t first, std::size_t count);
+
+// Profiles [first, first + count) turned from their window (read as rows x cols, row 0 north).
+HeightGrid orient_window(const OrientedFrame& frame, const HeightGrid& window);
+
 // Bilinear height at a DEM pixel position; NaN outside the cell centres' hull or next to nodata.
 float sample_bilinear(const HeightGrid& dem, PixelPoint px);
 

@@ -31,94 +31,99 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="43" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="45" />
         <source>Elevation (DEM)</source>
         <translation>Höhenmodell (DGM)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="44" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="46" />
         <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
         <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="45" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="47" />
         <source>Band</source>
         <translation>Kanal</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="47" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="49" />
         <source>The band holding the heights.</source>
         <translation>Der Kanal mit den Höhen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="49" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="51" />
         <source>View azimuth (degrees)</source>
         <translation>Blickrichtung (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="50" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="52" />
         <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
         <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="56" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
         <source>Vertical exaggeration</source>
         <translation>Überhöhung</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="57" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="59" />
         <source>Factor applied to heights before occlusion is computed.</source>
         <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="60" />
         <source>Base slope (%)</source>
         <translation>Grundneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="60" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="62" />
         <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
         <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="66" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="68" />
         <source>Row slope cut-off (%)</source>
         <translation>Grenzwert Zeilenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="68" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="70" />
         <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
         <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="70" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="72" />
         <source>Column slope cut-off (%)</source>
         <translation>Grenzwert Spaltenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="72" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="74" />
         <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
         <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="74" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="76" />
         <source>Control point column slope (%)</source>
         <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="76" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="78" />
         <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
         <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="80" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="82" />
         <source>Allow for diagonals</source>
         <translation>Diagonalen berücksichtigen</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="81" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="83" />
         <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
         <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="134" />
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
     </message>
 </context>
 <context>
@@ -201,98 +206,97 @@
 <context>
     <name>PStrokeAlgorithm</name>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="17" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="19" />
         <source>P-stroke sketch</source>
         <translation>P-Strich-Skizze</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="20" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="23" />
         <source>Short strokes drawn across the line of sight where the terrain bends (Visvalingam and Dowson 1998). Every profile along the view (column) and across it (row) is scored with Visvalingam's effective-area line generalisation; a visible cell whose convex or concave score reaches its class's tolerance seeds a stroke along the cross-section. Tolerances are effective areas in square metres of the triangles formed by distance (m) and unexaggerated height (m) along the profiles; the defaults are the thesis's sparse sketch of a 50 m DEM. Combined with the silhouettes: no P-stroke is seeded in an f-set cell and none is extended into one.</source>
         <translation>Kurze Striche quer zur Blickrichtung, wo das Gelände knickt (Visvalingam und Dowson 1998). Jedes Profil entlang der Ansicht (Spalte) und quer dazu (Zeile) wird mit Visvalingams Linienvereinfachung nach effektiver Fläche bewertet; eine sichtbare Zelle, deren konvexe oder konkave Bewertung die Toleranz ihrer Klasse erreicht, setzt einen Strich entlang des Querschnitts. Die Toleranzen sind effektive Flächen in Quadratmetern der Dreiecke aus Abstand (m) und nicht überhöhter Höhe (m) entlang der Profile; die Vorgaben sind die der spärlichen Skizze eines 50-m-DGM in der Dissertation. Zusammen mit den Silhouetten: kein P-Strich beginnt in einer Zelle der f-Menge, und keiner wird in eine hinein verlängert.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="41" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="47" />
         <source>Convex column tolerance (m²)</source>
         <translation>Toleranz konvex entlang (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="42" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="48" />
         <source>Effective area a convex bend along the view must reach.</source>
         <translation>Effektive Fläche, die ein konvexer Knick entlang der Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="43" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="49" />
         <source>Concave column tolerance (m²)</source>
         <translation>Toleranz konkav entlang (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="44" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="50" />
         <source>Effective area a concave bend along the view must reach.</source>
         <translation>Effektive Fläche, die ein konkaver Knick entlang der Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="45" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="51" />
         <source>Convex row tolerance (m²)</source>
         <translation>Toleranz konvex quer (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="46" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="52" />
         <source>Effective area a convex bend across the view must reach.</source>
         <translation>Effektive Fläche, die ein konvexer Knick quer zur Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="47" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="53" />
         <source>Concave row tolerance (m²)</source>
         <translation>Toleranz konkav quer (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="48" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="54" />
         <source>Effective area a concave bend across the view must reach.</source>
         <translation>Effektive Fläche, die ein konkaver Knick quer zur Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="50" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="56" />
         <source>Stroke half length (cells)</source>
         <translation>Halbe Strichlänge (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="52" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="58" />
         <source>Cells drawn on each side of a seed along the cross-section.</source>
         <translation>Zellen, die auf jeder Seite eines Startpunkts entlang des Querschnitts gezeichnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="53" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="60" />
         <source>Geometry</source>
         <translation>Geometrie</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="54" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="61" />
         <source>Map (cell centres)</source>
         <translation>Karte (Zellmittelpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="55" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="61" />
         <source>Plan oblique (the sketch)</source>
         <translation>Plan oblique (die Skizze)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="57" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="62" />
         <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
         <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="60" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="66" />
         <source>P-strokes</source>
         <translation>P-Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="62" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="67" />
         <source>P-strokes as lines with their class and score.</source>
         <translation>P-Striche als Linien mit ihrer Klasse und Bewertung.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="90" />
-        <location filename="../plugin/pstroke_algorithm.cpp" line="115" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="97" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -300,39 +304,34 @@
 <context>
     <name>ProfilePlotAlgorithm</name>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="21" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="20" />
         <source>Profile plot (ridgelines)</source>
         <translation>Profildarstellung (Kammlinien)</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="25" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="24" />
         <source>Draws every n-th cross-section across the line of sight as it appears in the oblique view: in plan-oblique geometry (each point moved along the view azimuth by exaggeration / base slope x (height - lowest height)), with the parts hidden behind nearer terrain removed. The classic ridgeline sketch; it overlays the plan-oblique silhouettes exactly. Each line carries its cross-section number and its distance from the front of the view.</source>
         <translation>Zeichnet jeden n-ten Querschnitt quer zur Blickrichtung so, wie er in der Schrägansicht erscheint: in Plan-oblique-Geometrie (jeder Punkt entlang der Blickrichtung um Überhöhung / Grundneigung x (Höhe - niedrigste Höhe) verschoben), ohne die hinter näherem Gelände verdeckten Teile. Die klassische Kammlinienskizze; sie deckt sich genau mit den Plan-oblique-Silhouetten. Jede Linie trägt die Nummer ihres Querschnitts und ihren Abstand vom vorderen Bildrand.</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="41" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="40" />
         <source>Every n-th cross-section</source>
         <translation>Jeder n-te Querschnitt</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="43" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="42" />
         <source>Distance between drawn cross-sections, in cells along the line of sight.</source>
         <translation>Abstand der gezeichneten Querschnitte in Zellen entlang der Blickrichtung.</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="44" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="43" />
         <source>Profile plot</source>
         <translation>Profildarstellung</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="46" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="45" />
         <source>Visible pieces of the cross-sections as lines.</source>
         <translation>Sichtbare Teile der Querschnitte als Linien.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="89" />
-        <source>Cancelled.</source>
-        <translation>Abgebrochen.</translation>
     </message>
 </context>
 <context>
@@ -346,57 +345,62 @@
 <context>
     <name>RasterGrid</name>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="40" />
+        <location filename="../plugin/raster_grid.cpp" line="65" />
         <source>The input raster layer is not valid.</source>
         <translation>Der Eingaberasterlayer ist ungültig.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="45" />
+        <location filename="../plugin/raster_grid.cpp" line="70" />
         <source>Band %1 does not exist: the raster has %2 band(s).</source>
         <translation>Kanal %1 existiert nicht: das Raster hat %2 Kanal/Kanäle.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="52" />
+        <location filename="../plugin/raster_grid.cpp" line="77" />
         <source>The raster has no cells.</source>
         <translation>Das Raster hat keine Zellen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="55" />
+        <location filename="../plugin/raster_grid.cpp" line="80" />
         <source>The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres like its heights. Reproject it to a metric CRS first, for example with Raster &gt; Projections &gt; Warp (Reproject) to the UTM zone of the area.</source>
         <translation>Das Raster liegt in einem geographischen KBS (%1): seine Zellgrößen sind Grad, nicht Meter wie seine Höhen. Projizieren Sie es zuerst in ein metrisches KBS, zum Beispiel mit Raster &gt; Projektionen &gt; Transformieren (Reprojizieren) in die UTM-Zone des Gebiets.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="61" />
+        <location filename="../plugin/raster_grid.cpp" line="86" />
         <source>The raster has no CRS: cell sizes are taken as metres and the outputs have no CRS.</source>
         <translation>Das Raster hat kein KBS: Zellgrößen werden als Meter angenommen, die Ausgaben haben kein KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="67" />
+        <location filename="../plugin/raster_grid.cpp" line="92" />
         <source>Mercator projection: map units are not ground metres here; cell sizes are scaled by cos(latitude of the centre) = %1.</source>
         <translation>Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen werden mit cos(Breite der Mitte) = %1 skaliert.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="72" />
+        <location filename="../plugin/raster_grid.cpp" line="97" />
         <source>The raster has %1 bands; band %2 is used.</source>
         <translation>Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="74" />
+        <location filename="../plugin/raster_grid.cpp" line="99" />
         <source>Could not open the raster's data provider.</source>
         <translation>Der Datenanbieter des Rasters konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="92" />
+        <location filename="../plugin/raster_grid.cpp" line="127" />
+        <source>Could not read profiles %1 to %2 of the raster.</source>
+        <translation>Die Profile %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="154" />
         <source>Not enough memory for a %1 x %2 raster.</source>
         <translation>Nicht genug Speicher für ein Raster von %1 x %2.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="103" />
+        <location filename="../plugin/raster_grid.cpp" line="165" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="110" />
+        <location filename="../plugin/raster_grid.cpp" line="172" />
         <source>Could not read rows %1 to %2 of the raster.</source>
         <translation>Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
     </message>
@@ -440,22 +444,22 @@
 <context>
     <name>SilhouettesAlgorithm</name>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="39" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="42" />
         <source>Silhouettes (factual and formulated)</source>
         <translation>Silhouetten (faktisch und formuliert)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="43" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="46" />
         <source>silhouette,occluding contour,sketch,oblique,panorama,block diagram,plan oblique,terrain,dem,hidden</source>
         <translation>Silhouette,Verdeckungskontur,Skizze,Schrägansicht,Panorama,Blockbild,Plan oblique,Gelände,DGM,verdeckt</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="49" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="52" />
         <source>Draws the silhouette lines of a DEM seen obliquely from above as vector strokes.</source>
         <translation>Zeichnet die Silhouettenlinien eines schräg von oben gesehenen DGM als Vektorstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="53" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="56" />
         <source>Finds the lines a cartographer sketches first when drawing terrain seen obliquely from above.
 
 Factual Silhouettes are occluding contours: cells beyond which the terrain hides what lies behind it, in a parallel view with vertical exaggeration and a base slope added along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view brings into sight (the candidate set), kept where the slope filter finds them significant (outside the weak/weak corner of column slope against row slope), thinned to the cell furthest from the viewer and chained across profiles.
@@ -476,103 +480,117 @@ Zwei Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter
 Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="88" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="91" />
         <source>Chaining window (cells)</source>
         <translation>Verkettungsfenster (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="89" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="92" />
         <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
         <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="90" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
         <source>Minimum stroke cells</source>
         <translation>Mindestzahl Zellen je Strich</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="91" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="94" />
         <source>Strokes with fewer cells are dropped (generalisation).</source>
         <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="92" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="95" />
         <source>Geometry</source>
         <translation>Geometrie</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="96" />
         <source>Map (cell centres)</source>
         <translation>Karte (Zellmittelpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="96" />
         <source>Plan oblique (the sketch)</source>
         <translation>Plan oblique (die Skizze)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="95" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="98" />
         <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
         <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="98" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="101" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="99" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="99" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="101" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="104" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="105" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="103" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="106" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="106" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="109" />
+        <source>Profiles per strip (0: automatic)</source>
+        <translation>Profile je Streifen (0: automatisch)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="110" />
+        <source>For DEMs larger than memory (cardinal views): read and process this many profiles at a time. 0 reads the DEM whole unless it would not fit in half of the memory.</source>
+        <translation>Für DGM, die größer als der Speicher sind (Haupthimmelsrichtungen): so viele Profile auf einmal lesen und verarbeiten. 0 liest das DGM ganz, es sei denn, es passte nicht in die Hälfte des Speichers.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="107" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="114" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="108" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="109" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="145" />
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="171" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="156" />
+        <source>Processing the DEM in strips of %1 profiles.</source>
+        <translation>Das DGM wird in Streifen zu %1 Profilen verarbeitet.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="168" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="149" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="172" />
         <source>Not enough memory for this raster.</source>
         <translation>Nicht genug Speicher für dieses Raster.</translation>
     </message>

@@ -49,6 +49,8 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   // Worker thread: reads the DEM oriented for the azimuth, progress 0 to `progressTo` percent.
   RasterGrid& readRaster(QgsProcessingFeedback* feedback, double progressTo);
   void releaseRaster();
+  // The prepared raster, not read yet (for reading strip by strip).
+  RasterGrid& preparedRaster() { return *mRaster; }
 
  private:
   std::unique_ptr<RasterGrid> mRaster;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "errors.h"
+#include "qgis_compat.h"
 
 namespace tsk::plugin {
 namespace {
@@ -100,14 +101,50 @@ RasterGrid::RasterGrid(QgsRasterLayer* layer, int band,
 
 RasterGrid::~RasterGrid() = default;
 
-void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
-                      double progressTo) {
+void RasterGrid::setView(double azimuthDeg) {
   const double dx = mExtent.width() / mCols;
   const double dy = mExtent.height() / mRows;
   mGeoTransform.a = {mExtent.xMinimum(), dx, 0.0, mExtent.yMaximum(), 0.0, -dy};
   try {
     mFrame = make_frame(static_cast<std::size_t>(mRows), static_cast<std::size_t>(mCols),
                         dx * mGroundScale, dy * mGroundScale, azimuthDeg);
+  } catch (const Error& e) {
+    throw QgsProcessingException(QString::fromStdString(e.what()));
+  }
+}
+
+HeightGrid RasterGrid::readProfiles(std::size_t first, std::size_t count) {
+  try {
+    const DemWindow w = profile_window(mFrame, first, count);
+    const double dx = mExtent.width() / mCols, dy = mExtent.height() / mRows;
+    const QgsRectangle rect(mExtent.xMinimum() + static_cast<double>(w.col0) * dx,
+                            mExtent.yMaximum() - static_cast<double>(w.row0 + w.rows) * dy,
+                            mExtent.xMinimum() + static_cast<double>(w.col0 + w.cols) * dx,
+                            mExtent.yMaximum() - static_cast<double>(w.row0) * dy);
+    std::unique_ptr<QgsRasterBlock> block(
+        mProvider->block(mBand, rect, static_cast<int>(w.cols), static_cast<int>(w.rows)));
+    if (!block || !block->isValid()) {
+      throw QgsProcessingException(
+          tr("Could not read profiles %1 to %2 of the raster.").arg(first).arg(first + count - 1));
+    }
+    HeightGrid window(w.rows, w.cols);
+    copyHeights(*block, static_cast<int>(w.rows), window.data());
+    return orient_window(mFrame, window);
+  } catch (const Error& e) {
+    throw QgsProcessingException(QString::fromStdString(e.what()));
+  }
+}
+
+double RasterGrid::lowestHeight() {
+  const QgsRasterBandStats stats = mProvider->bandStatistics(mBand, kStatisticMin);
+  return std::isfinite(stats.minimumValue) ? stats.minimumValue : 0.0;
+}
+
+void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
+                      double progressTo) {
+  setView(azimuthDeg);
+  const double dy = mExtent.height() / mRows;
+  try {
     readBlocks(feedback, progressFrom, progressTo, dy);
   } catch (const Error& e) {
     throw QgsProcessingException(QString::fromStdString(e.what()));

@@ -36,6 +36,12 @@ class RasterGrid {
   void read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
             double progressTo);
 
+  // Worker thread, for DEMs read strip by strip (cardinal views): sets the frame for
+  // `azimuthDeg` without reading, then reads oriented profiles [first, first + count).
+  void setView(double azimuthDeg);
+  HeightGrid readProfiles(std::size_t first, std::size_t count);
+  double lowestHeight();  // a full pass over the band through the provider
+
   const HeightGrid& oriented() const { return mOriented; }
   const OrientedFrame& frame() const { return mFrame; }
   const GeoTransform& geotransform() const { return mGeoTransform; }

@@ -3,6 +3,7 @@
 #include <qgsprocessingfeedback.h>
 #include <qgsprocessingoutputs.h>
 #include <qgsrasterlayer.h>
+#include <unistd.h>
 
 #include <new>
 
@@ -22,6 +23,7 @@ const QString kMinCells = QStringLiteral("MIN_CELLS");
 const QString kGeometry = QStringLiteral("GEOMETRY");
 const QString kPlacement = QStringLiteral("PLACEMENT");
 const QString kSubcell = QStringLiteral("SUBCELL");
+const QString kStrips = QStringLiteral("STRIPS");
 const QString kFactual = QStringLiteral("FACTUAL");
 const QString kFormulated = QStringLiteral("FORMULATED");
 
@@ -103,6 +105,10 @@ void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
       tr("Place factual points where the transformed profile peaks between cells instead of at "
          "cell centres (removes the thesis's halo)."),
       true);
+  add(integer(kStrips, tr("Profiles per strip (0: automatic)"), 0, 0, 1000000),
+      tr("For DEMs larger than memory (cardinal views): read and process this many profiles at "
+         "a time. 0 reads the DEM whole unless it would not fit in half of the memory."),
+      true);
   add(new QgsProcessingParameterFeatureSink(kFactual, tr("Factual silhouettes"), kLineLayer),
       tr("Occluding contours as line strokes."));
   add(new QgsProcessingParameterFeatureSink(kFormulated, tr("Formulated silhouettes"), kLineLayer),
@@ -125,6 +131,7 @@ double SilhouettesAlgorithm::readParameters(const QVariantMap& parameters,
   p.placement = parameterAsEnum(parameters, kPlacement, context) == 1 ? Placement::near_and_far
                                                                       : Placement::far;
   p.subcell = parameterAsBool(parameters, kSubcell, context);
+  mStrips = parameterAsInt(parameters, kStrips, context);
   p.validate();
   return p.view.azimuth_deg;
 }
@@ -132,15 +139,30 @@ double SilhouettesAlgorithm::readParameters(const QVariantMap& parameters,
 QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters,
                                                    QgsProcessingContext& context,
                                                    QgsProcessingFeedback* feedback) {
-  const RasterGrid& raster = readRaster(feedback, kReadEnd);
+  RasterGrid& raster = preparedRaster();
+  raster.setView(mParams.view.azimuth_deg);
+  const OrientedFrame& frame = raster.frame();
+  const double cells = static_cast<double>(frame.dem_rows) * static_cast<double>(frame.dem_cols);
+  const double memory =
+      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+  const std::size_t strip = mStrips > 0 ? static_cast<std::size_t>(mStrips)
+                            : !frame.resampled && 5.0 * cells > 0.5 * memory ? 1024
+                                                                             : 0;
   SilhouetteResult result;
   try {
-    result = run_silhouettes(raster.oriented(), raster.frame(), raster.geotransform(), mParams,
-                             [feedback](double fraction) {
-                               if (!feedback) return true;
-                               feedback->setProgress(kReadEnd + (kCoreEnd - kReadEnd) * fraction);
-                               return !feedback->isCanceled();
-                             });
+    if (strip > 0) {
+      if (feedback)
+        feedback->pushInfo(tr("Processing the DEM in strips of %1 profiles.").arg(strip));
+      result = runInStrips(strip, feedback);
+    } else {
+      readRaster(feedback, kReadEnd);
+      result = run_silhouettes(raster.oriented(), raster.frame(), raster.geotransform(), mParams,
+                               [feedback](double fraction) {
+                                 if (!feedback) return true;
+                                 feedback->setProgress(kReadEnd + (kCoreEnd - kReadEnd) * fraction);
+                                 return !feedback->isCanceled();
+                               });
+    }
   } catch (const Cancelled&) {
     throw QgsProcessingException(tr("Cancelled."));
   } catch (const Error& e) {
@@ -176,6 +198,25 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
   }
   releaseRaster();  // release the grid before QGIS loads the outputs
   return outputs;
+}
+
+SilhouetteResult SilhouettesAlgorithm::runInStrips(std::size_t strip,
+                                                   QgsProcessingFeedback* feedback) {
+  RasterGrid& raster = preparedRaster();
+  const OrientedFrame& frame = raster.frame();
+  const double zRef = mParams.geometry == Geometry::oblique ? raster.lowestHeight() : 0.0;
+  SilhouetteStream stream(frame, raster.geotransform(), mParams, zRef, [feedback](double f) {
+    if (!feedback) return true;
+    feedback->setProgress(kCoreEnd * f);
+    return !feedback->isCanceled();
+  });
+  for (std::size_t first = 0; first < frame.profiles; first += strip) {
+    const std::size_t count = std::min(strip, frame.profiles - first);
+    const std::size_t lo = first > 0 ? first - 1 : 0;
+    const std::size_t hi = std::min(frame.profiles, first + count + 1);
+    stream.add_strip(raster.readProfiles(lo, hi - lo), first, count);
+  }
+  return stream.finish();
 }
 
 QVariantMap SilhouettesAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,

@@ -5,6 +5,7 @@
 
 #include "dem_view_algorithm.h"
 #include "params.h"
+#include "silhouettes.h"
 
 namespace tsk::plugin {
 
@@ -28,7 +29,11 @@ class SilhouettesAlgorithm : public DemViewAlgorithm {
                                    QgsProcessingFeedback* feedback) override;
 
  private:
+  // Silhouettes of a DEM read and processed `strip` profiles at a time.
+  SilhouetteResult runInStrips(std::size_t strip, QgsProcessingFeedback* feedback);
+
   SilhouetteParams mParams;
+  int mStrips = 0;
   QString mFactualId;
   QString mFormulatedId;
 };

@@ -374,3 +374,37 @@ TEST_CASE("the P-stroke algorithm draws the core's P-strokes", "[plugin][pstroke
                                nullptr, QStringLiteral("pstrokes"));
   CHECK_FALSE(bad.ok);
 }
+
+TEST_CASE("strips through the raster provider give the whole-DEM strokes", "[plugin][strips]") {
+  const QString dem = kData + "/gorillas_utm32n.tif";
+  for (double az : {0.0, 90.0, 180.0, 270.0}) {
+    CAPTURE(az);
+    QTemporaryDir dir;
+    const Run run = runAlgorithm(dem, {{"AZIMUTH", az}, {"GEOMETRY", 1}, {"STRIPS", 17}}, dir);
+    INFO(run.error.toStdString());
+    REQUIRE(run.ok);
+    const SilhouetteResult core = coreResult(dem, az, Geometry::oblique);
+    CHECK(run.results.value("GSET_PCT").toDouble() ==
+          Approx(core.stats.pct(core.stats.generalised)));
+    for (const char* output : {"FACTUAL", "FORMULATED"}) {
+      QgsVectorLayer layer(run.results.value(output).toString(), "l", "ogr");
+      REQUIRE(layer.isValid());
+      const StrokeClass cls =
+          std::string(output) == "FACTUAL" ? StrokeClass::factual : StrokeClass::formulated;
+      std::vector<const Stroke*> expected;
+      for (const Stroke& s : core.strokes)
+        if (s.cls == cls) expected.push_back(&s);
+      REQUIRE(layer.featureCount() == static_cast<long long>(expected.size()));
+      QgsFeatureIterator it = layer.getFeatures();
+      QgsFeature feature;
+      std::size_t k = 0;
+      while (it.nextFeature(feature)) {
+        const QgsPolylineXY line = feature.geometry().asPolyline();
+        REQUIRE(static_cast<std::size_t>(line.size()) == expected[k]->points.size());
+        REQUIRE(line.front().x() == Approx(expected[k]->points.front().x));
+        REQUIRE(line.back().y() == Approx(expected[k]->points.back().y));
+        ++k;
+      }
+    }
+  }
+}
