@@ -41,11 +41,13 @@ VectorSummary summarise(const std::string& path) {
     const char* code = srs->GetAuthorityCode(nullptr);
     s.epsg = code ? std::atoi(code) : -1;
   }
+  const int class_field = defn->GetFieldIndex("class");
+  const int depth_field = defn->GetFieldIndex("mean_depth");
   for (auto& feature : *layer) {
     ++s.features;
-    const std::string cls = feature->GetFieldAsString("class");
+    const std::string cls = class_field >= 0 ? feature->GetFieldAsString(class_field) : "";
     ++s.per_class[cls];
-    if (cls == "formulated" && feature->IsFieldNull(feature->GetFieldIndex("mean_depth"))) {
+    if (cls == "formulated" && depth_field >= 0 && feature->IsFieldNull(depth_field)) {
       ++s.null_depth_formulated;
     }
     REQUIRE(feature->GetGeometryRef() != nullptr);
