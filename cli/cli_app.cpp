@@ -2,7 +2,6 @@
 
 #include <cpl_conv.h>
 #include <gdal.h>
-#include <unistd.h>
 
 #include <cctype>
 #include <chrono>
@@ -209,16 +208,13 @@ void write_text(const std::string& path, const std::string& text) {
   });
 }
 
-// Profiles per strip when the DEM, held whole (5 bytes a cell), would not fit in half of the
-// memory; 0 when it fits.
-std::size_t automatic_strips(const std::string& path) {
+// Profiles per strip chosen for a DEM too large to hold whole (0: it fits, or the view is not
+// cardinal).
+std::size_t automatic_strips(const std::string& path, double azimuth_deg) {
   const auto dataset = io::open_raster(path);
-  const double cells = static_cast<double>(dataset->GetRasterXSize()) *
-                       static_cast<double>(dataset->GetRasterYSize());
-  const double memory =
-      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
-  if (memory <= 0 || 5.0 * cells < 0.5 * memory) return 0;
-  return 1024;
+  const auto rows = static_cast<std::size_t>(dataset->GetRasterYSize());
+  const auto cols = static_cast<std::size_t>(dataset->GetRasterXSize());
+  return automatic_strip_profiles(rows, cols, !is_cardinal(azimuth_deg));
 }
 
 // The silhouettes read and processed strip by strip: bounded memory for any DEM size.
@@ -227,23 +223,17 @@ SilhouetteResult silhouettes_in_strips(const Options& o, std::size_t strip, io::
   io::DemStripReader reader(o.input, o.dem);
   info = reader.info();
   if (!info.notes.empty()) err << "note: " << info.notes;
-  const OrientedFrame& frame = info.frame;
   const double z_ref = o.params.geometry == Geometry::oblique ? reader.lowest_height() : 0.0;
-  SilhouetteStream stream(frame, info.geotransform, o.params, z_ref);
-  for (std::size_t first = 0; first < frame.profiles; first += strip) {
-    const std::size_t count = std::min(strip, frame.profiles - first);
-    const std::size_t lo = first > 0 ? first - 1 : 0;
-    const std::size_t hi = std::min(frame.profiles, first + count + 1);
-    stream.add_strip(reader.read_profiles(lo, hi - lo), first, count);
-  }
-  return stream.finish();
+  return run_in_strips(
+      info.frame, info.geotransform, o.params, z_ref, strip,
+      [&](std::size_t first, std::size_t count) { return reader.read_profiles(first, count); });
 }
 
 int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
   io::vector_driver_for(o.output, o.format);  // an unknown format fails before any work
-  const std::size_t strip =
-      o.strips > 0 ? static_cast<std::size_t>(o.strips) : automatic_strips(o.input);
+  const std::size_t strip = o.strips > 0 ? static_cast<std::size_t>(o.strips)
+                                         : automatic_strips(o.input, o.dem.azimuth_deg);
   if (strip > 0) {
     if (!o.preview.empty()) throw Error("--preview needs the whole DEM in memory; drop --strips");
     if (o.strips == 0)

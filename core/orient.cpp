@@ -121,15 +121,17 @@ OrientedFrame make_resampled_frame(std::size_t rows, std::size_t cols, double dx
   return f;
 }
 
+bool is_cardinal(double azimuth_deg) {
+  const double azimuth = normalise_azimuth(azimuth_deg);
+  return std::fabs(azimuth - 90.0 * std::round(azimuth / 90.0)) <= 1e-9;
+}
+
 OrientedFrame make_frame(std::size_t rows, std::size_t cols, double dx, double dy,
                          double azimuth_deg) {
   check_dem(rows, cols, dx, dy);
+  if (!is_cardinal(azimuth_deg)) return make_resampled_frame(rows, cols, dx, dy, azimuth_deg);
   const double azimuth = normalise_azimuth(azimuth_deg);
-  const double quarter = std::round(azimuth / 90.0);
-  if (std::fabs(azimuth - 90.0 * quarter) > 1e-9) {
-    return make_resampled_frame(rows, cols, dx, dy, azimuth);
-  }
-  return cardinal_frame(rows, cols, dx, dy, static_cast<int>(quarter) % 4 * 90);
+  return cardinal_frame(rows, cols, dx, dy, static_cast<int>(std::round(azimuth / 90.0)) % 4 * 90);
 }
 
 void scatter_dem_rows(const OrientedFrame& frame, std::size_t first_row, std::size_t count,

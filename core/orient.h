@@ -51,6 +51,9 @@ struct OrientedFrame {
   }
 };
 
+// True for the views that are exact flips of the DEM: azimuth 0, 90, 180 or 270 (modulo 360).
+bool is_cardinal(double azimuth_deg);
+
 // The frame for a DEM of rows x cols with cell sizes dx (east-west) and dy (north-south), row 0
 // north, seen facing `azimuth_deg`. Exact for cardinal views, resampled otherwise. Throws Error
 // for an empty grid, bad cell sizes or an oriented grid too large to address.

@@ -1,5 +1,7 @@
 #include "silhouettes.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -216,6 +218,28 @@ SilhouetteResult SilhouetteStream::finish() {
   result.timings.strokes += seconds_since(start);
   if (st.progress && !st.progress(1.0)) throw Cancelled();
   return std::move(result);
+}
+
+SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& geotransform,
+                               const SilhouetteParams& params, double z_ref, std::size_t strip,
+                               const ProfileReader& read, const ProgressFn& progress) {
+  if (strip == 0) throw Error("a strip needs at least one profile");
+  SilhouetteStream stream(frame, geotransform, params, z_ref, progress);
+  for (std::size_t first = 0; first < frame.profiles; first += strip) {
+    const std::size_t count = std::min(strip, frame.profiles - first);
+    const std::size_t lo = first > 0 ? first - 1 : 0;
+    const std::size_t hi = std::min(frame.profiles, first + count + 1);
+    stream.add_strip(read(lo, hi - lo), first, count);
+  }
+  return stream.finish();
+}
+
+std::size_t automatic_strip_profiles(std::size_t rows, std::size_t cols, bool resampled) {
+  if (resampled) return 0;
+  const double memory =
+      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+  const double bytes = 5.0 * static_cast<double>(rows) * static_cast<double>(cols);
+  return memory > 0 && bytes > 0.5 * memory ? 1024 : 0;
 }
 
 SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -39,7 +40,6 @@ std::vector<StageFigure> stage_figures(const StageStats& stats);
 // Wall time of each stage, seconds.
 struct StageTimings {
   double visibility = 0, candidates = 0, filter = 0, thinning = 0, chaining = 0, strokes = 0;
-  double total() const { return visibility + candidates + filter + thinning + chaining + strokes; }
 };
 
 struct SilhouetteResult {
@@ -71,6 +71,19 @@ class SilhouetteStream {
   struct State;
   std::unique_ptr<State> state_;
 };
+
+// Reads oriented profiles [first, first + count) of the grid (a strip with its neighbours).
+using ProfileReader = std::function<HeightGrid(std::size_t first, std::size_t count)>;
+
+// The whole method with the grid read `strip` profiles at a time through `read`, each strip with
+// the neighbouring profiles the row slope needs. Equal to run_silhouettes on the whole grid.
+SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& geotransform,
+                               const SilhouetteParams& params, double z_ref, std::size_t strip,
+                               const ProfileReader& read, const ProgressFn& progress = {});
+
+// Profiles per strip for a DEM that, held whole (5 bytes a cell), would not fit in half of this
+// machine's memory; 0 when it fits or when the view is resampled (strips need a cardinal view).
+std::size_t automatic_strip_profiles(std::size_t rows, std::size_t cols, bool resampled);
 
 // Runs every stage on an oriented grid (see orient.h). Throws Error on bad parameters or a grid
 // that does not match the frame, Cancelled when `progress` returns false.

@@ -3,7 +3,6 @@
 #include <qgsprocessingfeedback.h>
 #include <qgsprocessingoutputs.h>
 #include <qgsrasterlayer.h>
-#include <unistd.h>
 
 #include <new>
 
@@ -142,12 +141,9 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
   RasterGrid& raster = preparedRaster();
   raster.setView(mParams.view.azimuth_deg);
   const OrientedFrame& frame = raster.frame();
-  const double cells = static_cast<double>(frame.dem_rows) * static_cast<double>(frame.dem_cols);
-  const double memory =
-      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
-  const std::size_t strip = mStrips > 0 ? static_cast<std::size_t>(mStrips)
-                            : !frame.resampled && 5.0 * cells > 0.5 * memory ? 1024
-                                                                             : 0;
+  const std::size_t strip =
+      mStrips > 0 ? static_cast<std::size_t>(mStrips)
+                  : automatic_strip_profiles(frame.dem_rows, frame.dem_cols, frame.resampled);
   SilhouetteResult result;
   try {
     if (strip > 0) {
@@ -205,18 +201,14 @@ SilhouetteResult SilhouettesAlgorithm::runInStrips(std::size_t strip,
   RasterGrid& raster = preparedRaster();
   const OrientedFrame& frame = raster.frame();
   const double zRef = mParams.geometry == Geometry::oblique ? raster.lowestHeight() : 0.0;
-  SilhouetteStream stream(frame, raster.geotransform(), mParams, zRef, [feedback](double f) {
-    if (!feedback) return true;
-    feedback->setProgress(kCoreEnd * f);
-    return !feedback->isCanceled();
-  });
-  for (std::size_t first = 0; first < frame.profiles; first += strip) {
-    const std::size_t count = std::min(strip, frame.profiles - first);
-    const std::size_t lo = first > 0 ? first - 1 : 0;
-    const std::size_t hi = std::min(frame.profiles, first + count + 1);
-    stream.add_strip(raster.readProfiles(lo, hi - lo), first, count);
-  }
-  return stream.finish();
+  return run_in_strips(
+      frame, raster.geotransform(), mParams, zRef, strip,
+      [&raster](std::size_t first, std::size_t count) { return raster.readProfiles(first, count); },
+      [feedback](double f) {
+        if (!feedback) return true;
+        feedback->setProgress(kCoreEnd * f);
+        return !feedback->isCanceled();
+      });
 }
 
 QVariantMap SilhouettesAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,

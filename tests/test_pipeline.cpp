@@ -279,6 +279,39 @@ TEST_CASE("strips of any width give exactly the result of the whole grid", "[pip
   }
 }
 
+TEST_CASE("run_in_strips reads every strip with its neighbours and equals the whole grid",
+          "[pipeline][strips]") {
+  const HeightGrid dem = test::random_terrain(50, 40, 8, 0.02);
+  const OrientedFrame frame = make_frame(50, 40, 10, 10, 270);
+  const HeightGrid z = orient(dem, frame);
+  const SilhouetteResult whole = run_silhouettes(z, frame, GeoTransform{}, {});
+  std::vector<std::pair<std::size_t, std::size_t>> reads;
+  const SilhouetteResult strips = run_in_strips(
+      frame, GeoTransform{}, {}, lowest_height(z), 16, [&](std::size_t first, std::size_t count) {
+        reads.emplace_back(first, count);
+        HeightGrid s(count, z.cols());
+        for (std::size_t r = 0; r < count; ++r)
+          std::copy(z.row(first + r), z.row(first + r) + z.cols(), s.row(r));
+        return s;
+      });
+  // Profiles 0-15 with 16; 15-31 with 15 and 32; 31-47 with 31 and 48; 47-49 with 47.
+  CHECK(reads ==
+        std::vector<std::pair<std::size_t, std::size_t>>{{0, 17}, {15, 18}, {31, 18}, {47, 3}});
+  REQUIRE(strips.strokes.size() == whole.strokes.size());
+  CHECK(strips.stats.generalised == whole.stats.generalised);
+  CHECK_THROWS_AS(run_in_strips(frame, GeoTransform{}, {}, 0, 0, {}), Error);
+}
+
+TEST_CASE("strips are chosen automatically only for cardinal views of DEMs too large to hold",
+          "[pipeline][strips]") {
+  CHECK(automatic_strip_profiles(100, 100, false) == 0);
+  CHECK(automatic_strip_profiles(std::size_t{1} << 30, std::size_t{1} << 20, false) == 1024);
+  CHECK(automatic_strip_profiles(std::size_t{1} << 30, std::size_t{1} << 20, true) == 0);
+  CHECK(is_cardinal(90));
+  CHECK(is_cardinal(-180));
+  CHECK_FALSE(is_cardinal(45));
+}
+
 TEST_CASE("strips must arrive in order and cover the grid", "[pipeline][strips]") {
   const HeightGrid z = test::random_terrain(10, 12, 3);
   const OrientedFrame frame = make_frame(10, 12, 10, 10, 90);
