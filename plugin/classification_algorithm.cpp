@@ -4,7 +4,6 @@
 #include <qgsprocessingoutputs.h>
 
 #include "diagnostics.h"
-#include "errors.h"
 #include "layer_style.h"
 #include "raster_grid.h"
 #include "raster_output.h"
@@ -58,19 +57,7 @@ QVariantMap ClassificationAlgorithm::processAlgorithm(const QVariantMap& paramet
                                                       QgsProcessingContext& context,
                                                       QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 25);
-  SilhouetteResult result;
-  try {
-    result = run_silhouettes(raster.oriented(), raster.frame(), raster.geotransform(), mParams,
-                             [feedback](double fraction) {
-                               if (!feedback) return true;
-                               feedback->setProgress(25 + 65 * fraction);
-                               return !feedback->isCanceled();
-                             });
-  } catch (const Cancelled&) {
-    throw QgsProcessingException(tr("Cancelled."));
-  } catch (const Error& e) {
-    throw QgsProcessingException(QString::fromStdString(e.what()));
-  }
+  const SilhouetteResult result = runSilhouettes(mParams, feedback, 25, 90);
   mOutput = parameterAsOutputLayer(parameters, QStringLiteral("OUTPUT"), context);
   writeByteRaster(mOutput, classification_map(result.flags, raster.frame()), raster);
   QVariantMap outputs{{QStringLiteral("OUTPUT"), mOutput}};

@@ -6,6 +6,7 @@
 
 #include <QIcon>
 #include <algorithm>
+#include <new>
 
 #include "errors.h"
 #include "plugin_paths.h"
@@ -141,6 +142,25 @@ RasterGrid& DemViewAlgorithm::readRaster(QgsProcessingFeedback* feedback, double
   mWritten = 0;
   mRaster->read(mAzimuth, feedback, 0.0, progressTo);
   return *mRaster;
+}
+
+SilhouetteResult DemViewAlgorithm::runSilhouettes(const SilhouetteParams& params,
+                                                  QgsProcessingFeedback* feedback, double from,
+                                                  double to) {
+  try {
+    return run_silhouettes(mRaster->oriented(), mRaster->frame(), mRaster->geotransform(), params,
+                           [feedback, from, to](double fraction) {
+                             if (!feedback) return true;
+                             feedback->setProgress(from + (to - from) * fraction);
+                             return !feedback->isCanceled();
+                           });
+  } catch (const Cancelled&) {
+    throw QgsProcessingException(tr("Cancelled."));
+  } catch (const Error& e) {
+    throw QgsProcessingException(QString::fromStdString(e.what()));
+  } catch (const std::bad_alloc&) {
+    throw QgsProcessingException(tr("Not enough memory for this raster."));
+  }
 }
 
 void DemViewAlgorithm::releaseRaster() {

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "params.h"
+#include "silhouettes.h"
 
 namespace tsk::plugin {
 
@@ -49,6 +50,11 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   // Worker thread: reads the DEM oriented for the azimuth, progress 0 to `progressTo` percent.
   RasterGrid& readRaster(QgsProcessingFeedback* feedback, double progressTo);
   void releaseRaster();
+
+  // Runs the silhouette method on the raster read by readRaster(), moving progress from `from`
+  // to `to` percent and stopping on cancel; the core's errors become QgsProcessingException.
+  SilhouetteResult runSilhouettes(const SilhouetteParams& params, QgsProcessingFeedback* feedback,
+                                  double from, double to);
   // The prepared raster, not read yet (for reading strip by strip).
   RasterGrid& preparedRaster() { return *mRaster; }
 

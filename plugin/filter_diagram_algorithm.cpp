@@ -52,10 +52,9 @@ QVariantMap FilterDiagramAlgorithm::processAlgorithm(const QVariantMap& paramete
                                                      QgsProcessingContext& context,
                                                      QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 40);
+  const SilhouetteResult result = runSilhouettes(mParams, feedback, 40, 90);
   std::string html;
   try {
-    const SilhouetteResult result =
-        run_silhouettes(raster.oriented(), raster.frame(), raster.geotransform(), mParams);
     const double range =
         std::max(60.0, 2.5 * std::max(mParams.filter.row_cut_pct, mParams.filter.col_cut_pct));
     html = filter_diagram_html(

@@ -90,11 +90,9 @@ QVariantMap PStrokeAlgorithm::processAlgorithm(const QVariantMap& parameters,
                                                QgsProcessingContext& context,
                                                QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 25);
+  const SilhouetteResult result = runSilhouettes(mParams, feedback, 25, 40);
   std::vector<PStroke> strokes;
   try {
-    const SilhouetteResult result =
-        run_silhouettes(raster.oriented(), raster.frame(), raster.geotransform(), mParams);
-    if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
     strokes = pstroke_sketch(raster.oriented(), result.flags, raster.frame(), mParams.view,
                              raster.geotransform(), mParams.geometry, mPStrokes);
   } catch (const Error& e) {

@@ -144,6 +144,7 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
   const std::size_t strip =
       mStrips > 0 ? static_cast<std::size_t>(mStrips)
                   : automatic_strip_profiles(frame.dem_rows, frame.dem_cols, frame.resampled);
+  if (strip == 0) readRaster(feedback, kReadEnd);
   SilhouetteResult result;
   try {
     if (strip > 0) {
@@ -151,13 +152,7 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
         feedback->pushInfo(tr("Processing the DEM in strips of %1 profiles.").arg(strip));
       result = runInStrips(strip, feedback);
     } else {
-      readRaster(feedback, kReadEnd);
-      result = run_silhouettes(raster.oriented(), raster.frame(), raster.geotransform(), mParams,
-                               [feedback](double fraction) {
-                                 if (!feedback) return true;
-                                 feedback->setProgress(kReadEnd + (kCoreEnd - kReadEnd) * fraction);
-                                 return !feedback->isCanceled();
-                               });
+      result = runSilhouettes(mParams, feedback, kReadEnd, kCoreEnd);
     }
   } catch (const Cancelled&) {
     throw QgsProcessingException(tr("Cancelled."));
