@@ -199,6 +199,13 @@ std::string stats_json(const StageStats& s) {
   return j.str();
 }
 
+// Reads the DEM for the view and tells the user what they should know about it.
+io::Dem load_dem(const Options& o, std::ostream& err) {
+  io::Dem dem = io::read_dem(o.input, o.dem);
+  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  return dem;
+}
+
 void write_text(const std::string& path, const std::string& text) {
   io::write_atomically(path, [&](const std::filesystem::path& staged) {
     std::ofstream f(staged);
@@ -252,9 +259,8 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
     return std::chrono::duration<double>(Clock::now() - t).count();
   };
   auto start = Clock::now();
-  const io::Dem dem = io::read_dem(o.input, o.dem);
+  const io::Dem dem = load_dem(o, err);
   const double read_s = since(start);
-  if (!dem.notes.empty()) err << "note: " << dem.notes;
   const SilhouetteResult result =
       run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
   start = Clock::now();
@@ -286,8 +292,7 @@ void require_geotiff(const std::string& path) {
 int classify(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
   require_geotiff(o.output);
-  const io::Dem dem = io::read_dem(o.input, o.dem);
-  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  const io::Dem dem = load_dem(o, err);
   const SilhouetteResult result =
       run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
   io::write_classification(o.output, classification_map(result.flags, dem.frame), dem.geotransform,
@@ -303,8 +308,7 @@ int classify(const std::vector<std::string>& args, std::ostream& out, std::ostre
 int row_slope(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
   require_geotiff(o.output);
-  const io::Dem dem = io::read_dem(o.input, o.dem);
-  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  const io::Dem dem = load_dem(o, err);
   io::write_float_raster(o.output, {row_slope_map(dem.oriented, dem.frame)}, dem.geotransform,
                          dem.srs_wkt);
   out << o.output << ": row slope in percent across azimuth " << dem.frame.azimuth_deg << "\n";
@@ -314,8 +318,7 @@ int row_slope(const std::vector<std::string>& args, std::ostream& out, std::ostr
 int profiles(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
   io::vector_driver_for(o.output, o.format);
-  const io::Dem dem = io::read_dem(o.input, o.dem);
-  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  const io::Dem dem = load_dem(o, err);
   CellFlags flags;
   classify_visibility(dem.oriented, dem.frame.d, o.params.view, flags, o.params.threads);
   const auto lines = profile_plot(dem.oriented, flags, dem.frame, o.params.view, dem.geotransform,
@@ -329,8 +332,7 @@ int pstrokes(const std::vector<std::string>& args, std::ostream& out, std::ostre
   const Options o = parse(args);
   o.pstrokes.validate();
   io::vector_driver_for(o.output, o.format);
-  const io::Dem dem = io::read_dem(o.input, o.dem);
-  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  const io::Dem dem = load_dem(o, err);
   const SilhouetteResult result =
       run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
   const auto strokes =
@@ -345,8 +347,7 @@ int drape(const std::vector<std::string>& args, std::ostream& out, std::ostream&
   const Options o = parse(args);
   require_geotiff(o.output);
   if (o.source.empty()) throw Error("drape needs --source RASTER, the raster to drape");
-  const io::Dem dem = io::read_dem(o.input, o.dem);
-  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  const io::Dem dem = load_dem(o, err);
   const std::vector<HeightGrid> source = io::read_bands(o.source);
   CellFlags flags;
   classify_visibility(dem.oriented, dem.frame.d, o.params.view, flags, o.params.threads);
@@ -362,12 +363,10 @@ int drape(const std::vector<std::string>& args, std::ostream& out, std::ostream&
 
 int filter_plot(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
-  const io::Dem dem = io::read_dem(o.input, o.dem);
-  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  const io::Dem dem = load_dem(o, err);
   const SilhouetteResult result =
       run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
-  const double range =
-      std::max(60.0, 2.5 * std::max(o.params.filter.row_cut_pct, o.params.filter.col_cut_pct));
+  const double range = diagram_range_pct(o.params.filter);
   const SlopeScatter scatter =
       slope_scatter(dem.oriented, result.flags, dem.frame.d, dem.frame.w, range);
   write_text(o.output, filter_diagram_html(

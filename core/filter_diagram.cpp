@@ -17,6 +17,10 @@ std::size_t SlopeScatter::bin(double col_pct, double row_pct) const {
   return static_cast<std::size_t>(index(row_pct) * bins + index(col_pct));
 }
 
+double diagram_range_pct(const FilterParams& filter) {
+  return std::max(60.0, 2.5 * std::max(filter.row_cut_pct, filter.col_cut_pct));
+}
+
 SlopeScatter slope_scatter(const HeightGrid& z, const CellFlags& flags, double d, double w,
                            double max_pct, int bins) {
   if (!(max_pct > 0.0) || bins < 2 || bins > 2000) throw Error("bad scatter range or bin count");

@@ -20,6 +20,9 @@ struct SlopeScatter {
   std::size_t bin(double col_pct, double row_pct) const;
 };
 
+// The slope range a diagram of `filter` shows: 60 %, or 2.5 times the larger cut-off.
+double diagram_range_pct(const FilterParams& filter);
+
 SlopeScatter slope_scatter(const HeightGrid& z, const CellFlags& flags, double d, double w,
                            double max_pct, int bins = 120);
 

@@ -55,8 +55,7 @@ QVariantMap FilterDiagramAlgorithm::processAlgorithm(const QVariantMap& paramete
   const SilhouetteResult result = runSilhouettes(mParams, feedback, 40, 90);
   std::string html;
   try {
-    const double range =
-        std::max(60.0, 2.5 * std::max(mParams.filter.row_cut_pct, mParams.filter.col_cut_pct));
+    const double range = diagram_range_pct(mParams.filter);
     html = filter_diagram_html(
         slope_scatter(raster.oriented(), result.flags, raster.frame().d, raster.frame().w, range),
         mParams.filter, tr("Slope filter").toStdString());
