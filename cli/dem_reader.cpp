@@ -46,12 +46,16 @@ double mercator_ground_scale(const OGRSpatialReference& srs, const GeoTransform&
   return std::cos(y * M_PI / 180.0);
 }
 
+// Replaces the band's nodata value, if it has one, by the core's NaN in `values`.
+void nodata_to_nan(GDALRasterBand& band, float* values, std::size_t count) {
+  int has_nodata = 0;
+  const auto nodata = static_cast<float>(band.GetNoDataValue(&has_nodata));
+  if (has_nodata) std::replace(values, values + count, nodata, kNoData);
+}
+
 // Reads the band in blocks of rows, nodata to NaN, into dem.oriented.
 void read_band(const std::string& path, GDALRasterBand& band, Dem& dem,
                const GdalErrorCapture& capture) {
-  int has_nodata = 0;
-  const double nodata = band.GetNoDataValue(&has_nodata);
-  const float nodata_f = static_cast<float>(nodata);
   OrientedGridBuilder builder(dem.frame);
   const std::size_t block_rows = std::max<std::size_t>(1, (1u << 22) / dem.cols);
   std::vector<float> block(std::min(block_rows, dem.rows) * dem.cols);
@@ -62,11 +66,7 @@ void read_band(const std::string& path, GDALRasterBand& band, Dem& dem,
                       static_cast<int>(count), GDT_Float32, 0, 0) != CE_None) {
       throw Error("reading '" + path + "' failed: " + capture.message());
     }
-    if (has_nodata) {
-      for (std::size_t k = 0; k < count * dem.cols; ++k) {
-        if (block[k] == nodata_f) block[k] = kNoData;
-      }
-    }
+    nodata_to_nan(band, block.data(), count * dem.cols);
     builder.add_rows(r, count, block.data());
   }
   dem.oriented = builder.finish();
@@ -171,9 +171,7 @@ std::vector<HeightGrid> read_bands(const std::string& path) {
                        0) != CE_None) {
       throw Error("reading '" + path + "' failed: " + capture.message());
     }
-    int has_nodata = 0;
-    const auto nodata = static_cast<float>(band->GetNoDataValue(&has_nodata));
-    if (has_nodata) std::replace(grid.data(), grid.data() + grid.size(), nodata, kNoData);
+    nodata_to_nan(*band, grid.data(), grid.size());
     bands.push_back(std::move(grid));
   }
   return bands;
@@ -207,9 +205,7 @@ HeightGrid DemStripReader::read_profiles(std::size_t first, std::size_t count) {
                               0) != CE_None) {
     throw Error("reading '" + path_ + "' failed: " + capture.message());
   }
-  int has_nodata = 0;
-  const auto nodata = static_cast<float>(source_->band->GetNoDataValue(&has_nodata));
-  if (has_nodata) std::replace(window.data(), window.data() + window.size(), nodata, kNoData);
+  nodata_to_nan(*source_->band, window.data(), window.size());
   return orient_window(dem_.frame, window);
 }
 
