@@ -6,7 +6,6 @@
 
 #include <QIcon>
 #include <algorithm>
-#include <new>
 
 #include "errors.h"
 #include "plugin_paths.h"
@@ -109,11 +108,7 @@ FilterParams DemViewAlgorithm::readFilter(const QVariantMap& parameters,
 bool DemViewAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
                                         QgsProcessingContext& context,
                                         QgsProcessingFeedback* feedback) {
-  try {
-    mAzimuth = readParameters(parameters, context);
-  } catch (const Error& e) {
-    throw QgsProcessingException(QString::fromStdString(e.what()));
-  }
+  mAzimuth = withCoreErrors([&] { return readParameters(parameters, context); });
   QgsRasterLayer* layer = parameterAsRasterLayer(parameters, QStringLiteral("INPUT"), context);
   if (!layer) throw QgsProcessingException(invalidRasterError(parameters, QStringLiteral("INPUT")));
   mRaster = std::make_unique<RasterGrid>(
@@ -147,20 +142,14 @@ RasterGrid& DemViewAlgorithm::readRaster(QgsProcessingFeedback* feedback, double
 SilhouetteResult DemViewAlgorithm::runSilhouettes(const SilhouetteParams& params,
                                                   QgsProcessingFeedback* feedback, double from,
                                                   double to) {
-  try {
+  return withCoreErrors([&] {
     return run_silhouettes(mRaster->oriented(), mRaster->frame(), mRaster->geotransform(), params,
                            [feedback, from, to](double fraction) {
                              if (!feedback) return true;
                              feedback->setProgress(from + (to - from) * fraction);
                              return !feedback->isCanceled();
                            });
-  } catch (const Cancelled&) {
-    throw QgsProcessingException(tr("Cancelled."));
-  } catch (const Error& e) {
-    throw QgsProcessingException(QString::fromStdString(e.what()));
-  } catch (const std::bad_alloc&) {
-    throw QgsProcessingException(tr("Not enough memory for this raster."));
-  }
+  });
 }
 
 void DemViewAlgorithm::releaseRaster() {

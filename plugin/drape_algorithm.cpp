@@ -83,7 +83,7 @@ QVariantMap DrapeAlgorithm::processAlgorithm(const QVariantMap& parameters,
   const RasterGrid& raster = readRaster(feedback, 30);
   const std::size_t rows = raster.frame().dem_rows, cols = raster.frame().dem_cols;
   const QString path = parameterAsOutputLayer(parameters, QStringLiteral("OUTPUT"), context);
-  try {
+  withCoreErrors([&] {
     CellFlags flags;
     classify_visibility(raster.oriented(), raster.frame().d, mView, flags);
     const PlanObliqueDrape drape(raster.oriented(), flags, raster.frame(), mView,
@@ -97,19 +97,12 @@ QVariantMap DrapeAlgorithm::processAlgorithm(const QVariantMap& parameters,
       std::unique_ptr<QgsRasterBlock> block(
           mSource->block(band, mSource->extent(), static_cast<int>(cols), static_cast<int>(rows)));
       HeightGrid values(rows, cols);
-      for (std::size_t r = 0; r < rows; ++r)
-        for (std::size_t c = 0; c < cols; ++c) {
-          bool noData = false;
-          const double v = block->valueAndNoData(static_cast<int>(r), static_cast<int>(c), noData);
-          values(r, c) = noData ? kNoData : static_cast<float>(v);
-        }
+      copyHeights(*block, static_cast<int>(rows), values.data());
       bands.push_back(drape.drape(values));
       if (feedback) feedback->setProgress(30 + 60.0 * band / mSourceBands);
     }
     writeFloatRaster(path, bands, extent, raster.crs());
-  } catch (const Error& e) {
-    throw QgsProcessingException(QString::fromStdString(e.what()));
-  }
+  });
   releaseRaster();
   mSource.reset();
   return {{QStringLiteral("OUTPUT"), path}};

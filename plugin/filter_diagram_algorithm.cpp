@@ -53,15 +53,12 @@ QVariantMap FilterDiagramAlgorithm::processAlgorithm(const QVariantMap& paramete
                                                      QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 40);
   const SilhouetteResult result = runSilhouettes(mParams, feedback, 40, 90);
-  std::string html;
-  try {
+  const std::string html = withCoreErrors([&] {
     const double range = diagram_range_pct(mParams.filter);
-    html = filter_diagram_html(
+    return filter_diagram_html(
         slope_scatter(raster.oriented(), result.flags, raster.frame().d, raster.frame().w, range),
         mParams.filter, tr("Slope filter").toStdString());
-  } catch (const Error& e) {
-    throw QgsProcessingException(QString::fromStdString(e.what()));
-  }
+  });
   const QString path = parameterAsFileOutput(parameters, QStringLiteral("OUTPUT"), context);
   QFile file(path);
   if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||

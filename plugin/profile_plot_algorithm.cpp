@@ -58,15 +58,12 @@ QVariantMap ProfilePlotAlgorithm::processAlgorithm(const QVariantMap& parameters
                                                    QgsProcessingContext& context,
                                                    QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 50);
-  CellFlags flags;
-  std::vector<ProfileLine> lines;
-  try {
+  const std::vector<ProfileLine> lines = withCoreErrors([&] {
+    CellFlags flags;
     classify_visibility(raster.oriented(), raster.frame().d, mView, flags);
-    lines = profile_plot(raster.oriented(), flags, raster.frame(), mView, raster.geotransform(),
-                         static_cast<std::size_t>(mEvery), lowest_height(raster.oriented()));
-  } catch (const Error& e) {
-    throw QgsProcessingException(QString::fromStdString(e.what()));
-  }
+    return profile_plot(raster.oriented(), flags, raster.frame(), mView, raster.geotransform(),
+                        static_cast<std::size_t>(mEvery), lowest_height(raster.oriented()));
+  });
   QgsFields fields;
   fields.append(makeField(QStringLiteral("section"), FieldKind::Integer));
   fields.append(makeField(QStringLiteral("distance"), FieldKind::Real));

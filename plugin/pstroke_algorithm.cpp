@@ -91,13 +91,10 @@ QVariantMap PStrokeAlgorithm::processAlgorithm(const QVariantMap& parameters,
                                                QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 25);
   const SilhouetteResult result = runSilhouettes(mParams, feedback, 25, 40);
-  std::vector<PStroke> strokes;
-  try {
-    strokes = pstroke_sketch(raster.oriented(), result.flags, raster.frame(), mParams.view,
-                             raster.geotransform(), mParams.geometry, mPStrokes);
-  } catch (const Error& e) {
-    throw QgsProcessingException(QString::fromStdString(e.what()));
-  }
+  const std::vector<PStroke> strokes = withCoreErrors([&] {
+    return pstroke_sketch(raster.oriented(), result.flags, raster.frame(), mParams.view,
+                          raster.geotransform(), mParams.geometry, mPStrokes);
+  });
   QgsFields fields;
   fields.append(makeField(QStringLiteral("class"), FieldKind::Text));
   fields.append(makeField(QStringLiteral("score_m2"), FieldKind::Real));

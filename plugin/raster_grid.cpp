@@ -34,6 +34,8 @@ double mercatorGroundScale(const QgsCoordinateReferenceSystem& crs, const QgsRec
   }
 }
 
+}  // namespace
+
 // Copies a block of `count` rows into `out` as floats with NaN for nodata. Float32 blocks whose
 // nodata is a plain value (or absent) are copied in bulk; anything else cell by cell.
 void copyHeights(QgsRasterBlock& block, int count, float* out) {
@@ -56,8 +58,6 @@ void copyHeights(QgsRasterBlock& block, int count, float* out) {
     }
   }
 }
-
-}  // namespace
 
 RasterGrid::RasterGrid(QgsRasterLayer* layer, int band,
                        const QgsCoordinateTransformContext& transforms) {

@@ -12,12 +12,16 @@
 #include "orient.h"
 #include "strokes.h"
 
+class QgsRasterBlock;
 class QgsRasterDataProvider;
 class QgsRasterLayer;
 class QgsProcessingFeedback;
 class QgsCoordinateTransformContext;
 
 namespace tsk::plugin {
+
+// Copies a raster block of `count` rows into `out` as floats with NaN for nodata.
+void copyHeights(QgsRasterBlock& block, int count, float* out);
 
 class RasterGrid {
   Q_DECLARE_TR_FUNCTIONS(RasterGrid)

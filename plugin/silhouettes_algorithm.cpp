@@ -144,22 +144,13 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
   const std::size_t strip =
       mStrips > 0 ? static_cast<std::size_t>(mStrips)
                   : automatic_strip_profiles(frame.dem_rows, frame.dem_cols, frame.resampled);
-  if (strip == 0) readRaster(feedback, kReadEnd);
   SilhouetteResult result;
-  try {
-    if (strip > 0) {
-      if (feedback)
-        feedback->pushInfo(tr("Processing the DEM in strips of %1 profiles.").arg(strip));
-      result = runInStrips(strip, feedback);
-    } else {
-      result = runSilhouettes(mParams, feedback, kReadEnd, kCoreEnd);
-    }
-  } catch (const Cancelled&) {
-    throw QgsProcessingException(tr("Cancelled."));
-  } catch (const Error& e) {
-    throw QgsProcessingException(QString::fromStdString(e.what()));
-  } catch (const std::bad_alloc&) {
-    throw QgsProcessingException(tr("Not enough memory for this raster."));
+  if (strip > 0) {
+    if (feedback) feedback->pushInfo(tr("Processing the DEM in strips of %1 profiles.").arg(strip));
+    result = withCoreErrors([&] { return runInStrips(strip, feedback); });
+  } else {
+    readRaster(feedback, kReadEnd);
+    result = runSilhouettes(mParams, feedback, kReadEnd, kCoreEnd);
   }
 
   const QgsFields fields = strokeFields();
