@@ -3,29 +3,37 @@
 <context>
     <name>ClassificationAlgorithm</name>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="20" />
+        <location filename="../plugin/classification_algorithm.cpp" line="19" />
         <source>Silhouette stages (classification raster)</source>
         <translation>Silhouetten-Stufen (Klassifikationsraster)</translation>
     </message>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="24" />
+        <location filename="../plugin/classification_algorithm.cpp" line="23" />
         <source>Shows what the silhouette method does to every cell of the DEM, on the DEM's own grid: 1 visible, 2 hidden, 3 occluding (Factual Silhouette), 4 c-set (back-facing slope brought into view), 5 f-set (kept by the slope filter), 6 t-set (kept by thinning); 0 is nodata. Styled like the thesis's map views: occlusion red, hidden zones blue, c-set light grey, f-set dark grey. The stage statistics are in the results and the log.</source>
         <translation>Zeigt, was das Silhouettenverfahren mit jeder Zelle des DGM macht, auf dem eigenen Gitter des DGM: 1 sichtbar, 2 verdeckt, 3 verdeckend (faktische Silhouette), 4 c-Menge (abgewandter Hang, der sichtbar wird), 5 f-Menge (vom Neigungsfilter behalten), 6 t-Menge (von der Ausdünnung behalten); 0 ist NoData. Gestaltet wie die Kartenansichten der Dissertation: Verdeckung rot, verdeckte Zonen blau, c-Menge hellgrau, f-Menge dunkelgrau. Die Stufenstatistik steht in den Ergebnissen und im Protokoll.</translation>
     </message>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="41" />
+        <location filename="../plugin/classification_algorithm.cpp" line="40" />
         <source>Silhouette stages</source>
         <translation>Silhouetten-Stufen</translation>
     </message>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="42" />
+        <location filename="../plugin/classification_algorithm.cpp" line="41" />
         <source>Byte raster of stage classes on the DEM's grid.</source>
         <translation>Byte-Raster der Stufenklassen auf dem Gitter des DGM.</translation>
     </message>
+</context>
+<context>
+    <name>CoreErrors</name>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="70" />
+        <location filename="../plugin/core_errors.h" line="24" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/core_errors.h" line="28" />
+        <source>Not enough memory for this raster.</source>
+        <translation>Nicht genug Speicher für dieses Raster.</translation>
     </message>
 </context>
 <context>
@@ -121,7 +129,7 @@
         <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="134" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="130" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -193,12 +201,12 @@
         <translation>HTML-Seite mit dem Diagramm als SVG.</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="63" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="60" />
         <source>Slope filter</source>
         <translation>Neigungsfilter</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="72" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="67" />
         <source>Could not write %1.</source>
         <translation>%1 konnte nicht geschrieben werden.</translation>
     </message>
@@ -295,11 +303,6 @@
         <source>P-strokes as lines with their class and score.</source>
         <translation>P-Striche als Linien mit ihrer Klasse und Bewertung.</translation>
     </message>
-    <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="97" />
-        <source>Cancelled.</source>
-        <translation>Abgebrochen.</translation>
-    </message>
 </context>
 <context>
     <name>ProfilePlotAlgorithm</name>
@@ -385,22 +388,22 @@
         <translation>Der Datenanbieter des Rasters konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="127" />
+        <location filename="../plugin/raster_grid.cpp" line="126" />
         <source>Could not read profiles %1 to %2 of the raster.</source>
         <translation>Die Profile %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="154" />
+        <location filename="../plugin/raster_grid.cpp" line="149" />
         <source>Not enough memory for a %1 x %2 raster.</source>
         <translation>Nicht genug Speicher für ein Raster von %1 x %2.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="165" />
+        <location filename="../plugin/raster_grid.cpp" line="160" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="172" />
+        <location filename="../plugin/raster_grid.cpp" line="167" />
         <source>Could not read rows %1 to %2 of the raster.</source>
         <translation>Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
     </message>
@@ -444,22 +447,22 @@
 <context>
     <name>SilhouettesAlgorithm</name>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="42" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="40" />
         <source>Silhouettes (factual and formulated)</source>
         <translation>Silhouetten (faktisch und formuliert)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="46" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="44" />
         <source>silhouette,occluding contour,sketch,oblique,panorama,block diagram,plan oblique,terrain,dem,hidden</source>
         <translation>Silhouette,Verdeckungskontur,Skizze,Schrägansicht,Panorama,Blockbild,Plan oblique,Gelände,DGM,verdeckt</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="52" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="50" />
         <source>Draws the silhouette lines of a DEM seen obliquely from above as vector strokes.</source>
         <translation>Zeichnet die Silhouettenlinien eines schräg von oben gesehenen DGM als Vektorstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="56" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="54" />
         <source>Finds the lines a cartographer sketches first when drawing terrain seen obliquely from above.
 
 Factual Silhouettes are occluding contours: cells beyond which the terrain hides what lies behind it, in a parallel view with vertical exaggeration and a base slope added along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view brings into sight (the candidate set), kept where the slope filter finds them significant (outside the weak/weak corner of column slope against row slope), thinned to the cell furthest from the viewer and chained across profiles.
@@ -480,119 +483,109 @@ Zwei Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter
 Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="91" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="89" />
         <source>Chaining window (cells)</source>
         <translation>Verkettungsfenster (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="92" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="90" />
         <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
         <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="91" />
         <source>Minimum stroke cells</source>
         <translation>Mindestzahl Zellen je Strich</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="94" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="92" />
         <source>Strokes with fewer cells are dropped (generalisation).</source>
         <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="95" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
         <source>Geometry</source>
         <translation>Geometrie</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="96" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="94" />
         <source>Map (cell centres)</source>
         <translation>Karte (Zellmittelpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="96" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="94" />
         <source>Plan oblique (the sketch)</source>
         <translation>Plan oblique (die Skizze)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="98" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="96" />
         <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
         <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="101" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="99" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="100" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="100" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="104" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="105" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="103" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="106" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="104" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="109" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="107" />
         <source>Profiles per strip (0: automatic)</source>
         <translation>Profile je Streifen (0: automatisch)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="110" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="108" />
         <source>For DEMs larger than memory (cardinal views): read and process this many profiles at a time. 0 reads the DEM whole unless it would not fit in half of the memory.</source>
         <translation>Für DGM, die größer als der Speicher sind (Haupthimmelsrichtungen): so viele Profile auf einmal lesen und verarbeiten. 0 liest das DGM ganz, es sei denn, es passte nicht in die Hälfte des Speichers.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="114" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="112" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="114" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="156" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="149" />
         <source>Processing the DEM in strips of %1 profiles.</source>
         <translation>Das DGM wird in Streifen zu %1 Profilen verarbeitet.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="168" />
-        <source>Cancelled.</source>
-        <translation>Abgebrochen.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="172" />
-        <source>Not enough memory for this raster.</source>
-        <translation>Nicht genug Speicher für dieses Raster.</translation>
     </message>
 </context>
 <context>

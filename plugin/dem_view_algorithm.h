@@ -6,9 +6,8 @@
 
 #include <QCoreApplication>
 #include <memory>
-#include <new>
 
-#include "errors.h"
+#include "core_errors.h"
 #include "params.h"
 #include "silhouettes.h"
 
@@ -52,21 +51,6 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   // Worker thread: reads the DEM oriented for the azimuth, progress 0 to `progressTo` percent.
   RasterGrid& readRaster(QgsProcessingFeedback* feedback, double progressTo);
   void releaseRaster();
-
-  // Runs `work`, turning the core's errors, cancellation and memory exhaustion into
-  // QgsProcessingException with a message for the log.
-  template <typename Work>
-  static auto withCoreErrors(Work&& work) -> decltype(work()) {
-    try {
-      return work();
-    } catch (const Cancelled&) {
-      throw QgsProcessingException(tr("Cancelled."));
-    } catch (const Error& e) {
-      throw QgsProcessingException(QString::fromStdString(e.what()));
-    } catch (const std::bad_alloc&) {
-      throw QgsProcessingException(tr("Not enough memory for this raster."));
-    }
-  }
 
   // Runs the silhouette method on the raster read by readRaster(), moving progress from `from`
   // to `to` percent and stopping on cancel; the core's errors become QgsProcessingException.

@@ -13,7 +13,7 @@
 #include <new>
 #include <vector>
 
-#include "errors.h"
+#include "core_errors.h"
 #include "qgis_compat.h"
 
 namespace tsk::plugin {
@@ -105,16 +105,14 @@ void RasterGrid::setView(double azimuthDeg) {
   const double dx = mExtent.width() / mCols;
   const double dy = mExtent.height() / mRows;
   mGeoTransform.a = {mExtent.xMinimum(), dx, 0.0, mExtent.yMaximum(), 0.0, -dy};
-  try {
-    mFrame = make_frame(static_cast<std::size_t>(mRows), static_cast<std::size_t>(mCols),
-                        dx * mGroundScale, dy * mGroundScale, azimuthDeg);
-  } catch (const Error& e) {
-    throw QgsProcessingException(QString::fromStdString(e.what()));
-  }
+  mFrame = withCoreErrors([&] {
+    return make_frame(static_cast<std::size_t>(mRows), static_cast<std::size_t>(mCols),
+                      dx * mGroundScale, dy * mGroundScale, azimuthDeg);
+  });
 }
 
 HeightGrid RasterGrid::readProfiles(std::size_t first, std::size_t count) {
-  try {
+  return withCoreErrors([&] {
     const DemWindow w = profile_window(mFrame, first, count);
     const double dx = mExtent.width() / mCols, dy = mExtent.height() / mRows;
     const QgsRectangle rect(mExtent.xMinimum() + static_cast<double>(w.col0) * dx,
@@ -130,9 +128,7 @@ HeightGrid RasterGrid::readProfiles(std::size_t first, std::size_t count) {
     HeightGrid window(w.rows, w.cols);
     copyHeights(*block, static_cast<int>(w.rows), window.data());
     return orient_window(mFrame, window);
-  } catch (const Error& e) {
-    throw QgsProcessingException(QString::fromStdString(e.what()));
-  }
+  });
 }
 
 double RasterGrid::lowestHeight() {
