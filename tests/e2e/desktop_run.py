@@ -5,13 +5,31 @@ import json
 import os
 import traceback
 
-from qgis.core import QgsApplication, QgsProject, QgsRectangle
+from qgis.core import QgsApplication, QgsProcessingFeedback, QgsProject, QgsRectangle
 from qgis.PyQt.QtCore import QTimer
 from qgis.utils import iface
 
 OUT = os.environ["TSK_E2E_OUT"]
 DEM = os.environ["TSK_E2E_DEM"]
-report = {"ok": False, "screenshots": []}
+report = {"ok": False, "screenshots": [], "log": [], "not_loaded": {}}
+
+
+def record_message(message, tag, level):
+    report["log"].append("%s [%d] %s" % (tag, int(level), message))
+
+
+QgsApplication.messageLog().messageReceived.connect(record_message)
+
+
+class RecordingFeedback(QgsProcessingFeedback):
+    """Keeps what an algorithm and the result loading report, for the report on failure."""
+
+    def __init__(self):
+        super().__init__()
+        self.errors = []
+
+    def reportError(self, error, fatalError=False):
+        self.errors.append(error)
 
 
 def finish():
@@ -75,6 +93,27 @@ def take(index):
         finish()
 
 
+def loaded_layer(path):
+    for layer in QgsProject.instance().mapLayers().values():
+        if layer.source().split("|")[0] == path:
+            return layer
+    return None
+
+
+def run_and_load(alg, params):
+    """Runs an algorithm as the Processing toolbox does and notes outputs that did not load."""
+    import processing
+    feedback = RecordingFeedback()
+    results = processing.runAndLoadResults(alg, params, feedback=feedback)
+    report["results"][alg] = {k: (v if isinstance(v, (int, float)) else str(v))
+                              for k, v in results.items()}
+    for key, value in params.items():
+        if key in results and isinstance(value, str) and value.startswith(OUT):
+            if loaded_layer(value) is None:
+                report["not_loaded"][value] = feedback.errors
+    return results
+
+
 def run():
     try:
         import processing
@@ -94,25 +133,39 @@ def run():
                                             "OUTPUT": os.path.join(OUT, "pstrokes.gpkg")})]
         report["results"] = {}
         for alg, params in runs:
-            results = processing.runAndLoadResults(alg, dict(common, **params))
-            report["results"][alg] = {k: (v if isinstance(v, (int, float)) else str(v))
-                                      for k, v in results.items()}
+            run_and_load(alg, dict(common, **params))
         hillshade = processing.run("native:hillshade", {"INPUT": DEM, "Z_FACTOR": 2.5,
                                                          "AZIMUTH": 300, "V_ANGLE": 40,
                                                          "OUTPUT": os.path.join(OUT, "hs.tif")})
-        processing.runAndLoadResults("terrainsketch:drape", dict(
-            common, SOURCE=hillshade["OUTPUT"], OUTPUT=os.path.join(OUT, "draped.tif")))
+        draped_path = os.path.join(OUT, "draped.tif")
+        run_and_load("terrainsketch:drape", dict(common, SOURCE=hillshade["OUTPUT"],
+                                                 OUTPUT=draped_path))
+        report["layers"] = [describe(l) for l in QgsProject.instance().mapLayers().values()]
         # The draped raster goes to the bottom, under the strokes.
+        draped = loaded_layer(draped_path)
+        if draped is None:
+            raise RuntimeError("the draped raster was not loaded")
         root = QgsProject.instance().layerTreeRoot()
-        draped = QgsProject.instance().mapLayersByName("Draped raster")[0]
         node = root.findLayer(draped.id())
         root.insertChildNode(-1, node.clone())
         node.parent().removeChildNode(node)
-        report["layers"] = [describe(l) for l in QgsProject.instance().mapLayers().values()]
         take(0)
     except Exception:
         report["error"] = traceback.format_exc()
         finish()
 
 
-QTimer.singleShot(1000, run)
+def when_ready(waited_ms=0):
+    """Starts once the main window is up and both providers are registered, so the run does not
+    race the end of QGIS's start-up on a slow machine."""
+    registry = QgsApplication.processingRegistry()
+    ready = (iface.mainWindow().isVisible() and registry.providerById("native") is not None
+             and registry.providerById("terrainsketch") is not None)
+    if ready or waited_ms >= 60000:
+        report["start_wait_ms"] = waited_ms
+        QTimer.singleShot(1000, run)
+    else:
+        QTimer.singleShot(250, lambda: when_ready(waited_ms + 250))
+
+
+QTimer.singleShot(0, when_ready)

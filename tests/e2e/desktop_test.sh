@@ -18,10 +18,13 @@ checkVersion=false
 showTips=false
 INI
 export TSK_E2E_OUT="$out" TSK_E2E_DEM="$dem"
-timeout 180 xvfb-run -a -s "-screen 0 1600x1000x24" /usr/bin/qgis.bin --profiles-path "$profiles" \
-  --nologo --noversioncheck --code "$here/desktop_run.py" > "$out/qgis.log" 2>&1 || true
-[ -f "$out/report.json" ] || { echo "no report; QGIS log:"; tail -40 "$out/qgis.log"; exit 1; }
-/usr/bin/python3 - "$out/report.json" <<'PY'
+
+run_qgis() {
+  rm -f "$out/report.json"
+  timeout 180 xvfb-run -a -s "-screen 0 1600x1000x24" /usr/bin/qgis.bin --profiles-path "$profiles" \
+    --nologo --noversioncheck --code "$here/desktop_run.py" > "$out/qgis.log" 2>&1 || true
+  [ -f "$out/report.json" ] || { echo "no report; QGIS log:"; tail -40 "$out/qgis.log"; return 1; }
+  /usr/bin/python3 - "$out/report.json" <<'PY'
 import json, os, sys
 r = json.load(open(sys.argv[1]))
 errors = []
@@ -30,6 +33,7 @@ def check(cond, what):
 check(r.get("ok"), "run finished: %s" % r.get("error"))
 check(r.get("provider"), "provider registered")
 check(r.get("plugin_active"), "plugin active in the plugin manager")
+check(not r.get("not_loaded"), "outputs not loaded: %s" % r.get("not_loaded"))
 layers = {l["name"]: l for l in r.get("layers", [])}
 check(len(layers) == 7, "seven layers loaded, got %s" % list(layers))
 for name, colour, field in (("Factual silhouettes", "#111111", "mean_depth"),
@@ -50,6 +54,19 @@ check("Draped raster" in layers, "draped raster loaded")
 for shot in shots:
     check(os.path.exists(shot) and os.path.getsize(shot) > 10000, "screenshot " + shot)
 if errors:
-    print("FAILED:\n  " + "\n  ".join(errors)); sys.exit(1)
+    print("FAILED:\n  " + "\n  ".join(errors))
+    print("QGIS message log (last 30):\n  " + "\n  ".join(r.get("log", [])[-30:]))
+    sys.exit(1)
 print("desktop end-to-end: 1 passed, 0 failed")
 PY
+}
+
+# A desktop session under Xvfb can trip over the window system on a loaded machine, so a failed
+# session is run once more; the first failure stays printed above the second run's result and
+# its report and log are kept beside them.
+if ! run_qgis; then
+  cp "$out/qgis.log" "$out/attempt1-qgis.log"
+  [ -f "$out/report.json" ] && cp "$out/report.json" "$out/attempt1-report.json"
+  echo "first desktop session failed (kept as attempt1-*); running it once more"
+  run_qgis
+fi
