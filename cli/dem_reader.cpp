@@ -164,7 +164,7 @@ std::vector<HeightGrid> read_bands(const std::string& path) {
   const auto cols = static_cast<std::size_t>(dataset->GetRasterXSize());
   std::vector<HeightGrid> bands;
   for (int b = 1; b <= dataset->GetRasterCount(); ++b) {
-    HeightGrid grid(rows, cols);
+    HeightGrid grid(rows, cols, kUnset);
     GDALRasterBand* band = dataset->GetRasterBand(b);
     if (band->RasterIO(GF_Read, 0, 0, static_cast<int>(cols), static_cast<int>(rows), grid.data(),
                        static_cast<int>(cols), static_cast<int>(rows), GDT_Float32, 0,
@@ -198,7 +198,7 @@ DemStripReader::~DemStripReader() = default;
 HeightGrid DemStripReader::read_profiles(std::size_t first, std::size_t count) {
   GdalErrorCapture capture;
   const DemWindow w = profile_window(dem_.frame, first, count);
-  HeightGrid window(w.rows, w.cols);
+  HeightGrid window(w.rows, w.cols, kUnset);
   if (source_->band->RasterIO(GF_Read, static_cast<int>(w.col0), static_cast<int>(w.row0),
                               static_cast<int>(w.cols), static_cast<int>(w.rows), window.data(),
                               static_cast<int>(w.cols), static_cast<int>(w.rows), GDT_Float32, 0,

@@ -37,10 +37,10 @@ std::vector<Chain> link_grid(const CellFlags& flags, bool factual, int window) {
   for (std::size_t p = 0; p < flags.rows(); ++p) {
     ProfileCandidates c = profile_candidates(flags.row(p), flags.cols(), factual);
     const std::vector<std::int32_t> cells = c.cell;
-    const auto& ids = linker.add_profile(std::move(c));
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-      if (ids[k] >= chains.size()) chains.resize(ids[k] + 1);
-      chains[ids[k]].push_back({static_cast<std::int32_t>(p), cells[k]});
+    const auto& joined = linker.add_profile(std::move(c));
+    for (std::size_t k = 0; k < joined.size(); ++k) {
+      if (joined[k].id >= chains.size()) chains.resize(joined[k].id + 1);
+      chains[joined[k].id].push_back({static_cast<std::int32_t>(p), cells[k]});
     }
   }
   chains.erase(
@@ -73,38 +73,47 @@ ProfileCandidates profile_candidates(const std::uint8_t* f, std::size_t length, 
 
 ChainLinker::ChainLinker(bool factual, int window) : factual_(factual), window_(window) {}
 
-const std::vector<std::size_t>& ChainLinker::add_profile(ProfileCandidates next) {
-  std::vector<std::uint8_t> used(next.cell.size(), 0);
-  joined_.assign(next.cell.size(), 0);
+std::uint32_t ChainLinker::take_slot() {
+  if (free_slots_.empty()) return slot_count_++;
+  const std::uint32_t slot = free_slots_.back();
+  free_slots_.pop_back();
+  return slot;
+}
+
+const std::vector<ChainRef>& ChainLinker::add_profile(ProfileCandidates next) {
+  for (const ChainRef& c : closed_) free_slots_.push_back(c.slot);
+  used_.assign(next.cell.size(), 0);
+  joined_.assign(next.cell.size(), ChainRef{0, 0});
   closed_.clear();
-  std::vector<Open> still_open;
+  still_open_.clear();
   for (const Open& o : open_) {
     const std::int32_t i = last_.cell[o.k];
     const std::int32_t lo = factual_ ? i : i - window_;
     const std::int32_t hi = factual_ ? last_.reach[o.k] : i + window_;
-    const std::ptrdiff_t found = nearest_overlapping(next, used, i, lo, hi);
+    const std::ptrdiff_t found = nearest_overlapping(next, used_, i, lo, hi);
     if (found < 0) {
-      closed_.push_back(o.id);
+      closed_.push_back(o.chain);
       continue;
     }
     const auto k = static_cast<std::size_t>(found);
-    used[k] = 1;
-    joined_[k] = o.id;
-    still_open.push_back({o.id, k});
+    used_[k] = 1;
+    joined_[k] = o.chain;
+    still_open_.push_back({o.chain, k});
   }
   for (std::size_t k = 0; k < next.cell.size(); ++k) {
-    if (used[k]) continue;
-    joined_[k] = started_;
-    still_open.push_back({started_++, k});
+    if (used_[k]) continue;
+    joined_[k] = ChainRef{started_++, take_slot()};
+    still_open_.push_back({joined_[k], k});
   }
-  open_ = std::move(still_open);
+  std::swap(open_, still_open_);
   last_ = std::move(next);
   return joined_;
 }
 
-const std::vector<std::size_t>& ChainLinker::close_all() {
+const std::vector<ChainRef>& ChainLinker::close_all() {
+  for (const ChainRef& c : closed_) free_slots_.push_back(c.slot);
   closed_.clear();
-  for (const Open& o : open_) closed_.push_back(o.id);
+  for (const Open& o : open_) closed_.push_back(o.chain);
   open_.clear();
   return closed_;
 }

@@ -27,6 +27,14 @@ struct ProfileCandidates {
 // The candidates of profile p: occluding cells with their hidden zones (factual) or t-set cells.
 ProfileCandidates profile_candidates(const std::uint8_t* flags, std::size_t length, bool factual);
 
+// A chain as the linker reports it: its id (ids count up in the order chains are started) and
+// its slot, a small index that a closed chain hands on to a later one, so a caller can keep the
+// cells of open chains in a vector indexed by slot and reuse its storage.
+struct ChainRef {
+  std::size_t id;
+  std::uint32_t slot;
+};
+
 // Links profiles given one at a time, left to right, as SPEC 1.7 scans them: every chain is grown
 // as far right as it goes before the next unused cell (front to back) starts one. In each new
 // profile the open chains pick their cell in the order they were started (older first), nearest
@@ -35,25 +43,32 @@ class ChainLinker {
  public:
   ChainLinker(bool factual, int window);
 
-  // Links the next profile. Returns, for each of its candidates, the id of the chain it joined
-  // (ids count up in the order chains are started).
-  const std::vector<std::size_t>& add_profile(ProfileCandidates candidates);
-  // The chains that the last add_profile() could not extend: they are complete.
-  const std::vector<std::size_t>& closed() const { return closed_; }
-  // Closes every chain still open (after the last profile) and returns their ids.
-  const std::vector<std::size_t>& close_all();
+  // Links the next profile. Returns, for each of its candidates, the chain it joined.
+  const std::vector<ChainRef>& add_profile(ProfileCandidates candidates);
+  // The chains that the last add_profile() could not extend: they are complete. Their slots are
+  // handed on only from the next call on.
+  const std::vector<ChainRef>& closed() const { return closed_; }
+  // Closes every chain still open (after the last profile) and returns them.
+  const std::vector<ChainRef>& close_all();
+  // One more than the largest slot handed out so far.
+  std::size_t slot_count() const { return slot_count_; }
 
  private:
   struct Open {
-    std::size_t id;
+    ChainRef chain;
     std::size_t k;  // index of the chain's last cell in the last profile
   };
+  std::uint32_t take_slot();
+
   bool factual_;
   int window_;
   ProfileCandidates last_;
-  std::vector<Open> open_;
-  std::vector<std::size_t> joined_, closed_;
+  std::vector<Open> open_, still_open_;
+  std::vector<ChainRef> joined_, closed_;
+  std::vector<std::uint8_t> used_;
+  std::vector<std::uint32_t> free_slots_;
   std::size_t started_ = 0;
+  std::uint32_t slot_count_ = 0;
 };
 
 // Factual Silhouettes: an occluding cell links to the unused occluding cell on the next profile

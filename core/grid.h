@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "errors.h"
+#include "large_pages.h"
 
 namespace tsk {
 
@@ -29,12 +30,18 @@ inline std::size_t checked_cell_count(std::size_t rows, std::size_t cols) {
   return rows * cols;
 }
 
+// Tag for a grid whose cells are left unset because every one of them is written next.
+struct Unset {};
+constexpr Unset kUnset{};
+
 template <typename T>
 class Grid {
  public:
   Grid() = default;
   Grid(std::size_t rows, std::size_t cols, T fill = T{})
       : rows_(rows), cols_(cols), cells_(checked_cell_count(rows, cols), fill) {}
+  Grid(std::size_t rows, std::size_t cols, Unset)
+      : rows_(rows), cols_(cols), cells_(checked_cell_count(rows, cols)) {}
 
   std::size_t rows() const { return rows_; }
   std::size_t cols() const { return cols_; }
@@ -63,7 +70,7 @@ class Grid {
  private:
   std::size_t rows_ = 0;
   std::size_t cols_ = 0;
-  std::vector<T> cells_;
+  std::vector<T, LargePageAllocator<T>> cells_;
 };
 
 using HeightGrid = Grid<float>;

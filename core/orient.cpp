@@ -223,7 +223,7 @@ HeightGrid orient(const HeightGrid& dem, const OrientedFrame& frame, unsigned th
   if (dem.rows() != frame.dem_rows || dem.cols() != frame.dem_cols) {
     throw Error("the DEM does not match the oriented frame");
   }
-  HeightGrid oriented(frame.profiles, frame.length);
+  HeightGrid oriented(frame.profiles, frame.length, kUnset);
   if (!frame.resampled) {
     scatter_dem_rows(frame, 0, dem.rows(), dem.data(), dem.cols(), oriented);
     return oriented;
@@ -242,8 +242,8 @@ HeightGrid orient(const HeightGrid& dem, const OrientedFrame& frame, unsigned th
 
 OrientedGridBuilder::OrientedGridBuilder(const OrientedFrame& frame)
     : frame_(frame),
-      grid_(frame.resampled ? HeightGrid(frame.dem_rows, frame.dem_cols)
-                            : HeightGrid(frame.profiles, frame.length)) {}
+      grid_(frame.resampled ? HeightGrid(frame.dem_rows, frame.dem_cols, kUnset)
+                            : HeightGrid(frame.profiles, frame.length, kUnset)) {}
 
 void OrientedGridBuilder::add_rows(std::size_t first_row, std::size_t count, const float* rows) {
   if (!frame_.resampled) {

@@ -5,9 +5,10 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <exception>
 #include <limits>
 #include <mutex>
-#include <unordered_map>
+#include <thread>
 
 #include "candidates.h"
 #include "chaining.h"
@@ -72,8 +73,8 @@ struct SilhouetteStream::State {
   ProgressFn progress;
   std::size_t next_profile = 0;
   ChainLinker factual{true, 0}, formulated{false, 0};
-  // Cells of the chains still open, by chain id, and the strokes of the closed ones with their id.
-  std::unordered_map<std::size_t, std::vector<StrokeCell>> open_factual, open_formulated;
+  // Cells of the chains still open, by slot, and the strokes of the closed ones with their id.
+  std::vector<std::vector<StrokeCell>> open_factual, open_formulated;
   std::vector<std::pair<std::size_t, Stroke>> done_factual, done_formulated;
   SilhouetteResult result;
 
@@ -88,22 +89,23 @@ struct SilhouetteStream::State {
 
   // Moves the cells of profile candidates into their chains and finishes the closed chains.
   void link(ChainLinker& linker, ProfileCandidates&& candidates, std::vector<StrokeCell>&& cells,
-            std::unordered_map<std::size_t, std::vector<StrokeCell>>& open,
+            std::vector<std::vector<StrokeCell>>& open,
             std::vector<std::pair<std::size_t, Stroke>>& done, StrokeClass cls) {
-    const auto& ids = linker.add_profile(std::move(candidates));
-    for (std::size_t k = 0; k < ids.size(); ++k) open[ids[k]].push_back(std::move(cells[k]));
+    const auto& joined = linker.add_profile(std::move(candidates));
+    if (open.size() < linker.slot_count()) open.resize(linker.slot_count());
+    for (std::size_t k = 0; k < joined.size(); ++k) open[joined[k].slot].push_back(cells[k]);
     close(linker.closed(), open, done, cls);
   }
 
-  void close(const std::vector<std::size_t>& ids,
-             std::unordered_map<std::size_t, std::vector<StrokeCell>>& open,
+  // Keeps the strokes of closed chains long enough to draw; their slots' storage is reused.
+  void close(const std::vector<ChainRef>& chains, std::vector<std::vector<StrokeCell>>& open,
              std::vector<std::pair<std::size_t, Stroke>>& done, StrokeClass cls) {
-    for (std::size_t id : ids) {
-      auto it = open.find(id);
-      if (static_cast<int>(it->second.size()) >= params.chain.min_cells) {
-        done.emplace_back(id, stroke_from_cells(it->second, cls));
+    for (const ChainRef& chain : chains) {
+      std::vector<StrokeCell>& cells = open[chain.slot];
+      if (static_cast<int>(cells.size()) >= params.chain.min_cells) {
+        done.emplace_back(chain.id, stroke_from_cells(cells, cls));
       }
-      open.erase(it);
+      cells.clear();
     }
   }
 };
@@ -160,18 +162,16 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
   const StrokeContext context{
       z,        flags,         frame, view, st.geotransform, st.params.geometry, st.params.subcell,
       st.z_ref, first - before};
-  // Batches of profiles: candidates and their cell records in parallel, then linked in order.
+  // Batches of profiles: candidates and their cell records are collected in parallel, then
+  // linked in order on a thread of their own while the next batch is collected.
   constexpr std::size_t kBatch = 256;
   struct Collected {
     ProfileCandidates factual, formulated;
     std::vector<StrokeCell> factual_cells, formulated_cells;
   };
-  std::vector<Collected> batch;
-  const ProgressFn link_progress = progress_of(4);
-  for (std::size_t b0 = 0; b0 < count; b0 += kBatch) {
-    const std::size_t n = std::min(kBatch, count - b0);
-    batch.assign(n, {});
-    parallel_for(n, threads, [&](std::size_t lo, std::size_t hi) {
+  auto collect = [&](std::size_t b0, std::vector<Collected>& batch) {
+    batch.assign(std::min(kBatch, count - b0), {});
+    parallel_for(batch.size(), threads, [&](std::size_t lo, std::size_t hi) {
       for (std::size_t k = lo; k < hi; ++k) {
         const std::size_t row = before + b0 + k, p = first + b0 + k;
         Collected& c = batch[k];
@@ -183,13 +183,40 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
           c.formulated_cells.push_back(stroke_cell(context, p, static_cast<std::size_t>(i), false));
       }
     });
+  };
+  auto link = [&st](std::vector<Collected>& batch) {
     for (Collected& c : batch) {
       st.link(st.factual, std::move(c.factual), std::move(c.factual_cells), st.open_factual,
               st.done_factual, StrokeClass::factual);
       st.link(st.formulated, std::move(c.formulated), std::move(c.formulated_cells),
               st.open_formulated, st.done_formulated, StrokeClass::formulated);
     }
-    if (link_progress && !link_progress(static_cast<double>(b0 + n) / count)) throw Cancelled();
+  };
+  const ProgressFn link_progress = progress_of(4);
+  std::vector<Collected> linking, collecting;
+  collect(0, linking);
+  for (std::size_t b0 = 0; b0 < count; b0 += kBatch) {
+    const std::size_t next = b0 + kBatch;
+    std::exception_ptr link_failure;
+    std::thread linker([&] {
+      try {
+        link(linking);
+      } catch (...) {
+        link_failure = std::current_exception();
+      }
+    });
+    try {
+      if (next < count) collect(next, collecting);
+    } catch (...) {
+      linker.join();
+      throw;
+    }
+    linker.join();
+    if (link_failure) std::rethrow_exception(link_failure);
+    std::swap(linking, collecting);
+    if (link_progress && !link_progress(static_cast<double>(std::min(next, count)) / count)) {
+      throw Cancelled();
+    }
   }
   time.chaining += seconds_since(start);
   if (keep_flags) st.result.flags = std::move(flags);

@@ -125,7 +125,7 @@ HeightGrid RasterGrid::readProfiles(std::size_t first, std::size_t count) {
       throw QgsProcessingException(
           tr("Could not read profiles %1 to %2 of the raster.").arg(first).arg(first + count - 1));
     }
-    HeightGrid window(w.rows, w.cols);
+    HeightGrid window(w.rows, w.cols, kUnset);
     copyHeights(*block, static_cast<int>(w.rows), window.data());
     return orient_window(mFrame, window);
   });
