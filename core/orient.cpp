@@ -188,35 +188,58 @@ HeightGrid orient_window(const OrientedFrame& frame, const HeightGrid& window) {
   return orient(window, make_frame(window.rows(), window.cols(), 1, 1, frame.azimuth_deg));
 }
 
+namespace {
+
+// Bilinear sampling of one DEM, with what every sample needs worked out once.
+class BilinearSampler {
+ public:
+  explicit BilinearSampler(const HeightGrid& dem)
+      : z_(dem.data()),
+        cols_(dem.cols()),
+        last_col_(static_cast<double>(dem.cols() - 1)),
+        last_row_(static_cast<double>(dem.rows() - 1)),
+        max_c0_(dem.cols() > 1 ? dem.cols() - 2 : 0),
+        max_r0_(dem.rows() > 1 ? dem.rows() - 2 : 0),
+        dc_(dem.cols() > 1 ? 1 : 0),
+        dr_(dem.rows() > 1 ? cols_ : 0) {}
+
+  float operator()(double col, double row) const {
+    constexpr double kEdge = 1e-9;
+    const double u = col - 0.5, v = row - 0.5;
+    if (!(u >= -kEdge && u <= last_col_ + kEdge && v >= -kEdge && v <= last_row_ + kEdge)) {
+      return kNoData;
+    }
+    // The lower-left source cell, kept inside so that the far edge is reachable with weight 0.
+    const std::size_t c0 =
+        std::min(static_cast<std::size_t>(std::max(0.0, std::floor(u))), max_c0_);
+    const std::size_t r0 =
+        std::min(static_cast<std::size_t>(std::max(0.0, std::floor(v))), max_r0_);
+    const double fu = dc_ ? std::clamp(u - static_cast<double>(c0), 0.0, 1.0) : 0.0;
+    const double fv = dr_ ? std::clamp(v - static_cast<double>(r0), 0.0, 1.0) : 0.0;
+    const float* cell = z_ + r0 * cols_ + c0;
+    const double weights[4] = {(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
+    const float heights[4] = {cell[0], cell[dc_], cell[dr_], cell[dr_ + dc_]};
+    double z = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      if (weights[k] < 1e-9) continue;  // a position on a cell centre line: the cell does not count
+      if (!is_data(heights[k])) return kNoData;
+      z += weights[k] * static_cast<double>(heights[k]);
+    }
+    return static_cast<float>(z);
+  }
+
+ private:
+  const float* z_;
+  std::size_t cols_;
+  double last_col_, last_row_;
+  std::size_t max_c0_, max_r0_;
+  std::size_t dc_, dr_;  // steps to the next column and row; 0 on a grid one cell wide or high
+};
+
+}  // namespace
+
 float sample_bilinear(const HeightGrid& dem, PixelPoint px) {
-  constexpr double kEdge = 1e-9;
-  const double u = px.col - 0.5, v = px.row - 0.5;
-  const auto last_col = static_cast<double>(dem.cols() - 1);
-  const auto last_row = static_cast<double>(dem.rows() - 1);
-  if (!(u >= -kEdge && u <= last_col + kEdge && v >= -kEdge && v <= last_row + kEdge)) {
-    return kNoData;
-  }
-  // The lower-left source cell, kept inside so that the far edge is reachable with weight 0.
-  const std::size_t c0 =
-      dem.cols() > 1
-          ? std::min(static_cast<std::size_t>(std::max(0.0, std::floor(u))), dem.cols() - 2)
-          : 0;
-  const std::size_t r0 =
-      dem.rows() > 1
-          ? std::min(static_cast<std::size_t>(std::max(0.0, std::floor(v))), dem.rows() - 2)
-          : 0;
-  const double fu = dem.cols() > 1 ? std::clamp(u - static_cast<double>(c0), 0.0, 1.0) : 0.0;
-  const double fv = dem.rows() > 1 ? std::clamp(v - static_cast<double>(r0), 0.0, 1.0) : 0.0;
-  const std::size_t c1 = dem.cols() > 1 ? c0 + 1 : c0, r1 = dem.rows() > 1 ? r0 + 1 : r0;
-  const double weights[4] = {(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
-  const float heights[4] = {dem(r0, c0), dem(r0, c1), dem(r1, c0), dem(r1, c1)};
-  double z = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    if (weights[k] < 1e-9) continue;  // a position on a cell centre line: the cell does not count
-    if (!is_data(heights[k])) return kNoData;
-    z += weights[k] * static_cast<double>(heights[k]);
-  }
-  return static_cast<float>(z);
+  return BilinearSampler(dem)(px.col, px.row);
 }
 
 HeightGrid orient(const HeightGrid& dem, const OrientedFrame& frame, unsigned threads) {
@@ -228,12 +251,16 @@ HeightGrid orient(const HeightGrid& dem, const OrientedFrame& frame, unsigned th
     scatter_dem_rows(frame, 0, dem.rows(), dem.data(), dem.cols(), oriented);
     return oriented;
   }
+  const BilinearSampler sample(dem);
   parallel_for(frame.profiles, threads, [&](std::size_t begin, std::size_t end) {
     for (std::size_t p = begin; p < end; ++p) {
       float* out = oriented.row(p);
+      // frame.to_pixel(p, i), with the profile's part worked out once (same rounding).
+      const double col0 = frame.px_col0 + frame.px_col_per_p * static_cast<double>(p);
+      const double row0 = frame.px_row0 + frame.px_row_per_p * static_cast<double>(p);
       for (std::size_t i = 0; i < frame.length; ++i) {
-        out[i] =
-            sample_bilinear(dem, frame.to_pixel(static_cast<double>(p), static_cast<double>(i)));
+        const auto s = static_cast<double>(i);
+        out[i] = sample(col0 + frame.px_col_per_i * s, row0 + frame.px_row_per_i * s);
       }
     }
   });

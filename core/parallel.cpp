@@ -11,11 +11,15 @@
 
 namespace tsk {
 
+unsigned resolve_threads(unsigned threads) {
+  return threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+}
+
 void parallel_for(std::size_t count, unsigned threads,
                   const std::function<void(std::size_t, std::size_t)>& work,
                   const ProgressFn& progress) {
   if (count == 0) return;
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  threads = resolve_threads(threads);
   // Small chunks so the caller's thread reports progress often and cancels quickly.
   const std::size_t chunk = std::max<std::size_t>(1, std::min<std::size_t>(64, count / 256 + 1));
   const std::size_t chunks = (count + chunk - 1) / chunk;

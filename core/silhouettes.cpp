@@ -169,9 +169,12 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
     ProfileCandidates factual, formulated;
     std::vector<StrokeCell> factual_cells, formulated_cells;
   };
+  // With one thread everything runs in turn; with more, one of them links.
+  const unsigned workers = resolve_threads(threads);
+  const unsigned collectors = workers > 1 ? workers - 1 : 1;
   auto collect = [&](std::size_t b0, std::vector<Collected>& batch) {
     batch.assign(std::min(kBatch, count - b0), {});
-    parallel_for(batch.size(), threads, [&](std::size_t lo, std::size_t hi) {
+    parallel_for(batch.size(), collectors, [&](std::size_t lo, std::size_t hi) {
       for (std::size_t k = lo; k < hi; ++k) {
         const std::size_t row = before + b0 + k, p = first + b0 + k;
         Collected& c = batch[k];
@@ -197,22 +200,27 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
   collect(0, linking);
   for (std::size_t b0 = 0; b0 < count; b0 += kBatch) {
     const std::size_t next = b0 + kBatch;
-    std::exception_ptr link_failure;
-    std::thread linker([&] {
-      try {
-        link(linking);
-      } catch (...) {
-        link_failure = std::current_exception();
-      }
-    });
-    try {
+    if (workers == 1) {
+      link(linking);
       if (next < count) collect(next, collecting);
-    } catch (...) {
+    } else {
+      std::exception_ptr link_failure;
+      std::thread linker([&] {
+        try {
+          link(linking);
+        } catch (...) {
+          link_failure = std::current_exception();
+        }
+      });
+      try {
+        if (next < count) collect(next, collecting);
+      } catch (...) {
+        linker.join();
+        throw;
+      }
       linker.join();
-      throw;
+      if (link_failure) std::rethrow_exception(link_failure);
     }
-    linker.join();
-    if (link_failure) std::rethrow_exception(link_failure);
     std::swap(linking, collecting);
     if (link_progress && !link_progress(static_cast<double>(std::min(next, count)) / count)) {
       throw Cancelled();
