@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "parallel.h"
 
@@ -210,10 +211,9 @@ class BilinearSampler {
       return kNoData;
     }
     // The lower-left source cell, kept inside so that the far edge is reachable with weight 0.
-    const std::size_t c0 =
-        std::min(static_cast<std::size_t>(std::max(0.0, std::floor(u))), max_c0_);
-    const std::size_t r0 =
-        std::min(static_cast<std::size_t>(std::max(0.0, std::floor(v))), max_r0_);
+    // Truncating a non-negative number is its floor, without a call into libm.
+    const std::size_t c0 = std::min(static_cast<std::size_t>(std::max(0.0, u)), max_c0_);
+    const std::size_t r0 = std::min(static_cast<std::size_t>(std::max(0.0, v)), max_r0_);
     const double fu = dc_ ? std::clamp(u - static_cast<double>(c0), 0.0, 1.0) : 0.0;
     const double fv = dr_ ? std::clamp(v - static_cast<double>(r0), 0.0, 1.0) : 0.0;
     const float* cell = z_ + r0 * cols_ + c0;
@@ -235,6 +235,26 @@ class BilinearSampler {
   std::size_t max_c0_, max_r0_;
   std::size_t dc_, dr_;  // steps to the next column and row; 0 on a grid one cell wide or high
 };
+
+// The cells [first, last) of a profile of `length` cells whose pixel coordinate start + step * i
+// may fall on a DEM side of `cells` cells: a range with a cell's margin in pixel coordinates
+// around the cell centres' hull, which the sampler then checks exactly.
+std::pair<std::size_t, std::size_t> inside_range(double start, double step, std::size_t cells,
+                                                 std::size_t length) {
+  const double lo = -0.5, hi = static_cast<double>(cells) + 0.5;
+  const auto len = static_cast<double>(length);
+  double a = -1, b = len;  // a constant coordinate inside: every cell
+  if (step != 0.0) {
+    a = (lo - start) / step;
+    b = (hi - start) / step;
+    if (a > b) std::swap(a, b);
+  } else if (start < lo || start > hi) {
+    return {0, 0};
+  }
+  const double first = std::clamp(std::floor(a), 0.0, len);
+  const double last = std::clamp(std::ceil(b) + 1, 0.0, len);
+  return {static_cast<std::size_t>(first), static_cast<std::size_t>(last)};
+}
 
 }  // namespace
 
@@ -258,10 +278,19 @@ HeightGrid orient(const HeightGrid& dem, const OrientedFrame& frame, unsigned th
       // frame.to_pixel(p, i), with the profile's part worked out once (same rounding).
       const double col0 = frame.px_col0 + frame.px_col_per_p * static_cast<double>(p);
       const double row0 = frame.px_row0 + frame.px_row_per_p * static_cast<double>(p);
-      for (std::size_t i = 0; i < frame.length; ++i) {
+      // Only the cells whose position falls on the DEM are sampled (the sampler still checks);
+      // the margins of the line-of-sight grid, up to half of it, are nodata.
+      auto [lo, hi] = inside_range(col0, frame.px_col_per_i, dem.cols(), frame.length);
+      const auto rows = inside_range(row0, frame.px_row_per_i, dem.rows(), frame.length);
+      lo = std::max(lo, rows.first);
+      hi = std::min(hi, rows.second);
+      if (lo >= hi) lo = hi = 0;
+      std::fill(out, out + lo, kNoData);
+      for (std::size_t i = lo; i < hi; ++i) {
         const auto s = static_cast<double>(i);
         out[i] = sample(col0 + frame.px_col_per_i * s, row0 + frame.px_row_per_i * s);
       }
+      std::fill(out + hi, out + frame.length, kNoData);
     }
   });
   return oriented;

@@ -161,6 +161,32 @@ TEST_CASE("bilinear sampling: exact at centres, nodata outside or next to nodata
   CHECK(sample_bilinear(one, {0.5, 0.5}) == 7.f);
 }
 
+TEST_CASE("the resampled grid is the bilinear sample at every position, margins included",
+          "[azimuth]") {
+  // orient() samples only where a profile can meet the DEM; the oracle samples every cell.
+  HeightGrid dem = test::random_terrain(29, 41, 5, 0.1);
+  dem(0, 0) = kNoData, dem(28, 40) = kNoData;
+  for (double az : {0.0, 1e-7, 30.0, 45.0, 89.9999, 90.0, 135.0, 200.0, 300.0, 359.9}) {
+    for (double dy : {10.0, 25.0}) {
+      CAPTURE(az, dy);
+      const OrientedFrame f = make_resampled_frame(29, 41, 10, dy, az);
+      const HeightGrid z = orient(dem, f);
+      for (std::size_t p = 0; p < f.profiles; ++p) {
+        for (std::size_t i = 0; i < f.length; ++i) {
+          const float expected =
+              sample_bilinear(dem, f.to_pixel(static_cast<double>(p), static_cast<double>(i)));
+          CAPTURE(p, i);
+          if (is_data(expected)) {
+            REQUIRE(z(p, i) == expected);
+          } else {
+            REQUIRE_FALSE(is_data(z(p, i)));
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST_CASE("a DEM turned by 30 degrees with the view turned too gives the same strokes",
           "[azimuth][invariance]") {
   const std::size_t n = 90;
