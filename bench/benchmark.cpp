@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "terrain_sketch.h"
@@ -136,7 +135,7 @@ void bench_size(std::size_t n, bool with_gdaldem) {
   std::printf("  peak memory %.0f MiB = %.2f x the raster's bytes\n", peak, peak / raster_mib);
   const double single = timed_run(dem, 90, 1, "azimuth 90, 1 thread");
   std::printf("  %-22s %.2f x on %u threads\n", "thread speed-up", single / whole,
-              std::thread::hardware_concurrency());
+              tsk::resolve_threads(0));
   const double oblique = timed_run(dem, 45, 0, "azimuth 45, all cores");
   std::printf("  %-22s %.2f x the cardinal time\n", "non-cardinal cost", oblique / whole);
 #ifdef TSK_BENCH_WITH_GDAL
@@ -206,8 +205,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  std::printf("terrain-sketch benchmark, %u hardware threads\n",
-              std::thread::hardware_concurrency());
+  std::printf("terrain-sketch benchmark, %u hardware threads\n", tsk::resolve_threads(0));
 #ifdef TSK_BENCH_WITH_GDAL
   bench_real_dems();
 #endif

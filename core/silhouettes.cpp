@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <exception>
+#include <functional>
+#include <future>
 #include <limits>
 #include <mutex>
-#include <thread>
 
 #include "candidates.h"
 #include "chaining.h"
@@ -169,7 +169,7 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
     ProfileCandidates factual, formulated;
     std::vector<StrokeCell> factual_cells, formulated_cells;
   };
-  // With one thread everything runs in turn; with more, one of them links.
+  // With one thread everything runs in turn (linking deferred); with more, one of them links.
   const unsigned workers = resolve_threads(threads);
   const unsigned collectors = workers > 1 ? workers - 1 : 1;
   auto collect = [&](std::size_t b0, std::vector<Collected>& batch) {
@@ -200,27 +200,11 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
   collect(0, linking);
   for (std::size_t b0 = 0; b0 < count; b0 += kBatch) {
     const std::size_t next = b0 + kBatch;
-    if (workers == 1) {
-      link(linking);
-      if (next < count) collect(next, collecting);
-    } else {
-      std::exception_ptr link_failure;
-      std::thread linker([&] {
-        try {
-          link(linking);
-        } catch (...) {
-          link_failure = std::current_exception();
-        }
-      });
-      try {
-        if (next < count) collect(next, collecting);
-      } catch (...) {
-        linker.join();
-        throw;
-      }
-      linker.join();
-      if (link_failure) std::rethrow_exception(link_failure);
-    }
+    // get() rethrows what linking threw; if collecting throws, the future waits for the linker.
+    std::future<void> linked = std::async(workers > 1 ? std::launch::async : std::launch::deferred,
+                                          link, std::ref(linking));
+    if (next < count) collect(next, collecting);
+    linked.get();
     std::swap(linking, collecting);
     if (link_progress && !link_progress(static_cast<double>(std::min(next, count)) / count)) {
       throw Cancelled();
