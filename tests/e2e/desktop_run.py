@@ -41,7 +41,8 @@ def finish():
 
 def describe(layer):
     renderer = layer.renderer()
-    info = {"name": layer.name(), "crs": layer.crs().authid(), "renderer": renderer.type()}
+    info = {"name": layer.name(), "file": os.path.basename(layer.source().split("|")[0]),
+            "crs": layer.crs().authid(), "renderer": renderer.type()}
     if layer.type() == layer.VectorLayer:
         symbol = renderer.symbol() if hasattr(renderer, "symbol") else None
         info["features"] = layer.featureCount()
@@ -53,11 +54,11 @@ def describe(layer):
     return info
 
 
-def show_only(names, rotation):
+def show_only(files, rotation):
     root = QgsProject.instance().layerTreeRoot()
     extent = QgsRectangle()
     for layer in QgsProject.instance().mapLayers().values():
-        visible = layer.name() in names
+        visible = os.path.basename(layer.source().split("|")[0]) in files
         root.findLayer(layer.id()).setItemVisibilityChecked(visible)
         if visible:
             extent.combineExtentWith(layer.extent())
@@ -67,13 +68,15 @@ def show_only(names, rotation):
     canvas.refresh()
 
 
-# (file, visible layers, canvas rotation): the oblique sketch with the azimuth (90) up, then
-# the classification map north up.
-SHOTS = [("qgis_desktop.png", {"Factual silhouettes", "Formulated silhouettes", "Profile plot"}, -90),
-         ("qgis_drape.png", {"Factual silhouettes", "Formulated silhouettes", "Draped raster"}, -90),
-         ("qgis_pstrokes.png", {"Factual silhouettes", "Formulated silhouettes", "P-strokes"}, -90),
-         ("qgis_classification.png", {"Silhouette stages"}, 0),
-         ("qgis_rowslope.png", {"Row slope"}, 0)]
+# (screenshot, files of the visible layers, canvas rotation): the oblique sketch with the
+# azimuth (90) up, then the classification map north up. Layers are found by their files, as
+# their names follow the user's language (German names from our translation under LANG=de).
+STROKES = {"factual.gpkg", "formulated.gpkg"}
+SHOTS = [("qgis_desktop.png", STROKES | {"profiles.gpkg"}, -90),
+         ("qgis_drape.png", STROKES | {"draped.tif"}, -90),
+         ("qgis_pstrokes.png", STROKES | {"pstrokes.gpkg"}, -90),
+         ("qgis_classification.png", {"classes.tif"}, 0),
+         ("qgis_rowslope.png", {"rowslope.tif"}, 0)]
 
 
 def take(index):

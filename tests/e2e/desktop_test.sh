@@ -34,27 +34,28 @@ check(r.get("ok"), "run finished: %s" % r.get("error"))
 check(r.get("provider"), "provider registered")
 check(r.get("plugin_active"), "plugin active in the plugin manager")
 check(not r.get("not_loaded"), "outputs not loaded: %s" % r.get("not_loaded"))
-layers = {l["name"]: l for l in r.get("layers", [])}
+layers = {l["file"]: l for l in r.get("layers", [])}
 check(len(layers) == 7, "seven layers loaded, got %s" % list(layers))
-for name, colour, field in (("Factual silhouettes", "#111111", "mean_depth"),
-                            ("Formulated silhouettes", "#787878", "mean_slope")):
-    l = layers.get(name, {})
-    check(l.get("features", 0) > 100, name + " has features")
-    check(l.get("crs") == "EPSG:32616", name + " CRS")
-    check(l.get("renderer") == "singleSymbol", name + " styled")
-    check(l.get("colour") == colour, name + " colour %s" % l.get("colour"))
-    check(field in (l.get("width_expression") or ""), name + " width by " + field)
-check(layers.get("Profile plot", {}).get("features", 0) > 20, "profile plot lines")
-check(layers.get("Silhouette stages", {}).get("renderer") == "paletted", "classes paletted")
-check(layers.get("Row slope", {}).get("renderer") == "singlebandgray", "row slope grey")
+for path, colour, field in (("factual.gpkg", "#111111", "mean_depth"),
+                            ("formulated.gpkg", "#787878", "mean_slope")):
+    l = layers.get(path, {})
+    check(l.get("features", 0) > 100, path + " has features")
+    check(l.get("crs") == "EPSG:32616", path + " CRS")
+    check(l.get("renderer") == "singleSymbol", path + " styled")
+    check(l.get("colour") == colour, path + " colour %s" % l.get("colour"))
+    check(field in (l.get("width_expression") or ""), path + " width by " + field)
+check(layers.get("profiles.gpkg", {}).get("features", 0) > 20, "profile plot lines")
+check(layers.get("classes.tif", {}).get("renderer") == "paletted", "classes paletted")
+check(layers.get("rowslope.tif", {}).get("renderer") == "singlebandgray", "row slope grey")
+check(layers.get("pstrokes.gpkg", {}).get("features", 0) > 100, "P-strokes drawn")
+check("draped.tif" in layers, "draped raster loaded")
 shots = r.get("screenshots", [])
 check(len(shots) == 5, "five screenshots")
-check(layers.get("P-strokes", {}).get("features", 0) > 100, "P-strokes drawn")
-check("Draped raster" in layers, "draped raster loaded")
 for shot in shots:
     check(os.path.exists(shot) and os.path.getsize(shot) > 10000, "screenshot " + shot)
 if errors:
     print("FAILED:\n  " + "\n  ".join(errors))
+    print("layers: %s" % [(l["name"], l["file"]) for l in r.get("layers", [])])
     print("QGIS message log (last 30):\n  " + "\n  ".join(r.get("log", [])[-30:]))
     sys.exit(1)
 print("desktop end-to-end: 1 passed, 0 failed")
