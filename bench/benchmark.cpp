@@ -99,9 +99,13 @@ double timed_run(const tsk::HeightGrid& dem, double azimuth, unsigned threads, c
   const tsk::OrientedFrame frame = tsk::make_frame(dem.rows(), dem.cols(), 25, 25, azimuth);
   const auto t = Clock::now();
   // Viewed from the west the oriented grid is the DEM itself: no copy, as the reader does.
+  // Other azimuths resample strip by strip as the stages go, as the command-line tool does.
   tsk::SilhouetteResult r;
   double orient_s = 0;
-  if (frame.azimuth_deg == 90 && !frame.resampled) {
+  if (frame.resampled) {
+    r = tsk::run_resampled_silhouettes(dem, frame, tsk::GeoTransform{}, params);
+    orient_s = r.timings.resampling;
+  } else if (frame.azimuth_deg == 90) {
     r = tsk::run_silhouettes(dem, frame, tsk::GeoTransform{}, params);
   } else {
     const auto t_orient = Clock::now();

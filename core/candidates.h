@@ -26,7 +26,11 @@ inline bool is_candidate_slope(double gc, const ViewParams& view) {
   return exaggerated < 0.0 && exaggerated > -view.base_slope();
 }
 
-// Sets `candidate` on the cells of every profile that satisfy -B < ve * gc < 0.
+// Sets `candidate` on the cells of one profile that satisfy -B < ve * gc < 0.
+void select_profile_candidates(const float* z, std::uint8_t* flags, std::size_t length, double d,
+                               const ViewParams& view);
+
+// The same on every profile.
 void select_candidates(const HeightGrid& z, double d, const ViewParams& view, CellFlags& flags,
                        unsigned threads = 0, const ProgressFn& progress = {});
 

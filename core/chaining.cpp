@@ -51,11 +51,12 @@ std::vector<Chain> link_grid(const CellFlags& flags, bool factual, int window) {
 
 }  // namespace
 
-ProfileCandidates profile_candidates(const std::uint8_t* f, std::size_t length, bool factual) {
+ProfileCandidates profile_candidates(const std::uint8_t* f, std::size_t length, bool factual,
+                                     std::size_t first) {
   const std::uint8_t bit = factual ? cell::occluding : cell::thinned;
   ProfileCandidates out;
   bool in_zone = false;  // after an occluding cell, until the next visible valid cell
-  for (std::size_t i = 0; i < length; ++i) {
+  for (std::size_t i = first; i < length; ++i) {
     const auto index = static_cast<std::int32_t>(i);
     if (factual && in_zone && (f[i] & cell::hidden)) {
       out.reach.back() = index;

@@ -24,8 +24,10 @@ struct ProfileCandidates {
   std::vector<std::int32_t> reach;
 };
 
-// The candidates of profile p: occluding cells with their hidden zones (factual) or t-set cells.
-ProfileCandidates profile_candidates(const std::uint8_t* flags, std::size_t length, bool factual);
+// The candidates of profile p: occluding cells with their hidden zones (factual) or t-set cells,
+// among cells [first, length).
+ProfileCandidates profile_candidates(const std::uint8_t* flags, std::size_t length, bool factual,
+                                     std::size_t first = 0);
 
 // A chain as the linker reports it: its id (ids count up in the order chains are started) and
 // its slot, a small index that a closed chain hands on to a later one, so a caller can keep the

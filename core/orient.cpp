@@ -262,6 +262,39 @@ float sample_bilinear(const HeightGrid& dem, PixelPoint px) {
   return BilinearSampler(dem)(px.col, px.row);
 }
 
+void resample_profiles(const HeightGrid& dem, const OrientedFrame& frame, std::size_t first,
+                       std::size_t count, HeightGrid& out, unsigned threads) {
+  if (!frame.resampled || dem.rows() != frame.dem_rows || dem.cols() != frame.dem_cols ||
+      first > frame.profiles || count > frame.profiles - first) {
+    throw Error("the DEM or the profiles do not match the resampled frame");
+  }
+  if (out.rows() != count || out.cols() != frame.length)
+    out = HeightGrid(count, frame.length, kUnset);
+  const BilinearSampler sample(dem);
+  parallel_for(count, threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const auto p = static_cast<double>(first + k);
+      float* row = out.row(k);
+      // frame.to_pixel(p, i), with the profile's part worked out once (same rounding).
+      const double col0 = frame.px_col0 + frame.px_col_per_p * p;
+      const double row0 = frame.px_row0 + frame.px_row_per_p * p;
+      // Only the cells whose position falls on the DEM are sampled (the sampler still checks);
+      // the margins of the line-of-sight grid, up to half of it, are nodata.
+      auto [lo, hi] = inside_range(col0, frame.px_col_per_i, dem.cols(), frame.length);
+      const auto rows = inside_range(row0, frame.px_row_per_i, dem.rows(), frame.length);
+      lo = std::max(lo, rows.first);
+      hi = std::min(hi, rows.second);
+      if (lo >= hi) lo = hi = 0;
+      std::fill(row, row + lo, kNoData);
+      for (std::size_t i = lo; i < hi; ++i) {
+        const auto s = static_cast<double>(i);
+        row[i] = sample(col0 + frame.px_col_per_i * s, row0 + frame.px_row_per_i * s);
+      }
+      std::fill(row + hi, row + frame.length, kNoData);
+    }
+  });
+}
+
 HeightGrid orient(const HeightGrid& dem, const OrientedFrame& frame, unsigned threads) {
   if (dem.rows() != frame.dem_rows || dem.cols() != frame.dem_cols) {
     throw Error("the DEM does not match the oriented frame");
@@ -271,28 +304,7 @@ HeightGrid orient(const HeightGrid& dem, const OrientedFrame& frame, unsigned th
     scatter_dem_rows(frame, 0, dem.rows(), dem.data(), dem.cols(), oriented);
     return oriented;
   }
-  const BilinearSampler sample(dem);
-  parallel_for(frame.profiles, threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t p = begin; p < end; ++p) {
-      float* out = oriented.row(p);
-      // frame.to_pixel(p, i), with the profile's part worked out once (same rounding).
-      const double col0 = frame.px_col0 + frame.px_col_per_p * static_cast<double>(p);
-      const double row0 = frame.px_row0 + frame.px_row_per_p * static_cast<double>(p);
-      // Only the cells whose position falls on the DEM are sampled (the sampler still checks);
-      // the margins of the line-of-sight grid, up to half of it, are nodata.
-      auto [lo, hi] = inside_range(col0, frame.px_col_per_i, dem.cols(), frame.length);
-      const auto rows = inside_range(row0, frame.px_row_per_i, dem.rows(), frame.length);
-      lo = std::max(lo, rows.first);
-      hi = std::min(hi, rows.second);
-      if (lo >= hi) lo = hi = 0;
-      std::fill(out, out + lo, kNoData);
-      for (std::size_t i = lo; i < hi; ++i) {
-        const auto s = static_cast<double>(i);
-        out[i] = sample(col0 + frame.px_col_per_i * s, row0 + frame.px_row_per_i * s);
-      }
-      std::fill(out + hi, out + frame.length, kNoData);
-    }
-  });
+  resample_profiles(dem, frame, 0, frame.profiles, oriented, threads);
   return oriented;
 }
 
@@ -313,6 +325,11 @@ void OrientedGridBuilder::add_rows(std::size_t first_row, std::size_t count, con
 HeightGrid OrientedGridBuilder::finish(unsigned threads) {
   if (!frame_.resampled) return std::move(grid_);
   return orient(grid_, frame_, threads);
+}
+
+HeightGrid OrientedGridBuilder::take_dem() {
+  if (!frame_.resampled) throw Error("a cardinal view is turned as it is read: no DEM to take");
+  return std::move(grid_);
 }
 
 }  // namespace tsk

@@ -73,6 +73,11 @@ void scatter_dem_rows(const OrientedFrame& frame, std::size_t first_row, std::si
 // source cell with weight is nodata or outside the DEM).
 HeightGrid orient(const HeightGrid& dem, const OrientedFrame& frame, unsigned threads = 0);
 
+// Resamples profiles [first, first + count) of a resampled frame into `out` (rows = profiles),
+// reusing its memory when it already has that shape: for streaming a view strip by strip.
+void resample_profiles(const HeightGrid& dem, const OrientedFrame& frame, std::size_t first,
+                       std::size_t count, HeightGrid& out, unsigned threads = 0);
+
 // Builds the oriented grid from DEM rows delivered block by block, top to bottom, as raster
 // adapters read them: scattered straight into place for cardinal views, gathered into the whole
 // DEM and resampled at the end for other azimuths.
@@ -81,6 +86,8 @@ class OrientedGridBuilder {
   explicit OrientedGridBuilder(const OrientedFrame& frame);
   void add_rows(std::size_t first_row, std::size_t count, const float* rows);
   HeightGrid finish(unsigned threads = 0);
+  // Resampled frames: the DEM as delivered, for a caller that resamples it strip by strip.
+  HeightGrid take_dem();
 
  private:
   const OrientedFrame& frame_;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstring>
 #include <functional>
 #include <future>
 #include <limits>
@@ -26,31 +27,58 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Adds the classification counts of rows [first_row, first_row + rows) to `stats`.
-void count_cells(const CellFlags& flags, std::size_t first_row, std::size_t rows, unsigned threads,
-                 StageStats& stats) {
-  std::mutex merge;
-  parallel_for(rows, threads, [&](std::size_t begin, std::size_t end) {
-    StageStats local;
-    for (std::size_t p = first_row + begin; p < first_row + end; ++p) {
-      const std::uint8_t* f = flags.row(p);
-      for (std::size_t i = 0; i < flags.cols(); ++i) {
-        const std::uint8_t v = f[i];
-        if (!v) continue;
-        local.valid += (v & cell::valid) != 0;
-        local.hidden += (v & cell::hidden) != 0;
-        local.occluding += (v & cell::occluding) != 0;
-        local.candidate += (v & cell::candidate) != 0;
-        local.filtered += (v & cell::filtered) != 0;
-        local.thinned += (v & cell::thinned) != 0;
-      }
-    }
-    std::lock_guard<std::mutex> lock(merge);
-    stats.valid += local.valid, stats.hidden += local.hidden, stats.occluding += local.occluding;
-    stats.candidate += local.candidate, stats.filtered += local.filtered;
-    stats.thinned += local.thinned;
-  });
+// Cells [begin, end) of a profile: from its first to its last cell with data.
+std::pair<std::size_t, std::size_t> data_range(const float* z, std::size_t length) {
+  std::size_t begin = 0, end = length;
+  while (begin < end && !is_data(z[begin])) ++begin;
+  while (end > begin && !is_data(z[end - 1])) --end;
+  return {begin, end};
 }
+
+// Adds the classification counts of one profile to `stats`.
+void count_profile(const std::uint8_t* f, std::size_t length, StageStats& stats) {
+  for (std::size_t i = 0; i < length; ++i) {
+    const std::uint8_t v = f[i];
+    if (!v) continue;
+    stats.valid += (v & cell::valid) != 0;
+    stats.hidden += (v & cell::hidden) != 0;
+    stats.occluding += (v & cell::occluding) != 0;
+    stats.candidate += (v & cell::candidate) != 0;
+    stats.filtered += (v & cell::filtered) != 0;
+    stats.thinned += (v & cell::thinned) != 0;
+  }
+}
+
+void add_counts(const StageStats& counts, StageStats& stats) {
+  stats.valid += counts.valid, stats.hidden += counts.hidden;
+  stats.occluding += counts.occluding, stats.candidate += counts.candidate;
+  stats.filtered += counts.filtered, stats.thinned += counts.thinned;
+}
+
+// Time spent in each stage, summed over the threads that ran it.
+struct StageSeconds {
+  double visibility = 0, candidates = 0, filter = 0, thinning = 0, chaining = 0;
+
+  template <typename Work>
+  void time(double StageSeconds::*stage, Work&& work) {
+    const auto start = Clock::now();
+    work();
+    this->*stage += seconds_since(start);
+  }
+  void add(const StageSeconds& o) {
+    visibility += o.visibility, candidates += o.candidates, filter += o.filter;
+    thinning += o.thinning, chaining += o.chaining;
+  }
+  // Splits `wall` seconds between the stages by their shares of the threads' time.
+  void share_out(double wall, StageTimings& timings) const {
+    const double total = visibility + candidates + filter + thinning + chaining;
+    if (!(total > 0)) return;
+    const double k = wall / total;
+    timings.visibility += k * visibility, timings.candidates += k * candidates;
+    timings.filter += k * filter, timings.thinning += k * thinning;
+    timings.chaining += k * chaining;
+  }
+};
 
 }  // namespace
 
@@ -76,6 +104,7 @@ struct SilhouetteStream::State {
   // Cells of the chains still open, by slot, and the strokes of the closed ones with their id.
   std::vector<std::vector<StrokeCell>> open_factual, open_formulated;
   std::vector<std::pair<std::size_t, Stroke>> done_factual, done_formulated;
+  CellFlags flags;  // the current strip's classification, its memory reused by the next strip
   SilhouetteResult result;
 
   State(const OrientedFrame& f, const GeoTransform& gt, const SilhouetteParams& p, double z,
@@ -132,86 +161,101 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
   st.next_profile = first + count;
   const unsigned threads = st.params.threads;
   const ViewParams& view = st.params.view;
-  StageTimings& time = st.result.timings;
-  // Progress of stage `index` (of 6) within this strip, mapped onto the whole grid.
-  auto progress_of = [&](int index) -> ProgressFn {
-    if (!st.progress) return {};
-    return [&st, first, count, index, total = frame.profiles](double fraction) {
-      return st.progress(
-          (static_cast<double>(first) + static_cast<double>(count) * (index + fraction) / 6.0) /
-          static_cast<double>(total));
-    };
-  };
-
-  CellFlags flags;
-  auto start = Clock::now();
-  classify_visibility(z, frame.d, view, flags, threads, progress_of(0));
-  time.visibility += seconds_since(start);
-  start = Clock::now();
-  select_candidates(z, frame.d, view, flags, threads, progress_of(1));
-  time.candidates += seconds_since(start);
-  start = Clock::now();
-  apply_slope_filter(z, frame.d, frame.w, st.params.filter, flags, threads, progress_of(2));
-  time.filter += seconds_since(start);
-  start = Clock::now();
-  thin(flags, st.params.placement, threads, progress_of(3));
-  time.thinning += seconds_since(start);
-
-  start = Clock::now();
-  count_cells(flags, before, count, threads, st.result.stats);
+  // Every stage runs on one profile after the other while its cells are in cache: the stages
+  // of a profile need only its heights, its neighbours' heights and its own flags. Batches of
+  // profiles are classified and their chain candidates collected in parallel, then linked in
+  // order on a thread of their own while the next batch is collected.
+  CellFlags& flags = st.flags;  // rows of the neighbours stay unused
+  if (flags.rows() != z.rows() || flags.cols() != z.cols())
+    flags = CellFlags(z.rows(), z.cols(), kUnset);
+  const std::size_t length = frame.length;
   const StrokeContext context{
       z,        flags,         frame, view, st.geotransform, st.params.geometry, st.params.subcell,
       st.z_ref, first - before};
-  // Batches of profiles: candidates and their cell records are collected in parallel, then
-  // linked in order on a thread of their own while the next batch is collected.
   constexpr std::size_t kBatch = 256;
   struct Collected {
     ProfileCandidates factual, formulated;
     std::vector<StrokeCell> factual_cells, formulated_cells;
   };
-  // With one thread everything runs in turn (linking deferred); with more, one of them links.
-  const unsigned workers = resolve_threads(threads);
-  const unsigned collectors = workers > 1 ? workers - 1 : 1;
+  std::mutex merge;
+  StageSeconds seconds;  // time of each stage summed over the threads
   auto collect = [&](std::size_t b0, std::vector<Collected>& batch) {
     batch.assign(std::min(kBatch, count - b0), {});
-    parallel_for(batch.size(), collectors, [&](std::size_t lo, std::size_t hi) {
+    parallel_for(batch.size(), resolve_threads(threads), [&](std::size_t lo, std::size_t hi) {
+      StageSeconds local;
+      StageStats counts;
       for (std::size_t k = lo; k < hi; ++k) {
         const std::size_t row = before + b0 + k, p = first + b0 + k;
-        Collected& c = batch[k];
-        c.factual = profile_candidates(flags.row(row), frame.length, true);
-        c.formulated = profile_candidates(flags.row(row), frame.length, false);
-        for (std::int32_t i : c.factual.cell)
-          c.factual_cells.push_back(stroke_cell(context, p, static_cast<std::size_t>(i), true));
-        for (std::int32_t i : c.formulated.cell)
-          c.formulated_cells.push_back(stroke_cell(context, p, static_cast<std::size_t>(i), false));
+        std::uint8_t* f = flags.row(row);
+        const float* zp = z.row(row);
+        // Every stage skips the nodata before the first and after the last cell with data:
+        // up to half of a resampled profile.
+        const auto [b, e] = data_range(zp, length);
+        local.time(&StageSeconds::visibility, [&] {
+          std::memset(f, 0, length);
+          classify_profile_visibility(zp, f, e, frame.d, view, b);
+        });
+        local.time(&StageSeconds::candidates,
+                   [&] { select_profile_candidates(zp + b, f + b, e - b, frame.d, view); });
+        local.time(&StageSeconds::filter, [&] {
+          ProfileRows rows = profile_rows(z, row);
+          for (const float** r : {&rows.left, &rows.centre, &rows.right})
+            if (*r) *r += b;
+          filter_profile(rows, f + b, e - b, frame.d, frame.w, st.params.filter);
+        });
+        local.time(&StageSeconds::thinning,
+                   [&] { thin_profile(f + b, e - b, st.params.placement); });
+        local.time(&StageSeconds::chaining, [&] {
+          count_profile(f + b, e - b, counts);
+          Collected& c = batch[k];
+          c.factual = profile_candidates(f, e, true, b);
+          c.formulated = profile_candidates(f, e, false, b);
+          for (std::int32_t i : c.factual.cell)
+            c.factual_cells.push_back(stroke_cell(context, p, static_cast<std::size_t>(i), true));
+          for (std::int32_t i : c.formulated.cell) {
+            c.formulated_cells.push_back(
+                stroke_cell(context, p, static_cast<std::size_t>(i), false));
+          }
+        });
       }
+      std::lock_guard<std::mutex> lock(merge);
+      seconds.add(local);
+      add_counts(counts, st.result.stats);
     });
   };
-  auto link = [&st](std::vector<Collected>& batch) {
+  auto link = [&st, &seconds, &merge](std::vector<Collected>& batch) {
+    const auto start = Clock::now();
     for (Collected& c : batch) {
       st.link(st.factual, std::move(c.factual), std::move(c.factual_cells), st.open_factual,
               st.done_factual, StrokeClass::factual);
       st.link(st.formulated, std::move(c.formulated), std::move(c.formulated_cells),
               st.open_formulated, st.done_formulated, StrokeClass::formulated);
     }
+    std::lock_guard<std::mutex> lock(merge);
+    seconds.chaining += seconds_since(start);
   };
-  const ProgressFn link_progress = progress_of(4);
+  // With one thread everything runs in turn (linking deferred).
+  const auto launch = resolve_threads(threads) > 1 ? std::launch::async : std::launch::deferred;
+  const auto start = Clock::now();
   std::vector<Collected> linking, collecting;
   collect(0, linking);
   for (std::size_t b0 = 0; b0 < count; b0 += kBatch) {
     const std::size_t next = b0 + kBatch;
     // get() rethrows what linking threw; if collecting throws, the future waits for the linker.
-    std::future<void> linked = std::async(workers > 1 ? std::launch::async : std::launch::deferred,
-                                          link, std::ref(linking));
+    std::future<void> linked = std::async(launch, link, std::ref(linking));
     if (next < count) collect(next, collecting);
     linked.get();
     std::swap(linking, collecting);
-    if (link_progress && !link_progress(static_cast<double>(std::min(next, count)) / count)) {
+    if (st.progress && !st.progress((static_cast<double>(first) + std::min(next, count)) /
+                                    static_cast<double>(frame.profiles))) {
       throw Cancelled();
     }
   }
-  time.chaining += seconds_since(start);
-  if (keep_flags) st.result.flags = std::move(flags);
+  seconds.share_out(seconds_since(start), st.result.timings);
+  if (keep_flags) {
+    st.result.flags = std::move(flags);
+    flags = CellFlags();
+  }
 }
 
 SilhouetteResult SilhouetteStream::finish() {
@@ -251,6 +295,32 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
     stream.add_strip(read(lo, hi - lo), first, count);
   }
   return stream.finish();
+}
+
+SilhouetteResult run_resampled_silhouettes(const HeightGrid& dem, const OrientedFrame& frame,
+                                           const GeoTransform& geotransform,
+                                           const SilhouetteParams& params,
+                                           const ProgressFn& progress) {
+  params.validate();
+  if (!frame.resampled) throw Error("run_resampled_silhouettes needs a resampled frame");
+  // Big enough for the linking of one batch to overlap the collection of the next (add_strip),
+  // small enough to stay a few tens of megabytes on any DEM.
+  constexpr std::size_t kStrip = 512;
+  SilhouetteStream stream(frame, geotransform, params, lowest_height(dem), progress);
+  HeightGrid strip;
+  double resampling = 0;
+  for (std::size_t first = 0; first < frame.profiles; first += kStrip) {
+    const std::size_t count = std::min(kStrip, frame.profiles - first);
+    const std::size_t lo = first > 0 ? first - 1 : 0;
+    const std::size_t hi = std::min(frame.profiles, first + count + 1);
+    const auto start = Clock::now();
+    resample_profiles(dem, frame, lo, hi - lo, strip, params.threads);
+    resampling += seconds_since(start);
+    stream.add_strip(strip, first, count);
+  }
+  SilhouetteResult result = stream.finish();
+  result.timings.resampling = resampling;
+  return result;
 }
 
 std::size_t automatic_strip_profiles(std::size_t rows, std::size_t cols, bool resampled) {

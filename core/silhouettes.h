@@ -37,9 +37,11 @@ struct StageFigure {
 };
 std::vector<StageFigure> stage_figures(const StageStats& stats);
 
-// Wall time of each stage, seconds.
+// Wall time of each stage, seconds. The stages run profile by profile, interleaved, so the
+// wall time of the whole is split between them by their shares of the threads' time.
 struct StageTimings {
   double visibility = 0, candidates = 0, filter = 0, thinning = 0, chaining = 0, strokes = 0;
+  double resampling = 0;  // turning the DEM strip by strip (run_resampled_silhouettes)
 };
 
 struct SilhouetteResult {
@@ -90,5 +92,14 @@ std::size_t automatic_strip_profiles(std::size_t rows, std::size_t cols, bool re
 SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,
                                  const GeoTransform& geotransform, const SilhouetteParams& params,
                                  const ProgressFn& progress = {});
+
+// Runs every stage at a resampled (non-cardinal) view straight from the DEM (row 0 north),
+// resampling a strip of profiles at a time into memory reused from strip to strip, so the
+// line-of-sight grid is never held whole. Gives the strokes of run_silhouettes on
+// orient(dem, frame), with the DEM's lowest height as the plan-oblique reference (SPEC 1.9).
+SilhouetteResult run_resampled_silhouettes(const HeightGrid& dem, const OrientedFrame& frame,
+                                           const GeoTransform& geotransform,
+                                           const SilhouetteParams& params,
+                                           const ProgressFn& progress = {});
 
 }  // namespace tsk

@@ -7,13 +7,13 @@
 namespace tsk {
 
 void classify_profile_visibility(const float* z, std::uint8_t* flags, std::size_t length, double d,
-                                 const ViewParams& view) {
+                                 const ViewParams& view, std::size_t first) {
   const double ve = view.ve;
   const double step = view.base_slope() * d;
   double running_max = -std::numeric_limits<double>::infinity();
   // The last valid visible cell, waiting to learn whether the next valid cell is hidden.
   std::size_t last_visible = length;
-  for (std::size_t i = 0; i < length; ++i) {
+  for (std::size_t i = first; i < length; ++i) {
     if (!is_data(z[i])) continue;  // nodata: neither visible nor hidden; the maximum carries over
     const double t = ve * static_cast<double>(z[i]) + step * static_cast<double>(i);
     std::uint8_t f = cell::valid;

@@ -14,9 +14,10 @@ inline double transformed_height(float z, std::size_t i, double d, const ViewPar
   return view.ve * static_cast<double>(z) + view.base_slope() * d * static_cast<double>(i);
 }
 
-// Sets valid, hidden and occluding on one profile of `length` cells.
+// Sets valid, hidden and occluding on cells [first, length) of one profile; `flags` must be
+// cleared and the cells before `first` must be nodata.
 void classify_profile_visibility(const float* z, std::uint8_t* flags, std::size_t length, double d,
-                                 const ViewParams& view);
+                                 const ViewParams& view, std::size_t first = 0);
 
 // All profiles; `flags` is resized to the grid and cleared first.
 void classify_visibility(const HeightGrid& z, double d, const ViewParams& view, CellFlags& flags,

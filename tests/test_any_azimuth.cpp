@@ -263,3 +263,50 @@ TEST_CASE("a Gaussian bump occludes only on its far side at 45 and 135 degrees",
     }
   }
 }
+
+TEST_CASE("resampling strip by strip gives the strokes of the whole resampled grid",
+          "[azimuth][strips]") {
+  // Over 1024 profiles at these azimuths: the view is resampled in three strips or more.
+  const HeightGrid dem = test::random_terrain(800, 760, 5, 0.03);
+  const GeoTransform gt = centred(800);
+  for (double az : {30.0, 300.0}) {
+    for (Geometry geometry : {Geometry::map, Geometry::oblique}) {
+      CAPTURE(az, static_cast<int>(geometry));
+      SilhouetteParams params;
+      params.view.azimuth_deg = az;
+      params.geometry = geometry;
+      params.subcell = true;
+      const OrientedFrame frame = make_frame(dem.rows(), dem.cols(), kCell, kCell, az);
+      REQUIRE(frame.profiles > 1024);
+      // The whole grid at once, with the DEM's lowest height as the plan-oblique reference.
+      SilhouetteStream whole_stream(frame, gt, params, lowest_height(dem));
+      whole_stream.add_strip(orient(dem, frame), 0, frame.profiles);
+      const SilhouetteResult whole = whole_stream.finish();
+      const SilhouetteResult strips = run_resampled_silhouettes(dem, frame, gt, params);
+      CHECK(strips.stats.valid == whole.stats.valid);
+      CHECK(strips.stats.hidden == whole.stats.hidden);
+      CHECK(strips.stats.thinned == whole.stats.thinned);
+      CHECK(strips.stats.generalised == whole.stats.generalised);
+      REQUIRE(whole.strokes.size() > 100);
+      REQUIRE(strips.strokes.size() == whole.strokes.size());
+      for (std::size_t k = 0; k < whole.strokes.size(); ++k) {
+        const Stroke& a = whole.strokes[k];
+        const Stroke& b = strips.strokes[k];
+        REQUIRE(a.cls == b.cls);
+        REQUIRE(a.cells == b.cells);
+        REQUIRE(a.chain.front().p == b.chain.front().p);
+        REQUIRE(a.chain.front().i == b.chain.front().i);
+        REQUIRE((a.mean_depth_m == b.mean_depth_m ||
+                 (std::isnan(a.mean_depth_m) && std::isnan(b.mean_depth_m))));
+        REQUIRE(a.mean_row_slope_pct == b.mean_row_slope_pct);
+        for (std::size_t q = 0; q < a.points.size(); ++q) {
+          REQUIRE(a.points[q].x == b.points[q].x);
+          REQUIRE(a.points[q].y == b.points[q].y);
+        }
+      }
+      CHECK(strips.timings.resampling > 0);
+    }
+  }
+  const OrientedFrame cardinal = make_frame(dem.rows(), dem.cols(), kCell, kCell, 90);
+  CHECK_THROWS_AS(run_resampled_silhouettes(dem, cardinal, gt, {}), Error);
+}
