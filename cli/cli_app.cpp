@@ -200,8 +200,10 @@ std::string stats_json(const StageStats& s) {
 }
 
 // Reads the DEM for the view and tells the user what they should know about it.
-io::Dem load_dem(const Options& o, std::ostream& err) {
-  io::Dem dem = io::read_dem(o.input, o.dem);
+io::Dem load_dem(const Options& o, std::ostream& err, bool defer_resampling = false) {
+  io::DemOptions options = o.dem;
+  options.defer_resampling = defer_resampling;
+  io::Dem dem = io::read_dem(o.input, options);
   if (!dem.notes.empty()) err << "note: " << dem.notes;
   return dem;
 }
@@ -259,18 +261,23 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
     return std::chrono::duration<double>(Clock::now() - t).count();
   };
   auto start = Clock::now();
-  const io::Dem dem = load_dem(o, err);
+  // Resampled views are turned strip by strip as the stages go, unless the preview needs the
+  // whole turned grid.
+  const io::Dem dem = load_dem(o, err, o.preview.empty());
   const double read_s = since(start);
   const SilhouetteResult result =
-      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
+      dem.frame.resampled && o.preview.empty()
+          ? run_resampled_silhouettes(dem.unturned, dem.frame, dem.geotransform, o.params)
+          : run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
   start = Clock::now();
   io::write_strokes(o.output, o.format, result.strokes, dem.srs_wkt);
   const double write_s = since(start);
   if (o.timings) {
     const StageTimings& t = result.timings;
-    err << "timings (s): read " << read_s << ", visibility " << t.visibility << ", candidates "
-        << t.candidates << ", filter " << t.filter << ", thinning " << t.thinning << ", chaining "
-        << t.chaining << ", strokes " << t.strokes << ", write " << write_s << "\n";
+    err << "timings (s): read " << read_s << ", resampling " << t.resampling << ", visibility "
+        << t.visibility << ", candidates " << t.candidates << ", filter " << t.filter
+        << ", thinning " << t.thinning << ", chaining " << t.chaining << ", strokes " << t.strokes
+        << ", write " << write_s << "\n";
   }
   if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
   if (!o.preview.empty()) {

@@ -133,22 +133,28 @@ void DemViewAlgorithm::addToSink(QgsFeatureSink& sink, QgsFeature& feature,
   }
 }
 
-RasterGrid& DemViewAlgorithm::readRaster(QgsProcessingFeedback* feedback, double progressTo) {
+RasterGrid& DemViewAlgorithm::readRaster(QgsProcessingFeedback* feedback, double progressTo,
+                                         bool deferResampling) {
   mWritten = 0;
-  mRaster->read(mAzimuth, feedback, 0.0, progressTo);
+  mRaster->read(mAzimuth, feedback, 0.0, progressTo, deferResampling);
   return *mRaster;
 }
 
 SilhouetteResult DemViewAlgorithm::runSilhouettes(const SilhouetteParams& params,
                                                   QgsProcessingFeedback* feedback, double from,
                                                   double to) {
+  const ProgressFn progress = [feedback, from, to](double fraction) {
+    if (!feedback) return true;
+    feedback->setProgress(from + (to - from) * fraction);
+    return !feedback->isCanceled();
+  };
   return withCoreErrors([&] {
+    if (!mRaster->unturned().empty()) {
+      return run_resampled_silhouettes(mRaster->unturned(), mRaster->frame(),
+                                       mRaster->geotransform(), params, progress);
+    }
     return run_silhouettes(mRaster->oriented(), mRaster->frame(), mRaster->geotransform(), params,
-                           [feedback, from, to](double fraction) {
-                             if (!feedback) return true;
-                             feedback->setProgress(from + (to - from) * fraction);
-                             return !feedback->isCanceled();
-                           });
+                           progress);
   });
 }
 

@@ -137,11 +137,11 @@ double RasterGrid::lowestHeight() {
 }
 
 void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
-                      double progressTo) {
+                      double progressTo, bool deferResampling) {
   setView(azimuthDeg);
   const double dy = mExtent.height() / mRows;
   try {
-    readBlocks(feedback, progressFrom, progressTo, dy);
+    readBlocks(feedback, progressFrom, progressTo, dy, deferResampling);
   } catch (const Error& e) {
     throw QgsProcessingException(QString::fromStdString(e.what()));
   } catch (const std::bad_alloc&) {
@@ -151,7 +151,7 @@ void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double
 }
 
 void RasterGrid::readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo,
-                            double dy) {
+                            double dy, bool deferResampling) {
   const auto cols = static_cast<std::size_t>(mCols);
   OrientedGridBuilder builder(mFrame);
   const int blockRows = std::max(1, static_cast<int>((1 << 22) / cols));
@@ -173,7 +173,14 @@ void RasterGrid::readBlocks(QgsProcessingFeedback* feedback, double progressFrom
                                                static_cast<double>(mRows));
     }
   }
-  mOriented = builder.finish();
+  // Only one of the two holds the heights, so a reused reader never runs on a stale grid.
+  if (deferResampling && mFrame.resampled) {
+    mUnturned = builder.take_dem();
+    mOriented = HeightGrid();
+  } else {
+    mOriented = builder.finish();
+    mUnturned = HeightGrid();
+  }
 }
 
 }  // namespace tsk::plugin

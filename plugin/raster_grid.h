@@ -35,10 +35,11 @@ class RasterGrid {
   RasterGrid& operator=(const RasterGrid&) = delete;
 
   // Worker thread. Reads the band in blocks of rows into the grid oriented for `azimuthDeg`
-  // (resampled along the line of sight for a non-cardinal azimuth),
-  // reporting progress from `progressFrom` to `progressTo` percent; throws on cancel.
+  // (resampled along the line of sight for a non-cardinal azimuth, or, with deferResampling,
+  // kept unturned for run_resampled_silhouettes), reporting progress from `progressFrom` to
+  // `progressTo` percent; throws on cancel.
   void read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
-            double progressTo);
+            double progressTo, bool deferResampling = false);
 
   // Worker thread, for DEMs read strip by strip (cardinal views): sets the frame for
   // `azimuthDeg` without reading, then reads oriented profiles [first, first + count).
@@ -47,6 +48,7 @@ class RasterGrid {
   double lowestHeight();  // a full pass over the band through the provider
 
   const HeightGrid& oriented() const { return mOriented; }
+  const HeightGrid& unturned() const { return mUnturned; }  // read with deferResampling
   const OrientedFrame& frame() const { return mFrame; }
   const GeoTransform& geotransform() const { return mGeoTransform; }
   const QgsCoordinateReferenceSystem& crs() const { return mCrs; }
@@ -54,9 +56,9 @@ class RasterGrid {
   const QStringList& notes() const { return mNotes; }
 
  private:
-  // Reads the band in blocks of rows (dy: row height in map units) into mOriented.
+  // Reads the band in blocks of rows (dy: row height in map units) into mOriented (mUnturned).
   void readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo,
-                  double dy);
+                  double dy, bool deferResampling);
 
   std::unique_ptr<QgsRasterDataProvider> mProvider;
   int mBand = 1;
@@ -67,6 +69,7 @@ class RasterGrid {
   double mGroundScale = 1.0;
   QStringList mNotes;
   HeightGrid mOriented;
+  HeightGrid mUnturned;
   OrientedFrame mFrame;
   GeoTransform mGeoTransform;
 };

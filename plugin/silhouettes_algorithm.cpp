@@ -149,7 +149,7 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
     if (feedback) feedback->pushInfo(tr("Processing the DEM in strips of %1 profiles.").arg(strip));
     result = withCoreErrors([&] { return runInStrips(strip, feedback); });
   } else {
-    readRaster(feedback, kReadEnd);
+    readRaster(feedback, kReadEnd, /*deferResampling=*/true);
     result = runSilhouettes(mParams, feedback, kReadEnd, kCoreEnd);
   }
 

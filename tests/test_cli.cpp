@@ -386,3 +386,23 @@ TEST_CASE("strips give byte-identical output to the whole DEM", "[cli][strips]")
   CHECK_THAT(preview.err, Catch::Contains("--preview needs the whole DEM"));
   CHECK(run_cli({"silhouettes", kSample, dir / "z.gpkg", "--strips", "0"}).code == 1);
 }
+
+TEST_CASE("a resampled view turned strip by strip writes what the whole turned grid gives",
+          "[cli][azimuth]") {
+  // With --preview the tool turns the whole DEM first; without, strip by strip as it goes.
+  ScratchDir dir("resampled");
+  for (const char* az : {"45", "300"}) {
+    CAPTURE(az);
+    const CliRun whole = run_cli({"silhouettes", kSample, dir / "w.geojson", "--azimuth", az,
+                                  "--stats-json", dir / "w.json", "--preview", dir / "w.png"});
+    const CliRun streamed = run_cli({"silhouettes", kSample, dir / "s.geojson", "--azimuth", az,
+                                     "--stats-json", dir / "s.json", "--timings"});
+    INFO(streamed.err);
+    REQUIRE(whole.code == 0);
+    REQUIRE(streamed.code == 0);
+    CHECK(summarise(dir / "s.geojson").features > 100);
+    CHECK(slurp(dir / "w.geojson") == slurp(dir / "s.geojson"));
+    CHECK(slurp(dir / "w.json") == slurp(dir / "s.json"));
+    CHECK_THAT(streamed.err, !Catch::Contains("resampling 0,"));
+  }
+}
