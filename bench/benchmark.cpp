@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -90,34 +91,56 @@ void print_stages(const char* label, const tsk::StageTimings& t, double whole, d
       cells / whole / 1e6);
 }
 
-// Runs the pipeline and returns its wall time; `orient_first` includes turning the DEM.
-double timed_run(const tsk::HeightGrid& dem, double azimuth, unsigned threads, const char* label,
-                 tsk::SilhouetteResult* out = nullptr) {
+// Runs the pipeline once; `orient_s` gets the time spent turning or resampling the DEM.
+tsk::SilhouetteResult run_once(const tsk::HeightGrid& dem, double azimuth, unsigned threads,
+                               double& orient_s) {
   tsk::SilhouetteParams params;
   params.view.azimuth_deg = azimuth;
   params.threads = threads;
   const tsk::OrientedFrame frame = tsk::make_frame(dem.rows(), dem.cols(), 25, 25, azimuth);
-  const auto t = Clock::now();
   // Viewed from the west the oriented grid is the DEM itself: no copy, as the reader does.
   // Other azimuths resample strip by strip as the stages go, as the command-line tool does.
-  tsk::SilhouetteResult r;
-  double orient_s = 0;
+  orient_s = 0;
   if (frame.resampled) {
-    r = tsk::run_resampled_silhouettes(dem, frame, tsk::GeoTransform{}, params);
+    tsk::SilhouetteResult r = tsk::run_resampled_silhouettes(dem, frame, {}, params);
     orient_s = r.timings.resampling;
-  } else if (frame.azimuth_deg == 90) {
-    r = tsk::run_silhouettes(dem, frame, tsk::GeoTransform{}, params);
-  } else {
-    const auto t_orient = Clock::now();
-    const tsk::HeightGrid oriented = tsk::orient(dem, frame, threads);
-    orient_s = seconds_since(t_orient);
-    r = tsk::run_silhouettes(oriented, frame, tsk::GeoTransform{}, params);
+    return r;
   }
-  const double whole = seconds_since(t);
-  print_stages(label, r.timings, whole, static_cast<double>(dem.size()));
-  if (orient_s > 0) std::printf("  %-22s (of which orienting/resampling %.3f s)\n", "", orient_s);
-  if (out) *out = std::move(r);
-  return whole;
+  if (frame.azimuth_deg == 90) return tsk::run_silhouettes(dem, frame, {}, params);
+  const auto t_orient = Clock::now();
+  const tsk::HeightGrid oriented = tsk::orient(dem, frame, threads);
+  orient_s = seconds_since(t_orient);
+  return tsk::run_silhouettes(oriented, frame, {}, params);
+}
+
+// Runs the pipeline three times (this shared machine varies by 10-30 % from run to run),
+// prints the stages of the median run and returns its wall time. One result is alive at a time,
+// so the peak memory is that of one run.
+double timed_run(const tsk::HeightGrid& dem, double azimuth, unsigned threads, const char* label,
+                 tsk::StageStats* stats = nullptr) {
+  struct Run {
+    double whole, orient_s;
+    tsk::StageTimings timings;
+  };
+  std::vector<Run> runs(3);
+  for (Run& run : runs) {
+    const auto t = Clock::now();
+    const tsk::SilhouetteResult result = run_once(dem, azimuth, threads, run.orient_s);
+    run.whole = seconds_since(t);
+    run.timings = result.timings;
+    if (stats) *stats = result.stats;
+  }
+  std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.whole < b.whole; });
+  const Run& median = runs[1];
+  print_stages(label, median.timings, median.whole, static_cast<double>(dem.size()));
+  if (median.orient_s > 0) {
+    std::printf("  %-22s (of which orienting/resampling %.3f s; runs %.3f / %.3f / %.3f s)\n", "",
+                median.orient_s, runs[0].whole, runs[1].whole, runs[2].whole);
+  } else {
+    std::printf("  %-22s (runs %.3f / %.3f / %.3f s)\n", "", runs[0].whole, runs[1].whole,
+                runs[2].whole);
+  }
+  return median.whole;
 }
 
 void bench_size(std::size_t n, bool with_gdaldem) {
@@ -127,15 +150,14 @@ void bench_size(std::size_t n, bool with_gdaldem) {
   const double raster_mib = static_cast<double>(dem.size() * sizeof(float)) / (1024.0 * 1024.0);
   std::printf("\n== synthetic %zux%zu (%.0f MiB Float32), generated in %.2f s\n", n, n, raster_mib,
               gen);
-  tsk::SilhouetteResult r;
-  const double whole = timed_run(dem, 90, 0, "azimuth 90, all cores", &r);
+  tsk::StageStats stats;
+  const double whole = timed_run(dem, 90, 0, "azimuth 90, all cores", &stats);
   const double peak = peak_rss_mib();
   std::printf(
       "  %zu factual + %zu formulated strokes; c-set %.1f %%, f-set %.1f %%, t-set %.1f %%, "
       "g-set %.1f %%\n",
-      r.stats.factual_strokes, r.stats.formulated_strokes, r.stats.pct(r.stats.candidate),
-      r.stats.pct(r.stats.filtered), r.stats.pct(r.stats.thinned),
-      r.stats.pct(r.stats.generalised));
+      stats.factual_strokes, stats.formulated_strokes, stats.pct(stats.candidate),
+      stats.pct(stats.filtered), stats.pct(stats.thinned), stats.pct(stats.generalised));
   std::printf("  peak memory %.0f MiB = %.2f x the raster's bytes\n", peak, peak / raster_mib);
   const double single = timed_run(dem, 90, 1, "azimuth 90, 1 thread");
   std::printf("  %-22s %.2f x on %u threads\n", "thread speed-up", single / whole,

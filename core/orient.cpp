@@ -212,8 +212,11 @@ class BilinearSampler {
     }
     // The lower-left source cell, kept inside so that the far edge is reachable with weight 0.
     // Truncating a non-negative number is its floor, without a call into libm.
-    const std::size_t c0 = std::min(static_cast<std::size_t>(std::max(0.0, u)), max_c0_);
-    const std::size_t r0 = std::min(static_cast<std::size_t>(std::max(0.0, v)), max_r0_);
+    // (Through a signed integer: x86-64 converts doubles to signed integers in one instruction.)
+    const auto c0 =
+        std::min(static_cast<std::size_t>(static_cast<std::int64_t>(std::max(0.0, u))), max_c0_);
+    const auto r0 =
+        std::min(static_cast<std::size_t>(static_cast<std::int64_t>(std::max(0.0, v))), max_r0_);
     const double fu = dc_ ? std::clamp(u - static_cast<double>(c0), 0.0, 1.0) : 0.0;
     const double fv = dr_ ? std::clamp(v - static_cast<double>(r0), 0.0, 1.0) : 0.0;
     const float* cell = z_ + r0 * cols_ + c0;

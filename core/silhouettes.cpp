@@ -305,7 +305,7 @@ SilhouetteResult run_resampled_silhouettes(const HeightGrid& dem, const Oriented
   if (!frame.resampled) throw Error("run_resampled_silhouettes needs a resampled frame");
   // Big enough for the linking of one batch to overlap the collection of the next (add_strip),
   // small enough to stay a few tens of megabytes on any DEM.
-  constexpr std::size_t kStrip = 512;
+  constexpr std::size_t kStrip = 1024;
   SilhouetteStream stream(frame, geotransform, params, lowest_height(dem), progress);
   HeightGrid strip;
   double resampling = 0;
