@@ -190,7 +190,9 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
         const float* zp = z.row(row);
         // Every stage skips the nodata before the first and after the last cell with data:
         // up to half of a resampled profile.
-        const auto [b, e] = data_range(zp, length);
+        // (Named variables, not a structured binding: C++17 lambdas cannot capture those.)
+        const std::pair<std::size_t, std::size_t> range = data_range(zp, length);
+        const std::size_t b = range.first, e = range.second;
         local.time(&StageSeconds::visibility, [&] {
           std::memset(f, 0, length);
           classify_profile_visibility(zp, f, e, frame.d, view, b);
