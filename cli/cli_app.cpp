@@ -233,9 +233,10 @@ SilhouetteResult silhouettes_in_strips(const Options& o, std::size_t strip, io::
   info = reader.info();
   if (!info.notes.empty()) err << "note: " << info.notes;
   const double z_ref = o.params.geometry == Geometry::oblique ? reader.lowest_height() : 0.0;
-  return run_in_strips(
-      info.frame, info.geotransform, o.params, z_ref, strip,
-      [&](std::size_t first, std::size_t count) { return reader.read_profiles(first, count); });
+  return run_in_strips(info.frame, info.geotransform, o.params, z_ref, strip,
+                       [&](std::size_t first, std::size_t count, HeightGrid& heights) {
+                         heights = reader.read_profiles(first, count);
+                       });
 }
 
 int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {

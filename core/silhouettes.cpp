@@ -55,30 +55,27 @@ void add_counts(const StageStats& counts, StageStats& stats) {
   stats.filtered += counts.filtered, stats.thinned += counts.thinned;
 }
 
-// Time spent in each stage, summed over the threads that ran it.
-struct StageSeconds {
-  double visibility = 0, candidates = 0, filter = 0, thinning = 0, chaining = 0;
+// The stages that run profile by profile inside add_strip.
+constexpr double StageTimings::*kProfileStages[] = {
+    &StageTimings::visibility, &StageTimings::candidates, &StageTimings::filter,
+    &StageTimings::thinning, &StageTimings::chaining};
 
-  template <typename Work>
-  void time(double StageSeconds::*stage, Work&& work) {
-    const auto start = Clock::now();
-    work();
-    this->*stage += seconds_since(start);
-  }
-  void add(const StageSeconds& o) {
-    visibility += o.visibility, candidates += o.candidates, filter += o.filter;
-    thinning += o.thinning, chaining += o.chaining;
-  }
-  // Splits `wall` seconds between the stages by their shares of the threads' time.
-  void share_out(double wall, StageTimings& timings) const {
-    const double total = visibility + candidates + filter + thinning + chaining;
-    if (!(total > 0)) return;
-    const double k = wall / total;
-    timings.visibility += k * visibility, timings.candidates += k * candidates;
-    timings.filter += k * filter, timings.thinning += k * thinning;
-    timings.chaining += k * chaining;
-  }
-};
+// Adds the time `work` takes to `stage` of `seconds`.
+template <typename Work>
+void time_stage(StageTimings& seconds, double StageTimings::*stage, Work&& work) {
+  const auto start = Clock::now();
+  work();
+  seconds.*stage += seconds_since(start);
+}
+
+// Splits `wall` seconds between the per-profile stages by their shares of the threads' time
+// `seconds` (summed over the threads), adding them to `timings`.
+void share_out(const StageTimings& seconds, double wall, StageTimings& timings) {
+  double total = 0;
+  for (auto stage : kProfileStages) total += seconds.*stage;
+  if (!(total > 0)) return;
+  for (auto stage : kProfileStages) timings.*stage += wall * (seconds.*stage / total);
+}
 
 }  // namespace
 
@@ -178,11 +175,11 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
     std::vector<StrokeCell> factual_cells, formulated_cells;
   };
   std::mutex merge;
-  StageSeconds seconds;  // time of each stage summed over the threads
+  StageTimings seconds;  // time of each stage summed over the threads
   auto collect = [&](std::size_t b0, std::vector<Collected>& batch) {
     batch.assign(std::min(kBatch, count - b0), {});
     parallel_for(batch.size(), resolve_threads(threads), [&](std::size_t lo, std::size_t hi) {
-      StageSeconds local;
+      StageTimings local;
       StageStats counts;
       for (std::size_t k = lo; k < hi; ++k) {
         const std::size_t row = before + b0 + k, p = first + b0 + k;
@@ -193,21 +190,21 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
         // (Named variables, not a structured binding: C++17 lambdas cannot capture those.)
         const std::pair<std::size_t, std::size_t> range = data_range(zp, length);
         const std::size_t b = range.first, e = range.second;
-        local.time(&StageSeconds::visibility, [&] {
+        time_stage(local, &StageTimings::visibility, [&] {
           std::memset(f, 0, length);
           classify_profile_visibility(zp, f, e, frame.d, view, b);
         });
-        local.time(&StageSeconds::candidates,
+        time_stage(local, &StageTimings::candidates,
                    [&] { select_profile_candidates(zp + b, f + b, e - b, frame.d, view); });
-        local.time(&StageSeconds::filter, [&] {
+        time_stage(local, &StageTimings::filter, [&] {
           ProfileRows rows = profile_rows(z, row);
           for (const float** r : {&rows.left, &rows.centre, &rows.right})
             if (*r) *r += b;
           filter_profile(rows, f + b, e - b, frame.d, frame.w, st.params.filter);
         });
-        local.time(&StageSeconds::thinning,
+        time_stage(local, &StageTimings::thinning,
                    [&] { thin_profile(f + b, e - b, st.params.placement); });
-        local.time(&StageSeconds::chaining, [&] {
+        time_stage(local, &StageTimings::chaining, [&] {
           count_profile(f + b, e - b, counts);
           Collected& c = batch[k];
           c.factual = profile_candidates(f, e, true, b);
@@ -221,7 +218,7 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
         });
       }
       std::lock_guard<std::mutex> lock(merge);
-      seconds.add(local);
+      for (auto stage : kProfileStages) seconds.*stage += local.*stage;
       add_counts(counts, st.result.stats);
     });
   };
@@ -253,7 +250,7 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
       throw Cancelled();
     }
   }
-  seconds.share_out(seconds_since(start), st.result.timings);
+  share_out(seconds, seconds_since(start), st.result.timings);
   if (keep_flags) {
     st.result.flags = std::move(flags);
     flags = CellFlags();
@@ -290,11 +287,13 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
                                const ProfileReader& read, const ProgressFn& progress) {
   if (strip == 0) throw Error("a strip needs at least one profile");
   SilhouetteStream stream(frame, geotransform, params, z_ref, progress);
+  HeightGrid heights;
   for (std::size_t first = 0; first < frame.profiles; first += strip) {
     const std::size_t count = std::min(strip, frame.profiles - first);
     const std::size_t lo = first > 0 ? first - 1 : 0;
     const std::size_t hi = std::min(frame.profiles, first + count + 1);
-    stream.add_strip(read(lo, hi - lo), first, count);
+    read(lo, hi - lo, heights);
+    stream.add_strip(heights, first, count);
   }
   return stream.finish();
 }
@@ -308,19 +307,15 @@ SilhouetteResult run_resampled_silhouettes(const HeightGrid& dem, const Oriented
   // Big enough for the linking of one batch to overlap the collection of the next (add_strip),
   // small enough to stay a few tens of megabytes on any DEM.
   constexpr std::size_t kStrip = 1024;
-  SilhouetteStream stream(frame, geotransform, params, lowest_height(dem), progress);
-  HeightGrid strip;
   double resampling = 0;
-  for (std::size_t first = 0; first < frame.profiles; first += kStrip) {
-    const std::size_t count = std::min(kStrip, frame.profiles - first);
-    const std::size_t lo = first > 0 ? first - 1 : 0;
-    const std::size_t hi = std::min(frame.profiles, first + count + 1);
-    const auto start = Clock::now();
-    resample_profiles(dem, frame, lo, hi - lo, strip, params.threads);
-    resampling += seconds_since(start);
-    stream.add_strip(strip, first, count);
-  }
-  SilhouetteResult result = stream.finish();
+  SilhouetteResult result = run_in_strips(
+      frame, geotransform, params, lowest_height(dem), kStrip,
+      [&](std::size_t first, std::size_t count, HeightGrid& strip) {
+        const auto start = Clock::now();
+        resample_profiles(dem, frame, first, count, strip, params.threads);
+        resampling += seconds_since(start);
+      },
+      progress);
   result.timings.resampling = resampling;
   return result;
 }

@@ -74,8 +74,9 @@ class SilhouetteStream {
   std::unique_ptr<State> state_;
 };
 
-// Reads oriented profiles [first, first + count) of the grid (a strip with its neighbours).
-using ProfileReader = std::function<HeightGrid(std::size_t first, std::size_t count)>;
+// Reads oriented profiles [first, first + count) of the grid (a strip with its neighbours) into
+// `strip`, which holds the previous strip: a reader may reuse its memory.
+using ProfileReader = std::function<void(std::size_t first, std::size_t count, HeightGrid& strip)>;
 
 // The whole method with the grid read `strip` profiles at a time through `read`, each strip with
 // the neighbouring profiles the row slope needs. Equal to run_silhouettes on the whole grid.

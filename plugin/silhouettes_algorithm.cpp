@@ -189,7 +189,9 @@ SilhouetteResult SilhouettesAlgorithm::runInStrips(std::size_t strip,
   const double zRef = mParams.geometry == Geometry::oblique ? raster.lowestHeight() : 0.0;
   return run_in_strips(
       frame, raster.geotransform(), mParams, zRef, strip,
-      [&raster](std::size_t first, std::size_t count) { return raster.readProfiles(first, count); },
+      [&raster](std::size_t first, std::size_t count, HeightGrid& heights) {
+        heights = raster.readProfiles(first, count);
+      },
       [feedback](double f) {
         if (!feedback) return true;
         feedback->setProgress(kCoreEnd * f);

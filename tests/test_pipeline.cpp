@@ -286,14 +286,14 @@ TEST_CASE("run_in_strips reads every strip with its neighbours and equals the wh
   const HeightGrid z = orient(dem, frame);
   const SilhouetteResult whole = run_silhouettes(z, frame, GeoTransform{}, {});
   std::vector<std::pair<std::size_t, std::size_t>> reads;
-  const SilhouetteResult strips = run_in_strips(
-      frame, GeoTransform{}, {}, lowest_height(z), 16, [&](std::size_t first, std::size_t count) {
-        reads.emplace_back(first, count);
-        HeightGrid s(count, z.cols());
-        for (std::size_t r = 0; r < count; ++r)
-          std::copy(z.row(first + r), z.row(first + r) + z.cols(), s.row(r));
-        return s;
-      });
+  const SilhouetteResult strips =
+      run_in_strips(frame, GeoTransform{}, {}, lowest_height(z), 16,
+                    [&](std::size_t first, std::size_t count, HeightGrid& s) {
+                      reads.emplace_back(first, count);
+                      s = HeightGrid(count, z.cols());
+                      for (std::size_t r = 0; r < count; ++r)
+                        std::copy(z.row(first + r), z.row(first + r) + z.cols(), s.row(r));
+                    });
   // Profiles 0-15 with 16; 15-31 with 15 and 32; 31-47 with 31 and 48; 47-49 with 47.
   CHECK(reads ==
         std::vector<std::pair<std::size_t, std::size_t>>{{0, 17}, {15, 18}, {31, 18}, {47, 3}});
