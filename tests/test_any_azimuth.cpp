@@ -288,22 +288,7 @@ TEST_CASE("resampling strip by strip gives the strokes of the whole resampled gr
       CHECK(strips.stats.thinned == whole.stats.thinned);
       CHECK(strips.stats.generalised == whole.stats.generalised);
       REQUIRE(whole.strokes.size() > 100);
-      REQUIRE(strips.strokes.size() == whole.strokes.size());
-      for (std::size_t k = 0; k < whole.strokes.size(); ++k) {
-        const Stroke& a = whole.strokes[k];
-        const Stroke& b = strips.strokes[k];
-        REQUIRE(a.cls == b.cls);
-        REQUIRE(a.cells == b.cells);
-        REQUIRE(a.chain.front().p == b.chain.front().p);
-        REQUIRE(a.chain.front().i == b.chain.front().i);
-        REQUIRE((a.mean_depth_m == b.mean_depth_m ||
-                 (std::isnan(a.mean_depth_m) && std::isnan(b.mean_depth_m))));
-        REQUIRE(a.mean_row_slope_pct == b.mean_row_slope_pct);
-        for (std::size_t q = 0; q < a.points.size(); ++q) {
-          REQUIRE(a.points[q].x == b.points[q].x);
-          REQUIRE(a.points[q].y == b.points[q].y);
-        }
-      }
+      test::require_same_strokes(whole, strips);
       CHECK(strips.timings.resampling > 0);
     }
   }

@@ -263,18 +263,7 @@ TEST_CASE("strips of any width give exactly the result of the whole grid", "[pip
       CHECK(strips.stats.filtered == whole.stats.filtered);
       CHECK(strips.stats.thinned == whole.stats.thinned);
       CHECK(strips.stats.generalised == whole.stats.generalised);
-      REQUIRE(strips.strokes.size() == whole.strokes.size());
-      for (std::size_t k = 0; k < whole.strokes.size(); ++k) {
-        const Stroke& a = whole.strokes[k];
-        const Stroke& b = strips.strokes[k];
-        REQUIRE(a.cls == b.cls);
-        REQUIRE(a.cells == b.cells);
-        REQUIRE(a.mean_row_slope_pct == b.mean_row_slope_pct);
-        for (std::size_t q = 0; q < a.points.size(); ++q) {
-          REQUIRE(a.points[q].x == b.points[q].x);
-          REQUIRE(a.points[q].y == b.points[q].y);
-        }
-      }
+      test::require_same_strokes(whole, strips);
     }
   }
 }

@@ -1,6 +1,8 @@
 // Helpers shared by the stage tests: random terrains with printed seeds and whole-DEM runs.
 #pragma once
 
+#include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdint>
 #include <random>
 
@@ -43,6 +45,27 @@ inline HeightGrid rotate_clockwise(const HeightGrid& dem) {
     for (std::size_t c = 0; c < out.cols(); ++c) out(r, c) = dem(dem.rows() - 1 - c, r);
   }
   return out;
+}
+
+// Requires `actual` to hold the strokes of `expected`, in the same order, point for point.
+inline void require_same_strokes(const SilhouetteResult& expected, const SilhouetteResult& actual) {
+  REQUIRE(actual.strokes.size() == expected.strokes.size());
+  for (std::size_t k = 0; k < expected.strokes.size(); ++k) {
+    const Stroke& a = expected.strokes[k];
+    const Stroke& b = actual.strokes[k];
+    REQUIRE(a.cls == b.cls);
+    REQUIRE(a.cells == b.cells);
+    REQUIRE(a.chain.front().p == b.chain.front().p);
+    REQUIRE(a.chain.front().i == b.chain.front().i);
+    REQUIRE((a.mean_depth_m == b.mean_depth_m ||
+             (std::isnan(a.mean_depth_m) && std::isnan(b.mean_depth_m))));
+    REQUIRE(a.mean_row_slope_pct == b.mean_row_slope_pct);
+    REQUIRE(a.points.size() == b.points.size());
+    for (std::size_t q = 0; q < a.points.size(); ++q) {
+      REQUIRE(a.points[q].x == b.points[q].x);
+      REQUIRE(a.points[q].y == b.points[q].y);
+    }
+  }
 }
 
 }  // namespace tsk::test
