@@ -9,8 +9,10 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 
 #include "gdal_util.h"
+#include "gpkg_spatial_index.h"
 #include "output_files.h"
 
 namespace tsk::io {
@@ -42,12 +44,48 @@ std::string vector_driver_for(const std::string& path, const std::string& format
 
 namespace {
 
+// Writes line features to a layer and, for a GeoPackage, their boxes to its spatial index.
+class LineSink {
+ public:
+  LineSink(OGRLayer& layer, GpkgSpatialIndex* index, const std::string& path,
+           const GdalErrorCapture& capture)
+      : layer_(layer), index_(index), path_(path), capture_(capture) {}
+
+  OGRFeatureDefn* definition() { return layer_.GetLayerDefn(); }
+
+  // Writes one line feature whose attributes the caller has set.
+  void add(OGRFeature& feature, const std::vector<StrokePoint>& points) {
+    OGRLineString line;
+    line.setNumPoints(static_cast<int>(points.size()));
+    IndexBox box{0, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      line.setPoint(static_cast<int>(k), points[k].x, points[k].y);
+      box.min_x = std::min(box.min_x, points[k].x);
+      box.max_x = std::max(box.max_x, points[k].x);
+      box.min_y = std::min(box.min_y, points[k].y);
+      box.max_y = std::max(box.max_y, points[k].y);
+    }
+    feature.SetGeometry(&line);
+    check(layer_.CreateFeature(&feature), "writing a line to '" + path_ + "'", capture_);
+    if (index_ && !points.empty()) {
+      box.id = feature.GetFID();
+      index_->add(box);
+    }
+  }
+
+ private:
+  OGRLayer& layer_;
+  GpkgSpatialIndex* index_;
+  const std::string& path_;
+  const GdalErrorCapture& capture_;
+};
+
 // Creates `path` with one line layer, lets add_fields define its fields and add_features fill it,
 // all inside a transaction; whole or not at all.
 void write_line_layer(const std::string& path, const std::string& format,
                       const std::string& srs_wkt, const std::string& layer_name,
                       const std::function<void(OGRLayer&, const GdalErrorCapture&)>& add_fields,
-                      const std::function<void(OGRLayer&, const GdalErrorCapture&)>& add_features) {
+                      const std::function<void(LineSink&)>& add_features) {
   GdalErrorCapture capture;
   const std::string driver_name = vector_driver_for(path, format);
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
@@ -58,16 +96,24 @@ void write_line_layer(const std::string& path, const std::string& format,
   OGRSpatialReference srs;
   const bool has_srs = !srs_wkt.empty() && srs.importFromWkt(srs_wkt.c_str()) == OGRERR_NONE;
   srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  // A GeoPackage gets its spatial index in bulk once the features are in.
+  const bool bulk_index = driver_name == "GPKG";
+  CPLStringList layer_options;
+  if (bulk_index) layer_options.SetNameValue("SPATIAL_INDEX", "NO");
 
   write_atomically(path, [&](const std::filesystem::path& staged) {
     DatasetPtr ds(driver->Create(staged.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
     if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
-    OGRLayer* layer =
-        ds->CreateLayer(layer_name.c_str(), has_srs ? &srs : nullptr, wkbLineString, nullptr);
+    OGRLayer* layer = ds->CreateLayer(layer_name.c_str(), has_srs ? &srs : nullptr, wkbLineString,
+                                      layer_options.List());
     if (!layer) throw Error("cannot create layer in '" + path + "': " + capture.message());
     add_fields(*layer, capture);
     const bool transaction = ds->StartTransaction() == OGRERR_NONE;
-    add_features(*layer, capture);
+    std::optional<GpkgSpatialIndex> index;
+    if (bulk_index) index.emplace(*ds, *layer, capture);
+    LineSink sink(*layer, index ? &*index : nullptr, path, capture);
+    add_features(sink);
+    if (index) index->finish();
     if (transaction) check(ds->CommitTransaction(), "committing '" + path + "'", capture);
     CPLErrorReset();
     ds.reset();  // closing flushes: a failure here means an incomplete file
@@ -83,18 +129,6 @@ void add_field(OGRLayer& layer, const char* name, OGRFieldType type,
   check(layer.CreateField(&defn), std::string("creating field '") + name + "'", capture);
 }
 
-// Writes one line feature whose attributes `set` has filled.
-void add_line(OGRLayer& layer, OGRFeature& feature, const std::vector<StrokePoint>& points,
-              const std::string& path, const GdalErrorCapture& capture) {
-  OGRLineString line;
-  line.setNumPoints(static_cast<int>(points.size()));
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    line.setPoint(static_cast<int>(k), points[k].x, points[k].y);
-  }
-  feature.SetGeometry(&line);
-  check(layer.CreateFeature(&feature), "writing a line to '" + path + "'", capture);
-}
-
 }  // namespace
 
 void write_strokes(const std::string& path, const std::string& format,
@@ -108,10 +142,10 @@ void write_strokes(const std::string& path, const std::string& format,
         for (const StrokeRealField& f : stroke_real_fields())
           add_field(layer, f.name, OFTReal, capture);
       },
-      [&](OGRLayer& layer, const GdalErrorCapture& capture) {
+      [&](LineSink& sink) {
         // Fields by position: drivers may shorten names (shapefile: 10 characters).
         for (const Stroke& s : strokes) {
-          OGRFeature feature(layer.GetLayerDefn());
+          OGRFeature feature(sink.definition());
           feature.SetField(0, stroke_class_name(s.cls));
           feature.SetField(1, s.cells);
           int index = 2;
@@ -124,7 +158,7 @@ void write_strokes(const std::string& path, const std::string& format,
             }
             ++index;
           }
-          add_line(layer, feature, s.points, path, capture);
+          sink.add(feature, s.points);
         }
       });
 }
@@ -137,12 +171,12 @@ void write_profile_lines(const std::string& path, const std::string& format,
         add_field(layer, "section", OFTInteger, capture);
         add_field(layer, "distance", OFTReal, capture);
       },
-      [&](OGRLayer& layer, const GdalErrorCapture& capture) {
+      [&](LineSink& sink) {
         for (const ProfileLine& line : lines) {
-          OGRFeature feature(layer.GetLayerDefn());
+          OGRFeature feature(sink.definition());
           feature.SetField(0, static_cast<int>(line.cross_section));
           feature.SetField(1, line.distance);
-          add_line(layer, feature, line.points, path, capture);
+          sink.add(feature, line.points);
         }
       });
 }
@@ -155,12 +189,12 @@ void write_pstrokes(const std::string& path, const std::string& format,
         add_field(layer, "class", OFTString, capture);
         add_field(layer, "score_m2", OFTReal, capture);
       },
-      [&](OGRLayer& layer, const GdalErrorCapture& capture) {
+      [&](LineSink& sink) {
         for (const PStroke& s : strokes) {
-          OGRFeature feature(layer.GetLayerDefn());
+          OGRFeature feature(sink.definition());
           feature.SetField(0, pstroke_class_name(s.cls));
           feature.SetField(1, s.score_m2);
-          add_line(layer, feature, s.points, path, capture);
+          sink.add(feature, s.points);
         }
       });
 }

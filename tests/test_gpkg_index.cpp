@@ -1,0 +1,170 @@
+// The GeoPackage spatial index built in bulk: SQLite's own rtreecheck() passes, window queries on
+// the index give what a brute-force box test gives, and the index follows later edits.
+#include <ogrsf_frmts.h>
+
+#include <catch2/catch.hpp>
+#include <random>
+#include <set>
+
+#include "gdal_test_support.h"
+#include "gdal_util.h"
+#include "gpkg_spatial_index.h"
+#include "vector_writer.h"
+
+using namespace tsk;
+using test::ScratchDir;
+
+namespace {
+
+constexpr double kEast = 500000, kNorth = 4800000;  // UTM-sized, where floats are coarse
+const char* const kIndex = "rtree_silhouettes_geom";
+
+// Strokes as short random walks; on whole metres, which floats hold exactly, if `whole`.
+std::vector<Stroke> random_strokes(std::size_t count, bool whole, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> start(0, 20000), step(-40, 40);
+  std::vector<Stroke> strokes(count);
+  for (Stroke& s : strokes) {
+    double x = start(rng), y = start(rng);
+    for (int k = 0; k < 2 + static_cast<int>(rng() % 5); ++k, x += step(rng), y += step(rng)) {
+      s.points.push_back(whole ? StrokePoint{kEast + std::round(x), kNorth + std::round(y)}
+                               : StrokePoint{kEast + x, kNorth + y});
+    }
+    s.cells = static_cast<int>(s.points.size());
+  }
+  return strokes;
+}
+
+io::DatasetPtr open_vector(const std::string& path, bool update) {
+  GDALAllRegister();
+  io::DatasetPtr ds(static_cast<GDALDataset*>(
+      GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | (update ? GDAL_OF_UPDATE : GDAL_OF_READONLY),
+                 nullptr, nullptr, nullptr)));
+  REQUIRE(ds);
+  return ds;
+}
+
+// The first field of every row `sql` gives.
+std::vector<std::string> first_column(GDALDataset& ds, const std::string& sql) {
+  std::vector<std::string> values;
+  OGRLayer* result = ds.ExecuteSQL(sql.c_str(), nullptr, nullptr);
+  REQUIRE(result);
+  for (auto& row : *result) values.emplace_back(row->GetFieldAsString(0));
+  ds.ReleaseResultSet(result);
+  return values;
+}
+
+std::string rtree_check(GDALDataset& ds) {
+  return first_column(ds, std::string("SELECT rtreecheck('") + kIndex + "')").at(0);
+}
+
+struct Window {
+  double x0, y0, x1, y1;
+};
+
+std::set<GIntBig> index_hits(GDALDataset& ds, const Window& w) {
+  std::set<GIntBig> ids;
+  for (const std::string& id : first_column(
+           ds, "SELECT id FROM " + std::string(kIndex) + " WHERE maxx >= " + std::to_string(w.x0) +
+                   " AND minx <= " + std::to_string(w.x1) + " AND maxy >= " + std::to_string(w.y0) +
+                   " AND miny <= " + std::to_string(w.y1))) {
+    ids.insert(std::stoll(id));
+  }
+  return ids;
+}
+
+// Features whose geometry's box meets the window, by looking at every feature.
+std::set<GIntBig> box_hits(GDALDataset& ds, const Window& w) {
+  std::set<GIntBig> ids;
+  OGRLayer* layer = ds.GetLayer(0);
+  layer->SetSpatialFilter(nullptr);
+  for (auto& feature : *layer) {
+    OGREnvelope e;
+    feature->GetGeometryRef()->getEnvelope(&e);
+    if (e.MaxX >= w.x0 && e.MinX <= w.x1 && e.MaxY >= w.y0 && e.MinY <= w.y1) {
+      ids.insert(feature->GetFID());
+    }
+  }
+  return ids;
+}
+
+// Windows from a cell wide to a quarter of the extent, off the whole metres.
+std::vector<Window> random_windows(unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> at(-100, 20100), size(1, 5000);
+  std::vector<Window> windows;
+  for (int k = 0; k < 40; ++k) {
+    const double x = kEast + std::floor(at(rng)) + 0.25, y = kNorth + std::floor(at(rng)) + 0.75;
+    windows.push_back({x, y, x + std::floor(size(rng)) + 0.5, y + std::floor(size(rng)) + 0.5});
+  }
+  return windows;
+}
+
+}  // namespace
+
+TEST_CASE("pack_rtree grows a level each time the nodes fill", "[gpkg]") {
+  const std::size_t node_bytes = 4 + 51 * 24;  // what SQLite makes on 4096-byte pages
+  const auto boxes = [](std::size_t n) {
+    std::vector<io::IndexBox> out(n);
+    for (std::size_t i = 0; i < n; ++i)
+      out[i] = {static_cast<std::int64_t>(i + 1), 1.0 * i, 1.0 * i + 2, 0.5 * i, 0.5 * i + 1};
+    return out;
+  };
+  CHECK(io::pack_rtree(boxes(0), node_bytes).depth == 0);
+  CHECK(io::pack_rtree(boxes(0), node_bytes).nodes.size() == 1);
+  CHECK(io::pack_rtree(boxes(51), node_bytes).depth == 0);
+  CHECK(io::pack_rtree(boxes(52), node_bytes).depth == 1);
+  CHECK(io::pack_rtree(boxes(51 * 51), node_bytes).depth == 1);
+  const io::PackedRtree deep = io::pack_rtree(boxes(51 * 51 + 1), node_bytes);
+  CHECK(deep.depth == 2);
+  CHECK(deep.nodes.front().number == 1);
+  CHECK(deep.leaf_of.size() == 51 * 51 + 1);
+  CHECK_THROWS_AS(io::pack_rtree(boxes(3), 40), Error);
+}
+
+TEST_CASE("GeoPackage spatial index is whole and answers like a brute-force search", "[gpkg]") {
+  ScratchDir dir("gpkg-index");
+  for (const std::size_t count : {0, 1, 51, 52, 2601, 2602, 20000}) {
+    for (const bool whole : {true, false}) {
+      CAPTURE(count, whole);
+      const std::string path = dir / "s.gpkg";
+      io::write_strokes(path, "", random_strokes(count, whole, static_cast<unsigned>(count)), "");
+      io::DatasetPtr ds = open_vector(path, false);
+      CHECK(rtree_check(*ds) == "ok");
+      CHECK(first_column(*ds, std::string("SELECT count(*) FROM ") + kIndex).at(0) ==
+            std::to_string(count));
+      for (const Window& w : random_windows(static_cast<unsigned>(count) + 7)) {
+        const std::set<GIntBig> by_index = index_hits(*ds, w), by_box = box_hits(*ds, w);
+        if (whole) {
+          CHECK(by_index == by_box);  // float-exact coordinates: the same features
+        } else {
+          CHECK(std::includes(by_index.begin(), by_index.end(), by_box.begin(), by_box.end()));
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("GeoPackage spatial index follows features added and deleted later", "[gpkg]") {
+  ScratchDir dir("gpkg-edit");
+  const std::string path = dir / "s.gpkg";
+  io::write_strokes(path, "", random_strokes(3000, true, 5), "");
+  const Window far_away{kEast - 1000.5, kNorth - 1000.5, kEast - 899.5, kNorth - 899.5};
+  {
+    io::DatasetPtr ds = open_vector(path, true);
+    OGRLayer* layer = ds->GetLayer(0);
+    OGRFeature feature(layer->GetLayerDefn());
+    OGRLineString line;
+    line.addPoint(kEast - 950, kNorth - 950);
+    line.addPoint(kEast - 940, kNorth - 930);
+    feature.SetGeometry(&line);
+    REQUIRE(layer->CreateFeature(&feature) == OGRERR_NONE);
+    REQUIRE(layer->DeleteFeature(1) == OGRERR_NONE);
+  }
+  io::DatasetPtr ds = open_vector(path, false);
+  CHECK(rtree_check(*ds) == "ok");
+  CHECK(index_hits(*ds, far_away) == std::set<GIntBig>{3001});
+  CHECK(first_column(*ds, std::string("SELECT count(*) FROM ") + kIndex + " WHERE id = 1").at(0) ==
+        "0");
+  CHECK(ds->GetLayer(0)->GetFeatureCount() == 3000);
+}
