@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <functional>
 #include <map>
-#include <optional>
 
 #include "gdal_util.h"
 #include "gpkg_spatial_index.h"
@@ -44,12 +43,11 @@ std::string vector_driver_for(const std::string& path, const std::string& format
 
 namespace {
 
-// Writes line features to a layer and, for a GeoPackage, their boxes to its spatial index.
+// Writes line features to a layer.
 class LineSink {
  public:
-  LineSink(OGRLayer& layer, GpkgSpatialIndex* index, const std::string& path,
-           const GdalErrorCapture& capture)
-      : layer_(layer), index_(index), path_(path), capture_(capture) {}
+  LineSink(OGRLayer& layer, const std::string& path, const GdalErrorCapture& capture)
+      : layer_(layer), path_(path), capture_(capture) {}
 
   OGRFeatureDefn* definition() { return layer_.GetLayerDefn(); }
 
@@ -57,25 +55,15 @@ class LineSink {
   void add(OGRFeature& feature, const std::vector<StrokePoint>& points) {
     OGRLineString line;
     line.setNumPoints(static_cast<int>(points.size()));
-    IndexBox box{0, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
     for (std::size_t k = 0; k < points.size(); ++k) {
       line.setPoint(static_cast<int>(k), points[k].x, points[k].y);
-      box.min_x = std::min(box.min_x, points[k].x);
-      box.max_x = std::max(box.max_x, points[k].x);
-      box.min_y = std::min(box.min_y, points[k].y);
-      box.max_y = std::max(box.max_y, points[k].y);
     }
     feature.SetGeometry(&line);
     check(layer_.CreateFeature(&feature), "writing a line to '" + path_ + "'", capture_);
-    if (index_ && !points.empty()) {
-      box.id = feature.GetFID();
-      index_->add(box);
-    }
   }
 
  private:
   OGRLayer& layer_;
-  GpkgSpatialIndex* index_;
   const std::string& path_;
   const GdalErrorCapture& capture_;
 };
@@ -109,11 +97,9 @@ void write_line_layer(const std::string& path, const std::string& format,
     if (!layer) throw Error("cannot create layer in '" + path + "': " + capture.message());
     add_fields(*layer, capture);
     const bool transaction = ds->StartTransaction() == OGRERR_NONE;
-    std::optional<GpkgSpatialIndex> index;
-    if (bulk_index) index.emplace(*ds, *layer, capture);
-    LineSink sink(*layer, index ? &*index : nullptr, path, capture);
+    LineSink sink(*layer, path, capture);
     add_features(sink);
-    if (index) index->finish();
+    if (bulk_index) add_gpkg_spatial_index(*ds, layer->GetName());
     if (transaction) check(ds->CommitTransaction(), "committing '" + path + "'", capture);
     CPLErrorReset();
     ds.reset();  // closing flushes: a failure here means an incomplete file

@@ -2,12 +2,14 @@
 
 #include <qgsfeaturesink.h>
 #include <qgsprocessingfeedback.h>
+#include <qgsproviderregistry.h>
 #include <qgsrasterlayer.h>
 
 #include <QIcon>
 #include <algorithm>
 
 #include "errors.h"
+#include "gpkg_spatial_index.h"
 #include "plugin_paths.h"
 #include "qgis_compat.h"
 #include "raster_grid.h"
@@ -118,6 +120,32 @@ bool DemViewAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
     if (feedback) feedback->pushWarning(note);
   }
   return true;
+}
+
+std::unique_ptr<QgsFeatureSink> DemViewAlgorithm::lineSink(
+    const QVariantMap& parameters, const QString& key, QgsProcessingContext& context,
+    QString& destination, const QgsFields& fields, const QgsCoordinateReferenceSystem& crs) {
+  const bool bulkIndex = parameterAsOutputLayer(parameters, key, context)
+                             .endsWith(QLatin1String(".gpkg"), Qt::CaseInsensitive);
+  std::unique_ptr<QgsFeatureSink> sink(
+      parameterAsSink(parameters, key, context, destination, fields, kLineString, crs,
+                      QgsFeatureSink::SinkFlags(), QVariantMap(), QStringList(),
+                      bulkIndex ? QStringList{QStringLiteral("SPATIAL_INDEX=NO")} : QStringList()));
+  if (!sink) throw QgsProcessingException(invalidSinkError(parameters, key));
+  if (bulkIndex) mUnindexed.insert(destination);
+  return sink;
+}
+
+void DemViewAlgorithm::closeLineSink(std::unique_ptr<QgsFeatureSink>& sink,
+                                     const QString& destination) {
+  sink.reset();
+  if (!mUnindexed.remove(destination)) return;
+  const QVariantMap parts =
+      QgsProviderRegistry::instance()->decodeUri(QStringLiteral("ogr"), destination);
+  withCoreErrors([&parts] {
+    io::add_gpkg_spatial_index(parts.value(QStringLiteral("path")).toString().toStdString(),
+                               parts.value(QStringLiteral("layerName")).toString().toStdString());
+  });
 }
 
 void DemViewAlgorithm::addToSink(QgsFeatureSink& sink, QgsFeature& feature,

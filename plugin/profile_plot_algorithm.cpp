@@ -67,15 +67,15 @@ QVariantMap ProfilePlotAlgorithm::processAlgorithm(const QVariantMap& parameters
   QgsFields fields;
   fields.append(makeField(QStringLiteral("section"), FieldKind::Integer));
   fields.append(makeField(QStringLiteral("distance"), FieldKind::Real));
-  std::unique_ptr<QgsFeatureSink> sink(parameterAsSink(
-      parameters, QStringLiteral("OUTPUT"), context, mOutput, fields, kLineString, raster.crs()));
-  if (!sink) throw QgsProcessingException(invalidSinkError(parameters, QStringLiteral("OUTPUT")));
+  std::unique_ptr<QgsFeatureSink> sink =
+      lineSink(parameters, QStringLiteral("OUTPUT"), context, mOutput, fields, raster.crs());
   for (const ProfileLine& line : lines) {
     QgsFeature feature(fields);
     feature.setAttributes({static_cast<int>(line.cross_section), line.distance});
     feature.setGeometry(lineGeometry(line.points));
     addToSink(*sink, feature, parameters, QStringLiteral("OUTPUT"), feedback, lines.size(), 50);
   }
+  closeLineSink(sink, mOutput);
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), mOutput}};
 }

@@ -98,9 +98,8 @@ QVariantMap PStrokeAlgorithm::processAlgorithm(const QVariantMap& parameters,
   QgsFields fields;
   fields.append(makeField(QStringLiteral("class"), FieldKind::Text));
   fields.append(makeField(QStringLiteral("score_m2"), FieldKind::Real));
-  std::unique_ptr<QgsFeatureSink> sink(parameterAsSink(
-      parameters, QStringLiteral("OUTPUT"), context, mOutput, fields, kLineString, raster.crs()));
-  if (!sink) throw QgsProcessingException(invalidSinkError(parameters, QStringLiteral("OUTPUT")));
+  std::unique_ptr<QgsFeatureSink> sink =
+      lineSink(parameters, QStringLiteral("OUTPUT"), context, mOutput, fields, raster.crs());
   for (const PStroke& s : strokes) {
     QgsFeature feature(fields);
     QgsAttributes attributes;
@@ -109,6 +108,7 @@ QVariantMap PStrokeAlgorithm::processAlgorithm(const QVariantMap& parameters,
     feature.setGeometry(lineGeometry(s.points));
     addToSink(*sink, feature, parameters, QStringLiteral("OUTPUT"), feedback, strokes.size(), 50);
   }
+  closeLineSink(sink, mOutput);
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), mOutput}};
 }

@@ -154,12 +154,10 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
   }
 
   const QgsFields fields = strokeFields();
-  std::unique_ptr<QgsFeatureSink> factual(parameterAsSink(parameters, kFactual, context, mFactualId,
-                                                          fields, kLineString, raster.crs()));
-  if (!factual) throw QgsProcessingException(invalidSinkError(parameters, kFactual));
-  std::unique_ptr<QgsFeatureSink> formulated(parameterAsSink(
-      parameters, kFormulated, context, mFormulatedId, fields, kLineString, raster.crs()));
-  if (!formulated) throw QgsProcessingException(invalidSinkError(parameters, kFormulated));
+  std::unique_ptr<QgsFeatureSink> factual =
+      lineSink(parameters, kFactual, context, mFactualId, fields, raster.crs());
+  std::unique_ptr<QgsFeatureSink> formulated =
+      lineSink(parameters, kFormulated, context, mFormulatedId, fields, raster.crs());
 
   for (const Stroke& stroke : result.strokes) {
     const bool isFactual = stroke.cls == StrokeClass::factual;
@@ -167,8 +165,8 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
     addToSink(isFactual ? *factual : *formulated, feature, parameters,
               isFactual ? kFactual : kFormulated, feedback, result.strokes.size(), kCoreEnd);
   }
-  factual.reset();
-  formulated.reset();
+  closeLineSink(factual, mFactualId);
+  closeLineSink(formulated, mFormulatedId);
 
   QVariantMap outputs;
   outputs.insert(kFactual, mFactualId);

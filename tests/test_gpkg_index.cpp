@@ -7,17 +7,18 @@
 #include <set>
 
 #include "gdal_test_support.h"
-#include "gdal_util.h"
+#include "gpkg_index_check.h"
 #include "gpkg_spatial_index.h"
 #include "vector_writer.h"
 
 using namespace tsk;
+using test::IndexedGpkg;
 using test::ScratchDir;
+using test::Window;
 
 namespace {
 
 constexpr double kEast = 500000, kNorth = 4800000;  // UTM-sized, where floats are coarse
-const char* const kIndex = "rtree_silhouettes_geom";
 
 // Strokes as short random walks; on whole metres, which floats hold exactly, if `whole`.
 std::vector<Stroke> random_strokes(std::size_t count, bool whole, unsigned seed) {
@@ -33,59 +34,6 @@ std::vector<Stroke> random_strokes(std::size_t count, bool whole, unsigned seed)
     s.cells = static_cast<int>(s.points.size());
   }
   return strokes;
-}
-
-io::DatasetPtr open_vector(const std::string& path, bool update) {
-  GDALAllRegister();
-  io::DatasetPtr ds(static_cast<GDALDataset*>(
-      GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | (update ? GDAL_OF_UPDATE : GDAL_OF_READONLY),
-                 nullptr, nullptr, nullptr)));
-  REQUIRE(ds);
-  return ds;
-}
-
-// The first field of every row `sql` gives.
-std::vector<std::string> first_column(GDALDataset& ds, const std::string& sql) {
-  std::vector<std::string> values;
-  OGRLayer* result = ds.ExecuteSQL(sql.c_str(), nullptr, nullptr);
-  REQUIRE(result);
-  for (auto& row : *result) values.emplace_back(row->GetFieldAsString(0));
-  ds.ReleaseResultSet(result);
-  return values;
-}
-
-std::string rtree_check(GDALDataset& ds) {
-  return first_column(ds, std::string("SELECT rtreecheck('") + kIndex + "')").at(0);
-}
-
-struct Window {
-  double x0, y0, x1, y1;
-};
-
-std::set<GIntBig> index_hits(GDALDataset& ds, const Window& w) {
-  std::set<GIntBig> ids;
-  for (const std::string& id : first_column(
-           ds, "SELECT id FROM " + std::string(kIndex) + " WHERE maxx >= " + std::to_string(w.x0) +
-                   " AND minx <= " + std::to_string(w.x1) + " AND maxy >= " + std::to_string(w.y0) +
-                   " AND miny <= " + std::to_string(w.y1))) {
-    ids.insert(std::stoll(id));
-  }
-  return ids;
-}
-
-// Features whose geometry's box meets the window, by looking at every feature.
-std::set<GIntBig> box_hits(GDALDataset& ds, const Window& w) {
-  std::set<GIntBig> ids;
-  OGRLayer* layer = ds.GetLayer(0);
-  layer->SetSpatialFilter(nullptr);
-  for (auto& feature : *layer) {
-    OGREnvelope e;
-    feature->GetGeometryRef()->getEnvelope(&e);
-    if (e.MaxX >= w.x0 && e.MinX <= w.x1 && e.MaxY >= w.y0 && e.MinY <= w.y1) {
-      ids.insert(feature->GetFID());
-    }
-  }
-  return ids;
 }
 
 // Windows from a cell wide to a quarter of the extent, off the whole metres.
@@ -129,12 +77,11 @@ TEST_CASE("GeoPackage spatial index is whole and answers like a brute-force sear
       CAPTURE(count, whole);
       const std::string path = dir / "s.gpkg";
       io::write_strokes(path, "", random_strokes(count, whole, static_cast<unsigned>(count)), "");
-      io::DatasetPtr ds = open_vector(path, false);
-      CHECK(rtree_check(*ds) == "ok");
-      CHECK(first_column(*ds, std::string("SELECT count(*) FROM ") + kIndex).at(0) ==
-            std::to_string(count));
+      IndexedGpkg gpkg(path, "silhouettes");
+      CHECK(gpkg.rtree_check() == "ok");
+      CHECK(gpkg.indexed() == static_cast<long long>(count));
       for (const Window& w : random_windows(static_cast<unsigned>(count) + 7)) {
-        const std::set<GIntBig> by_index = index_hits(*ds, w), by_box = box_hits(*ds, w);
+        const std::set<GIntBig> by_index = gpkg.index_hits(w), by_box = gpkg.box_hits(w);
         if (whole) {
           CHECK(by_index == by_box);  // float-exact coordinates: the same features
         } else {
@@ -145,14 +92,22 @@ TEST_CASE("GeoPackage spatial index is whole and answers like a brute-force sear
   }
 }
 
+TEST_CASE("the command line's GeoPackages carry a whole spatial index", "[gpkg][cli]") {
+  ScratchDir dir("gpkg-cli");
+  REQUIRE(test::run_cli({"silhouettes", TSK_SAMPLE_DEM, dir / "s.gpkg"}).code == 0);
+  test::check_spatial_index(dir / "s.gpkg", "silhouettes");
+  REQUIRE(test::run_cli({"pstrokes", TSK_SAMPLE_DEM, dir / "p.gpkg"}).code == 0);
+  test::check_spatial_index(dir / "p.gpkg", "pstrokes");
+}
+
 TEST_CASE("GeoPackage spatial index follows features added and deleted later", "[gpkg]") {
   ScratchDir dir("gpkg-edit");
   const std::string path = dir / "s.gpkg";
   io::write_strokes(path, "", random_strokes(3000, true, 5), "");
   const Window far_away{kEast - 1000.5, kNorth - 1000.5, kEast - 899.5, kNorth - 899.5};
   {
-    io::DatasetPtr ds = open_vector(path, true);
-    OGRLayer* layer = ds->GetLayer(0);
+    IndexedGpkg gpkg(path, "silhouettes", /*update=*/true);
+    OGRLayer* layer = &gpkg.layer();
     OGRFeature feature(layer->GetLayerDefn());
     OGRLineString line;
     line.addPoint(kEast - 950, kNorth - 950);
@@ -161,10 +116,9 @@ TEST_CASE("GeoPackage spatial index follows features added and deleted later", "
     REQUIRE(layer->CreateFeature(&feature) == OGRERR_NONE);
     REQUIRE(layer->DeleteFeature(1) == OGRERR_NONE);
   }
-  io::DatasetPtr ds = open_vector(path, false);
-  CHECK(rtree_check(*ds) == "ok");
-  CHECK(index_hits(*ds, far_away) == std::set<GIntBig>{3001});
-  CHECK(first_column(*ds, std::string("SELECT count(*) FROM ") + kIndex + " WHERE id = 1").at(0) ==
-        "0");
-  CHECK(ds->GetLayer(0)->GetFeatureCount() == 3000);
+  IndexedGpkg gpkg(path, "silhouettes");
+  CHECK(gpkg.rtree_check() == "ok");
+  CHECK(gpkg.index_hits(far_away) == std::set<GIntBig>{3001});
+  CHECK(gpkg.indexed("id = 1") == 0);
+  CHECK(gpkg.layer().GetFeatureCount() == 3000);
 }

@@ -21,6 +21,7 @@
 #include "dem_reader.h"
 #include "diagnostics.h"
 #include "drape.h"
+#include "gpkg_index_check.h"
 #include "profile_plot.h"
 #include "provider.h"
 #include "pstrokes.h"
@@ -162,6 +163,11 @@ TEST_CASE("the algorithm's strokes equal the core's on real DEMs", "[plugin]") {
         REQUIRE(line[q].y() == Approx(s.points[static_cast<std::size_t>(q)].y));
       }
     }
+    // QGIS wrote them without an index; the algorithm then built it in bulk.
+    test::check_spatial_index(
+        run.results.value("FACTUAL").toString().section('|', 0, 0).toStdString(), "factual");
+    test::check_spatial_index(
+        run.results.value("FORMULATED").toString().section('|', 0, 0).toStdString(), "formulated");
     QgsFeatureIterator fo = formulated.getFeatures();
     while (fo.nextFeature(feature)) {
       REQUIRE(feature.attribute("class").toString() == "formulated");

@@ -8,8 +8,9 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <memory>
 
-#include "gdal_util.h"
+#include "errors.h"
 
 namespace tsk::io {
 namespace {
@@ -182,60 +183,126 @@ PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes) {
 
 namespace {
 
-// Inserts rows into `table` a few hundred kilobytes of SQL at a time.
-class RowInserter {
+// Runs SQL on a GDAL dataset's SQLite connection, throwing GDAL's message on failure.
+class Sql {
  public:
-  RowInserter(std::string head, std::function<void(const std::string&)> run)
-      : head_(std::move(head)), run_(std::move(run)) {}
-  void add(const std::string& row) {
-    sql_ += sql_.empty() ? head_ + " VALUES " : std::string(",");
-    sql_ += row;
-    if (sql_.size() > (1u << 18)) flush();
-  }
-  void flush() {
-    if (!sql_.empty()) run_(sql_);
-    sql_.clear();
+  explicit Sql(GDALDataset& dataset) : dataset_(dataset) {}
+
+  // Runs `sql` and hands each row of its result, if any, to `row`.
+  void run(const std::string& sql, const std::function<void(OGRFeature&)>& row = {}) const {
+    CPLErrorReset();
+    OGRLayer* result = dataset_.ExecuteSQL(sql.c_str(), nullptr, nullptr);
+    if (result) {
+      for (auto& feature : *result) {
+        if (row) row(*feature);
+      }
+      dataset_.ReleaseResultSet(result);
+    }
+    if (CPLGetLastErrorType() >= CE_Failure) {
+      std::string message = CPLGetLastErrorMsg();  // may quote all of a long statement
+      if (message.size() > 300) message = message.substr(0, 300) + "...";
+      throw Error("building a GeoPackage spatial index failed: " + message);
+    }
   }
 
  private:
-  std::string head_;
-  std::function<void(const std::string&)> run_;
-  std::string sql_;
+  GDALDataset& dataset_;
 };
+
+// Inserts rows into a table a few hundred kilobytes of SQL at a time.
+class RowInserter {
+ public:
+  RowInserter(const Sql& sql, std::string head) : sql_(sql), head_(std::move(head)) {}
+  void add(const std::string& row) {
+    text_ += text_.empty() ? head_ + " VALUES " : std::string(",");
+    text_ += row;
+    if (text_.size() > (1u << 18)) flush();
+  }
+  void flush() {
+    if (!text_.empty()) sql_.run(text_);
+    text_.clear();
+  }
+
+ private:
+  const Sql& sql_;
+  std::string head_;
+  std::string text_;
+};
+
+// The triggers of the GeoPackage R-tree extension (GeoPackage 1.2, F.3), as GDAL 3.6 makes them.
+std::vector<std::string> rtree_triggers(const std::string& table, const std::string& column,
+                                        const std::string& fid) {
+  const std::string t = quoted_identifier(table), c = quoted_identifier(column),
+                    i = quoted_identifier(fid), r = "rtree_" + table + "_" + column;
+  const std::string rtree = quoted_identifier(r);
+  const std::string upsert = "INSERT OR REPLACE INTO " + rtree + " VALUES (NEW." + i +
+                             ",ST_MinX(NEW." + c + "), ST_MaxX(NEW." + c + "),ST_MinY(NEW." + c +
+                             "), ST_MaxY(NEW." + c + "));";
+  const std::string has_geometry = "(NEW." + c + " NOTNULL AND NOT ST_IsEmpty(NEW." + c + "))";
+  const std::string no_geometry = "(NEW." + c + " ISNULL OR ST_IsEmpty(NEW." + c + "))";
+  const auto trigger = [&](const std::string& name, const std::string& when,
+                           const std::string& body) {
+    return "CREATE TRIGGER " + quoted_identifier(r + "_" + name) + " " + when + " BEGIN " + body +
+           " END";
+  };
+  return {
+      trigger("insert",
+              "AFTER INSERT ON " + t + " WHEN (new." + c + " NOT NULL AND NOT ST_IsEmpty(NEW." + c +
+                  "))",
+              upsert),
+      trigger("update1",
+              "AFTER UPDATE OF " + c + " ON " + t + " WHEN OLD." + i + " = NEW." + i + " AND " +
+                  has_geometry,
+              upsert),
+      trigger("update2",
+              "AFTER UPDATE OF " + c + " ON " + t + " WHEN OLD." + i + " = NEW." + i + " AND " +
+                  no_geometry,
+              "DELETE FROM " + rtree + " WHERE id = OLD." + i + ";"),
+      trigger("update3",
+              "AFTER UPDATE ON " + t + " WHEN OLD." + i + " != NEW." + i + " AND " + has_geometry,
+              "DELETE FROM " + rtree + " WHERE id = OLD." + i + "; " + upsert),
+      trigger("update4",
+              "AFTER UPDATE ON " + t + " WHEN OLD." + i + " != NEW." + i + " AND " + no_geometry,
+              "DELETE FROM " + rtree + " WHERE id IN (OLD." + i + ", NEW." + i + ");"),
+      trigger("delete", "AFTER DELETE ON " + t + " WHEN old." + c + " NOT NULL",
+              "DELETE FROM " + rtree + " WHERE id = OLD." + i + ";"),
+  };
+}
 
 }  // namespace
 
-GpkgSpatialIndex::GpkgSpatialIndex(GDALDataset& dataset, OGRLayer& layer,
-                                   const GdalErrorCapture& capture)
-    : dataset_(dataset), capture_(capture) {
-  const std::string table = layer.GetName();
-  const std::string column = layer.GetGeometryColumn();
-  rtree_ = "rtree_" + table + "_" + column;
-  if (query("SELECT CreateSpatialIndex(" + quoted_literal(table) + ", " + quoted_literal(column) +
-            ")") != std::vector<std::string>{"1"}) {
-    throw Error("cannot create the spatial index of layer '" + table + "': " + capture.message());
-  }
-  const std::vector<std::string> found =
-      query("SELECT name, sql FROM sqlite_master WHERE type = 'trigger' AND tbl_name = " +
-            quoted_literal(table) + " AND substr(name, 1, " + std::to_string(rtree_.size()) +
-            ") = " + quoted_literal(rtree_));
-  for (std::size_t k = 0; k + 1 < found.size(); k += 2) {
-    query("DROP TRIGGER " + quoted_identifier(found[k]));
-    triggers_.push_back(found[k + 1]);
-  }
-}
+void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table) {
+  OGRLayer* layer = dataset.GetLayerByName(table.c_str());
+  if (!layer) throw Error("no layer '" + table + "' to index");
+  const std::string column = layer->GetGeometryColumn();
+  const std::string fid = *layer->GetFIDColumn() ? layer->GetFIDColumn() : "fid";
+  const std::string rtree = "rtree_" + table + "_" + column;
+  const std::string t = quoted_identifier(table), c = quoted_identifier(column);
+  const Sql sql(dataset);
 
-void GpkgSpatialIndex::finish() {
-  const std::vector<std::string> root_bytes = query(
-      "SELECT length(data) FROM " + quoted_identifier(rtree_ + "_node") + " WHERE nodeno = 1");
-  if (root_bytes.size() != 1) throw Error("the spatial index " + rtree_ + " has no root node");
-  const PackedRtree packed =
-      pack_rtree(std::move(boxes_), static_cast<std::size_t>(std::stoul(root_bytes[0])));
-  const auto run = [this](const std::string& sql) { query(sql); };
-  query("DELETE FROM " + quoted_identifier(rtree_ + "_node"));
-  RowInserter nodes("INSERT INTO " + quoted_identifier(rtree_ + "_node") + "(nodeno, data)", run);
+  std::vector<IndexBox> boxes;
+  // Aliased: GDAL would take the id column for the rows' FIDs instead of a field.
+  sql.run("SELECT " + quoted_identifier(fid) + " + 0 AS tsk_id, ST_MinX(" + c + "), ST_MaxX(" + c +
+              "), ST_MinY(" + c + "), ST_MaxY(" + c + ") FROM " + t + " WHERE " + c +
+              " NOT NULL AND NOT ST_IsEmpty(" + c + ")",
+          [&boxes](OGRFeature& row) {
+            boxes.push_back({row.GetFieldAsInteger64(0), row.GetFieldAsDouble(1),
+                             row.GetFieldAsDouble(2), row.GetFieldAsDouble(3),
+                             row.GetFieldAsDouble(4)});
+          });
+
+  sql.run("CREATE VIRTUAL TABLE " + quoted_identifier(rtree) +
+          " USING rtree(id, minx, maxx, miny, maxy)");
+  std::size_t node_bytes = 0;
+  sql.run("SELECT length(data) FROM " + quoted_identifier(rtree + "_node") + " WHERE nodeno = 1",
+          [&node_bytes](OGRFeature& row) {
+            node_bytes = static_cast<std::size_t>(row.GetFieldAsInteger64(0));
+          });
+  const PackedRtree packed = pack_rtree(std::move(boxes), node_bytes);
+  sql.run("DELETE FROM " + quoted_identifier(rtree + "_node"));
+  RowInserter nodes(sql, "INSERT INTO " + quoted_identifier(rtree + "_node") + "(nodeno, data)");
   RowInserter parents(
-      "INSERT INTO " + quoted_identifier(rtree_ + "_parent") + "(nodeno, parentnode)", run);
+      sql, "INSERT INTO " + quoted_identifier(rtree + "_parent") + "(nodeno, parentnode)");
   for (const RtreeNode& node : packed.nodes) {
     nodes.add("(" + std::to_string(node.number) + "," + hex_blob(node.blob) + ")");
     if (node.parent != 0) {
@@ -244,29 +311,47 @@ void GpkgSpatialIndex::finish() {
   }
   nodes.flush();
   parents.flush();
-  RowInserter rows("INSERT INTO " + quoted_identifier(rtree_ + "_rowid") + "(rowid, nodeno)", run);
+  RowInserter rows(sql, "INSERT INTO " + quoted_identifier(rtree + "_rowid") + "(rowid, nodeno)");
   for (const auto& [id, leaf] : packed.leaf_of) {
     rows.add("(" + std::to_string(id) + "," + std::to_string(leaf) + ")");
   }
   rows.flush();
-  for (const std::string& trigger : triggers_) query(trigger);
+
+  for (const std::string& trigger : rtree_triggers(table, column, fid)) sql.run(trigger);
+  sql.run(
+      "CREATE TABLE IF NOT EXISTS gpkg_extensions (table_name TEXT,column_name TEXT,"
+      "extension_name TEXT NOT NULL,definition TEXT NOT NULL,scope TEXT NOT NULL,"
+      "CONSTRAINT ge_tce UNIQUE (table_name, column_name, extension_name))");
+  sql.run(
+      "INSERT INTO gpkg_extensions (table_name, column_name, extension_name, definition, scope) "
+      "VALUES (" +
+      quoted_literal(table) + ", " + quoted_literal(column) +
+      ", 'gpkg_rtree_index', 'http://www.geopackage.org/spec120/#extension_rtree', "
+      "'write-only')");
 }
 
-std::vector<std::string> GpkgSpatialIndex::query(const std::string& sql) const {
+void add_gpkg_spatial_index(const std::string& path, const std::string& table) {
+  GDALAllRegister();
   CPLErrorReset();
-  OGRLayer* result = dataset_.ExecuteSQL(sql.c_str(), nullptr, nullptr);
-  std::vector<std::string> values;
-  if (result) {
-    while (OGRFeature* row = result->GetNextFeature()) {
-      for (int k = 0; k < row->GetFieldCount(); ++k) values.emplace_back(row->GetFieldAsString(k));
-      OGRFeature::DestroyFeature(row);
-    }
-    dataset_.ReleaseResultSet(result);
+  std::unique_ptr<GDALDataset> dataset(static_cast<GDALDataset*>(
+      GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE, nullptr, nullptr, nullptr)));
+  if (!dataset) throw Error("cannot open '" + path + "' to index it: " + CPLGetLastErrorMsg());
+  OGRLayer* layer = table.empty() && dataset->GetLayerCount() == 1
+                        ? dataset->GetLayer(0)
+                        : dataset->GetLayerByName(table.c_str());
+  if (!layer) throw Error("'" + path + "' has no layer '" + table + "' to index");
+  if (dataset->StartTransaction() != OGRERR_NONE) {
+    throw Error("cannot start a transaction in '" + path + "': " + CPLGetLastErrorMsg());
   }
+  add_gpkg_spatial_index(*dataset, layer->GetName());
+  if (dataset->CommitTransaction() != OGRERR_NONE) {
+    throw Error("cannot commit the spatial index of '" + path + "': " + CPLGetLastErrorMsg());
+  }
+  CPLErrorReset();
+  dataset.reset();
   if (CPLGetLastErrorType() >= CE_Failure) {
-    throw Error("building the spatial index " + rtree_ + " failed: " + capture_.message());
+    throw Error("closing '" + path + "' failed: " + CPLGetLastErrorMsg());
   }
-  return values;
 }
 
 }  // namespace tsk::io

@@ -1,0 +1,54 @@
+// The GeoPackage spatial index (an SQLite R*Tree) built in one pass instead of row by row.
+//
+// GDAL 3.6 fills a GeoPackage's R-tree by inserting every feature's box through SQLite's rtree
+// module, which costs 0.7 s for 100 000 strokes: more than the silhouettes themselves on
+// 8000 x 8000 (QGIS writes GeoPackages through the same GDAL). Here the boxes are packed by
+// Sort-Tile-Recursive into full nodes and written straight into the R-tree's tables in SQLite's
+// own node format, as GDAL 3.7 and later do.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+class GDALDataset;
+
+namespace tsk::io {
+
+// One feature's bounding box, keyed by its feature id.
+struct IndexBox {
+  std::int64_t id = 0;
+  double min_x = 0, max_x = 0, min_y = 0, max_y = 0;
+};
+
+// One node of an SQLite R*Tree: its number (the root is 1), its parent's (0 for the root) and
+// its blob as the rtree module stores it.
+struct RtreeNode {
+  std::int64_t number = 0;
+  std::int64_t parent = 0;
+  std::vector<unsigned char> blob;
+};
+
+struct PackedRtree {
+  std::vector<RtreeNode> nodes;                                // the root first
+  std::vector<std::pair<std::int64_t, std::int64_t>> leaf_of;  // (box id, its leaf's number)
+  int depth = 0;                                               // levels above the leaves
+};
+
+// Packs `boxes` into nodes of `node_bytes` bytes (the length of the table's root blob, which
+// sets how many boxes a node holds). Any number of boxes, none included.
+PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes);
+
+// Gives `table` of an open GeoPackage, whose features are in and which has no spatial index yet
+// (made with the layer option SPATIAL_INDEX=NO), the R-tree, the triggers that keep it up to date
+// and the extension entry that GDAL would have made, in bulk. Runs in the caller's transaction,
+// if any. Throws tsk::Error with GDAL's message on failure.
+void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table);
+
+// The same for a GeoPackage file written and closed by someone else (QGIS's feature sinks), in a
+// transaction of its own. An empty `table` names the file's only layer.
+void add_gpkg_spatial_index(const std::string& path, const std::string& table);
+
+}  // namespace tsk::io
