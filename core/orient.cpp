@@ -220,15 +220,15 @@ class BilinearSampler {
     const double fu = dc_ ? std::clamp(u - static_cast<double>(c0), 0.0, 1.0) : 0.0;
     const double fv = dr_ ? std::clamp(v - static_cast<double>(r0), 0.0, 1.0) : 0.0;
     const float* cell = z_ + r0 * cols_ + c0;
-    const double weights[4] = {(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
-    const float heights[4] = {cell[0], cell[dc_], cell[dr_], cell[dr_ + dc_]};
-    double z = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      if (weights[k] < 1e-9) continue;  // a position on a cell centre line: the cell does not count
-      if (!is_data(heights[k])) return kNoData;
-      z += weights[k] * static_cast<double>(heights[k]);
-    }
-    return static_cast<float>(z);
+    // A weight under 1e-9 (a position on a cell centre line) leaves its cell out, nodata or not;
+    // a nodata cell that counts makes the sum nodata. Without branches: this is the hot loop of
+    // every non-cardinal view.
+    const auto term = [](double weight, float height) {
+      return weight < 1e-9 ? 0.0 : weight * static_cast<double>(height);
+    };
+    const double z = term((1 - fu) * (1 - fv), cell[0]) + term(fu * (1 - fv), cell[dc_]) +
+                     term((1 - fu) * fv, cell[dr_]) + term(fu * fv, cell[dr_ + dc_]);
+    return std::isfinite(z) ? static_cast<float>(z) : kNoData;
   }
 
  private:
