@@ -244,36 +244,34 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
   io::vector_driver_for(o.output, o.format);  // an unknown format fails before any work
   const std::size_t strip = o.strips > 0 ? static_cast<std::size_t>(o.strips)
                                          : automatic_strips(o.input, o.dem.azimuth_deg);
-  if (strip > 0) {
-    if (!o.preview.empty()) throw Error("--preview needs the whole DEM in memory; drop --strips");
-    if (o.strips == 0)
-      err << "note: the DEM is large: processing it in strips of " << strip << " profiles\n";
-    io::Dem info;
-    const SilhouetteResult result = silhouettes_in_strips(o, strip, info, err);
-    io::write_strokes(o.output, o.format, result.strokes, info.srs_wkt);
-    if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
-    out << o.output << ": " << result.stats.factual_strokes << " factual and "
-        << result.stats.formulated_strokes << " formulated strokes (in strips of " << strip
-        << " profiles)\n";
-    return 0;
+  if (strip > 0 && !o.preview.empty()) {
+    throw Error("--preview needs the whole DEM in memory; drop --strips");
   }
+  if (strip > 0 && o.strips == 0)
+    err << "note: the DEM is large: processing it in strips of " << strip << " profiles\n";
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
   };
   auto start = Clock::now();
-  // Resampled views are turned strip by strip as the stages go, unless the preview needs the
-  // whole turned grid.
-  const io::Dem dem = load_dem(o, err, o.preview.empty());
-  const double read_s = since(start);
-  const SilhouetteResult result =
-      dem.frame.resampled && o.preview.empty()
-          ? run_resampled_silhouettes(dem.unturned, dem.frame, dem.geotransform, o.params)
-          : run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
+  io::Dem dem;
+  SilhouetteResult result;
+  double read_s = 0;
+  if (strip > 0) {
+    result = silhouettes_in_strips(o, strip, dem, err);  // reads strip by strip as it goes
+  } else {
+    // Resampled views are turned strip by strip as the stages go, unless the preview needs the
+    // whole turned grid.
+    dem = load_dem(o, err, o.preview.empty());
+    read_s = since(start);
+    result = dem.frame.resampled && o.preview.empty()
+                 ? run_resampled_silhouettes(dem.unturned, dem.frame, dem.geotransform, o.params)
+                 : run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
+  }
   start = Clock::now();
   io::write_strokes(o.output, o.format, result.strokes, dem.srs_wkt);
   const double write_s = since(start);
-  if (o.timings) {
+  if (o.timings && strip == 0) {
     const StageTimings& t = result.timings;
     err << "timings (s): read " << read_s << ", resampling " << t.resampling << ", visibility "
         << t.visibility << ", candidates " << t.candidates << ", filter " << t.filter
@@ -286,8 +284,13 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
   }
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes
-      << " formulated strokes (c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered)
-      << " %, t-set " << s.pct(s.thinned) << " %, g-set " << s.pct(s.generalised) << " %)\n";
+      << " formulated strokes (";
+  if (strip > 0) {
+    out << "in strips of " << strip << " profiles)\n";
+  } else {
+    out << "c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered) << " %, t-set "
+        << s.pct(s.thinned) << " %, g-set " << s.pct(s.generalised) << " %)\n";
+  }
   return 0;
 }
 

@@ -76,25 +76,20 @@ void read_band(const std::string& path, GDALRasterBand& band, bool defer_resampl
   }
 }
 
-}  // namespace
-
-namespace {
-
 // Checks the band and the georeferencing of an open DEM and fills everything but the heights.
-Dem describe_dem(GDALDataset& dataset_ref, const std::string& path, const DemOptions& options) {
-  GDALDataset* dataset = &dataset_ref;
-  const int bands = dataset->GetRasterCount();
+Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions& options) {
+  const int bands = dataset.GetRasterCount();
   if (bands < 1) throw Error("'" + path + "' has no raster bands");
   if (options.band < 1 || options.band > bands) {
     throw Error("band " + std::to_string(options.band) + " does not exist: '" + path + "' has " +
                 std::to_string(bands) + " band(s)");
   }
   Dem dem;
-  dem.rows = static_cast<std::size_t>(dataset->GetRasterYSize());
-  dem.cols = static_cast<std::size_t>(dataset->GetRasterXSize());
+  dem.rows = static_cast<std::size_t>(dataset.GetRasterYSize());
+  dem.cols = static_cast<std::size_t>(dataset.GetRasterXSize());
 
   double gt[6];
-  if (dataset->GetGeoTransform(gt) == CE_None) {
+  if (dataset.GetGeoTransform(gt) == CE_None) {
     if (gt[2] != 0.0 || gt[4] != 0.0) {
       throw Error("'" + path +
                   "' has a rotated or sheared geotransform; make it north-up first, e.g. "
@@ -115,7 +110,7 @@ Dem describe_dem(GDALDataset& dataset_ref, const std::string& path, const DemOpt
                 "' has no georeferencing, so its cell size is unknown; give it with --cell-size");
   }
 
-  if (const OGRSpatialReference* srs = dataset->GetSpatialRef()) {
+  if (const OGRSpatialReference* srs = dataset.GetSpatialRef()) {
     if (srs->IsGeographic()) {
       throw Error("'" + path +
                   "' is in a geographic CRS: its cell sizes are degrees, not metres like its "
@@ -187,7 +182,7 @@ struct DemStripReader::Source {
 };
 
 DemStripReader::DemStripReader(const std::string& path, const DemOptions& options)
-    : path_(path), options_(options), source_(std::make_unique<Source>()) {
+    : path_(path), source_(std::make_unique<Source>()) {
   GdalErrorCapture capture;
   source_->dataset = open_raster(path);
   dem_ = describe_dem(*source_->dataset, path, options);

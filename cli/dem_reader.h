@@ -47,7 +47,6 @@ class DemStripReader {
 
  private:
   std::string path_;
-  DemOptions options_;
   Dem dem_;
   struct Source;
   std::unique_ptr<Source> source_;

@@ -43,37 +43,12 @@ std::string vector_driver_for(const std::string& path, const std::string& format
 
 namespace {
 
-// Writes line features to a layer.
-class LineSink {
- public:
-  LineSink(OGRLayer& layer, const std::string& path, const GdalErrorCapture& capture)
-      : layer_(layer), path_(path), capture_(capture) {}
-
-  OGRFeatureDefn* definition() { return layer_.GetLayerDefn(); }
-
-  // Writes one line feature whose attributes the caller has set.
-  void add(OGRFeature& feature, const std::vector<StrokePoint>& points) {
-    OGRLineString line;
-    line.setNumPoints(static_cast<int>(points.size()));
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      line.setPoint(static_cast<int>(k), points[k].x, points[k].y);
-    }
-    feature.SetGeometry(&line);
-    check(layer_.CreateFeature(&feature), "writing a line to '" + path_ + "'", capture_);
-  }
-
- private:
-  OGRLayer& layer_;
-  const std::string& path_;
-  const GdalErrorCapture& capture_;
-};
-
 // Creates `path` with one line layer, lets add_fields define its fields and add_features fill it,
 // all inside a transaction; whole or not at all.
 void write_line_layer(const std::string& path, const std::string& format,
                       const std::string& srs_wkt, const std::string& layer_name,
                       const std::function<void(OGRLayer&, const GdalErrorCapture&)>& add_fields,
-                      const std::function<void(LineSink&)>& add_features) {
+                      const std::function<void(OGRLayer&, const GdalErrorCapture&)>& add_features) {
   GdalErrorCapture capture;
   const std::string driver_name = vector_driver_for(path, format);
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
@@ -97,8 +72,7 @@ void write_line_layer(const std::string& path, const std::string& format,
     if (!layer) throw Error("cannot create layer in '" + path + "': " + capture.message());
     add_fields(*layer, capture);
     const bool transaction = ds->StartTransaction() == OGRERR_NONE;
-    LineSink sink(*layer, path, capture);
-    add_features(sink);
+    add_features(*layer, capture);
     if (bulk_index) add_gpkg_spatial_index(*ds, layer->GetName());
     if (transaction) check(ds->CommitTransaction(), "committing '" + path + "'", capture);
     CPLErrorReset();
@@ -115,6 +89,18 @@ void add_field(OGRLayer& layer, const char* name, OGRFieldType type,
   check(layer.CreateField(&defn), std::string("creating field '") + name + "'", capture);
 }
 
+// Writes one line feature whose attributes `set` has filled.
+void add_line(OGRLayer& layer, OGRFeature& feature, const std::vector<StrokePoint>& points,
+              const std::string& path, const GdalErrorCapture& capture) {
+  OGRLineString line;
+  line.setNumPoints(static_cast<int>(points.size()));
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    line.setPoint(static_cast<int>(k), points[k].x, points[k].y);
+  }
+  feature.SetGeometry(&line);
+  check(layer.CreateFeature(&feature), "writing a line to '" + path + "'", capture);
+}
+
 }  // namespace
 
 void write_strokes(const std::string& path, const std::string& format,
@@ -128,10 +114,10 @@ void write_strokes(const std::string& path, const std::string& format,
         for (const StrokeRealField& f : stroke_real_fields())
           add_field(layer, f.name, OFTReal, capture);
       },
-      [&](LineSink& sink) {
+      [&](OGRLayer& layer, const GdalErrorCapture& capture) {
         // Fields by position: drivers may shorten names (shapefile: 10 characters).
         for (const Stroke& s : strokes) {
-          OGRFeature feature(sink.definition());
+          OGRFeature feature(layer.GetLayerDefn());
           feature.SetField(0, stroke_class_name(s.cls));
           feature.SetField(1, s.cells);
           int index = 2;
@@ -144,7 +130,7 @@ void write_strokes(const std::string& path, const std::string& format,
             }
             ++index;
           }
-          sink.add(feature, s.points);
+          add_line(layer, feature, s.points, path, capture);
         }
       });
 }
@@ -157,12 +143,12 @@ void write_profile_lines(const std::string& path, const std::string& format,
         add_field(layer, "section", OFTInteger, capture);
         add_field(layer, "distance", OFTReal, capture);
       },
-      [&](LineSink& sink) {
+      [&](OGRLayer& layer, const GdalErrorCapture& capture) {
         for (const ProfileLine& line : lines) {
-          OGRFeature feature(sink.definition());
+          OGRFeature feature(layer.GetLayerDefn());
           feature.SetField(0, static_cast<int>(line.cross_section));
           feature.SetField(1, line.distance);
-          sink.add(feature, line.points);
+          add_line(layer, feature, line.points, path, capture);
         }
       });
 }
@@ -175,12 +161,12 @@ void write_pstrokes(const std::string& path, const std::string& format,
         add_field(layer, "class", OFTString, capture);
         add_field(layer, "score_m2", OFTReal, capture);
       },
-      [&](LineSink& sink) {
+      [&](OGRLayer& layer, const GdalErrorCapture& capture) {
         for (const PStroke& s : strokes) {
-          OGRFeature feature(sink.definition());
+          OGRFeature feature(layer.GetLayerDefn());
           feature.SetField(0, pstroke_class_name(s.cls));
           feature.SetField(1, s.score_m2);
-          sink.add(feature, s.points);
+          add_line(layer, feature, s.points, path, capture);
         }
       });
 }
