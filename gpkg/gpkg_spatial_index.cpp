@@ -229,12 +229,12 @@ class RowInserter {
   std::string text_;
 };
 
-// The triggers of the GeoPackage R-tree extension (GeoPackage 1.2, F.3), as GDAL 3.6 makes them.
+// The triggers of the GeoPackage R-tree extension (GeoPackage 1.2, F.3) on R-tree `r`, as GDAL 3.6
+// makes them.
 std::vector<std::string> rtree_triggers(const std::string& table, const std::string& column,
-                                        const std::string& fid) {
+                                        const std::string& fid, const std::string& r) {
   const std::string t = quoted_identifier(table), c = quoted_identifier(column),
-                    i = quoted_identifier(fid), r = "rtree_" + table + "_" + column;
-  const std::string rtree = quoted_identifier(r);
+                    i = quoted_identifier(fid), rtree = quoted_identifier(r);
   const std::string upsert = "INSERT OR REPLACE INTO " + rtree + " VALUES (NEW." + i +
                              ",ST_MinX(NEW." + c + "), ST_MaxX(NEW." + c + "),ST_MinY(NEW." + c +
                              "), ST_MaxY(NEW." + c + "));";
@@ -317,7 +317,7 @@ void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table) {
   }
   rows.flush();
 
-  for (const std::string& trigger : rtree_triggers(table, column, fid)) sql.run(trigger);
+  for (const std::string& trigger : rtree_triggers(table, column, fid, rtree)) sql.run(trigger);
   sql.run(
       "CREATE TABLE IF NOT EXISTS gpkg_extensions (table_name TEXT,column_name TEXT,"
       "extension_name TEXT NOT NULL,definition TEXT NOT NULL,scope TEXT NOT NULL,"

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "gdal_util.h"
+
 namespace tsk::test {
 
 struct Window {
@@ -80,10 +82,7 @@ class IndexedGpkg {
   }
 
  private:
-  struct Closer {
-    void operator()(GDALDataset* ds) const { GDALClose(ds); }
-  };
-  std::unique_ptr<GDALDataset, Closer> dataset_;
+  io::DatasetPtr dataset_;
   std::string layer_, rtree_;
 };
 
