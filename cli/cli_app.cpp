@@ -69,8 +69,8 @@ input and output:
   --preview PNG        render the oblique sketch to a PNG picture
   --threads N          worker threads (default: all cores)
   --timings            print the time of reading, each stage and writing to stderr
-  --strips N           read and process N profiles at a time (cardinal views), for DEMs larger
-                       than memory; chosen automatically when the DEM would not fit in half of it
+  --strips N           read and process N profiles at a time, for DEMs larger than memory;
+                       chosen automatically when the DEM would not fit in half of it
 profiles:
   --every N            draw every N-th cross-section (default 10)
 pstrokes (tolerances: effective areas in m2 of the profiles' distance-height triangles):
@@ -217,33 +217,32 @@ void write_text(const std::string& path, const std::string& text) {
   });
 }
 
-// Profiles per strip chosen for a DEM too large to hold whole (0: it fits, or the view is not
-// cardinal).
-std::size_t automatic_strips(const std::string& path, double azimuth_deg) {
+// Profiles per strip chosen for a DEM too large to hold whole (0: it fits).
+std::size_t automatic_strips(const std::string& path) {
   const auto dataset = io::open_raster(path);
   const auto rows = static_cast<std::size_t>(dataset->GetRasterYSize());
   const auto cols = static_cast<std::size_t>(dataset->GetRasterXSize());
-  return automatic_strip_profiles(rows, cols, !is_cardinal(azimuth_deg));
+  return automatic_strip_profiles(rows, cols);
 }
 
 // The silhouettes read and processed strip by strip: bounded memory for any DEM size.
 SilhouetteResult silhouettes_in_strips(const Options& o, std::size_t strip, io::Dem& info,
                                        std::ostream& err) {
-  io::DemStripReader reader(o.input, o.dem);
+  io::DemStripReader reader(o.input, o.dem, o.params.threads);
   info = reader.info();
   if (!info.notes.empty()) err << "note: " << info.notes;
   const double z_ref = o.params.geometry == Geometry::oblique ? reader.lowest_height() : 0.0;
   return run_in_strips(info.frame, info.geotransform, o.params, z_ref, strip,
                        [&](std::size_t first, std::size_t count, HeightGrid& heights) {
-                         heights = reader.read_profiles(first, count);
+                         reader.read_profiles(first, count, heights);
                        });
 }
 
 int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
   io::vector_driver_for(o.output, o.format);  // an unknown format fails before any work
-  const std::size_t strip = o.strips > 0 ? static_cast<std::size_t>(o.strips)
-                                         : automatic_strips(o.input, o.dem.azimuth_deg);
+  const std::size_t strip =
+      o.strips > 0 ? static_cast<std::size_t>(o.strips) : automatic_strips(o.input);
   if (strip > 0 && !o.preview.empty()) {
     throw Error("--preview needs the whole DEM in memory; drop --strips");
   }

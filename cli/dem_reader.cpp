@@ -179,33 +179,34 @@ std::vector<HeightGrid> read_bands(const std::string& path) {
 struct DemStripReader::Source {
   DatasetPtr dataset;
   GDALRasterBand* band = nullptr;
+  std::unique_ptr<StripLoader> loader;
 };
 
-DemStripReader::DemStripReader(const std::string& path, const DemOptions& options)
+DemStripReader::DemStripReader(const std::string& path, const DemOptions& options, unsigned threads)
     : path_(path), source_(std::make_unique<Source>()) {
   GdalErrorCapture capture;
   source_->dataset = open_raster(path);
   dem_ = describe_dem(*source_->dataset, path, options);
-  if (dem_.frame.resampled) {
-    throw Error("strip processing works for the cardinal views (azimuth 0, 90, 180, 270)");
-  }
-  source_->band = source_->dataset->GetRasterBand(options.band);
+  GDALRasterBand* band = source_->band = source_->dataset->GetRasterBand(options.band);
+  source_->loader = std::make_unique<StripLoader>(
+      dem_.frame,
+      [band, path](const DemWindow& w, float* heights) {
+        GdalErrorCapture errors;
+        if (band->RasterIO(GF_Read, static_cast<int>(w.col0), static_cast<int>(w.row0),
+                           static_cast<int>(w.cols), static_cast<int>(w.rows), heights,
+                           static_cast<int>(w.cols), static_cast<int>(w.rows), GDT_Float32, 0,
+                           0) != CE_None) {
+          throw Error("reading '" + path + "' failed: " + errors.message());
+        }
+        nodata_to_nan(*band, heights, w.rows * w.cols);
+      },
+      threads);
 }
 
 DemStripReader::~DemStripReader() = default;
 
-HeightGrid DemStripReader::read_profiles(std::size_t first, std::size_t count) {
-  GdalErrorCapture capture;
-  const DemWindow w = profile_window(dem_.frame, first, count);
-  HeightGrid window(w.rows, w.cols, kUnset);
-  if (source_->band->RasterIO(GF_Read, static_cast<int>(w.col0), static_cast<int>(w.row0),
-                              static_cast<int>(w.cols), static_cast<int>(w.rows), window.data(),
-                              static_cast<int>(w.cols), static_cast<int>(w.rows), GDT_Float32, 0,
-                              0) != CE_None) {
-    throw Error("reading '" + path_ + "' failed: " + capture.message());
-  }
-  nodata_to_nan(*source_->band, window.data(), window.size());
-  return orient_window(dem_.frame, window);
+void DemStripReader::read_profiles(std::size_t first, std::size_t count, HeightGrid& strip) {
+  source_->loader->load(first, count, strip);
 }
 
 double DemStripReader::lowest_height() {

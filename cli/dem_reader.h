@@ -34,15 +34,16 @@ struct Dem {
 // not a raster, bad band, rotated or south-up georeferencing, a geographic CRS.
 Dem read_dem(const std::string& path, const DemOptions& options);
 
-// Reads a DEM strip by strip for views too large for memory: profiles [first, first + count)
-// are a window of DEM rows (views from west or east) or columns (from south or north), turned
-// into oriented rows. Cardinal views only.
+// Reads a DEM strip by strip for DEMs too large for memory: profiles [first, first + count) are
+// read window by window (rows or columns of the DEM for a cardinal view, the band of cells their
+// samples need for any other) and turned into oriented rows.
 class DemStripReader {
  public:
-  DemStripReader(const std::string& path, const DemOptions& options);
+  DemStripReader(const std::string& path, const DemOptions& options, unsigned threads = 0);
   ~DemStripReader();
   const Dem& info() const { return dem_; }  // georeferencing and frame; `oriented` stays empty
-  HeightGrid read_profiles(std::size_t first, std::size_t count);
+  // Oriented profiles [first, first + count) into `strip`, whose memory may be reused.
+  void read_profiles(std::size_t first, std::size_t count, HeightGrid& strip);
   double lowest_height();  // a full pass over the band
 
  private:

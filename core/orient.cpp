@@ -1,7 +1,9 @@
 #include "orient.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -191,18 +193,44 @@ HeightGrid orient_window(const OrientedFrame& frame, const HeightGrid& window) {
 
 namespace {
 
-// Bilinear sampling of one DEM, with what every sample needs worked out once.
+// The cells of a whole DEM, row by row.
+class GridCells {
+ public:
+  explicit GridCells(const HeightGrid& dem) : z_(dem.data()), cols_(dem.cols()) {}
+  const float* at(std::size_t r, std::size_t c) const { return z_ + (r * cols_ + c); }
+
+ private:
+  const float* z_;
+  std::size_t cols_;
+};
+
+// The cells of a DemBand: each DEM row holds its own run of columns.
+class BandCells {
+ public:
+  explicit BandCells(const DemBand& band) : band_(band) {}
+  const float* at(std::size_t r, std::size_t c) const {
+    const std::size_t k = r - band_.first_row();
+    assert(k < band_.rows() && c >= band_.col_begin(k) && c < band_.col_end(k));
+    return band_.heights() + (band_.row_base(k) + static_cast<std::ptrdiff_t>(c));
+  }
+
+ private:
+  const DemBand& band_;
+};
+
+// Bilinear sampling of a DEM of rows x cols cells held as `Cells`, with what every sample needs
+// worked out once.
+template <typename Cells>
 class BilinearSampler {
  public:
-  explicit BilinearSampler(const HeightGrid& dem)
-      : z_(dem.data()),
-        cols_(dem.cols()),
-        last_col_(static_cast<double>(dem.cols() - 1)),
-        last_row_(static_cast<double>(dem.rows() - 1)),
-        max_c0_(dem.cols() > 1 ? dem.cols() - 2 : 0),
-        max_r0_(dem.rows() > 1 ? dem.rows() - 2 : 0),
-        dc_(dem.cols() > 1 ? 1 : 0),
-        dr_(dem.rows() > 1 ? cols_ : 0) {}
+  BilinearSampler(const Cells& cells, std::size_t rows, std::size_t cols)
+      : cells_(cells),
+        last_col_(static_cast<double>(cols - 1)),
+        last_row_(static_cast<double>(rows - 1)),
+        max_c0_(cols > 1 ? cols - 2 : 0),
+        max_r0_(rows > 1 ? rows - 2 : 0),
+        dc_(cols > 1 ? 1 : 0),
+        dr_(rows > 1 ? 1 : 0) {}
 
   float operator()(double col, double row) const {
     constexpr double kEdge = 1e-9;
@@ -219,21 +247,21 @@ class BilinearSampler {
         std::min(static_cast<std::size_t>(static_cast<std::int64_t>(std::max(0.0, v))), max_r0_);
     const double fu = dc_ ? std::clamp(u - static_cast<double>(c0), 0.0, 1.0) : 0.0;
     const double fv = dr_ ? std::clamp(v - static_cast<double>(r0), 0.0, 1.0) : 0.0;
-    const float* cell = z_ + r0 * cols_ + c0;
+    const float* near = cells_.at(r0, c0);
+    const float* far = cells_.at(r0 + dr_, c0);
     // A weight under 1e-9 (a position on a cell centre line) leaves its cell out, nodata or not;
     // a nodata cell that counts makes the sum nodata. Without branches: this is the hot loop of
     // every non-cardinal view.
     const auto term = [](double weight, float height) {
       return weight < 1e-9 ? 0.0 : weight * static_cast<double>(height);
     };
-    const double z = term((1 - fu) * (1 - fv), cell[0]) + term(fu * (1 - fv), cell[dc_]) +
-                     term((1 - fu) * fv, cell[dr_]) + term(fu * fv, cell[dr_ + dc_]);
+    const double z = term((1 - fu) * (1 - fv), near[0]) + term(fu * (1 - fv), near[dc_]) +
+                     term((1 - fu) * fv, far[0]) + term(fu * fv, far[dc_]);
     return std::isfinite(z) ? static_cast<float>(z) : kNoData;
   }
 
  private:
-  const float* z_;
-  std::size_t cols_;
+  Cells cells_;
   double last_col_, last_row_;
   std::size_t max_c0_, max_r0_;
   std::size_t dc_, dr_;  // steps to the next column and row; 0 on a grid one cell wide or high
@@ -259,21 +287,15 @@ std::pair<std::size_t, std::size_t> inside_range(double start, double step, std:
   return {static_cast<std::size_t>(first), static_cast<std::size_t>(last)};
 }
 
-}  // namespace
-
-float sample_bilinear(const HeightGrid& dem, PixelPoint px) {
-  return BilinearSampler(dem)(px.col, px.row);
-}
-
-void resample_profiles(const HeightGrid& dem, const OrientedFrame& frame, std::size_t first,
-                       std::size_t count, HeightGrid& out, unsigned threads) {
-  if (!frame.resampled || dem.rows() != frame.dem_rows || dem.cols() != frame.dem_cols ||
-      first > frame.profiles || count > frame.profiles - first) {
-    throw Error("the DEM or the profiles do not match the resampled frame");
+// Profiles [first, first + count) of a resampled frame sampled through `sample` into `out`.
+template <typename Cells>
+void resample_with(const BilinearSampler<Cells>& sample, const OrientedFrame& frame,
+                   std::size_t first, std::size_t count, HeightGrid& out, unsigned threads) {
+  if (!frame.resampled || first > frame.profiles || count > frame.profiles - first) {
+    throw Error("the profiles do not match the resampled frame");
   }
   if (out.rows() != count || out.cols() != frame.length)
     out = HeightGrid(count, frame.length, kUnset);
-  const BilinearSampler sample(dem);
   parallel_for(count, threads, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
       const auto p = static_cast<double>(first + k);
@@ -283,8 +305,8 @@ void resample_profiles(const HeightGrid& dem, const OrientedFrame& frame, std::s
       const double row0 = frame.px_row0 + frame.px_row_per_p * p;
       // Only the cells whose position falls on the DEM are sampled (the sampler still checks);
       // the margins of the line-of-sight grid, up to half of it, are nodata.
-      auto [lo, hi] = inside_range(col0, frame.px_col_per_i, dem.cols(), frame.length);
-      const auto rows = inside_range(row0, frame.px_row_per_i, dem.rows(), frame.length);
+      auto [lo, hi] = inside_range(col0, frame.px_col_per_i, frame.dem_cols, frame.length);
+      const auto rows = inside_range(row0, frame.px_row_per_i, frame.dem_rows, frame.length);
       lo = std::max(lo, rows.first);
       hi = std::min(hi, rows.second);
       if (lo >= hi) lo = hi = 0;
@@ -296,6 +318,118 @@ void resample_profiles(const HeightGrid& dem, const OrientedFrame& frame, std::s
       std::fill(row + hi, row + frame.length, kNoData);
     }
   });
+}
+
+// The least and greatest x of the convex polygon `corners` within the rows y0 <= y <= y1; empty
+// (lo > hi) when the polygon does not reach them.
+std::pair<double, double> x_range_in_rows(const PixelPoint (&corners)[4], double y0, double y1) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  const auto take = [&](double x) { lo = std::min(lo, x), hi = std::max(hi, x); };
+  for (std::size_t k = 0; k < 4; ++k) {
+    const PixelPoint a = corners[k], b = corners[(k + 1) % 4];
+    if (a.row >= y0 && a.row <= y1) take(a.col);
+    if (a.row == b.row) continue;
+    for (const double y : {y0, y1}) {
+      const double t = (y - a.row) / (b.row - a.row);
+      if (t >= 0 && t <= 1) take(a.col + t * (b.col - a.col));
+    }
+  }
+  return {lo, hi};
+}
+
+// floor(x) clamped to [0, limit], for positions that may lie far outside the DEM.
+std::size_t clamped_floor(double x, std::size_t limit) {
+  return static_cast<std::size_t>(std::clamp(std::floor(x), 0.0, static_cast<double>(limit)));
+}
+
+}  // namespace
+
+float sample_bilinear(const HeightGrid& dem, PixelPoint px) {
+  return BilinearSampler<GridCells>(GridCells(dem), dem.rows(), dem.cols())(px.col, px.row);
+}
+
+void resample_profiles(const HeightGrid& dem, const OrientedFrame& frame, std::size_t first,
+                       std::size_t count, HeightGrid& out, unsigned threads) {
+  if (dem.rows() != frame.dem_rows || dem.cols() != frame.dem_cols) {
+    throw Error("the DEM does not match the resampled frame");
+  }
+  resample_with(BilinearSampler<GridCells>(GridCells(dem), dem.rows(), dem.cols()), frame, first,
+                count, out, threads);
+}
+
+void DemBand::load(const OrientedFrame& frame, std::size_t first, std::size_t count,
+                   const WindowReader& read) {
+  if (!frame.resampled || count == 0 || first > frame.profiles || count > frame.profiles - first)
+    throw Error("the profiles do not match the resampled frame");
+  // The samples of the strip fill a parallelogram of pixel positions. A sample at row position y
+  // reads DEM rows floor(y - 0.5) and the next, so DEM row r is read from y in [r - 0.5, r + 1.5];
+  // likewise columns. A margin of one cell more on every side absorbs rounding.
+  constexpr double kMargin = 1.0;
+  const auto p0 = static_cast<double>(first), p1 = static_cast<double>(first + count - 1);
+  const auto s1 = static_cast<double>(frame.length - 1);
+  const PixelPoint corners[4] = {frame.to_pixel(p0, 0), frame.to_pixel(p1, 0),
+                                 frame.to_pixel(p1, s1), frame.to_pixel(p0, s1)};
+  double y_min = corners[0].row, y_max = corners[0].row;
+  for (const PixelPoint& c : corners)
+    y_min = std::min(y_min, c.row), y_max = std::max(y_max, c.row);
+  first_row_ = clamped_floor(std::ceil(y_min - 1.5 - kMargin), frame.dem_rows);
+  const std::size_t end_row = clamped_floor(y_max + 0.5 + kMargin + 1, frame.dem_rows);
+  const std::size_t rows = end_row > first_row_ ? end_row - first_row_ : 0;
+  col_begin_.resize(rows), col_end_.resize(rows), row_base_.resize(rows);
+  std::size_t cells = 0;
+  for (std::size_t k = 0; k < rows; ++k) {
+    const auto r = static_cast<double>(first_row_ + k);
+    const auto [x_lo, x_hi] = x_range_in_rows(corners, r - 0.5 - kMargin, r + 1.5 + kMargin);
+    const std::size_t begin = clamped_floor(x_lo - 1.5 - kMargin, frame.dem_cols);
+    const std::size_t end =
+        x_lo <= x_hi ? clamped_floor(x_hi + 0.5 + kMargin + 1, frame.dem_cols) : 0;
+    col_begin_[k] = begin;
+    col_end_[k] = std::max(begin, end);
+    row_base_[k] = static_cast<std::ptrdiff_t>(cells) - static_cast<std::ptrdiff_t>(begin);
+    cells += col_end_[k] - begin;
+  }
+  heights_.resize(cells);
+  // Rows are read a few at a time, as the window spanning their runs, then cut to their runs.
+  constexpr std::size_t kChunkRows = 64;
+  for (std::size_t k0 = 0; k0 < rows; k0 += kChunkRows) {
+    const std::size_t k1 = std::min(rows, k0 + kChunkRows);
+    std::size_t c0 = frame.dem_cols, c1 = 0;
+    for (std::size_t k = k0; k < k1; ++k) {
+      if (col_begin_[k] == col_end_[k]) continue;
+      c0 = std::min(c0, col_begin_[k]), c1 = std::max(c1, col_end_[k]);
+    }
+    if (c0 >= c1) continue;
+    const DemWindow window{first_row_ + k0, c0, k1 - k0, c1 - c0};
+    chunk_.resize(window.rows * window.cols);
+    read(window, chunk_.data());
+    for (std::size_t k = k0; k < k1; ++k) {
+      const float* src = chunk_.data() + (k - k0) * window.cols;
+      std::copy(src + (col_begin_[k] - c0), src + (col_end_[k] - c0),
+                heights_.data() + (row_base_[k] + static_cast<std::ptrdiff_t>(col_begin_[k])));
+    }
+  }
+}
+
+void resample_profiles(const DemBand& band, const OrientedFrame& frame, std::size_t first,
+                       std::size_t count, HeightGrid& out, unsigned threads) {
+  resample_with(BilinearSampler<BandCells>(BandCells(band), frame.dem_rows, frame.dem_cols), frame,
+                first, count, out, threads);
+}
+
+StripLoader::StripLoader(const OrientedFrame& frame, WindowReader read, unsigned threads)
+    : frame_(frame), read_(std::move(read)), threads_(threads) {}
+
+void StripLoader::load(std::size_t first, std::size_t count, HeightGrid& strip) {
+  if (frame_.resampled) {
+    band_.load(frame_, first, count, read_);
+    resample_profiles(band_, frame_, first, count, strip, threads_);
+    return;
+  }
+  const DemWindow w = profile_window(frame_, first, count);
+  if (window_.rows() != w.rows || window_.cols() != w.cols)
+    window_ = HeightGrid(w.rows, w.cols, kUnset);
+  read_(w, window_.data());
+  strip = orient_window(frame_, window_);
 }
 
 HeightGrid orient(const HeightGrid& dem, const OrientedFrame& frame, unsigned threads) {

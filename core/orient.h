@@ -4,6 +4,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <vector>
 
 #include "grid.h"
 
@@ -78,6 +80,65 @@ HeightGrid orient(const HeightGrid& dem, const OrientedFrame& frame, unsigned th
 void resample_profiles(const HeightGrid& dem, const OrientedFrame& frame, std::size_t first,
                        std::size_t count, HeightGrid& out, unsigned threads = 0);
 
+// A window of DEM cells: rows [row0, row0 + rows) x columns [col0, col0 + cols), row 0 north.
+struct DemWindow {
+  std::size_t row0 = 0, col0 = 0, rows = 0, cols = 0;
+};
+
+// Reads a window of the DEM into `heights`: window.rows x window.cols, row by row, NaN for
+// nodata. Throws Error when the raster cannot be read.
+using WindowReader = std::function<void(const DemWindow& window, float* heights)>;
+
+// The DEM cells that the bilinear samples of profiles [first, first + count) of a resampled frame
+// read, and no others: DEM rows [first_row, first_row + rows), each with its own run of columns.
+// A strip of a non-cardinal view lies diagonally on the DEM, so its bounding window can be the
+// whole DEM; the band holds about as many cells as the strip.
+class DemBand {
+ public:
+  // Lays out the band of profiles [first, first + count), reusing the memory of the previous one,
+  // and reads it through `read`, a few rows at a time.
+  void load(const OrientedFrame& frame, std::size_t first, std::size_t count,
+            const WindowReader& read);
+
+  std::size_t first_row() const { return first_row_; }
+  std::size_t rows() const { return col_begin_.size(); }
+  std::size_t cells() const { return heights_.size(); }
+  // Columns [col_begin(k), col_end(k)) of DEM row first_row() + k are held; the heights of DEM
+  // cell (r, c) are heights()[row_base(r - first_row()) + c].
+  std::size_t col_begin(std::size_t k) const { return col_begin_[k]; }
+  std::size_t col_end(std::size_t k) const { return col_end_[k]; }
+  std::ptrdiff_t row_base(std::size_t k) const { return row_base_[k]; }
+  const float* heights() const { return heights_.data(); }
+
+ private:
+  std::size_t first_row_ = 0;
+  std::vector<std::size_t> col_begin_, col_end_;
+  std::vector<std::ptrdiff_t> row_base_;
+  std::vector<float, LargePageAllocator<float>> heights_;
+  std::vector<float> chunk_;  // rows read at once, before they are cut to their runs
+};
+
+// resample_profiles from the band of those profiles (DemBand::load), with the same heights.
+void resample_profiles(const DemBand& band, const OrientedFrame& frame, std::size_t first,
+                       std::size_t count, HeightGrid& out, unsigned threads = 0);
+
+// Loads strips of oriented profiles of any view from a DEM read window by window, for DEMs too
+// large to hold whole: a cardinal view reads the window of its rows or columns and turns it, any
+// other view reads the band its samples need and resamples it.
+class StripLoader {
+ public:
+  StripLoader(const OrientedFrame& frame, WindowReader read, unsigned threads = 0);
+  // Oriented profiles [first, first + count) into `strip`, whose memory may be reused.
+  void load(std::size_t first, std::size_t count, HeightGrid& strip);
+
+ private:
+  OrientedFrame frame_;
+  WindowReader read_;
+  unsigned threads_;
+  DemBand band_;       // resampled views
+  HeightGrid window_;  // cardinal views
+};
+
 // Builds the oriented grid from DEM rows delivered block by block, top to bottom, as raster
 // adapters read them: scattered straight into place for cardinal views, gathered into the whole
 // DEM and resampled at the end for other azimuths.
@@ -96,9 +157,6 @@ class OrientedGridBuilder {
 
 // The DEM window (rows or columns, by view) that holds oriented profiles [first, first + count)
 // of a cardinal frame, for readers that load a DEM strip by strip.
-struct DemWindow {
-  std::size_t row0 = 0, col0 = 0, rows = 0, cols = 0;
-};
 DemWindow profile_window(const OrientedFrame& frame, std::size_t first, std::size_t count);
 
 // Profiles [first, first + count) turned from their window (read as rows x cols, row 0 north).

@@ -320,8 +320,7 @@ SilhouetteResult run_resampled_silhouettes(const HeightGrid& dem, const Oriented
   return result;
 }
 
-std::size_t automatic_strip_profiles(std::size_t rows, std::size_t cols, bool resampled) {
-  if (resampled) return 0;
+std::size_t automatic_strip_profiles(std::size_t rows, std::size_t cols) {
   const double memory =
       static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
   const double bytes = 5.0 * static_cast<double>(rows) * static_cast<double>(cols);

@@ -85,8 +85,8 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
                                const ProfileReader& read, const ProgressFn& progress = {});
 
 // Profiles per strip for a DEM that, held whole (5 bytes a cell), would not fit in half of this
-// machine's memory; 0 when it fits or when the view is resampled (strips need a cardinal view).
-std::size_t automatic_strip_profiles(std::size_t rows, std::size_t cols, bool resampled);
+// machine's memory; 0 when it fits.
+std::size_t automatic_strip_profiles(std::size_t rows, std::size_t cols);
 
 // Runs every stage on an oriented grid (see orient.h). Throws Error on bad parameters or a grid
 // that does not match the frame, Cancelled when `progress` returns false.

@@ -39,97 +39,97 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="45" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="47" />
         <source>Elevation (DEM)</source>
         <translation>Höhenmodell (DGM)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="46" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="48" />
         <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
         <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="47" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="49" />
         <source>Band</source>
         <translation>Kanal</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="49" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="51" />
         <source>The band holding the heights.</source>
         <translation>Der Kanal mit den Höhen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="51" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="53" />
         <source>View azimuth (degrees)</source>
         <translation>Blickrichtung (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="52" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="54" />
         <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
         <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="60" />
         <source>Vertical exaggeration</source>
         <translation>Überhöhung</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="59" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="61" />
         <source>Factor applied to heights before occlusion is computed.</source>
         <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="60" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="62" />
         <source>Base slope (%)</source>
         <translation>Grundneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="62" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="64" />
         <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
         <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="68" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="70" />
         <source>Row slope cut-off (%)</source>
         <translation>Grenzwert Zeilenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="70" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="72" />
         <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
         <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="72" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="74" />
         <source>Column slope cut-off (%)</source>
         <translation>Grenzwert Spaltenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="74" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="76" />
         <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
         <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="76" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="78" />
         <source>Control point column slope (%)</source>
         <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="78" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="80" />
         <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
         <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="82" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="84" />
         <source>Allow for diagonals</source>
         <translation>Diagonalen berücksichtigen</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="83" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="85" />
         <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
         <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="130" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="158" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -388,22 +388,17 @@
         <translation>Der Datenanbieter des Rasters konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="126" />
-        <source>Could not read profiles %1 to %2 of the raster.</source>
-        <translation>Die Profile %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
-    </message>
-    <message>
         <location filename="../plugin/raster_grid.cpp" line="149" />
         <source>Not enough memory for a %1 x %2 raster.</source>
         <translation>Nicht genug Speicher für ein Raster von %1 x %2.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="160" />
+        <location filename="../plugin/raster_grid.cpp" line="161" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="167" />
+        <location filename="../plugin/raster_grid.cpp" line="130" />
         <source>Could not read rows %1 to %2 of the raster.</source>
         <translation>Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
     </message>
@@ -559,8 +554,8 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
     </message>
     <message>
         <location filename="../plugin/silhouettes_algorithm.cpp" line="108" />
-        <source>For DEMs larger than memory (cardinal views): read and process this many profiles at a time. 0 reads the DEM whole unless it would not fit in half of the memory.</source>
-        <translation>Für DGM, die größer als der Speicher sind (Haupthimmelsrichtungen): so viele Profile auf einmal lesen und verarbeiten. 0 liest das DGM ganz, es sei denn, es passte nicht in die Hälfte des Speichers.</translation>
+        <source>For DEMs larger than memory: read and process this many profiles at a time, at any azimuth. 0 reads the DEM whole unless it would not fit in half of the memory.</source>
+        <translation>Für DGM, die größer als der Speicher sind: so viele Profile auf einmal lesen und verarbeiten, bei jedem Azimut. 0 liest das DGM ganz, es sei denn, es passte nicht in die Hälfte des Speichers.</translation>
     </message>
     <message>
         <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
@@ -583,7 +578,7 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="149" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="148" />
         <source>Processing the DEM in strips of %1 profiles.</source>
         <translation>Das DGM wird in Streifen zu %1 Profilen verarbeitet.</translation>
     </message>

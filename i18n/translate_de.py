@@ -259,14 +259,12 @@ GERMAN = {
     "Cells drawn on each side of a seed along the cross-section.":
         "Zellen, die auf jeder Seite eines Startpunkts entlang des Querschnitts gezeichnet werden.",
     "P-strokes": "P-Striche",
-    "Could not read profiles %1 to %2 of the raster.":
-        "Die Profile %1 bis %2 des Rasters konnten nicht gelesen werden.",
     "Profiles per strip (0: automatic)": "Profile je Streifen (0: automatisch)",
-    "For DEMs larger than memory (cardinal views): read and process this many profiles at a "
-    "time. 0 reads the DEM whole unless it would not fit in half of the memory.":
-        "Für DGM, die größer als der Speicher sind (Haupthimmelsrichtungen): so viele Profile "
-        "auf einmal lesen und verarbeiten. 0 liest das DGM ganz, es sei denn, es passte nicht in "
-        "die Hälfte des Speichers.",
+    "For DEMs larger than memory: read and process this many profiles at a time, at any azimuth. "
+    "0 reads the DEM whole unless it would not fit in half of the memory.":
+        "Für DGM, die größer als der Speicher sind: so viele Profile auf einmal lesen und "
+        "verarbeiten, bei jedem Azimut. 0 liest das DGM ganz, es sei denn, es passte nicht in die "
+        "Hälfte des Speichers.",
     "Processing the DEM in strips of %1 profiles.": "Das DGM wird in Streifen zu %1 Profilen verarbeitet.",
     "P-strokes as lines with their class and score.":
         "P-Striche als Linien mit ihrer Klasse und Bewertung.",

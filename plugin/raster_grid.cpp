@@ -109,26 +109,27 @@ void RasterGrid::setView(double azimuthDeg) {
     return make_frame(static_cast<std::size_t>(mRows), static_cast<std::size_t>(mCols),
                       dx * mGroundScale, dy * mGroundScale, azimuthDeg);
   });
+  mStrips = std::make_unique<StripLoader>(
+      mFrame, [this](const DemWindow& w, float* heights) { readWindow(w, heights); });
 }
 
-HeightGrid RasterGrid::readProfiles(std::size_t first, std::size_t count) {
-  return withCoreErrors([&] {
-    const DemWindow w = profile_window(mFrame, first, count);
-    const double dx = mExtent.width() / mCols, dy = mExtent.height() / mRows;
-    const QgsRectangle rect(mExtent.xMinimum() + static_cast<double>(w.col0) * dx,
-                            mExtent.yMaximum() - static_cast<double>(w.row0 + w.rows) * dy,
-                            mExtent.xMinimum() + static_cast<double>(w.col0 + w.cols) * dx,
-                            mExtent.yMaximum() - static_cast<double>(w.row0) * dy);
-    std::unique_ptr<QgsRasterBlock> block(
-        mProvider->block(mBand, rect, static_cast<int>(w.cols), static_cast<int>(w.rows)));
-    if (!block || !block->isValid()) {
-      throw QgsProcessingException(
-          tr("Could not read profiles %1 to %2 of the raster.").arg(first).arg(first + count - 1));
-    }
-    HeightGrid window(w.rows, w.cols, kUnset);
-    copyHeights(*block, static_cast<int>(w.rows), window.data());
-    return orient_window(mFrame, window);
-  });
+void RasterGrid::readProfiles(std::size_t first, std::size_t count, HeightGrid& strip) {
+  withCoreErrors([&] { mStrips->load(first, count, strip); });
+}
+
+void RasterGrid::readWindow(const DemWindow& w, float* heights) {
+  const double dx = mExtent.width() / mCols, dy = mExtent.height() / mRows;
+  const QgsRectangle rect(mExtent.xMinimum() + static_cast<double>(w.col0) * dx,
+                          mExtent.yMaximum() - static_cast<double>(w.row0 + w.rows) * dy,
+                          mExtent.xMinimum() + static_cast<double>(w.col0 + w.cols) * dx,
+                          mExtent.yMaximum() - static_cast<double>(w.row0) * dy);
+  std::unique_ptr<QgsRasterBlock> block(
+      mProvider->block(mBand, rect, static_cast<int>(w.cols), static_cast<int>(w.rows)));
+  if (!block || !block->isValid()) {
+    throw QgsProcessingException(
+        tr("Could not read rows %1 to %2 of the raster.").arg(w.row0).arg(w.row0 + w.rows - 1));
+  }
+  copyHeights(*block, static_cast<int>(w.rows), heights);
 }
 
 double RasterGrid::lowestHeight() {
@@ -139,9 +140,8 @@ double RasterGrid::lowestHeight() {
 void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
                       double progressTo, bool deferResampling) {
   setView(azimuthDeg);
-  const double dy = mExtent.height() / mRows;
   try {
-    readBlocks(feedback, progressFrom, progressTo, dy, deferResampling);
+    readBlocks(feedback, progressFrom, progressTo, deferResampling);
   } catch (const Error& e) {
     throw QgsProcessingException(QString::fromStdString(e.what()));
   } catch (const std::bad_alloc&) {
@@ -151,26 +151,21 @@ void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double
 }
 
 void RasterGrid::readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo,
-                            double dy, bool deferResampling) {
+                            bool deferResampling) {
   const auto cols = static_cast<std::size_t>(mCols);
   OrientedGridBuilder builder(mFrame);
-  const int blockRows = std::max(1, static_cast<int>((1 << 22) / cols));
-  std::vector<float> rows(static_cast<std::size_t>(std::min(blockRows, mRows)) * cols);
-  for (int top = 0; top < mRows; top += blockRows) {
+  const std::size_t blockRows = std::max<std::size_t>(1, (1 << 22) / cols);
+  const auto rows = static_cast<std::size_t>(mRows);
+  std::vector<float> heights(std::min(blockRows, rows) * cols);
+  for (std::size_t top = 0; top < rows; top += blockRows) {
     if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
-    const int count = std::min(blockRows, mRows - top);
-    const QgsRectangle strip(mExtent.xMinimum(), mExtent.yMaximum() - (top + count) * dy,
-                             mExtent.xMaximum(), mExtent.yMaximum() - top * dy);
-    std::unique_ptr<QgsRasterBlock> block(mProvider->block(mBand, strip, mCols, count));
-    if (!block || !block->isValid()) {
-      throw QgsProcessingException(
-          tr("Could not read rows %1 to %2 of the raster.").arg(top).arg(top + count - 1));
-    }
-    copyHeights(*block, count, rows.data());
-    builder.add_rows(static_cast<std::size_t>(top), static_cast<std::size_t>(count), rows.data());
+    const std::size_t count = std::min(blockRows, rows - top);
+    readWindow({top, 0, count, cols}, heights.data());
+    builder.add_rows(top, count, heights.data());
     if (feedback) {
-      feedback->setProgress(progressFrom + (progressTo - progressFrom) * (top + count) /
-                                               static_cast<double>(mRows));
+      feedback->setProgress(progressFrom + (progressTo - progressFrom) *
+                                               static_cast<double>(top + count) /
+                                               static_cast<double>(rows));
     }
   }
   // Only one of the two holds the heights, so a reused reader never runs on a stale grid.

@@ -41,10 +41,11 @@ class RasterGrid {
   void read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
             double progressTo, bool deferResampling = false);
 
-  // Worker thread, for DEMs read strip by strip (cardinal views): sets the frame for
-  // `azimuthDeg` without reading, then reads oriented profiles [first, first + count).
+  // Worker thread, for DEMs read strip by strip (any view): sets the frame for `azimuthDeg`
+  // without reading, then reads oriented profiles [first, first + count) into `strip` window by
+  // window (see StripLoader).
   void setView(double azimuthDeg);
-  HeightGrid readProfiles(std::size_t first, std::size_t count);
+  void readProfiles(std::size_t first, std::size_t count, HeightGrid& strip);
   double lowestHeight();  // a full pass over the band through the provider
 
   const HeightGrid& oriented() const { return mOriented; }
@@ -56,9 +57,11 @@ class RasterGrid {
   const QStringList& notes() const { return mNotes; }
 
  private:
-  // Reads the band in blocks of rows (dy: row height in map units) into mOriented (mUnturned).
+  // Reads the band in blocks of rows into mOriented (mUnturned).
   void readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo,
-                  double dy, bool deferResampling);
+                  bool deferResampling);
+  // Reads a window of the band through the provider, NaN for nodata.
+  void readWindow(const DemWindow& window, float* heights);
 
   std::unique_ptr<QgsRasterDataProvider> mProvider;
   int mBand = 1;
@@ -72,6 +75,7 @@ class RasterGrid {
   HeightGrid mUnturned;
   OrientedFrame mFrame;
   GeoTransform mGeoTransform;
+  std::unique_ptr<StripLoader> mStrips;  // set with the view
 };
 
 }  // namespace tsk::plugin

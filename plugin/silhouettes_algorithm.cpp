@@ -105,8 +105,8 @@ void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
          "cell centres (removes the thesis's halo)."),
       true);
   add(integer(kStrips, tr("Profiles per strip (0: automatic)"), 0, 0, 1000000),
-      tr("For DEMs larger than memory (cardinal views): read and process this many profiles at "
-         "a time. 0 reads the DEM whole unless it would not fit in half of the memory."),
+      tr("For DEMs larger than memory: read and process this many profiles at a time, at any "
+         "azimuth. 0 reads the DEM whole unless it would not fit in half of the memory."),
       true);
   add(new QgsProcessingParameterFeatureSink(kFactual, tr("Factual silhouettes"), kLineLayer),
       tr("Occluding contours as line strokes."));
@@ -141,9 +141,8 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
   RasterGrid& raster = preparedRaster();
   raster.setView(mParams.view.azimuth_deg);
   const OrientedFrame& frame = raster.frame();
-  const std::size_t strip =
-      mStrips > 0 ? static_cast<std::size_t>(mStrips)
-                  : automatic_strip_profiles(frame.dem_rows, frame.dem_cols, frame.resampled);
+  const std::size_t strip = mStrips > 0 ? static_cast<std::size_t>(mStrips)
+                                        : automatic_strip_profiles(frame.dem_rows, frame.dem_cols);
   SilhouetteResult result;
   if (strip > 0) {
     if (feedback) feedback->pushInfo(tr("Processing the DEM in strips of %1 profiles.").arg(strip));
@@ -188,7 +187,7 @@ SilhouetteResult SilhouettesAlgorithm::runInStrips(std::size_t strip,
   return run_in_strips(
       frame, raster.geotransform(), mParams, zRef, strip,
       [&raster](std::size_t first, std::size_t count, HeightGrid& heights) {
-        heights = raster.readProfiles(first, count);
+        raster.readProfiles(first, count, heights);
       },
       [feedback](double f) {
         if (!feedback) return true;

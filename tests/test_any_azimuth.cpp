@@ -1,6 +1,8 @@
 // Any view azimuth (SPEC 1.1): resampling onto a grid aligned with the line of sight.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstring>
+#include <utility>
 #include <vector>
 
 #include "test_support.h"
@@ -294,4 +296,120 @@ TEST_CASE("resampling strip by strip gives the strokes of the whole resampled gr
   }
   const OrientedFrame cardinal = make_frame(dem.rows(), dem.cols(), kCell, kCell, 90);
   CHECK_THROWS_AS(run_resampled_silhouettes(dem, cardinal, gt, {}), Error);
+}
+
+namespace {
+
+// Reads windows of `dem` as a raster adapter would, refusing any window outside it and logging
+// the cells read.
+WindowReader window_reader(const HeightGrid& dem, std::size_t* cells_read = nullptr) {
+  return [&dem, cells_read](const DemWindow& w, float* out) {
+    REQUIRE(w.rows > 0);
+    REQUIRE(w.cols > 0);
+    REQUIRE(w.row0 + w.rows <= dem.rows());
+    REQUIRE(w.col0 + w.cols <= dem.cols());
+    for (std::size_t r = 0; r < w.rows; ++r)
+      std::copy(dem.row(w.row0 + r) + w.col0, dem.row(w.row0 + r) + w.col0 + w.cols,
+                out + r * w.cols);
+    if (cells_read) *cells_read += w.rows * w.cols;
+  };
+}
+
+bool same_bits(const HeightGrid& a, const HeightGrid& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("a strip resampled from its band equals the strip resampled from the whole DEM",
+          "[azimuth][strips]") {
+  // Any cell the samples need but the band lacks shows as a different height (or, under the
+  // sanitizers, as a read outside the band).
+  const std::pair<std::size_t, std::size_t> shapes[] = {{1, 1}, {1, 13},  {13, 1},
+                                                        {2, 2}, {37, 53}, {120, 90}};
+  for (const auto& shape : shapes) {
+    HeightGrid dem = test::random_terrain(shape.first, shape.second, 11, 0.05);
+    for (double az : {1.0, 30.0, 45.0, 89.5, 133.7, 180.2, 225.0, 291.0, 359.9}) {
+      for (double dy : {10.0, 17.0}) {
+        const OrientedFrame frame = make_frame(dem.rows(), dem.cols(), 10, dy, az);
+        for (std::size_t width :
+             {std::size_t{1}, std::size_t{5}, std::size_t{64}, frame.profiles}) {
+          CAPTURE(shape.first, shape.second, az, dy, width);
+          DemBand band;
+          HeightGrid expected, actual;
+          for (std::size_t first = 0; first < frame.profiles; first += width) {
+            const std::size_t count = std::min(width, frame.profiles - first);
+            resample_profiles(dem, frame, first, count, expected);
+            band.load(frame, first, count, window_reader(dem));
+            resample_profiles(band, frame, first, count, actual);
+            CAPTURE(first);
+            REQUIRE(same_bits(expected, actual));
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("the band of a diagonal strip holds about the strip's cells, not its bounding box",
+          "[azimuth][strips]") {
+  const HeightGrid dem = test::random_terrain(400, 400, 3);
+  const OrientedFrame frame = make_frame(400, 400, 10, 10, 45);
+  const std::size_t count = 40;
+  const std::size_t first = frame.profiles / 2 - count / 2;  // across the DEM's diagonal
+  DemBand band;
+  std::size_t cells_read = 0;
+  band.load(frame, first, count, window_reader(dem, &cells_read));
+  // The strip's footprint is count x length cells; the band adds a margin of a few cells a row.
+  CHECK(band.rows() == 400);
+  CHECK(band.cells() <= count * frame.length + 10 * band.rows());
+  CHECK(band.cells() < dem.size() / 4);
+  // Rows are read in chunks spanning their runs: a little more than the band, far less than all.
+  CHECK(cells_read >= band.cells());
+  CHECK(cells_read < 2 * band.cells());
+  // A second strip reuses the layout's memory and gives its own heights.
+  HeightGrid expected, actual;
+  band.load(frame, 0, 3, window_reader(dem));
+  resample_profiles(dem, frame, 0, 3, expected);
+  resample_profiles(band, frame, 0, 3, actual);
+  CHECK(same_bits(expected, actual));
+  CHECK_THROWS_AS(band.load(make_frame(400, 400, 10, 10, 90), 0, 3, window_reader(dem)), Error);
+  CHECK_THROWS_AS(band.load(frame, frame.profiles - 1, 2, window_reader(dem)), Error);
+}
+
+TEST_CASE("a DEM read window by window in strips gives the strokes of the one-piece run",
+          "[azimuth][strips]") {
+  const HeightGrid dem = test::random_terrain(300, 260, 9, 0.01);
+  const GeoTransform gt = centred(300);
+  for (double az : {90.0, 180.0, 45.0, 200.0}) {
+    SilhouetteParams params;
+    params.view.azimuth_deg = az;
+    params.geometry = Geometry::oblique;
+    params.subcell = true;
+    const OrientedFrame frame = make_frame(dem.rows(), dem.cols(), kCell, kCell, az);
+    const SilhouetteResult whole = frame.resampled
+                                       ? run_resampled_silhouettes(dem, frame, gt, params)
+                                       : run_silhouettes(orient(dem, frame), frame, gt, params);
+    REQUIRE(whole.strokes.size() > 20);
+    for (std::size_t width : {std::size_t{16}, std::size_t{100}}) {
+      CAPTURE(az, width);
+      StripLoader loader(frame, window_reader(dem), params.threads);
+      const SilhouetteResult strips =
+          run_in_strips(frame, gt, params, lowest_height(dem), width,
+                        [&loader](std::size_t first, std::size_t count, HeightGrid& strip) {
+                          loader.load(first, count, strip);
+                        });
+      CHECK(strips.stats.valid == whole.stats.valid);
+      CHECK(strips.stats.thinned == whole.stats.thinned);
+      test::require_same_strokes(whole, strips);
+    }
+  }
+}
+
+TEST_CASE("a reader's error reaches the caller of a strip load", "[azimuth][strips]") {
+  const OrientedFrame frame = make_frame(50, 50, 10, 10, 45);
+  StripLoader loader(frame, [](const DemWindow&, float*) { throw Error("disk gone"); });
+  HeightGrid strip;
+  CHECK_THROWS_WITH(loader.load(0, 10, strip), "disk gone");
 }

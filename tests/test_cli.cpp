@@ -364,7 +364,8 @@ TEST_CASE("pstrokes writes classes and scores, and refuses bad tolerances", "[cl
 
 TEST_CASE("strips give byte-identical output to the whole DEM", "[cli][strips]") {
   ScratchDir dir("strips");
-  for (const char* az : {"0", "90", "180", "270"}) {
+  // The cardinal views read windows of rows or columns; the others the band each strip samples.
+  for (const char* az : {"0", "90", "180", "270", "45", "200"}) {
     CAPTURE(az);
     const CliRun whole = run_cli({"silhouettes", kSample, dir / "w.geojson", "--azimuth", az,
                                   "--geometry", "oblique", "--stats-json", dir / "w.json"});
@@ -377,9 +378,6 @@ TEST_CASE("strips give byte-identical output to the whole DEM", "[cli][strips]")
     CHECK(slurp(dir / "w.geojson") == slurp(dir / "s.geojson"));
     CHECK(slurp(dir / "w.json") == slurp(dir / "s.json"));
   }
-  CHECK(
-      run_cli({"silhouettes", kSample, dir / "x.gpkg", "--strips", "10", "--azimuth", "45"}).code ==
-      1);
   const CliRun preview = run_cli(
       {"silhouettes", kSample, dir / "y.gpkg", "--strips", "10", "--preview", dir / "p.png"});
   CHECK(preview.code == 1);
