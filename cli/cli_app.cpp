@@ -69,8 +69,8 @@ input and output:
   --preview PNG        render the oblique sketch to a PNG picture
   --threads N          worker threads (default: all cores)
   --timings            print the time of reading, each stage and writing to stderr
-  --strips N           read and process N profiles at a time, for DEMs larger than memory;
-                       chosen automatically when the DEM would not fit in half of it
+  --strips N           read and process N profiles at a time (default 1024; memory is about
+                       5 bytes x cells of N profiles, plus the strokes)
 profiles:
   --every N            draw every N-th cross-section (default 10)
 pstrokes (tolerances: effective areas in m2 of the profiles' distance-height triangles):
@@ -200,10 +200,8 @@ std::string stats_json(const StageStats& s) {
 }
 
 // Reads the DEM for the view and tells the user what they should know about it.
-io::Dem load_dem(const Options& o, std::ostream& err, bool defer_resampling = false) {
-  io::DemOptions options = o.dem;
-  options.defer_resampling = defer_resampling;
-  io::Dem dem = io::read_dem(o.input, options);
+io::Dem load_dem(const Options& o, std::ostream& err) {
+  io::Dem dem = io::read_dem(o.input, o.dem);
   if (!dem.notes.empty()) err << "note: " << dem.notes;
   return dem;
 }
@@ -217,37 +215,46 @@ void write_text(const std::string& path, const std::string& text) {
   });
 }
 
-// Profiles per strip chosen for a DEM too large to hold whole (0: it fits).
-std::size_t automatic_strips(const std::string& path) {
+// True when the DEM would not fit in half of this machine's memory.
+bool too_large_to_hold(const std::string& path) {
   const auto dataset = io::open_raster(path);
   const auto rows = static_cast<std::size_t>(dataset->GetRasterYSize());
   const auto cols = static_cast<std::size_t>(dataset->GetRasterXSize());
-  return automatic_strip_profiles(rows, cols);
+  return automatic_strip_profiles(rows, cols) > 0;
 }
 
-// The silhouettes read and processed strip by strip: bounded memory for any DEM size.
+// Profiles per strip unless --strips says otherwise. Strips bound the memory, and they are faster
+// than the whole DEM: the next strip is read while this one is processed, into memory reused from
+// strip to strip rather than a DEM's worth of fresh pages.
+constexpr std::size_t kDefaultStrip = 1024;
+
+// The silhouettes read and processed strip by strip; `read_s` gets the time spent reading, which
+// overlaps the stages.
 SilhouetteResult silhouettes_in_strips(const Options& o, std::size_t strip, io::Dem& info,
-                                       std::ostream& err) {
+                                       std::ostream& err, double& read_s) {
   io::DemStripReader reader(o.input, o.dem, o.params.threads);
   info = reader.info();
   if (!info.notes.empty()) err << "note: " << info.notes;
   const double z_ref = o.params.geometry == Geometry::oblique ? reader.lowest_height() : 0.0;
-  return run_in_strips(info.frame, info.geotransform, o.params, z_ref, strip,
-                       [&](std::size_t first, std::size_t count, HeightGrid& heights) {
-                         reader.read_profiles(first, count, heights);
-                       });
+  return run_in_strips(
+      info.frame, info.geotransform, o.params, z_ref, strip,
+      [&](std::size_t first, std::size_t count, HeightGrid& heights) {
+        const auto start = std::chrono::steady_clock::now();
+        reader.read_profiles(first, count, heights);
+        read_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      });
 }
 
 int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
   io::vector_driver_for(o.output, o.format);  // an unknown format fails before any work
-  const std::size_t strip =
-      o.strips > 0 ? static_cast<std::size_t>(o.strips) : automatic_strips(o.input);
-  if (strip > 0 && !o.preview.empty()) {
-    throw Error("--preview needs the whole DEM in memory; drop --strips");
+  // The preview draws the whole turned grid, so it needs the DEM whole.
+  const bool whole = !o.preview.empty();
+  if (whole && o.strips > 0) throw Error("--preview needs the whole DEM in memory; drop --strips");
+  if (whole && too_large_to_hold(o.input)) {
+    throw Error("the DEM is too large to hold whole, which --preview needs; drop --preview");
   }
-  if (strip > 0 && o.strips == 0)
-    err << "note: the DEM is large: processing it in strips of " << strip << " profiles\n";
+  const std::size_t strip = o.strips > 0 ? static_cast<std::size_t>(o.strips) : kDefaultStrip;
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
@@ -256,40 +263,30 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
   io::Dem dem;
   SilhouetteResult result;
   double read_s = 0;
-  if (strip > 0) {
-    result = silhouettes_in_strips(o, strip, dem, err);  // reads strip by strip as it goes
-  } else {
-    // Resampled views are turned strip by strip as the stages go, unless the preview needs the
-    // whole turned grid.
-    dem = load_dem(o, err, o.preview.empty());
+  if (whole) {
+    dem = load_dem(o, err);
     read_s = since(start);
-    result = dem.frame.resampled && o.preview.empty()
-                 ? run_resampled_silhouettes(dem.unturned, dem.frame, dem.geotransform, o.params)
-                 : run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
+    result =
+        run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params, {}, dem.lowest_height);
+  } else {
+    result = silhouettes_in_strips(o, strip, dem, err, read_s);
   }
   start = Clock::now();
   io::write_strokes(o.output, o.format, result.strokes, dem.srs_wkt);
   const double write_s = since(start);
-  if (o.timings && strip == 0) {
+  if (o.timings) {
     const StageTimings& t = result.timings;
-    err << "timings (s): read " << read_s << ", resampling " << t.resampling << ", visibility "
-        << t.visibility << ", candidates " << t.candidates << ", filter " << t.filter
-        << ", thinning " << t.thinning << ", chaining " << t.chaining << ", strokes " << t.strokes
-        << ", write " << write_s << "\n";
+    err << "timings (s): read " << read_s << (whole ? "" : " (alongside the stages)")
+        << ", visibility " << t.visibility << ", candidates " << t.candidates << ", filter "
+        << t.filter << ", thinning " << t.thinning << ", chaining " << t.chaining << ", strokes "
+        << t.strokes << ", write " << write_s << "\n";
   }
   if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
-  if (!o.preview.empty()) {
-    io::write_preview(o.preview, result, dem.oriented, dem.frame, o.params.view);
-  }
+  if (whole) io::write_preview(o.preview, result, dem.oriented, dem.frame, o.params.view);
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes
-      << " formulated strokes (";
-  if (strip > 0) {
-    out << "in strips of " << strip << " profiles)\n";
-  } else {
-    out << "c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered) << " %, t-set "
-        << s.pct(s.thinned) << " %, g-set " << s.pct(s.generalised) << " %)\n";
-  }
+      << " formulated strokes (c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered)
+      << " %, t-set " << s.pct(s.thinned) << " %, g-set " << s.pct(s.generalised) << " %)\n";
   return 0;
 }
 
@@ -332,7 +329,7 @@ int profiles(const std::vector<std::string>& args, std::ostream& out, std::ostre
   CellFlags flags;
   classify_visibility(dem.oriented, dem.frame.d, o.params.view, flags, o.params.threads);
   const auto lines = profile_plot(dem.oriented, flags, dem.frame, o.params.view, dem.geotransform,
-                                  static_cast<std::size_t>(o.every), lowest_height(dem.oriented));
+                                  static_cast<std::size_t>(o.every), dem.lowest_height);
   io::write_profile_lines(o.output, o.format, lines, dem.srs_wkt);
   out << o.output << ": " << lines.size() << " visible cross-section pieces\n";
   return 0;
@@ -347,7 +344,7 @@ int pstrokes(const std::vector<std::string>& args, std::ostream& out, std::ostre
       run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
   const auto strokes =
       pstroke_sketch(dem.oriented, result.flags, dem.frame, o.params.view, dem.geotransform,
-                     o.params.geometry, o.pstrokes, o.params.threads);
+                     o.params.geometry, o.pstrokes, dem.lowest_height, o.params.threads);
   io::write_pstrokes(o.output, o.format, strokes, dem.srs_wkt);
   out << o.output << ": " << strokes.size() << " P-strokes\n";
   return 0;
@@ -361,8 +358,7 @@ int drape(const std::vector<std::string>& args, std::ostream& out, std::ostream&
   const std::vector<HeightGrid> source = io::read_bands(o.source);
   CellFlags flags;
   classify_visibility(dem.oriented, dem.frame.d, o.params.view, flags, o.params.threads);
-  const PlanObliqueDrape drape(dem.oriented, flags, dem.frame, o.params.view,
-                               lowest_height(dem.oriented));
+  const PlanObliqueDrape drape(dem.oriented, flags, dem.frame, o.params.view, dem.lowest_height);
   std::vector<HeightGrid> bands;
   for (const HeightGrid& band : source) bands.push_back(drape.drape(band));
   io::write_float_raster(o.output, bands, drape.geotransform(dem.geotransform), dem.srs_wkt);

@@ -69,6 +69,7 @@ void read_band(const std::string& path, GDALRasterBand& band, bool defer_resampl
     nodata_to_nan(band, block.data(), count * dem.cols);
     builder.add_rows(r, count, block.data());
   }
+  dem.lowest_height = builder.dem_lowest_height();
   if (defer_resampling && dem.frame.resampled) {
     dem.unturned = builder.take_dem();
   } else {

@@ -28,6 +28,7 @@ struct Dem {
   double ground_scale = 1.0;  // ground metres per map unit used for the cell sizes
   std::string notes;          // things the user should know (no CRS, assumed units), one per line
   std::size_t rows = 0, cols = 0;
+  double lowest_height = 0;  // the DEM's lowest height, the plan-oblique reference (SPEC 1.9)
 };
 
 // Throws tsk::Error with a message for the user on anything it cannot read faithfully:

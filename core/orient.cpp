@@ -186,9 +186,12 @@ DemWindow profile_window(const OrientedFrame& frame, std::size_t first, std::siz
   return w;
 }
 
-HeightGrid orient_window(const OrientedFrame& frame, const HeightGrid& window) {
+void orient_window(const OrientedFrame& frame, const HeightGrid& window, HeightGrid& out) {
   // The window seen from the same side is exactly its run of profiles, in order.
-  return orient(window, make_frame(window.rows(), window.cols(), 1, 1, frame.azimuth_deg));
+  const OrientedFrame turned = make_frame(window.rows(), window.cols(), 1, 1, frame.azimuth_deg);
+  if (out.rows() != turned.profiles || out.cols() != turned.length)
+    out = HeightGrid(turned.profiles, turned.length, kUnset);
+  scatter_dem_rows(turned, 0, window.rows(), window.data(), window.cols(), out);
 }
 
 namespace {
@@ -426,10 +429,13 @@ void StripLoader::load(std::size_t first, std::size_t count, HeightGrid& strip) 
     return;
   }
   const DemWindow w = profile_window(frame_, first, count);
-  if (window_.rows() != w.rows || window_.cols() != w.cols)
-    window_ = HeightGrid(w.rows, w.cols, kUnset);
-  read_(w, window_.data());
-  strip = orient_window(frame_, window_);
+  const bool turned =
+      frame_.row_per_p <= 0 || frame_.col_per_i <= 0;  // all but the view from the west
+  HeightGrid& target = turned ? window_ : strip;
+  if (target.rows() != w.rows || target.cols() != w.cols)
+    target = HeightGrid(w.rows, w.cols, kUnset);
+  read_(w, target.data());
+  if (turned) orient_window(frame_, window_, strip);
 }
 
 HeightGrid orient(const HeightGrid& dem, const OrientedFrame& frame, unsigned threads) {
@@ -451,6 +457,9 @@ OrientedGridBuilder::OrientedGridBuilder(const OrientedFrame& frame)
                             : HeightGrid(frame.profiles, frame.length, kUnset)) {}
 
 void OrientedGridBuilder::add_rows(std::size_t first_row, std::size_t count, const float* rows) {
+  for (std::size_t k = 0; k < count * frame_.dem_cols; ++k) {
+    if (is_data(rows[k])) lowest_ = std::min(lowest_, rows[k]);
+  }
   if (!frame_.resampled) {
     scatter_dem_rows(frame_, first_row, count, rows, frame_.dem_cols, grid_);
     return;
@@ -462,6 +471,10 @@ void OrientedGridBuilder::add_rows(std::size_t first_row, std::size_t count, con
 HeightGrid OrientedGridBuilder::finish(unsigned threads) {
   if (!frame_.resampled) return std::move(grid_);
   return orient(grid_, frame_, threads);
+}
+
+double OrientedGridBuilder::dem_lowest_height() const {
+  return std::isfinite(lowest_) ? static_cast<double>(lowest_) : 0.0;
 }
 
 HeightGrid OrientedGridBuilder::take_dem() {

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "grid.h"
@@ -136,7 +137,7 @@ class StripLoader {
   WindowReader read_;
   unsigned threads_;
   DemBand band_;       // resampled views
-  HeightGrid window_;  // cardinal views
+  HeightGrid window_;  // cardinal views but the one from the west, whose window is its strip
 };
 
 // Builds the oriented grid from DEM rows delivered block by block, top to bottom, as raster
@@ -149,18 +150,23 @@ class OrientedGridBuilder {
   HeightGrid finish(unsigned threads = 0);
   // Resampled frames: the DEM as delivered, for a caller that resamples it strip by strip.
   HeightGrid take_dem();
+  // The lowest height with data among the rows delivered (0 when none): the DEM's minimum, the
+  // plan-oblique reference of SPEC 1.9. A resampled grid's own minimum may lie above it.
+  double dem_lowest_height() const;
 
  private:
   const OrientedFrame& frame_;
   HeightGrid grid_;  // the oriented grid (cardinal) or the DEM (resampled)
+  float lowest_ = std::numeric_limits<float>::infinity();
 };
 
 // The DEM window (rows or columns, by view) that holds oriented profiles [first, first + count)
 // of a cardinal frame, for readers that load a DEM strip by strip.
 DemWindow profile_window(const OrientedFrame& frame, std::size_t first, std::size_t count);
 
-// Profiles [first, first + count) turned from their window (read as rows x cols, row 0 north).
-HeightGrid orient_window(const OrientedFrame& frame, const HeightGrid& window);
+// Profiles [first, first + count) turned from their window (read as rows x cols, row 0 north)
+// into `out`, reusing its memory when it has their shape.
+void orient_window(const OrientedFrame& frame, const HeightGrid& window, HeightGrid& out);
 
 // Bilinear height at a DEM pixel position; NaN outside the cell centres' hull or next to nodata.
 float sample_bilinear(const HeightGrid& dem, PixelPoint px);

@@ -5,7 +5,6 @@
 
 #include "errors.h"
 #include "parallel.h"
-#include "profile_plot.h"
 
 namespace tsk {
 
@@ -91,7 +90,7 @@ void score_line(std::size_t count, double spacing, const HeightGrid& z, At at,
 std::vector<PStroke> pstroke_sketch(const HeightGrid& z, const CellFlags& flags,
                                     const OrientedFrame& frame, const ViewParams& view,
                                     const GeoTransform& geotransform, Geometry geometry,
-                                    const PStrokeParams& params, unsigned threads) {
+                                    const PStrokeParams& params, double z_ref, unsigned threads) {
   params.validate();
   const std::size_t P = frame.profiles, L = frame.length;
   std::vector<float> column(z.size(), 0.f), row(z.size(), 0.f);
@@ -105,7 +104,6 @@ std::vector<PStroke> pstroke_sketch(const HeightGrid& z, const CellFlags& flags,
       score_line(
           P, frame.w, z, [&](std::size_t p) { return p * L + i; }, row);
   });
-  const double z_ref = lowest_height(z);
   const double cells_per_metre = view.ve / (view.base_slope() * frame.d);
   auto drawable = [&](std::size_t p, std::size_t i) {
     const std::uint8_t f = flags(p, i);

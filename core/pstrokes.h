@@ -39,10 +39,12 @@ struct PStroke {
   std::vector<StrokePoint> points;
 };
 
-// Needs the visibility and f-set flags of a silhouette run on the same grid.
+// Needs the visibility and f-set flags of a silhouette run on the same grid; z_ref is the DEM's
+// lowest height, the plan-oblique reference (SPEC 1.9).
 std::vector<PStroke> pstroke_sketch(const HeightGrid& oriented, const CellFlags& flags,
                                     const OrientedFrame& frame, const ViewParams& view,
                                     const GeoTransform& geotransform, Geometry geometry,
-                                    const PStrokeParams& params, unsigned threads = 0);
+                                    const PStrokeParams& params, double z_ref,
+                                    unsigned threads = 0);
 
 }  // namespace tsk

@@ -287,13 +287,25 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
                                const ProfileReader& read, const ProgressFn& progress) {
   if (strip == 0) throw Error("a strip needs at least one profile");
   SilhouetteStream stream(frame, geotransform, params, z_ref, progress);
-  HeightGrid heights;
-  for (std::size_t first = 0; first < frame.profiles; first += strip) {
-    const std::size_t count = std::min(strip, frame.profiles - first);
+  // The strip starting at `first` with its neighbours.
+  auto read_strip = [&](std::size_t first, HeightGrid& heights) {
     const std::size_t lo = first > 0 ? first - 1 : 0;
-    const std::size_t hi = std::min(frame.profiles, first + count + 1);
+    const std::size_t hi = std::min(frame.profiles, first + strip + 1);
     read(lo, hi - lo, heights);
-    stream.add_strip(heights, first, count);
+  };
+  // The next strip is read while this one is processed, into memory of its own.
+  const auto launch =
+      resolve_threads(params.threads) > 1 ? std::launch::async : std::launch::deferred;
+  HeightGrid current, next;
+  read_strip(0, current);
+  for (std::size_t first = 0; first < frame.profiles; first += strip) {
+    std::future<void> reading;
+    if (first + strip < frame.profiles)
+      reading = std::async(launch, read_strip, first + strip, std::ref(next));
+    // If processing throws, the future's destructor waits for the read to end.
+    stream.add_strip(current, first, std::min(strip, frame.profiles - first));
+    if (reading.valid()) reading.get();
+    std::swap(current, next);
   }
   return stream.finish();
 }
@@ -329,12 +341,13 @@ std::size_t automatic_strip_profiles(std::size_t rows, std::size_t cols) {
 
 SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,
                                  const GeoTransform& geotransform, const SilhouetteParams& params,
-                                 const ProgressFn& progress) {
+                                 const ProgressFn& progress, std::optional<double> z_ref) {
   params.validate();
   if (oriented.rows() != frame.profiles || oriented.cols() != frame.length) {
     throw Error("oriented grid does not match its frame");
   }
-  SilhouetteStream stream(frame, geotransform, params, lowest_height(oriented), progress);
+  SilhouetteStream stream(frame, geotransform, params, z_ref ? *z_ref : lowest_height(oriented),
+                          progress);
   stream.add_strip(oriented, 0, frame.profiles, true);
   return stream.finish();
 }

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "flags.h"
@@ -88,11 +89,14 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
 // machine's memory; 0 when it fits.
 std::size_t automatic_strip_profiles(std::size_t rows, std::size_t cols);
 
-// Runs every stage on an oriented grid (see orient.h). Throws Error on bad parameters or a grid
-// that does not match the frame, Cancelled when `progress` returns false.
+// Runs every stage on an oriented grid (see orient.h). z_ref is the DEM's lowest height, the
+// plan-oblique reference; without it the grid's lowest height stands in, which is the DEM's for a
+// cardinal view but may lie above it for a resampled one. Throws Error on bad parameters or a
+// grid that does not match the frame, Cancelled when `progress` returns false.
 SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,
                                  const GeoTransform& geotransform, const SilhouetteParams& params,
-                                 const ProgressFn& progress = {});
+                                 const ProgressFn& progress = {},
+                                 std::optional<double> z_ref = std::nullopt);
 
 // Runs every stage at a resampled (non-cardinal) view straight from the DEM (row 0 north),
 // resampling a strip of profiles at a time into memory reused from strip to strip, so the

@@ -182,7 +182,7 @@ SilhouetteResult DemViewAlgorithm::runSilhouettes(const SilhouetteParams& params
                                        mRaster->geotransform(), params, progress);
     }
     return run_silhouettes(mRaster->oriented(), mRaster->frame(), mRaster->geotransform(), params,
-                           progress);
+                           progress, mRaster->lowestHeight());
   });
 }
 

@@ -87,7 +87,7 @@ QVariantMap DrapeAlgorithm::processAlgorithm(const QVariantMap& parameters,
     CellFlags flags;
     classify_visibility(raster.oriented(), raster.frame().d, mView, flags);
     const PlanObliqueDrape drape(raster.oriented(), flags, raster.frame(), mView,
-                                 lowest_height(raster.oriented()));
+                                 raster.lowestHeight());
     const GeoTransform gt = drape.geotransform(raster.geotransform());
     const QgsRectangle extent(gt.a[0], gt.a[3] + gt.a[5] * static_cast<double>(drape.rows()),
                               gt.a[0] + gt.a[1] * static_cast<double>(drape.cols()), gt.a[3]);

@@ -62,7 +62,7 @@ QVariantMap ProfilePlotAlgorithm::processAlgorithm(const QVariantMap& parameters
     CellFlags flags;
     classify_visibility(raster.oriented(), raster.frame().d, mView, flags);
     return profile_plot(raster.oriented(), flags, raster.frame(), mView, raster.geotransform(),
-                        static_cast<std::size_t>(mEvery), lowest_height(raster.oriented()));
+                        static_cast<std::size_t>(mEvery), raster.lowestHeight());
   });
   QgsFields fields;
   fields.append(makeField(QStringLiteral("section"), FieldKind::Integer));

@@ -93,7 +93,8 @@ QVariantMap PStrokeAlgorithm::processAlgorithm(const QVariantMap& parameters,
   const SilhouetteResult result = runSilhouettes(mParams, feedback, 25, 40);
   const std::vector<PStroke> strokes = withCoreErrors([&] {
     return pstroke_sketch(raster.oriented(), result.flags, raster.frame(), mParams.view,
-                          raster.geotransform(), mParams.geometry, mPStrokes);
+                          raster.geotransform(), mParams.geometry, mPStrokes,
+                          raster.lowestHeight());
   });
   QgsFields fields;
   fields.append(makeField(QStringLiteral("class"), FieldKind::Text));

@@ -118,21 +118,28 @@ void RasterGrid::readProfiles(std::size_t first, std::size_t count, HeightGrid& 
 }
 
 void RasterGrid::readWindow(const DemWindow& w, float* heights) {
+  // In blocks of at most 4 MiB: memory the allocator reuses from block to block, where one
+  // block per window would be fresh pages for every strip.
   const double dx = mExtent.width() / mCols, dy = mExtent.height() / mRows;
-  const QgsRectangle rect(mExtent.xMinimum() + static_cast<double>(w.col0) * dx,
-                          mExtent.yMaximum() - static_cast<double>(w.row0 + w.rows) * dy,
-                          mExtent.xMinimum() + static_cast<double>(w.col0 + w.cols) * dx,
-                          mExtent.yMaximum() - static_cast<double>(w.row0) * dy);
-  std::unique_ptr<QgsRasterBlock> block(
-      mProvider->block(mBand, rect, static_cast<int>(w.cols), static_cast<int>(w.rows)));
-  if (!block || !block->isValid()) {
-    throw QgsProcessingException(
-        tr("Could not read rows %1 to %2 of the raster.").arg(w.row0).arg(w.row0 + w.rows - 1));
+  const std::size_t blockRows = std::max<std::size_t>(1, (std::size_t{1} << 20) / w.cols);
+  for (std::size_t top = w.row0; top < w.row0 + w.rows; top += blockRows) {
+    const std::size_t count = std::min(blockRows, w.row0 + w.rows - top);
+    const QgsRectangle rect(mExtent.xMinimum() + static_cast<double>(w.col0) * dx,
+                            mExtent.yMaximum() - static_cast<double>(top + count) * dy,
+                            mExtent.xMinimum() + static_cast<double>(w.col0 + w.cols) * dx,
+                            mExtent.yMaximum() - static_cast<double>(top) * dy);
+    std::unique_ptr<QgsRasterBlock> block(
+        mProvider->block(mBand, rect, static_cast<int>(w.cols), static_cast<int>(count)));
+    if (!block || !block->isValid()) {
+      throw QgsProcessingException(
+          tr("Could not read rows %1 to %2 of the raster.").arg(top).arg(top + count - 1));
+    }
+    copyHeights(*block, static_cast<int>(count), heights + (top - w.row0) * w.cols);
   }
-  copyHeights(*block, static_cast<int>(w.rows), heights);
 }
 
-double RasterGrid::lowestHeight() {
+double RasterGrid::lowestHeight() const {
+  if (mLowest) return *mLowest;
   const QgsRasterBandStats stats = mProvider->bandStatistics(mBand, kStatisticMin);
   return std::isfinite(stats.minimumValue) ? stats.minimumValue : 0.0;
 }
@@ -168,6 +175,7 @@ void RasterGrid::readBlocks(QgsProcessingFeedback* feedback, double progressFrom
                                                static_cast<double>(rows));
     }
   }
+  mLowest = builder.dem_lowest_height();
   // Only one of the two holds the heights, so a reused reader never runs on a stale grid.
   if (deferResampling && mFrame.resampled) {
     mUnturned = builder.take_dem();

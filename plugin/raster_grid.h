@@ -8,6 +8,7 @@
 #include <QCoreApplication>
 #include <QStringList>
 #include <memory>
+#include <optional>
 
 #include "orient.h"
 #include "strokes.h"
@@ -46,7 +47,9 @@ class RasterGrid {
   // window (see StripLoader).
   void setView(double azimuthDeg);
   void readProfiles(std::size_t first, std::size_t count, HeightGrid& strip);
-  double lowestHeight();  // a full pass over the band through the provider
+  // The DEM's lowest height, the plan-oblique reference (SPEC 1.9): from the heights read, or
+  // before a strip-by-strip run, a pass over the band through the provider.
+  double lowestHeight() const;
 
   const HeightGrid& oriented() const { return mOriented; }
   const HeightGrid& unturned() const { return mUnturned; }  // read with deferResampling
@@ -76,6 +79,7 @@ class RasterGrid {
   OrientedFrame mFrame;
   GeoTransform mGeoTransform;
   std::unique_ptr<StripLoader> mStrips;  // set with the view
+  std::optional<double> mLowest;         // known once the heights are read
 };
 
 }  // namespace tsk::plugin

@@ -77,3 +77,27 @@ TEST_CASE("a DEM read block by block equals one turned at once", "[orient]") {
     CHECK_THROWS_AS(scatter_dem_rows(f, 5, 4, dem.row(0), 4, blocks), Error);
   }
 }
+
+TEST_CASE("the plan-oblique reference is the DEM's lowest height, not the resampled grid's",
+          "[orient]") {
+  // A one-cell pit: bilinear samples between cell centres never reach its bottom.
+  HeightGrid dem(20, 20, 100.f);
+  dem(9, 9) = 40.f;
+  dem(0, 0) = kNoData;
+  for (double az : {90.0, 45.0}) {
+    CAPTURE(az);
+    const OrientedFrame f = make_frame(20, 20, 10, 10, az);
+    OrientedGridBuilder builder(f);
+    builder.add_rows(0, 12, dem.row(0));
+    builder.add_rows(12, 8, dem.row(12));
+    CHECK(builder.dem_lowest_height() == 40.0);
+    const HeightGrid oriented = builder.finish();
+    if (f.resampled) {
+      CHECK(lowest_height(oriented) > 40.0);
+    } else {
+      CHECK(lowest_height(oriented) == 40.0);
+    }
+  }
+  OrientedGridBuilder empty(make_frame(2, 2, 1, 1, 90));
+  CHECK(empty.dem_lowest_height() == 0.0);
+}

@@ -69,8 +69,9 @@ TEST_CASE("a ridge seeds convex column strokes along its crest, drawn across the
   SilhouetteParams params;
   const SilhouetteResult r = test::run_on_dem(dem, params, 50, 50);
   const OrientedFrame frame = make_frame(30, 41, 50, 50, 90);
-  const auto strokes = pstroke_sketch(orient(dem, frame), r.flags, frame, params.view,
-                                      GeoTransform{}, Geometry::map, PStrokeParams{});
+  const auto strokes =
+      pstroke_sketch(orient(dem, frame), r.flags, frame, params.view, GeoTransform{}, Geometry::map,
+                     PStrokeParams{}, lowest_height(dem));
   int crest = 0;
   for (const PStroke& s : strokes) {
     if (s.seed.i != 20) continue;
@@ -92,8 +93,9 @@ TEST_CASE("no P-stroke is seeded in or extended into the f-set", "[pstrokes]") {
   tolerances.convex_column_m2 = tolerances.concave_column_m2 = 500;
   tolerances.convex_row_m2 = tolerances.concave_row_m2 = 500;
   tolerances.half_length = 3;
-  const auto strokes = pstroke_sketch(orient(dem, frame), r.flags, frame, params.view,
-                                      GeoTransform{}, Geometry::map, tolerances);
+  const auto strokes =
+      pstroke_sketch(orient(dem, frame), r.flags, frame, params.view, GeoTransform{}, Geometry::map,
+                     tolerances, lowest_height(dem));
   REQUIRE(strokes.size() > 50);
   for (const PStroke& s : strokes) {
     for (const StrokePoint& pt : s.points) {

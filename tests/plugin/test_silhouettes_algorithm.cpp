@@ -374,8 +374,9 @@ TEST_CASE("the P-stroke algorithm draws the core's P-strokes", "[plugin][pstroke
   io::DemOptions options;
   const io::Dem core = io::read_dem(dem.toStdString(), options);
   const SilhouetteResult result = run_silhouettes(core.oriented, core.frame, core.geotransform, {});
-  const auto expected = pstroke_sketch(core.oriented, result.flags, core.frame, ViewParams{},
-                                       core.geotransform, Geometry::map, PStrokeParams{});
+  const auto expected =
+      pstroke_sketch(core.oriented, result.flags, core.frame, ViewParams{}, core.geotransform,
+                     Geometry::map, PStrokeParams{}, core.lowest_height);
   QgsVectorLayer layer(run.results.value("OUTPUT").toString(), "p", "ogr");
   REQUIRE(layer.isValid());
   CHECK(layer.featureCount() == static_cast<long long>(expected.size()));
