@@ -267,6 +267,7 @@ SilhouetteResult SilhouetteStream::finish() {
   SilhouetteResult& result = st.result;
   StageStats& stats = result.stats;
   // Strokes in the order their chains were started: the order of SPEC 1.7's scan.
+  result.strokes.reserve(st.done_factual.size() + st.done_formulated.size());
   for (auto* done : {&st.done_factual, &st.done_formulated}) {
     std::sort(done->begin(), done->end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });

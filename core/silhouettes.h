@@ -42,7 +42,9 @@ std::vector<StageFigure> stage_figures(const StageStats& stats);
 // wall time of the whole is split between them by their shares of the threads' time.
 struct StageTimings {
   double visibility = 0, candidates = 0, filter = 0, thinning = 0, chaining = 0, strokes = 0;
-  double resampling = 0;  // turning the DEM strip by strip (run_resampled_silhouettes)
+  // Turning the DEM strip by strip (run_resampled_silhouettes), each strip while the stages work
+  // on the one before: time alongside the stages, not added to them.
+  double resampling = 0;
 };
 
 struct SilhouetteResult {
