@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <memory>
 #include <new>
 #include <optional>
 #include <sstream>
@@ -70,7 +71,7 @@ input and output:
   --threads N          worker threads (default: all cores)
   --timings            print the time of reading, each stage and writing to stderr
   --strips N           read and process N profiles at a time (default 1024; memory is about
-                       5 bytes x cells of N profiles, plus the strokes)
+                       9 bytes x cells of N profiles, 13 at a non-cardinal azimuth)
 profiles:
   --every N            draw every N-th cross-section (default 10)
 pstrokes (tolerances: effective areas in m2 of the profiles' distance-height triangles):
@@ -228,23 +229,6 @@ bool too_large_to_hold(const std::string& path) {
 // strip to strip rather than a DEM's worth of fresh pages.
 constexpr std::size_t kDefaultStrip = 1024;
 
-// The silhouettes read and processed strip by strip; `read_s` gets the time spent reading, which
-// overlaps the stages.
-SilhouetteResult silhouettes_in_strips(const Options& o, std::size_t strip, io::Dem& info,
-                                       std::ostream& err, double& read_s) {
-  io::DemStripReader reader(o.input, o.dem, o.params.threads);
-  info = reader.info();
-  if (!info.notes.empty()) err << "note: " << info.notes;
-  const double z_ref = o.params.geometry == Geometry::oblique ? reader.lowest_height() : 0.0;
-  return run_in_strips(
-      info.frame, info.geotransform, o.params, z_ref, strip,
-      [&](std::size_t first, std::size_t count, HeightGrid& heights) {
-        const auto start = std::chrono::steady_clock::now();
-        reader.read_profiles(first, count, heights);
-        read_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      });
-}
-
 int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
   io::vector_driver_for(o.output, o.format);  // an unknown format fails before any work
@@ -254,35 +238,65 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
   if (whole && too_large_to_hold(o.input)) {
     throw Error("the DEM is too large to hold whole, which --preview needs; drop --preview");
   }
-  const std::size_t strip = o.strips > 0 ? static_cast<std::size_t>(o.strips) : kDefaultStrip;
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
   };
-  auto start = Clock::now();
+  double read_s = 0, write_s = 0;
   io::Dem dem;
-  SilhouetteResult result;
-  double read_s = 0;
+  std::unique_ptr<io::DemStripReader> reader;
   if (whole) {
+    const auto start = Clock::now();
     dem = load_dem(o, err);
     read_s = since(start);
-    result =
-        run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params, {}, dem.lowest_height);
   } else {
-    result = silhouettes_in_strips(o, strip, dem, err, read_s);
+    reader = std::make_unique<io::DemStripReader>(o.input, o.dem, o.params.threads);
+    dem = reader->info();
+    if (!dem.notes.empty()) err << "note: " << dem.notes;
   }
-  start = Clock::now();
-  io::write_strokes(o.output, o.format, result.strokes, dem.srs_wkt);
-  const double write_s = since(start);
+  // Strokes are written as they complete, so they are never all held (but for the preview).
+  SilhouetteResult result;
+  std::vector<Stroke> drawn;
+  Clock::time_point produced;
+  io::write_strokes(o.output, o.format, dem.srs_wkt, [&](const io::StrokeWriter& write) {
+    const StrokeSink sink = [&](Stroke&& stroke) {
+      const auto start = Clock::now();
+      write(stroke);
+      write_s += since(start);
+      if (whole) drawn.push_back(std::move(stroke));
+    };
+    if (whole) {
+      SilhouetteStream stream(dem.frame, dem.geotransform, o.params, dem.lowest_height, {}, sink);
+      stream.add_strip(dem.oriented, 0, dem.frame.profiles, true);
+      result = stream.finish();
+    } else {
+      // The strips are read window by window, the next one while the stages work on this one.
+      const double z_ref = o.params.geometry == Geometry::oblique ? reader->lowest_height() : 0.0;
+      const std::size_t strip = o.strips > 0 ? static_cast<std::size_t>(o.strips) : kDefaultStrip;
+      result = run_in_strips(
+          dem.frame, dem.geotransform, o.params, z_ref, strip,
+          [&](std::size_t first, std::size_t count, HeightGrid& heights) {
+            const auto start = Clock::now();
+            reader->read_profiles(first, count, heights);
+            read_s += since(start);
+          },
+          {}, sink);
+    }
+    produced = Clock::now();
+  });
   if (o.timings) {
     const StageTimings& t = result.timings;
     err << "timings (s): read " << read_s << (whole ? "" : " (alongside the stages)")
         << ", visibility " << t.visibility << ", candidates " << t.candidates << ", filter "
         << t.filter << ", thinning " << t.thinning << ", chaining " << t.chaining << ", strokes "
-        << t.strokes << ", write " << write_s << "\n";
+        << t.strokes << ", write " << write_s << " (alongside the stages) + " << since(produced)
+        << " (spatial index, commit)\n";
   }
   if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
-  if (whole) io::write_preview(o.preview, result, dem.oriented, dem.frame, o.params.view);
+  if (whole) {
+    result.strokes = std::move(drawn);
+    io::write_preview(o.preview, result, dem.oriented, dem.frame, o.params.view);
+  }
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes
       << " formulated strokes (c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered)

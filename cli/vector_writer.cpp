@@ -103,8 +103,8 @@ void add_line(OGRLayer& layer, OGRFeature& feature, const std::vector<StrokePoin
 
 }  // namespace
 
-void write_strokes(const std::string& path, const std::string& format,
-                   const std::vector<Stroke>& strokes, const std::string& srs_wkt,
+void write_strokes(const std::string& path, const std::string& format, const std::string& srs_wkt,
+                   const std::function<void(const StrokeWriter& write)>& produce,
                    const std::string& layer_name) {
   write_line_layer(
       path, format, srs_wkt, layer_name,
@@ -116,7 +116,7 @@ void write_strokes(const std::string& path, const std::string& format,
       },
       [&](OGRLayer& layer, const GdalErrorCapture& capture) {
         // Fields by position: drivers may shorten names (shapefile: 10 characters).
-        for (const Stroke& s : strokes) {
+        produce([&](const Stroke& s) {
           OGRFeature feature(layer.GetLayerDefn());
           feature.SetField(0, stroke_class_name(s.cls));
           feature.SetField(1, s.cells);
@@ -131,8 +131,19 @@ void write_strokes(const std::string& path, const std::string& format,
             ++index;
           }
           add_line(layer, feature, s.points, path, capture);
-        }
+        });
       });
+}
+
+void write_strokes(const std::string& path, const std::string& format,
+                   const std::vector<Stroke>& strokes, const std::string& srs_wkt,
+                   const std::string& layer_name) {
+  write_strokes(
+      path, format, srs_wkt,
+      [&](const StrokeWriter& write) {
+        for (const Stroke& s : strokes) write(s);
+      },
+      layer_name);
 }
 
 void write_profile_lines(const std::string& path, const std::string& format,

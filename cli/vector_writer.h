@@ -1,6 +1,7 @@
 // Strokes to any OGR vector format, one line layer with the SPEC attribute fields.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,17 @@ namespace tsk::io {
 // The OGR driver for an output path: `format` if given, else by the file's extension.
 std::string vector_driver_for(const std::string& path, const std::string& format);
 
-// Writes `strokes` to `path` (whole or not at all) in the CRS given as WKT (may be empty).
+// Writes one stroke to the layer being filled.
+using StrokeWriter = std::function<void(const Stroke& stroke)>;
+
+// Creates `path` with the stroke layer in the CRS given as WKT (may be empty) and calls
+// produce(write), which hands every stroke to `write` as it has it: strokes need not be held
+// until they are written. Whole or not at all: if produce throws, nothing is left behind.
+void write_strokes(const std::string& path, const std::string& format, const std::string& srs_wkt,
+                   const std::function<void(const StrokeWriter& write)>& produce,
+                   const std::string& layer_name = "silhouettes");
+
+// Writes `strokes` to `path`, whole or not at all.
 void write_strokes(const std::string& path, const std::string& format,
                    const std::vector<Stroke>& strokes, const std::string& srs_wkt,
                    const std::string& layer_name = "silhouettes");

@@ -54,12 +54,16 @@ class ChainLinker {
   const std::vector<ChainRef>& close_all();
   // One more than the largest slot handed out so far.
   std::size_t slot_count() const { return slot_count_; }
+  // The id of the oldest chain still open (the next id when none is): every chain with a smaller
+  // id is complete.
+  std::size_t oldest_open() const { return open_.empty() ? started_ : open_.front().chain.id; }
 
  private:
   struct Open {
     ChainRef chain;
     std::size_t k;  // index of the chain's last cell in the last profile
   };
+  // Open chains in the order they were started: the survivors keep their order, new ones follow.
   std::uint32_t take_slot();
 
   bool factual_;

@@ -91,55 +91,91 @@ std::vector<StageFigure> stage_figures(const StageStats& s) {
 }
 
 struct SilhouetteStream::State {
+  // One class of strokes: its linker, the cells of its open chains by slot, and its complete
+  // strokes waiting until every chain started before theirs is complete too.
+  struct Strokes {
+    Strokes(bool factual, int window)
+        : linker(factual, window), cls(factual ? StrokeClass::factual : StrokeClass::formulated) {}
+    ChainLinker linker;
+    StrokeClass cls;
+    std::vector<std::vector<StrokeCell>> open;
+    std::vector<std::pair<std::size_t, Stroke>> waiting;  // a heap, the oldest chain on top
+    std::vector<Stroke> handed_on;                        // without a sink
+    std::size_t count = 0, cells = 0;                     // of the strokes handed on
+  };
+
   OrientedFrame frame;
   GeoTransform geotransform;
   SilhouetteParams params;
   double z_ref;
   ProgressFn progress;
+  StrokeSink sink;
   std::size_t next_profile = 0;
-  ChainLinker factual{true, 0}, formulated{false, 0};
-  // Cells of the chains still open, by slot, and the strokes of the closed ones with their id.
-  std::vector<std::vector<StrokeCell>> open_factual, open_formulated;
-  std::vector<std::pair<std::size_t, Stroke>> done_factual, done_formulated;
+  Strokes factual{true, 0}, formulated;
   CellFlags flags;  // the current strip's classification, its memory reused by the next strip
   SilhouetteResult result;
 
   State(const OrientedFrame& f, const GeoTransform& gt, const SilhouetteParams& p, double z,
-        const ProgressFn& pr)
+        const ProgressFn& pr, StrokeSink sk)
       : frame(f),
         geotransform(gt),
         params(p),
         z_ref(z),
         progress(pr),
+        sink(std::move(sk)),
         formulated(false, p.chain.window) {}
 
-  // Moves the cells of profile candidates into their chains and finishes the closed chains.
-  void link(ChainLinker& linker, ProfileCandidates&& candidates, std::vector<StrokeCell>&& cells,
-            std::vector<std::vector<StrokeCell>>& open,
-            std::vector<std::pair<std::size_t, Stroke>>& done, StrokeClass cls) {
-    const auto& joined = linker.add_profile(std::move(candidates));
-    if (open.size() < linker.slot_count()) open.resize(linker.slot_count());
+  // Moves the cells of profile candidates into their chains, finishes the closed chains and
+  // hands on the strokes no open chain precedes.
+  void link(Strokes& strokes, ProfileCandidates&& candidates, std::vector<StrokeCell>&& cells) {
+    const auto& joined = strokes.linker.add_profile(std::move(candidates));
+    std::vector<std::vector<StrokeCell>>& open = strokes.open;
+    if (open.size() < strokes.linker.slot_count()) open.resize(strokes.linker.slot_count());
     for (std::size_t k = 0; k < joined.size(); ++k) open[joined[k].slot].push_back(cells[k]);
-    close(linker.closed(), open, done, cls);
+    close(strokes, strokes.linker.closed());
+    hand_on(strokes, strokes.linker.oldest_open());
   }
 
   // Keeps the strokes of closed chains long enough to draw; their slots' storage is reused.
-  void close(const std::vector<ChainRef>& chains, std::vector<std::vector<StrokeCell>>& open,
-             std::vector<std::pair<std::size_t, Stroke>>& done, StrokeClass cls) {
+  void close(Strokes& strokes, const std::vector<ChainRef>& chains) {
     for (const ChainRef& chain : chains) {
-      std::vector<StrokeCell>& cells = open[chain.slot];
+      std::vector<StrokeCell>& cells = strokes.open[chain.slot];
       if (static_cast<int>(cells.size()) >= params.chain.min_cells) {
-        done.emplace_back(chain.id, stroke_from_cells(cells, cls));
+        strokes.waiting.emplace_back(chain.id, stroke_from_cells(cells, strokes.cls));
+        std::push_heap(strokes.waiting.begin(), strokes.waiting.end(), later_chain);
       }
       cells.clear();
     }
+  }
+
+  // Hands on the waiting strokes of chains started before chain `id`, oldest first.
+  void hand_on(Strokes& strokes, std::size_t id) {
+    auto& waiting = strokes.waiting;
+    while (!waiting.empty() && waiting.front().first < id) {
+      std::pop_heap(waiting.begin(), waiting.end(), later_chain);
+      Stroke stroke = std::move(waiting.back().second);
+      waiting.pop_back();
+      ++strokes.count;
+      strokes.cells += static_cast<std::size_t>(stroke.cells);
+      if (sink) {
+        sink(std::move(stroke));
+      } else {
+        strokes.handed_on.push_back(std::move(stroke));
+      }
+    }
+  }
+
+  static bool later_chain(const std::pair<std::size_t, Stroke>& a,
+                          const std::pair<std::size_t, Stroke>& b) {
+    return a.first > b.first;
   }
 };
 
 SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransform& geotransform,
                                    const SilhouetteParams& params, double z_ref,
-                                   const ProgressFn& progress)
-    : state_(std::make_unique<State>(frame, geotransform, params, z_ref, progress)) {
+                                   const ProgressFn& progress, StrokeSink sink)
+    : state_(
+          std::make_unique<State>(frame, geotransform, params, z_ref, progress, std::move(sink))) {
   params.validate();
 }
 
@@ -225,10 +261,8 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
   auto link = [&st, &seconds, &merge](std::vector<Collected>& batch) {
     const auto start = Clock::now();
     for (Collected& c : batch) {
-      st.link(st.factual, std::move(c.factual), std::move(c.factual_cells), st.open_factual,
-              st.done_factual, StrokeClass::factual);
-      st.link(st.formulated, std::move(c.formulated), std::move(c.formulated_cells),
-              st.open_formulated, st.done_formulated, StrokeClass::formulated);
+      st.link(st.factual, std::move(c.factual), std::move(c.factual_cells));
+      st.link(st.formulated, std::move(c.formulated), std::move(c.formulated_cells));
     }
     std::lock_guard<std::mutex> lock(merge);
     seconds.chaining += seconds_since(start);
@@ -261,23 +295,19 @@ SilhouetteResult SilhouetteStream::finish() {
   State& st = *state_;
   if (st.next_profile != st.frame.profiles) throw Error("not every profile was delivered");
   const auto start = Clock::now();
-  st.close(st.factual.close_all(), st.open_factual, st.done_factual, StrokeClass::factual);
-  st.close(st.formulated.close_all(), st.open_formulated, st.done_formulated,
-           StrokeClass::formulated);
+  for (State::Strokes* strokes : {&st.factual, &st.formulated}) {
+    st.close(*strokes, strokes->linker.close_all());
+    st.hand_on(*strokes, std::numeric_limits<std::size_t>::max());
+  }
   SilhouetteResult& result = st.result;
   StageStats& stats = result.stats;
-  // Strokes in the order their chains were started: the order of SPEC 1.7's scan.
-  result.strokes.reserve(st.done_factual.size() + st.done_formulated.size());
-  for (auto* done : {&st.done_factual, &st.done_formulated}) {
-    std::sort(done->begin(), done->end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (auto& entry : *done) {
-      stats.generalised += static_cast<std::size_t>(entry.second.cells);
-      result.strokes.push_back(std::move(entry.second));
-    }
-  }
-  stats.factual_strokes = st.done_factual.size();
-  stats.formulated_strokes = st.done_formulated.size();
+  stats.generalised = st.factual.cells + st.formulated.cells;
+  stats.factual_strokes = st.factual.count;
+  stats.formulated_strokes = st.formulated.count;
+  // Without a sink: factual strokes first, then formulated, each in the order of the scan.
+  result.strokes = std::move(st.factual.handed_on);
+  result.strokes.reserve(result.strokes.size() + st.formulated.handed_on.size());
+  for (Stroke& stroke : st.formulated.handed_on) result.strokes.push_back(std::move(stroke));
   result.timings.strokes += seconds_since(start);
   if (st.progress && !st.progress(1.0)) throw Cancelled();
   return std::move(result);
@@ -285,9 +315,10 @@ SilhouetteResult SilhouetteStream::finish() {
 
 SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& geotransform,
                                const SilhouetteParams& params, double z_ref, std::size_t strip,
-                               const ProfileReader& read, const ProgressFn& progress) {
+                               const ProfileReader& read, const ProgressFn& progress,
+                               StrokeSink sink) {
   if (strip == 0) throw Error("a strip needs at least one profile");
-  SilhouetteStream stream(frame, geotransform, params, z_ref, progress);
+  SilhouetteStream stream(frame, geotransform, params, z_ref, progress, std::move(sink));
   // The strip starting at `first` with its neighbours.
   auto read_strip = [&](std::size_t first, HeightGrid& heights) {
     const std::size_t lo = first > 0 ? first - 1 : 0;

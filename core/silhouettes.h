@@ -54,14 +54,22 @@ struct SilhouetteResult {
   CellFlags flags;  // the per-cell classification, for diagnostics and tests
 };
 
+// Takes each stroke as soon as it is complete and every stroke of its class started before it has
+// been handed on: factual and formulated strokes each in the order of SPEC 1.7's scan, the two
+// classes interleaved. Called from a linking thread, one call at a time; what it throws ends the
+// run.
+using StrokeSink = std::function<void(Stroke&& stroke)>;
+
 // Runs the stages on profiles delivered in strips, left to right, holding one strip at a time:
-// for DEMs larger than memory. Memory beyond the strip is that of the strokes. run_silhouettes
-// is one strip.
+// for DEMs larger than memory. Memory beyond the strip is that of the strokes, unless a sink
+// takes them as they complete. run_silhouettes is one strip.
 class SilhouetteStream {
  public:
   // z_ref: the DEM's lowest height (plan-oblique geometry needs it before the first strip).
+  // With a sink, strokes go to it and the result holds none.
   SilhouetteStream(const OrientedFrame& frame, const GeoTransform& geotransform,
-                   const SilhouetteParams& params, double z_ref, const ProgressFn& progress = {});
+                   const SilhouetteParams& params, double z_ref, const ProgressFn& progress = {},
+                   StrokeSink sink = {});
   ~SilhouetteStream();
 
   // Profiles [first, first + count) with their neighbours for the row slope: `z` holds profiles
@@ -83,9 +91,11 @@ using ProfileReader = std::function<void(std::size_t first, std::size_t count, H
 
 // The whole method with the grid read `strip` profiles at a time through `read`, each strip with
 // the neighbouring profiles the row slope needs. Equal to run_silhouettes on the whole grid.
+// With a sink, strokes go to it as they complete and the result holds none.
 SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& geotransform,
                                const SilhouetteParams& params, double z_ref, std::size_t strip,
-                               const ProfileReader& read, const ProgressFn& progress = {});
+                               const ProfileReader& read, const ProgressFn& progress = {},
+                               StrokeSink sink = {});
 
 // Profiles per strip for a DEM that, held whole (5 bytes a cell), would not fit in half of this
 // machine's memory; 0 when it fits.

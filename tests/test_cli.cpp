@@ -236,6 +236,40 @@ TEST_CASE("a failed run keeps an earlier output intact", "[cli][robustness]") {
   CHECK(dir.file_count() == 1);
 }
 
+TEST_CASE("a read that fails after strokes were written leaves no output", "[cli][robustness]") {
+  // Strokes are written as they complete; the top half of this DEM reads, the bottom half's
+  // file is gone, so the run fails after the first strips' strokes are in the file.
+  ScratchDir dir("midway");
+  test::write_tiff(dir / "top.tif", 40, 40, 1, hill, kNorthUp, 32616);
+  std::ofstream(dir / "dem.vrt") << R"(<VRTDataset rasterXSize="40" rasterYSize="80">
+  <SRS>EPSG:32616</SRS>
+  <GeoTransform>500000, 10, 0, 4000000, 0, -10</GeoTransform>
+  <VRTRasterBand dataType="Float32" band="1">
+    <SimpleSource>
+      <SourceFilename relativeToVRT="1">top.tif</SourceFilename><SourceBand>1</SourceBand>
+      <SrcRect xOff="0" yOff="0" xSize="40" ySize="40"/>
+      <DstRect xOff="0" yOff="0" xSize="40" ySize="40"/>
+    </SimpleSource>
+    <SimpleSource>
+      <SourceFilename relativeToVRT="1">gone.tif</SourceFilename><SourceBand>1</SourceBand>
+      <SrcRect xOff="0" yOff="0" xSize="40" ySize="40"/>
+      <DstRect xOff="0" yOff="40" xSize="40" ySize="40"/>
+    </SimpleSource>
+  </VRTRasterBand>
+</VRTDataset>)";
+  const CliRun top = run_cli({"silhouettes", dir / "top.tif", dir / "top.gpkg"});
+  REQUIRE(top.code == 0);
+  REQUIRE(summarise(dir / "top.gpkg").features > 0);
+  const std::size_t files = dir.file_count();
+  for (const char* out : {"out.gpkg", "out.shp", "out.geojson"}) {
+    CAPTURE(out);
+    const CliRun run = run_cli({"silhouettes", dir / "dem.vrt", dir / out, "--strips", "5"});
+    CHECK(run.code == 1);
+    CHECK_THAT(run.err, Catch::Contains("gone.tif"));
+    CHECK(dir.file_count() == files);
+  }
+}
+
 TEST_CASE("edge-case rasters give valid, possibly empty, outputs", "[cli][robustness]") {
   ScratchDir dir("edge");
   const float nan = std::numeric_limits<float>::quiet_NaN();

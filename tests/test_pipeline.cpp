@@ -307,3 +307,56 @@ TEST_CASE("strips must arrive in order and cover the grid", "[pipeline][strips]"
   stream.add_strip(strip_of(z, 0, 4), 0, 4);
   CHECK_THROWS_AS(stream.finish(), Error);  // profiles 4..9 missing
 }
+
+TEST_CASE("a stroke sink gets every stroke as its chain completes, each class in scan order",
+          "[pipeline][strips]") {
+  const HeightGrid dem = test::random_terrain(300, 280, 21, 0.01);
+  for (double az : {90.0, 30.0}) {
+    CAPTURE(az);
+    SilhouetteParams params;
+    params.view.azimuth_deg = az;
+    params.subcell = true;
+    const OrientedFrame frame = make_frame(dem.rows(), dem.cols(), 10, 10, az);
+    const HeightGrid z = orient(dem, frame);
+    const SilhouetteResult held = run_silhouettes(z, frame, GeoTransform{}, params);
+    REQUIRE(held.strokes.size() > 50);
+    std::vector<Stroke> received;
+    std::size_t received_before_finish = 0;
+    SilhouetteStream stream(frame, GeoTransform{}, params, lowest_height(z), {},
+                            [&](Stroke&& s) { received.push_back(std::move(s)); });
+    const std::size_t width = 20;
+    for (std::size_t first = 0; first < frame.profiles; first += width) {
+      const std::size_t count = std::min(width, frame.profiles - first);
+      stream.add_strip(strip_of(z, first, count), first, count);
+    }
+    received_before_finish = received.size();
+    const SilhouetteResult streamed = stream.finish();
+    CHECK(streamed.strokes.empty());
+    CHECK(streamed.stats.factual_strokes == held.stats.factual_strokes);
+    CHECK(streamed.stats.formulated_strokes == held.stats.formulated_strokes);
+    CHECK(streamed.stats.generalised == held.stats.generalised);
+    // Strokes leave as they complete, not at the end: only chains still open at the last
+    // profile (and the strokes started after them) wait for finish().
+    CHECK(received_before_finish > received.size() / 2);
+    // Each class arrives in the order of the held result; the classes are interleaved.
+    SilhouetteResult regrouped;
+    for (StrokeClass cls : {StrokeClass::factual, StrokeClass::formulated})
+      for (const Stroke& s : received)
+        if (s.cls == cls) regrouped.strokes.push_back(s);
+    test::require_same_strokes(held, regrouped);
+  }
+}
+
+TEST_CASE("what a stroke sink throws ends the run", "[pipeline][strips]") {
+  const HeightGrid dem = test::random_terrain(60, 60, 4);
+  const OrientedFrame frame = make_frame(60, 60, 10, 10, 90);
+  const HeightGrid z = orient(dem, frame);
+  SilhouetteStream stream(frame, GeoTransform{}, {}, 0.0, {},
+                          [](Stroke&&) { throw Error("disk full"); });
+  CHECK_THROWS_WITH(
+      [&] {
+        stream.add_strip(z, 0, frame.profiles);
+        stream.finish();
+      }(),
+      "disk full");
+}
