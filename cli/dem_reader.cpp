@@ -53,8 +53,8 @@ void nodata_to_nan(GDALRasterBand& band, float* values, std::size_t count) {
   if (has_nodata) std::replace(values, values + count, nodata, kNoData);
 }
 
-// Reads the band in blocks of rows, nodata to NaN, into dem.oriented (or dem.unturned).
-void read_band(const std::string& path, GDALRasterBand& band, bool defer_resampling, Dem& dem,
+// Reads the band in blocks of rows, nodata to NaN, into dem.oriented.
+void read_band(const std::string& path, GDALRasterBand& band, Dem& dem,
                const GdalErrorCapture& capture) {
   OrientedGridBuilder builder(dem.frame);
   const std::size_t block_rows = std::max<std::size_t>(1, (1u << 22) / dem.cols);
@@ -70,11 +70,7 @@ void read_band(const std::string& path, GDALRasterBand& band, bool defer_resampl
     builder.add_rows(r, count, block.data());
   }
   dem.lowest_height = builder.dem_lowest_height();
-  if (defer_resampling && dem.frame.resampled) {
-    dem.unturned = builder.take_dem();
-  } else {
-    dem.oriented = builder.finish();
-  }
+  dem.oriented = builder.finish();
 }
 
 // Checks the band and the georeferencing of an open DEM and fills everything but the heights.
@@ -149,7 +145,7 @@ Dem read_dem(const std::string& path, const DemOptions& options) {
   auto dataset = open_raster(path);
   Dem dem = describe_dem(*dataset, path, options);
   try {
-    read_band(path, *dataset->GetRasterBand(options.band), options.defer_resampling, dem, capture);
+    read_band(path, *dataset->GetRasterBand(options.band), dem, capture);
   } catch (const std::bad_alloc&) {
     throw Error("not enough memory for a " + std::to_string(dem.rows) + " x " +
                 std::to_string(dem.cols) + " DEM");

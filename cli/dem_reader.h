@@ -14,14 +14,10 @@ struct DemOptions {
   int band = 1;
   double azimuth_deg = 90.0;
   double cell_size = 0.0;  // > 0: use this cell size when the raster has no georeferencing
-  // Views that are resampled: keep the DEM as read in Dem::unturned and leave `oriented` empty,
-  // for run_resampled_silhouettes, which turns it strip by strip.
-  bool defer_resampling = false;
 };
 
 struct Dem {
   HeightGrid oriented;
-  HeightGrid unturned;  // the DEM itself (row 0 north), with DemOptions::defer_resampling
   OrientedFrame frame;
   GeoTransform geotransform;
   std::string srs_wkt;        // empty when the raster has no CRS

@@ -58,6 +58,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::uint8_t shape = in.byte();
   const double dx = shape == 0 ? 0.0 : 0.5 + 100 * in.unit();
   const double dy = shape == 1 ? dx * 1e4 : dx * (0.2 + 4.8 * in.unit());
+  const std::size_t strip = 1 + in.byte() % 16;
   tsk::HeightGrid dem(rows, cols);
   for (std::size_t k = 0; k < dem.size(); ++k) dem.data()[k] = in.height();
   try {
@@ -77,6 +78,32 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (!std::isfinite(pt.x) || !std::isfinite(pt.y)) __builtin_trap();
       }
     }
+    // The same DEM read window by window in strips, strokes handed on as they complete: a
+    // resampled strip from its band must equal one from the whole DEM, bit for bit, and the
+    // strokes must be the same ones.
+    std::size_t handed_on = 0;
+    tsk::StripLoader loader(frame, [&dem](const tsk::DemWindow& w, float* out) {
+      if (w.rows == 0 || w.cols == 0 || w.row0 + w.rows > dem.rows() ||
+          w.col0 + w.cols > dem.cols()) {
+        __builtin_trap();
+      }
+      for (std::size_t r = 0; r < w.rows; ++r)
+        std::memcpy(out + r * w.cols, dem.row(w.row0 + r) + w.col0, w.cols * sizeof(float));
+    });
+    tsk::HeightGrid whole;
+    const tsk::SilhouetteResult streamed = tsk::run_in_strips(
+        frame, tsk::GeoTransform{}, p, tsk::lowest_height(tsk::orient(dem, frame)), strip,
+        [&](std::size_t first, std::size_t count, tsk::HeightGrid& heights) {
+          loader.load(first, count, heights);
+          if (frame.resampled) {
+            tsk::resample_profiles(dem, frame, first, count, whole, 1);
+            if (std::memcmp(whole.data(), heights.data(), whole.size() * sizeof(float)) != 0)
+              __builtin_trap();
+          }
+        },
+        {}, [&](tsk::Stroke&&) { ++handed_on; });
+    if (handed_on != r.strokes.size() || streamed.stats.generalised != r.stats.generalised)
+      __builtin_trap();
   } catch (const tsk::Error&) {
     // Refused with a message: the expected outcome for bad parameters.
   }

@@ -91,15 +91,11 @@ Run runAlgorithm(const QString& input, const QVariantMap& extra, const QTemporar
 SilhouetteResult coreResult(const QString& file, double azimuth, Geometry geometry) {
   io::DemOptions options;
   options.azimuth_deg = azimuth;
-  options.defer_resampling = true;
   const io::Dem dem = io::read_dem(file.toStdString(), options);
   SilhouetteParams params;
   params.view.azimuth_deg = azimuth;
   params.geometry = geometry;
-  if (dem.frame.resampled) {
-    return run_resampled_silhouettes(dem.unturned, dem.frame, dem.geotransform, params);
-  }
-  return run_silhouettes(dem.oriented, dem.frame, dem.geotransform, params);
+  return run_silhouettes(dem.oriented, dem.frame, dem.geotransform, params, {}, dem.lowest_height);
 }
 
 }  // namespace
