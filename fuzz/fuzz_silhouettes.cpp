@@ -81,18 +81,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // The same DEM read window by window in strips, strokes handed on as they complete: a
     // resampled strip from its band must equal one from the whole DEM, bit for bit, and the
     // strokes must be the same ones.
+    // One thread: no threads started per strip, so the fuzzer keeps its pace.
+    tsk::SilhouetteParams in_turn = p;
+    in_turn.threads = 1;
     std::size_t handed_on = 0;
-    tsk::StripLoader loader(frame, [&dem](const tsk::DemWindow& w, float* out) {
-      if (w.rows == 0 || w.cols == 0 || w.row0 + w.rows > dem.rows() ||
-          w.col0 + w.cols > dem.cols()) {
-        __builtin_trap();
-      }
-      for (std::size_t r = 0; r < w.rows; ++r)
-        std::memcpy(out + r * w.cols, dem.row(w.row0 + r) + w.col0, w.cols * sizeof(float));
-    });
+    tsk::StripLoader loader(
+        frame,
+        [&dem](const tsk::DemWindow& w, float* out) {
+          if (w.rows == 0 || w.cols == 0 || w.row0 + w.rows > dem.rows() ||
+              w.col0 + w.cols > dem.cols()) {
+            __builtin_trap();
+          }
+          for (std::size_t r = 0; r < w.rows; ++r)
+            std::memcpy(out + r * w.cols, dem.row(w.row0 + r) + w.col0, w.cols * sizeof(float));
+        },
+        1);
     tsk::HeightGrid whole;
     const tsk::SilhouetteResult streamed = tsk::run_in_strips(
-        frame, tsk::GeoTransform{}, p, tsk::lowest_height(tsk::orient(dem, frame)), strip,
+        frame, tsk::GeoTransform{}, in_turn, tsk::lowest_height(tsk::orient(dem, frame)), strip,
         [&](std::size_t first, std::size_t count, tsk::HeightGrid& heights) {
           loader.load(first, count, heights);
           if (frame.resampled) {
