@@ -175,29 +175,27 @@ std::vector<HeightGrid> read_bands(const std::string& path) {
 
 struct DemStripReader::Source {
   DatasetPtr dataset;
-  GDALRasterBand* band = nullptr;
+  WindowReader read;
   std::unique_ptr<StripLoader> loader;
 };
 
 DemStripReader::DemStripReader(const std::string& path, const DemOptions& options, unsigned threads)
-    : path_(path), source_(std::make_unique<Source>()) {
+    : source_(std::make_unique<Source>()) {
   GdalErrorCapture capture;
   source_->dataset = open_raster(path);
   dem_ = describe_dem(*source_->dataset, path, options);
-  GDALRasterBand* band = source_->band = source_->dataset->GetRasterBand(options.band);
-  source_->loader = std::make_unique<StripLoader>(
-      dem_.frame,
-      [band, path](const DemWindow& w, float* heights) {
-        GdalErrorCapture errors;
-        if (band->RasterIO(GF_Read, static_cast<int>(w.col0), static_cast<int>(w.row0),
-                           static_cast<int>(w.cols), static_cast<int>(w.rows), heights,
-                           static_cast<int>(w.cols), static_cast<int>(w.rows), GDT_Float32, 0,
-                           0) != CE_None) {
-          throw Error("reading '" + path + "' failed: " + errors.message());
-        }
-        nodata_to_nan(*band, heights, w.rows * w.cols);
-      },
-      threads);
+  GDALRasterBand* band = source_->dataset->GetRasterBand(options.band);
+  source_->read = [band, path](const DemWindow& w, float* heights) {
+    GdalErrorCapture errors;
+    if (band->RasterIO(GF_Read, static_cast<int>(w.col0), static_cast<int>(w.row0),
+                       static_cast<int>(w.cols), static_cast<int>(w.rows), heights,
+                       static_cast<int>(w.cols), static_cast<int>(w.rows), GDT_Float32, 0,
+                       0) != CE_None) {
+      throw Error("reading '" + path + "' failed: " + errors.message());
+    }
+    nodata_to_nan(*band, heights, w.rows * w.cols);
+  };
+  source_->loader = std::make_unique<StripLoader>(dem_.frame, source_->read, threads);
 }
 
 DemStripReader::~DemStripReader() = default;
@@ -207,10 +205,7 @@ void DemStripReader::read_profiles(std::size_t first, std::size_t count, HeightG
 }
 
 double DemStripReader::lowest_height() {
-  GdalErrorCapture capture;
-  double minmax[2] = {0, 0};
-  if (source_->band->ComputeRasterMinMax(FALSE, minmax) != CE_None) return 0.0;
-  return minmax[0];
+  return dem_lowest_height(dem_.rows, dem_.cols, source_->read);
 }
 
 }  // namespace tsk::io

@@ -41,10 +41,9 @@ class DemStripReader {
   const Dem& info() const { return dem_; }  // georeferencing and frame; `oriented` stays empty
   // Oriented profiles [first, first + count) into `strip`, whose memory may be reused.
   void read_profiles(std::size_t first, std::size_t count, HeightGrid& strip);
-  double lowest_height();  // a full pass over the band
+  double lowest_height();  // the DEM's lowest height, a full pass over the band
 
  private:
-  std::string path_;
   Dem dem_;
   struct Source;
   std::unique_ptr<Source> source_;

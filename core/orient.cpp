@@ -364,6 +364,7 @@ void DemBand::load(const OrientedFrame& frame, std::size_t first, std::size_t co
                    const WindowReader& read) {
   if (!frame.resampled || count == 0 || first > frame.profiles || count > frame.profiles - first)
     throw Error("the profiles do not match the resampled frame");
+  first_profile_ = first, profile_count_ = count;
   // The samples of the strip fill a parallelogram of pixel positions. A sample at row position y
   // reads DEM rows floor(y - 0.5) and the next, so DEM row r is read from y in [r - 0.5, r + 1.5];
   // likewise columns. A margin of one cell more on every side absorbs rounding.
@@ -415,8 +416,24 @@ void DemBand::load(const OrientedFrame& frame, std::size_t first, std::size_t co
 
 void resample_profiles(const DemBand& band, const OrientedFrame& frame, std::size_t first,
                        std::size_t count, HeightGrid& out, unsigned threads) {
+  // Samples outside the band's profiles would read cells it does not hold.
+  if (first < band.first_profile() || first + count > band.first_profile() + band.profile_count())
+    throw Error("the band does not hold these profiles");
   resample_with(BilinearSampler<BandCells>(BandCells(band), frame.dem_rows, frame.dem_cols), frame,
                 first, count, out, threads);
+}
+
+double dem_lowest_height(std::size_t rows, std::size_t cols, const WindowReader& read) {
+  const std::size_t block_rows = std::max<std::size_t>(1, (std::size_t{1} << 20) / cols);
+  std::vector<float> block(std::min(block_rows, rows) * cols);
+  float lowest = std::numeric_limits<float>::infinity();
+  for (std::size_t top = 0; top < rows; top += block_rows) {
+    const std::size_t count = std::min(block_rows, rows - top);
+    read({top, 0, count, cols}, block.data());
+    for (std::size_t k = 0; k < count * cols; ++k)
+      if (is_data(block[k])) lowest = std::min(lowest, block[k]);
+  }
+  return std::isfinite(lowest) ? static_cast<double>(lowest) : 0.0;
 }
 
 StripLoader::StripLoader(const OrientedFrame& frame, WindowReader read, unsigned threads)
@@ -429,8 +446,8 @@ void StripLoader::load(std::size_t first, std::size_t count, HeightGrid& strip) 
     return;
   }
   const DemWindow w = profile_window(frame_, first, count);
-  const bool turned =
-      frame_.row_per_p <= 0 || frame_.col_per_i <= 0;  // all but the view from the west
+  // Seen from the west the window is the strip as it is; any other cardinal view turns it.
+  const bool turned = frame_.row_per_p <= 0 || frame_.col_per_i <= 0;
   HeightGrid& target = turned ? window_ : strip;
   if (target.rows() != w.rows || target.cols() != w.cols)
     target = HeightGrid(w.rows, w.cols, kUnset);
@@ -457,15 +474,15 @@ OrientedGridBuilder::OrientedGridBuilder(const OrientedFrame& frame)
                             : HeightGrid(frame.profiles, frame.length, kUnset)) {}
 
 void OrientedGridBuilder::add_rows(std::size_t first_row, std::size_t count, const float* rows) {
+  if (!frame_.resampled) {
+    scatter_dem_rows(frame_, first_row, count, rows, frame_.dem_cols, grid_);
+  } else {
+    if (first_row + count > frame_.dem_rows) throw Error("DEM block does not match the frame");
+    std::copy(rows, rows + count * frame_.dem_cols, grid_.row(first_row));
+  }
   for (std::size_t k = 0; k < count * frame_.dem_cols; ++k) {
     if (is_data(rows[k])) lowest_ = std::min(lowest_, rows[k]);
   }
-  if (!frame_.resampled) {
-    scatter_dem_rows(frame_, first_row, count, rows, frame_.dem_cols, grid_);
-    return;
-  }
-  if (first_row + count > frame_.dem_rows) throw Error("DEM block does not match the frame");
-  std::copy(rows, rows + count * frame_.dem_cols, grid_.row(first_row));
 }
 
 HeightGrid OrientedGridBuilder::finish(unsigned threads) {

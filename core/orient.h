@@ -90,6 +90,11 @@ struct DemWindow {
 // nodata. Throws Error when the raster cannot be read.
 using WindowReader = std::function<void(const DemWindow& window, float* heights)>;
 
+// The lowest height with data (finite; 0 when none) of a DEM of rows x cols cells read through
+// `read` a block of rows at a time: the plan-oblique reference (SPEC 1.9) of a DEM read strip by
+// strip, the same as OrientedGridBuilder::dem_lowest_height() gives when it is read whole.
+double dem_lowest_height(std::size_t rows, std::size_t cols, const WindowReader& read);
+
 // The DEM cells that the bilinear samples of profiles [first, first + count) of a resampled frame
 // read, and no others: DEM rows [first_row, first_row + rows), each with its own run of columns.
 // A strip of a non-cardinal view lies diagonally on the DEM, so its bounding window can be the
@@ -101,6 +106,9 @@ class DemBand {
   void load(const OrientedFrame& frame, std::size_t first, std::size_t count,
             const WindowReader& read);
 
+  // Profiles [first_profile, first_profile + profile_count) are the ones it was laid out for.
+  std::size_t first_profile() const { return first_profile_; }
+  std::size_t profile_count() const { return profile_count_; }
   std::size_t first_row() const { return first_row_; }
   std::size_t rows() const { return col_begin_.size(); }
   std::size_t cells() const { return heights_.size(); }
@@ -112,6 +120,7 @@ class DemBand {
   const float* heights() const { return heights_.data(); }
 
  private:
+  std::size_t first_profile_ = 0, profile_count_ = 0;
   std::size_t first_row_ = 0;
   std::vector<std::size_t> col_begin_, col_end_;
   std::vector<std::ptrdiff_t> row_base_;
@@ -119,7 +128,8 @@ class DemBand {
   std::vector<float> chunk_;  // rows read at once, before they are cut to their runs
 };
 
-// resample_profiles from the band of those profiles (DemBand::load), with the same heights.
+// resample_profiles from the band of those profiles (DemBand::load), with the same heights;
+// throws Error for profiles the band was not laid out for.
 void resample_profiles(const DemBand& band, const OrientedFrame& frame, std::size_t first,
                        std::size_t count, HeightGrid& out, unsigned threads = 0);
 

@@ -5,7 +5,6 @@
 #include <qgsfield.h>
 #include <qgsprocessing.h>
 #include <qgsprocessingparameters.h>
-#include <qgsrasterbandstats.h>
 
 namespace tsk::plugin {
 
@@ -15,14 +14,12 @@ constexpr auto kLineString = Qgis::WkbType::LineString;
 constexpr auto kDoubleNumber = Qgis::ProcessingNumberParameterType::Double;
 constexpr auto kIntegerNumber = Qgis::ProcessingNumberParameterType::Integer;
 constexpr auto kAdvanced = Qgis::ProcessingParameterFlag::Advanced;
-constexpr auto kStatisticMin = Qgis::RasterBandStatistic::Min;
 #else
 constexpr auto kLineLayer = QgsProcessing::TypeVectorLine;
 constexpr auto kLineString = QgsWkbTypes::LineString;
 constexpr auto kDoubleNumber = QgsProcessingParameterNumber::Double;
 constexpr auto kIntegerNumber = QgsProcessingParameterNumber::Integer;
 constexpr auto kAdvanced = QgsProcessingParameterDefinition::FlagAdvanced;
-constexpr auto kStatisticMin = QgsRasterBandStats::Min;
 #endif
 
 enum class FieldKind { Text, Integer, Real };

@@ -117,7 +117,7 @@ void RasterGrid::readProfiles(std::size_t first, std::size_t count, HeightGrid& 
   withCoreErrors([&] { mStrips->load(first, count, strip); });
 }
 
-void RasterGrid::readWindow(const DemWindow& w, float* heights) {
+void RasterGrid::readWindow(const DemWindow& w, float* heights) const {
   // In blocks of at most 4 MiB: memory the allocator reuses from block to block, where one
   // block per window would be fresh pages for every strip.
   const double dx = mExtent.width() / mCols, dy = mExtent.height() / mRows;
@@ -140,8 +140,11 @@ void RasterGrid::readWindow(const DemWindow& w, float* heights) {
 
 double RasterGrid::lowestHeight() const {
   if (mLowest) return *mLowest;
-  const QgsRasterBandStats stats = mProvider->bandStatistics(mBand, kStatisticMin);
-  return std::isfinite(stats.minimumValue) ? stats.minimumValue : 0.0;
+  return withCoreErrors([&] {
+    return dem_lowest_height(
+        static_cast<std::size_t>(mRows), static_cast<std::size_t>(mCols),
+        [this](const DemWindow& w, float* heights) { readWindow(w, heights); });
+  });
 }
 
 void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,

@@ -48,7 +48,8 @@ class RasterGrid {
   void setView(double azimuthDeg);
   void readProfiles(std::size_t first, std::size_t count, HeightGrid& strip);
   // The DEM's lowest height, the plan-oblique reference (SPEC 1.9): from the heights read, or
-  // before a strip-by-strip run, a pass over the band through the provider.
+  // before a strip-by-strip run, a pass over the band through the provider (infinite heights
+  // count as nodata, as in the core).
   double lowestHeight() const;
 
   const HeightGrid& oriented() const { return mOriented; }
@@ -64,7 +65,7 @@ class RasterGrid {
   void readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo,
                   bool deferResampling);
   // Reads a window of the band through the provider, NaN for nodata.
-  void readWindow(const DemWindow& window, float* heights);
+  void readWindow(const DemWindow& window, float* heights) const;
 
   std::unique_ptr<QgsRasterDataProvider> mProvider;
   int mBand = 1;

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -374,6 +375,7 @@ TEST_CASE("the band of a diagonal strip holds about the strip's cells, not its b
   resample_profiles(dem, frame, 0, 3, expected);
   resample_profiles(band, frame, 0, 3, actual);
   CHECK(same_bits(expected, actual));
+  CHECK_THROWS_AS(resample_profiles(band, frame, 2, 3, actual), Error);  // not its profiles
   CHECK_THROWS_AS(band.load(make_frame(400, 400, 10, 10, 90), 0, 3, window_reader(dem)), Error);
   CHECK_THROWS_AS(band.load(frame, frame.profiles - 1, 2, window_reader(dem)), Error);
 }
@@ -412,4 +414,19 @@ TEST_CASE("a reader's error reaches the caller of a strip load", "[azimuth][stri
   StripLoader loader(frame, [](const DemWindow&, float*) { throw Error("disk gone"); });
   HeightGrid strip;
   CHECK_THROWS_WITH(loader.load(0, 10, strip), "disk gone");
+}
+
+TEST_CASE("the lowest height read window by window is the one read whole, infinities aside",
+          "[azimuth][strips]") {
+  HeightGrid dem = test::random_terrain(70, 9, 6, 0.05);
+  dem(3, 3) = -std::numeric_limits<float>::infinity();
+  dem(60, 2) = std::numeric_limits<float>::infinity();
+  const OrientedFrame frame = make_frame(70, 9, 10, 10, 45);
+  OrientedGridBuilder builder(frame);
+  builder.add_rows(0, 70, dem.data());
+  std::size_t cells_read = 0;
+  CHECK(dem_lowest_height(70, 9, window_reader(dem, &cells_read)) == builder.dem_lowest_height());
+  CHECK(cells_read == dem.size());
+  CHECK(std::isfinite(builder.dem_lowest_height()));
+  CHECK(dem_lowest_height(70, 9, window_reader(HeightGrid(70, 9, kNoData))) == 0.0);
 }

@@ -270,6 +270,37 @@ TEST_CASE("a read that fails after strokes were written leaves no output", "[cli
   }
 }
 
+TEST_CASE("infinite heights are nodata to the plan-oblique reference of a strip run too",
+          "[cli][robustness]") {
+  // The strip run finds the DEM's lowest height in a pass of its own before the first strip;
+  // -Inf must not become the reference there (GDAL's own minimum would be -Inf).
+  ScratchDir dir("infinite");
+  test::write_tiff(
+      dir / "inf.tif", 40, 40, 1,
+      [](int b, int r, int c) {
+        return r == 5 && c == 5    ? -std::numeric_limits<float>::infinity()
+               : r == 30 && c == 7 ? std::numeric_limits<float>::infinity()
+                                   : hill(b, r, c);
+      },
+      kNorthUp, 32616);
+  for (const char* az : {"90", "45"}) {
+    CAPTURE(az);
+    const std::vector<std::string> common = {"--geometry", "oblique", "--azimuth", az};
+    std::vector<std::string> whole = {"silhouettes", dir / "inf.tif", dir / "w.geojson",
+                                      "--preview", dir / "w.png"};
+    std::vector<std::string> strips = {"silhouettes", dir / "inf.tif", dir / "s.geojson",
+                                       "--strips", "7"};
+    whole.insert(whole.end(), common.begin(), common.end());
+    strips.insert(strips.end(), common.begin(), common.end());
+    REQUIRE(run_cli(whole).code == 0);
+    const CliRun run = run_cli(strips);
+    INFO(run.err);
+    REQUIRE(run.code == 0);
+    CHECK(summarise(dir / "s.geojson").features > 0);
+    CHECK(slurp(dir / "w.geojson") == slurp(dir / "s.geojson"));
+  }
+}
+
 TEST_CASE("edge-case rasters give valid, possibly empty, outputs", "[cli][robustness]") {
   ScratchDir dir("edge");
   const float nan = std::numeric_limits<float>::quiet_NaN();
