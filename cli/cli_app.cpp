@@ -70,8 +70,9 @@ input and output:
   --preview PNG        render the oblique sketch to a PNG picture
   --threads N          worker threads (default: all cores)
   --timings            print the time of reading, each stage and writing to stderr
-  --strips N           read and process N profiles at a time (default 1024; memory is about
-                       9 bytes x cells of N profiles, 13 at a non-cardinal azimuth)
+  --strips N           read and process N profiles at a time (default: 1024, fewer for profiles
+                       so long that strips would pass 512 MB; memory is about 9 bytes x cells
+                       of N profiles, 13 at a non-cardinal azimuth)
 profiles:
   --every N            draw every N-th cross-section (default 10)
 pstrokes (tolerances: effective areas in m2 of the profiles' distance-height triangles):
@@ -217,17 +218,12 @@ void write_text(const std::string& path, const std::string& text) {
 }
 
 // True when the DEM would not fit in half of this machine's memory.
-bool too_large_to_hold(const std::string& path) {
+bool raster_too_large_to_hold(const std::string& path) {
   const auto dataset = io::open_raster(path);
   const auto rows = static_cast<std::size_t>(dataset->GetRasterYSize());
   const auto cols = static_cast<std::size_t>(dataset->GetRasterXSize());
-  return automatic_strip_profiles(rows, cols) > 0;
+  return too_large_to_hold(rows, cols);
 }
-
-// Profiles per strip unless --strips says otherwise. Strips bound the memory, and they are faster
-// than the whole DEM: the next strip is read while this one is processed, into memory reused from
-// strip to strip rather than a DEM's worth of fresh pages.
-constexpr std::size_t kDefaultStrip = 1024;
 
 int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
@@ -235,7 +231,7 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
   // The preview draws the whole turned grid, so it needs the DEM whole.
   const bool whole = !o.preview.empty();
   if (whole && o.strips > 0) throw Error("--preview needs the whole DEM in memory; drop --strips");
-  if (whole && too_large_to_hold(o.input)) {
+  if (whole && raster_too_large_to_hold(o.input)) {
     throw Error("the DEM is too large to hold whole, which --preview needs; drop --preview");
   }
   using Clock = std::chrono::steady_clock;
@@ -270,9 +266,12 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
       stream.add_strip(dem.oriented, 0, dem.frame.profiles, true);
       result = stream.finish();
     } else {
-      // The strips are read window by window, the next one while the stages work on this one.
+      // Strips bound the memory, and they are faster than the whole DEM: the next strip is read
+      // while the stages work on this one, into memory reused from strip to strip rather than a
+      // DEM's worth of fresh pages.
       const double z_ref = o.params.geometry == Geometry::oblique ? reader->lowest_height() : 0.0;
-      const std::size_t strip = o.strips > 0 ? static_cast<std::size_t>(o.strips) : kDefaultStrip;
+      const std::size_t strip =
+          o.strips > 0 ? static_cast<std::size_t>(o.strips) : strip_profiles(dem.frame);
       result = run_in_strips(
           dem.frame, dem.geotransform, o.params, z_ref, strip,
           [&](std::size_t first, std::size_t count, HeightGrid& heights) {

@@ -364,11 +364,19 @@ SilhouetteResult run_resampled_silhouettes(const HeightGrid& dem, const Oriented
   return result;
 }
 
-std::size_t automatic_strip_profiles(std::size_t rows, std::size_t cols) {
+bool too_large_to_hold(std::size_t rows, std::size_t cols) {
   const double memory =
       static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
   const double bytes = 5.0 * static_cast<double>(rows) * static_cast<double>(cols);
-  return memory > 0 && bytes > 0.5 * memory ? 1024 : 0;
+  return memory > 0 && bytes > 0.5 * memory;
+}
+
+std::size_t strip_profiles(const OrientedFrame& frame) {
+  constexpr double kBudget = 512.0 * 1024 * 1024;
+  const double bytes_per_profile =
+      (frame.resampled ? 13.0 : 9.0) * static_cast<double>(std::max<std::size_t>(1, frame.length));
+  return static_cast<std::size_t>(
+      std::clamp(std::floor(kBudget / bytes_per_profile), 16.0, 1024.0));
 }
 
 SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,

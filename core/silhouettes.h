@@ -97,9 +97,14 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
                                const ProfileReader& read, const ProgressFn& progress = {},
                                StrokeSink sink = {});
 
-// Profiles per strip for a DEM that, held whole (5 bytes a cell), would not fit in half of this
-// machine's memory; 0 when it fits.
-std::size_t automatic_strip_profiles(std::size_t rows, std::size_t cols);
+// True for a DEM that, held whole (5 bytes a cell), would not fit in half of this machine's
+// memory: it must be read in strips.
+bool too_large_to_hold(std::size_t rows, std::size_t cols);
+
+// Profiles per strip for a strip-by-strip run of this view: up to 1024, fewer for profiles so
+// long that a run's strips (two of heights, the classification and, resampled, the band: 9 or
+// 13 bytes a cell) would pass 512 MiB, at least 16.
+std::size_t strip_profiles(const OrientedFrame& frame);
 
 // Runs every stage on an oriented grid (see orient.h). z_ref is the DEM's lowest height, the
 // plan-oblique reference; without it the grid's lowest height stands in, which is the DEM's for a

@@ -142,7 +142,9 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
   raster.setView(mParams.view.azimuth_deg);
   const OrientedFrame& frame = raster.frame();
   const std::size_t strip = mStrips > 0 ? static_cast<std::size_t>(mStrips)
-                                        : automatic_strip_profiles(frame.dem_rows, frame.dem_cols);
+                            : too_large_to_hold(frame.dem_rows, frame.dem_cols)
+                                ? strip_profiles(frame)
+                                : 0;
   SilhouetteResult result;
   if (strip > 0) {
     if (feedback) feedback->pushInfo(tr("Processing the DEM in strips of %1 profiles.").arg(strip));

@@ -291,9 +291,15 @@ TEST_CASE("run_in_strips reads every strip with its neighbours and equals the wh
   CHECK_THROWS_AS(run_in_strips(frame, GeoTransform{}, {}, 0, 0, {}), Error);
 }
 
-TEST_CASE("strips are chosen automatically only for DEMs too large to hold", "[pipeline][strips]") {
-  CHECK(automatic_strip_profiles(100, 100) == 0);
-  CHECK(automatic_strip_profiles(std::size_t{1} << 30, std::size_t{1} << 20) == 1024);
+TEST_CASE("strips are needed only for DEMs too large to hold and are sized by profile length",
+          "[pipeline][strips]") {
+  CHECK_FALSE(too_large_to_hold(100, 100));
+  CHECK(too_large_to_hold(std::size_t{1} << 30, std::size_t{1} << 20));
+  CHECK(strip_profiles(make_frame(8000, 8000, 25, 25, 90)) == 1024);
+  // 40000 x 40000 at 45 degrees: profiles 56 569 cells long, 13 bytes a cell.
+  const OrientedFrame diagonal = make_frame(40000, 40000, 25, 25, 45);
+  CHECK(strip_profiles(diagonal) == 730);
+  CHECK(strip_profiles(make_frame(1, 2000000000, 25, 25, 90)) == 16);
   CHECK(is_cardinal(90));
   CHECK(is_cardinal(-180));
   CHECK_FALSE(is_cardinal(45));
