@@ -494,9 +494,4 @@ double OrientedGridBuilder::dem_lowest_height() const {
   return std::isfinite(lowest_) ? static_cast<double>(lowest_) : 0.0;
 }
 
-HeightGrid OrientedGridBuilder::take_dem() {
-  if (!frame_.resampled) throw Error("a cardinal view is turned as it is read: no DEM to take");
-  return std::move(grid_);
-}
-
 }  // namespace tsk

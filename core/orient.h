@@ -158,8 +158,6 @@ class OrientedGridBuilder {
   explicit OrientedGridBuilder(const OrientedFrame& frame);
   void add_rows(std::size_t first_row, std::size_t count, const float* rows);
   HeightGrid finish(unsigned threads = 0);
-  // Resampled frames: the DEM as delivered, for a caller that resamples it strip by strip.
-  HeightGrid take_dem();
   // The lowest height with data among the rows delivered (0 when none): the DEM's minimum, the
   // plan-oblique reference of SPEC 1.9. A resampled grid's own minimum may lie above it.
   double dem_lowest_height() const;

@@ -388,17 +388,17 @@
         <translation>Der Datenanbieter des Rasters konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="149" />
+        <location filename="../plugin/raster_grid.cpp" line="159" />
         <source>Not enough memory for a %1 x %2 raster.</source>
         <translation>Nicht genug Speicher für ein Raster von %1 x %2.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="161" />
+        <location filename="../plugin/raster_grid.cpp" line="171" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="130" />
+        <location filename="../plugin/raster_grid.cpp" line="135" />
         <source>Could not read rows %1 to %2 of the raster.</source>
         <translation>Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
     </message>
@@ -442,22 +442,22 @@
 <context>
     <name>SilhouettesAlgorithm</name>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="40" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="39" />
         <source>Silhouettes (factual and formulated)</source>
         <translation>Silhouetten (faktisch und formuliert)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="44" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="43" />
         <source>silhouette,occluding contour,sketch,oblique,panorama,block diagram,plan oblique,terrain,dem,hidden</source>
         <translation>Silhouette,Verdeckungskontur,Skizze,Schrägansicht,Panorama,Blockbild,Plan oblique,Gelände,DGM,verdeckt</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="50" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="49" />
         <source>Draws the silhouette lines of a DEM seen obliquely from above as vector strokes.</source>
         <translation>Zeichnet die Silhouettenlinien eines schräg von oben gesehenen DGM als Vektorstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="54" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="53" />
         <source>Finds the lines a cartographer sketches first when drawing terrain seen obliquely from above.
 
 Factual Silhouettes are occluding contours: cells beyond which the terrain hides what lies behind it, in a parallel view with vertical exaggeration and a base slope added along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view brings into sight (the candidate set), kept where the slope filter finds them significant (outside the weak/weak corner of column slope against row slope), thinned to the cell furthest from the viewer and chained across profiles.
@@ -478,84 +478,84 @@ Zwei Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter
 Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="89" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="88" />
         <source>Chaining window (cells)</source>
         <translation>Verkettungsfenster (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="90" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="89" />
         <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
         <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="91" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="90" />
         <source>Minimum stroke cells</source>
         <translation>Mindestzahl Zellen je Strich</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="92" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="91" />
         <source>Strokes with fewer cells are dropped (generalisation).</source>
         <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="92" />
         <source>Geometry</source>
         <translation>Geometrie</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="94" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
         <source>Map (cell centres)</source>
         <translation>Karte (Zellmittelpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="94" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
         <source>Plan oblique (the sketch)</source>
         <translation>Plan oblique (die Skizze)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="96" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="95" />
         <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
         <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="99" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="98" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="100" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="99" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="100" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="99" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="101" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="103" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="104" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="103" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="107" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="106" />
         <source>Profiles per strip (0: automatic)</source>
         <translation>Profile je Streifen (0: automatisch)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="108" />
-        <source>For DEMs larger than memory: read and process this many profiles at a time, at any azimuth. 0 reads the DEM whole unless it would not fit in half of the memory.</source>
-        <translation>Für DGM, die größer als der Speicher sind: so viele Profile auf einmal lesen und verarbeiten, bei jedem Azimut. 0 liest das DGM ganz, es sei denn, es passte nicht in die Hälfte des Speichers.</translation>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="107" />
+        <source>The DEM is read and processed this many profiles at a time, the next strip read while this one is processed, so DEMs larger than memory run too. 0 chooses 1024, or fewer when profiles are so long that the strips would take more than 512 MB.</source>
+        <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden.</translation>
     </message>
     <message>
         <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
@@ -578,7 +578,7 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="148" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="147" />
         <source>Processing the DEM in strips of %1 profiles.</source>
         <translation>Das DGM wird in Streifen zu %1 Profilen verarbeitet.</translation>
     </message>

@@ -260,11 +260,13 @@ GERMAN = {
         "Zellen, die auf jeder Seite eines Startpunkts entlang des Querschnitts gezeichnet werden.",
     "P-strokes": "P-Striche",
     "Profiles per strip (0: automatic)": "Profile je Streifen (0: automatisch)",
-    "For DEMs larger than memory: read and process this many profiles at a time, at any azimuth. "
-    "0 reads the DEM whole unless it would not fit in half of the memory.":
-        "Für DGM, die größer als der Speicher sind: so viele Profile auf einmal lesen und "
-        "verarbeiten, bei jedem Azimut. 0 liest das DGM ganz, es sei denn, es passte nicht in die "
-        "Hälfte des Speichers.",
+    "The DEM is read and processed this many profiles at a time, the next strip read while this "
+    "one is processed, so DEMs larger than memory run too. 0 chooses 1024, or fewer when profiles "
+    "are so long that the strips would take more than 512 MB.":
+        "Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen "
+        "wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der "
+        "Speicher sind. 0 wählt 1024, oder weniger, wenn die Profile so lang sind, dass die "
+        "Streifen mehr als 512 MB belegen würden.",
     "Processing the DEM in strips of %1 profiles.": "Das DGM wird in Streifen zu %1 Profilen verarbeitet.",
     "P-strokes as lines with their class and score.":
         "P-Striche als Linien mit ihrer Klasse und Bewertung.",

@@ -161,10 +161,9 @@ void DemViewAlgorithm::addToSink(QgsFeatureSink& sink, QgsFeature& feature,
   }
 }
 
-RasterGrid& DemViewAlgorithm::readRaster(QgsProcessingFeedback* feedback, double progressTo,
-                                         bool deferResampling) {
+RasterGrid& DemViewAlgorithm::readRaster(QgsProcessingFeedback* feedback, double progressTo) {
   mWritten = 0;
-  mRaster->read(mAzimuth, feedback, 0.0, progressTo, deferResampling);
+  mRaster->read(mAzimuth, feedback, 0.0, progressTo);
   return *mRaster;
 }
 
@@ -177,10 +176,6 @@ SilhouetteResult DemViewAlgorithm::runSilhouettes(const SilhouetteParams& params
     return !feedback->isCanceled();
   };
   return withCoreErrors([&] {
-    if (!mRaster->unturned().empty()) {
-      return run_resampled_silhouettes(mRaster->unturned(), mRaster->frame(),
-                                       mRaster->geotransform(), params, progress);
-    }
     return run_silhouettes(mRaster->oriented(), mRaster->frame(), mRaster->geotransform(), params,
                            progress, mRaster->lowestHeight());
   });

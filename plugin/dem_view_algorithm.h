@@ -60,10 +60,7 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
                  double from);
 
   // Worker thread: reads the DEM oriented for the azimuth, progress 0 to `progressTo` percent.
-  // deferResampling: at a non-cardinal azimuth keep the DEM unturned, for runSilhouettes to
-  // turn strip by strip (no per-cell classification in its result then).
-  RasterGrid& readRaster(QgsProcessingFeedback* feedback, double progressTo,
-                         bool deferResampling = false);
+  RasterGrid& readRaster(QgsProcessingFeedback* feedback, double progressTo);
   void releaseRaster();
 
   // Runs the silhouette method on the raster read by readRaster(), moving progress from `from`

@@ -148,10 +148,10 @@ double RasterGrid::lowestHeight() const {
 }
 
 void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
-                      double progressTo, bool deferResampling) {
+                      double progressTo) {
   setView(azimuthDeg);
   try {
-    readBlocks(feedback, progressFrom, progressTo, deferResampling);
+    readBlocks(feedback, progressFrom, progressTo);
   } catch (const Error& e) {
     throw QgsProcessingException(QString::fromStdString(e.what()));
   } catch (const std::bad_alloc&) {
@@ -160,8 +160,8 @@ void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double
   }
 }
 
-void RasterGrid::readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo,
-                            bool deferResampling) {
+void RasterGrid::readBlocks(QgsProcessingFeedback* feedback, double progressFrom,
+                            double progressTo) {
   const auto cols = static_cast<std::size_t>(mCols);
   OrientedGridBuilder builder(mFrame);
   const std::size_t blockRows = std::max<std::size_t>(1, (1 << 22) / cols);
@@ -179,14 +179,7 @@ void RasterGrid::readBlocks(QgsProcessingFeedback* feedback, double progressFrom
     }
   }
   mLowest = builder.dem_lowest_height();
-  // Only one of the two holds the heights, so a reused reader never runs on a stale grid.
-  if (deferResampling && mFrame.resampled) {
-    mUnturned = builder.take_dem();
-    mOriented = HeightGrid();
-  } else {
-    mOriented = builder.finish();
-    mUnturned = HeightGrid();
-  }
+  mOriented = builder.finish();
 }
 
 }  // namespace tsk::plugin

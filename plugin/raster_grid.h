@@ -36,11 +36,10 @@ class RasterGrid {
   RasterGrid& operator=(const RasterGrid&) = delete;
 
   // Worker thread. Reads the band in blocks of rows into the grid oriented for `azimuthDeg`
-  // (resampled along the line of sight for a non-cardinal azimuth, or, with deferResampling,
-  // kept unturned for run_resampled_silhouettes), reporting progress from `progressFrom` to
-  // `progressTo` percent; throws on cancel.
+  // (resampled along the line of sight for a non-cardinal azimuth), reporting progress from
+  // `progressFrom` to `progressTo` percent; throws on cancel.
   void read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
-            double progressTo, bool deferResampling = false);
+            double progressTo);
 
   // Worker thread, for DEMs read strip by strip (any view): sets the frame for `azimuthDeg`
   // without reading, then reads oriented profiles [first, first + count) into `strip` window by
@@ -53,7 +52,6 @@ class RasterGrid {
   double lowestHeight() const;
 
   const HeightGrid& oriented() const { return mOriented; }
-  const HeightGrid& unturned() const { return mUnturned; }  // read with deferResampling
   const OrientedFrame& frame() const { return mFrame; }
   const GeoTransform& geotransform() const { return mGeoTransform; }
   const QgsCoordinateReferenceSystem& crs() const { return mCrs; }
@@ -61,9 +59,8 @@ class RasterGrid {
   const QStringList& notes() const { return mNotes; }
 
  private:
-  // Reads the band in blocks of rows into mOriented (mUnturned).
-  void readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo,
-                  bool deferResampling);
+  // Reads the band in blocks of rows into mOriented.
+  void readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo);
   // Reads a window of the band through the provider, NaN for nodata.
   void readWindow(const DemWindow& window, float* heights) const;
 
@@ -76,7 +73,6 @@ class RasterGrid {
   double mGroundScale = 1.0;
   QStringList mNotes;
   HeightGrid mOriented;
-  HeightGrid mUnturned;
   OrientedFrame mFrame;
   GeoTransform mGeoTransform;
   std::unique_ptr<StripLoader> mStrips;  // set with the view

@@ -27,7 +27,6 @@ const QString kFactual = QStringLiteral("FACTUAL");
 const QString kFormulated = QStringLiteral("FORMULATED");
 
 // Progress shares: reading the raster, the core stages, writing the strokes.
-constexpr double kReadEnd = 25.0;
 constexpr double kCoreEnd = 90.0;
 
 }  // namespace
@@ -105,8 +104,9 @@ void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
          "cell centres (removes the thesis's halo)."),
       true);
   add(integer(kStrips, tr("Profiles per strip (0: automatic)"), 0, 0, 1000000),
-      tr("For DEMs larger than memory: read and process this many profiles at a time, at any "
-         "azimuth. 0 reads the DEM whole unless it would not fit in half of the memory."),
+      tr("The DEM is read and processed this many profiles at a time, the next strip read while "
+         "this one is processed, so DEMs larger than memory run too. 0 chooses 1024, or fewer "
+         "when profiles are so long that the strips would take more than 512 MB."),
       true);
   add(new QgsProcessingParameterFeatureSink(kFactual, tr("Factual silhouettes"), kLineLayer),
       tr("Occluding contours as line strokes."));
@@ -140,19 +140,12 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
                                                    QgsProcessingFeedback* feedback) {
   RasterGrid& raster = preparedRaster();
   raster.setView(mParams.view.azimuth_deg);
-  const OrientedFrame& frame = raster.frame();
-  const std::size_t strip = mStrips > 0 ? static_cast<std::size_t>(mStrips)
-                            : too_large_to_hold(frame.dem_rows, frame.dem_cols)
-                                ? strip_profiles(frame)
-                                : 0;
-  SilhouetteResult result;
-  if (strip > 0) {
-    if (feedback) feedback->pushInfo(tr("Processing the DEM in strips of %1 profiles.").arg(strip));
-    result = withCoreErrors([&] { return runInStrips(strip, feedback); });
-  } else {
-    readRaster(feedback, kReadEnd, /*deferResampling=*/true);
-    result = runSilhouettes(mParams, feedback, kReadEnd, kCoreEnd);
-  }
+  // Strips bound the memory and are faster than the whole DEM: the next strip is read while
+  // this one is processed, into memory reused from strip to strip.
+  const std::size_t strip =
+      mStrips > 0 ? static_cast<std::size_t>(mStrips) : strip_profiles(raster.frame());
+  if (feedback) feedback->pushInfo(tr("Processing the DEM in strips of %1 profiles.").arg(strip));
+  const SilhouetteResult result = withCoreErrors([&] { return runInStrips(strip, feedback); });
 
   const QgsFields fields = strokeFields();
   std::unique_ptr<QgsFeatureSink> factual =
