@@ -53,22 +53,27 @@ void nodata_to_nan(GDALRasterBand& band, float* values, std::size_t count) {
   if (has_nodata) std::replace(values, values + count, nodata, kNoData);
 }
 
-// Reads the band in blocks of rows, nodata to NaN, into dem.oriented.
-void read_band(const std::string& path, GDALRasterBand& band, Dem& dem,
-               const GdalErrorCapture& capture) {
-  OrientedGridBuilder builder(dem.frame);
-  const std::size_t block_rows = std::max<std::size_t>(1, (1u << 22) / dem.cols);
-  std::vector<float> block(std::min(block_rows, dem.rows) * dem.cols);
-  for (std::size_t r = 0; r < dem.rows; r += block_rows) {
-    const std::size_t count = std::min(block_rows, dem.rows - r);
-    if (band.RasterIO(GF_Read, 0, static_cast<int>(r), static_cast<int>(dem.cols),
-                      static_cast<int>(count), block.data(), static_cast<int>(dem.cols),
-                      static_cast<int>(count), GDT_Float32, 0, 0) != CE_None) {
-      throw Error("reading '" + path + "' failed: " + capture.message());
+// Reads windows of the band as Float32, nodata to NaN.
+WindowReader band_reader(GDALRasterBand& band, const std::string& path) {
+  return [&band, path](const DemWindow& w, float* heights) {
+    GdalErrorCapture errors;
+    if (band.RasterIO(GF_Read, static_cast<int>(w.col0), static_cast<int>(w.row0),
+                      static_cast<int>(w.cols), static_cast<int>(w.rows), heights,
+                      static_cast<int>(w.cols), static_cast<int>(w.rows), GDT_Float32, 0,
+                      0) != CE_None) {
+      throw Error("reading '" + path + "' failed: " + errors.message());
     }
-    nodata_to_nan(band, block.data(), count * dem.cols);
-    builder.add_rows(r, count, block.data());
-  }
+    nodata_to_nan(band, heights, w.rows * w.cols);
+  };
+}
+
+// Reads the band in blocks of rows into dem.oriented.
+void read_band(const std::string& path, GDALRasterBand& band, Dem& dem) {
+  OrientedGridBuilder builder(dem.frame);
+  read_row_blocks(dem.rows, dem.cols, band_reader(band, path),
+                  [&builder](std::size_t first_row, std::size_t count, const float* heights) {
+                    builder.add_rows(first_row, count, heights);
+                  });
   dem.lowest_height = builder.dem_lowest_height();
   dem.oriented = builder.finish();
 }
@@ -145,7 +150,7 @@ Dem read_dem(const std::string& path, const DemOptions& options) {
   auto dataset = open_raster(path);
   Dem dem = describe_dem(*dataset, path, options);
   try {
-    read_band(path, *dataset->GetRasterBand(options.band), dem, capture);
+    read_band(path, *dataset->GetRasterBand(options.band), dem);
   } catch (const std::bad_alloc&) {
     throw Error("not enough memory for a " + std::to_string(dem.rows) + " x " +
                 std::to_string(dem.cols) + " DEM");
@@ -161,13 +166,7 @@ std::vector<HeightGrid> read_bands(const std::string& path) {
   std::vector<HeightGrid> bands;
   for (int b = 1; b <= dataset->GetRasterCount(); ++b) {
     HeightGrid grid(rows, cols, kUnset);
-    GDALRasterBand* band = dataset->GetRasterBand(b);
-    if (band->RasterIO(GF_Read, 0, 0, static_cast<int>(cols), static_cast<int>(rows), grid.data(),
-                       static_cast<int>(cols), static_cast<int>(rows), GDT_Float32, 0,
-                       0) != CE_None) {
-      throw Error("reading '" + path + "' failed: " + capture.message());
-    }
-    nodata_to_nan(*band, grid.data(), grid.size());
+    band_reader(*dataset->GetRasterBand(b), path)({0, 0, rows, cols}, grid.data());
     bands.push_back(std::move(grid));
   }
   return bands;
@@ -184,17 +183,7 @@ DemStripReader::DemStripReader(const std::string& path, const DemOptions& option
   GdalErrorCapture capture;
   source_->dataset = open_raster(path);
   dem_ = describe_dem(*source_->dataset, path, options);
-  GDALRasterBand* band = source_->dataset->GetRasterBand(options.band);
-  source_->read = [band, path](const DemWindow& w, float* heights) {
-    GdalErrorCapture errors;
-    if (band->RasterIO(GF_Read, static_cast<int>(w.col0), static_cast<int>(w.row0),
-                       static_cast<int>(w.cols), static_cast<int>(w.rows), heights,
-                       static_cast<int>(w.cols), static_cast<int>(w.rows), GDT_Float32, 0,
-                       0) != CE_None) {
-      throw Error("reading '" + path + "' failed: " + errors.message());
-    }
-    nodata_to_nan(*band, heights, w.rows * w.cols);
-  };
+  source_->read = band_reader(*source_->dataset->GetRasterBand(options.band), path);
   source_->loader = std::make_unique<StripLoader>(dem_.frame, source_->read, threads);
 }
 

@@ -63,12 +63,12 @@ class ChainLinker {
     ChainRef chain;
     std::size_t k;  // index of the chain's last cell in the last profile
   };
-  // Open chains in the order they were started: the survivors keep their order, new ones follow.
   std::uint32_t take_slot();
 
   bool factual_;
   int window_;
   ProfileCandidates last_;
+  // Open chains in the order they were started: the survivors keep their order, new ones follow.
   std::vector<Open> open_, still_open_;
   std::vector<ChainRef> joined_, closed_;
   std::vector<std::uint8_t> used_;

@@ -1,6 +1,7 @@
 // The one grid type of the core: row-major, (row, col) indexing, NaN as the only nodata.
 #pragma once
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
@@ -81,5 +82,19 @@ constexpr float kNoData = std::numeric_limits<float>::quiet_NaN();
 inline bool is_data(float z) {
   return std::isfinite(z);
 }
+
+// The lowest height with data among those added: the plan-oblique reference (SPEC 1.9), 0 when
+// none had data.
+class LowestHeight {
+ public:
+  void add(const float* z, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k)
+      if (is_data(z[k])) lowest_ = std::min(lowest_, z[k]);
+  }
+  double value() const { return std::isfinite(lowest_) ? static_cast<double>(lowest_) : 0.0; }
+
+ private:
+  float lowest_ = std::numeric_limits<float>::infinity();
+};
 
 }  // namespace tsk

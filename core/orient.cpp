@@ -423,17 +423,25 @@ void resample_profiles(const DemBand& band, const OrientedFrame& frame, std::siz
                 first, count, out, threads);
 }
 
-double dem_lowest_height(std::size_t rows, std::size_t cols, const WindowReader& read) {
-  const std::size_t block_rows = std::max<std::size_t>(1, (std::size_t{1} << 20) / cols);
+void read_row_blocks(std::size_t rows, std::size_t cols, const WindowReader& read,
+                     const std::function<void(std::size_t first_row, std::size_t count,
+                                              const float* heights)>& use) {
+  const std::size_t block_rows = std::max<std::size_t>(1, (std::size_t{1} << 22) / cols);
   std::vector<float> block(std::min(block_rows, rows) * cols);
-  float lowest = std::numeric_limits<float>::infinity();
   for (std::size_t top = 0; top < rows; top += block_rows) {
     const std::size_t count = std::min(block_rows, rows - top);
     read({top, 0, count, cols}, block.data());
-    for (std::size_t k = 0; k < count * cols; ++k)
-      if (is_data(block[k])) lowest = std::min(lowest, block[k]);
+    use(top, count, block.data());
   }
-  return std::isfinite(lowest) ? static_cast<double>(lowest) : 0.0;
+}
+
+double dem_lowest_height(std::size_t rows, std::size_t cols, const WindowReader& read) {
+  LowestHeight lowest;
+  read_row_blocks(rows, cols, read,
+                  [&lowest, cols](std::size_t, std::size_t count, const float* z) {
+                    lowest.add(z, count * cols);
+                  });
+  return lowest.value();
 }
 
 StripLoader::StripLoader(const OrientedFrame& frame, WindowReader read, unsigned threads)
@@ -480,9 +488,7 @@ void OrientedGridBuilder::add_rows(std::size_t first_row, std::size_t count, con
     if (first_row + count > frame_.dem_rows) throw Error("DEM block does not match the frame");
     std::copy(rows, rows + count * frame_.dem_cols, grid_.row(first_row));
   }
-  for (std::size_t k = 0; k < count * frame_.dem_cols; ++k) {
-    if (is_data(rows[k])) lowest_ = std::min(lowest_, rows[k]);
-  }
+  lowest_.add(rows, count * frame_.dem_cols);
 }
 
 HeightGrid OrientedGridBuilder::finish(unsigned threads) {
@@ -491,7 +497,7 @@ HeightGrid OrientedGridBuilder::finish(unsigned threads) {
 }
 
 double OrientedGridBuilder::dem_lowest_height() const {
-  return std::isfinite(lowest_) ? static_cast<double>(lowest_) : 0.0;
+  return lowest_.value();
 }
 
 }  // namespace tsk

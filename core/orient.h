@@ -5,7 +5,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <vector>
 
 #include "grid.h"
@@ -90,6 +89,12 @@ struct DemWindow {
 // nodata. Throws Error when the raster cannot be read.
 using WindowReader = std::function<void(const DemWindow& window, float* heights)>;
 
+// Reads a DEM of rows x cols cells whole through `read`, top to bottom in blocks of rows of
+// about 16 MB, handing each block to use(first_row, count, heights).
+void read_row_blocks(
+    std::size_t rows, std::size_t cols, const WindowReader& read,
+    const std::function<void(std::size_t first_row, std::size_t count, const float* heights)>& use);
+
 // The lowest height with data (finite; 0 when none) of a DEM of rows x cols cells read through
 // `read` a block of rows at a time: the plan-oblique reference (SPEC 1.9) of a DEM read strip by
 // strip, the same as OrientedGridBuilder::dem_lowest_height() gives when it is read whole.
@@ -165,7 +170,7 @@ class OrientedGridBuilder {
  private:
   const OrientedFrame& frame_;
   HeightGrid grid_;  // the oriented grid (cardinal) or the DEM (resampled)
-  float lowest_ = std::numeric_limits<float>::infinity();
+  LowestHeight lowest_;
 };
 
 // The DEM window (rows or columns, by view) that holds oriented profiles [first, first + count)

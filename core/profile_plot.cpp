@@ -1,18 +1,13 @@
 #include "profile_plot.h"
 
-#include <algorithm>
-#include <limits>
-
 #include "errors.h"
 
 namespace tsk {
 
 double lowest_height(const HeightGrid& z) {
-  float lowest = std::numeric_limits<float>::infinity();
-  for (std::size_t k = 0; k < z.size(); ++k) {
-    if (is_data(z.data()[k])) lowest = std::min(lowest, z.data()[k]);
-  }
-  return std::isfinite(lowest) ? static_cast<double>(lowest) : 0.0;
+  LowestHeight lowest;
+  lowest.add(z.data(), z.size());
+  return lowest.value();
 }
 
 std::vector<ProfileLine> profile_plot(const HeightGrid& oriented, const CellFlags& flags,

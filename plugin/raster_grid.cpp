@@ -162,22 +162,22 @@ void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double
 
 void RasterGrid::readBlocks(QgsProcessingFeedback* feedback, double progressFrom,
                             double progressTo) {
-  const auto cols = static_cast<std::size_t>(mCols);
-  OrientedGridBuilder builder(mFrame);
-  const std::size_t blockRows = std::max<std::size_t>(1, (1 << 22) / cols);
   const auto rows = static_cast<std::size_t>(mRows);
-  std::vector<float> heights(std::min(blockRows, rows) * cols);
-  for (std::size_t top = 0; top < rows; top += blockRows) {
-    if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
-    const std::size_t count = std::min(blockRows, rows - top);
-    readWindow({top, 0, count, cols}, heights.data());
-    builder.add_rows(top, count, heights.data());
-    if (feedback) {
-      feedback->setProgress(progressFrom + (progressTo - progressFrom) *
-                                               static_cast<double>(top + count) /
-                                               static_cast<double>(rows));
-    }
-  }
+  OrientedGridBuilder builder(mFrame);
+  read_row_blocks(
+      rows, static_cast<std::size_t>(mCols),
+      [this, feedback](const DemWindow& w, float* heights) {
+        if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
+        readWindow(w, heights);
+      },
+      [&](std::size_t top, std::size_t count, const float* heights) {
+        builder.add_rows(top, count, heights);
+        if (feedback) {
+          feedback->setProgress(progressFrom + (progressTo - progressFrom) *
+                                                   static_cast<double>(top + count) /
+                                                   static_cast<double>(rows));
+        }
+      });
   mLowest = builder.dem_lowest_height();
   mOriented = builder.finish();
 }
