@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 
 #include "flags.h"
 #include "parallel.h"
@@ -21,12 +22,50 @@ struct ProfileRows {
   const float* right;
 };
 ProfileRows profile_rows(const HeightGrid& z, std::size_t p);
-double row_slope(const ProfileRows& rows, std::size_t i, double w);
 
-// The filter's decision for magnitudes of column and row slope in percent: true when the point
-// lies outside the removal polygon (0,0) (col_cut,0) ctrl (0,row_cut), or outside the rectangle
-// of the cut-offs when diagonals are off.
-bool filter_accepts(const FilterParams& filter, double col_pct, double row_pct);
+inline double row_slope(const ProfileRows& rows, std::size_t i, double w) {
+  const float centre = rows.centre[i];
+  if (!is_data(centre)) return std::numeric_limits<double>::quiet_NaN();
+  const bool has_left = rows.left && is_data(rows.left[i]);
+  const bool has_right = rows.right && is_data(rows.right[i]);
+  if (has_left && has_right) {
+    return (static_cast<double>(rows.right[i]) - static_cast<double>(rows.left[i])) / (2.0 * w);
+  }
+  if (has_right) return (static_cast<double>(rows.right[i]) - static_cast<double>(centre)) / w;
+  if (has_left) return (static_cast<double>(centre) - static_cast<double>(rows.left[i])) / w;
+  return 0.0;
+}
+
+// The filter's decision with its constants worked out once, for loops over many cells. The
+// expressions are those of the thesis's equations 3 and 4, term for term.
+class FilterRule {
+ public:
+  explicit FilterRule(const FilterParams& filter)
+      : diagonals_(filter.diagonals),
+        col_cut_(filter.col_cut_pct),
+        row_cut_(filter.row_cut_pct),
+        ctrl_row_(filter.ctrl_row_pct()),
+        eq3_rate_((ctrl_row_ - row_cut_) / filter.ctrl_col_pct),
+        eq4_run_(col_cut_ - filter.ctrl_col_pct) {}
+
+  // True when (col_pct, row_pct) lies outside the removal polygon (0,0) (col_cut,0) ctrl
+  // (0,row_cut), or outside the rectangle of the cut-offs when diagonals are off.
+  bool accepts(double col_pct, double row_pct) const {
+    if (!diagonals_) return !(col_pct < col_cut_ && row_pct < row_cut_);
+    const double eq3 = row_cut_ + eq3_rate_ * col_pct;
+    const double eq4 = ctrl_row_ * (col_cut_ - col_pct) / eq4_run_;
+    return row_pct > eq3 && row_pct > eq4;
+  }
+
+ private:
+  bool diagonals_;
+  double col_cut_, row_cut_, ctrl_row_, eq3_rate_, eq4_run_;
+};
+
+// The filter's decision for magnitudes of column and row slope in percent (FilterRule::accepts).
+inline bool filter_accepts(const FilterParams& filter, double col_pct, double row_pct) {
+  return FilterRule(filter).accepts(col_pct, row_pct);
+}
 
 // Sets `filtered` on the visible c-set cells of one profile that the filter accepts.
 void filter_profile(const ProfileRows& rows, std::uint8_t* flags, std::size_t length, double d,

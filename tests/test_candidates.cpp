@@ -1,4 +1,6 @@
 #include <catch2/catch.hpp>
+#include <limits>
+#include <vector>
 
 #include "test_support.h"
 
@@ -69,4 +71,31 @@ TEST_CASE("a steep ridge occludes instead: no c-set, a hidden back slope", "[can
     CHECK(bool(flags(2, i) & cell::occluding) == (i == 20));
   }
   CHECK(flags(2, 21) & cell::hidden);
+}
+
+TEST_CASE("the c-set of a profile is the rule cell by cell, nodata and infinities included",
+          "[candidates][oracle]") {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const float odd[] = {kNoData, std::numeric_limits<float>::infinity(),
+                       -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::max(),
+                       -std::numeric_limits<float>::max()};
+  for (int round = 0; round < 200; ++round) {
+    const std::size_t length = 1 + rng() % 70;
+    ViewParams view;
+    view.ve = 0.5 + 4 * u(rng);
+    view.base_slope_pct = 5 + 80 * u(rng);
+    const double d = 1 + 30 * u(rng);
+    std::vector<float> z(length);
+    for (float& h : z) {
+      h = u(rng) < 0.15 ? odd[rng() % 5] : static_cast<float>(100 + 10 * u(rng));
+    }
+    std::vector<std::uint8_t> flags(length, 0);
+    select_profile_candidates(z.data(), flags.data(), length, d, view);
+    for (std::size_t i = 0; i < length; ++i) {
+      INFO("round " << round << ", cell " << i);
+      REQUIRE(static_cast<bool>(flags[i] & cell::candidate) ==
+              is_candidate_slope(column_slope(z.data(), length, i, d), view));
+    }
+  }
 }

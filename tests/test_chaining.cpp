@@ -160,3 +160,42 @@ TEST_CASE("both chainers equal the literal scan of SPEC 1.7 on random terrains",
     }
   }
 }
+
+TEST_CASE("profile candidates equal a cell-by-cell reading of the flags", "[chaining][oracle]") {
+  // Random flags, any bits, including hidden cells without the valid bit: the candidates and
+  // hidden zones must be read as the rule says, cell by cell, from any first cell.
+  std::mt19937 rng(11);
+  for (int round = 0; round < 400; ++round) {
+    const std::size_t length = rng() % 90;
+    std::vector<std::uint8_t> f(length);
+    for (std::uint8_t& v : f) {
+      const unsigned roll = rng() % 8;
+      v = roll < 3   ? static_cast<std::uint8_t>(rng() % 64)
+          : roll < 6 ? cell::valid | cell::hidden
+                     : cell::valid;
+    }
+    const std::size_t first = length ? rng() % (length + 1) : 0;
+    for (bool factual : {true, false}) {
+      INFO("round " << round << (factual ? " factual" : " formulated"));
+      const ProfileCandidates got = profile_candidates(f.data(), length, factual, first);
+      ProfileCandidates want;
+      const std::uint8_t bit = factual ? cell::occluding : cell::thinned;
+      bool in_zone = false;
+      for (std::size_t i = first; i < length; ++i) {
+        const bool valid = f[i] & cell::valid, hidden = f[i] & cell::hidden;
+        if (in_zone && hidden) {
+          want.reach.back() = static_cast<std::int32_t>(i);
+          continue;
+        }
+        if (valid) in_zone = false;  // nodata carries a zone on
+        if (f[i] & bit) {
+          want.cell.push_back(static_cast<std::int32_t>(i));
+          want.reach.push_back(static_cast<std::int32_t>(i));
+          in_zone = factual;
+        }
+      }
+      REQUIRE(got.cell == want.cell);
+      REQUIRE(got.reach == want.reach);
+    }
+  }
+}

@@ -366,3 +366,30 @@ TEST_CASE("what a stroke sink throws ends the run", "[pipeline][strips]") {
       }(),
       "disk full");
 }
+
+TEST_CASE("stage counts are the flags counted, on profiles longer than a counting block",
+          "[pipeline]") {
+  // Counts are gathered eight cells at a time in blocks of 2040 cells: lengths around that.
+  for (std::size_t cols : {7u, 2040u, 2047u, 4099u}) {
+    INFO(cols << " cells a profile");
+    HeightGrid dem = test::random_terrain(5, cols, static_cast<std::uint32_t>(cols), 0.05);
+    dem(2, cols / 2) = std::numeric_limits<float>::infinity();
+    const SilhouetteResult r = test::run_on_dem(dem, {});
+    StageStats counted;
+    for (std::size_t p = 0; p < r.flags.rows(); ++p)
+      for (std::size_t i = 0; i < r.flags.cols(); ++i) {
+        const std::uint8_t f = r.flags(p, i);
+        counted.valid += (f & cell::valid) != 0, counted.hidden += (f & cell::hidden) != 0;
+        counted.occluding += (f & cell::occluding) != 0;
+        counted.candidate += (f & cell::candidate) != 0;
+        counted.filtered += (f & cell::filtered) != 0, counted.thinned += (f & cell::thinned) != 0;
+      }
+    CHECK(r.stats.valid == counted.valid);
+    CHECK(r.stats.hidden == counted.hidden);
+    CHECK(r.stats.occluding == counted.occluding);
+    CHECK(r.stats.candidate == counted.candidate);
+    CHECK(r.stats.filtered == counted.filtered);
+    CHECK(r.stats.thinned == counted.thinned);
+    if (cols > 100) CHECK(counted.thinned > 0);  // the counts were put to the test
+  }
+}
