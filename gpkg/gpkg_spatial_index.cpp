@@ -2,11 +2,11 @@
 
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
+#include <sqlite3.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <functional>
 #include <limits>
 #include <memory>
 
@@ -100,17 +100,6 @@ std::string quoted_literal(const std::string& text) {
   return out + "'";
 }
 
-std::string hex_blob(const std::vector<unsigned char>& bytes) {
-  static const char digits[] = "0123456789ABCDEF";
-  std::string out = "X'";
-  out.reserve(bytes.size() * 2 + 3);
-  for (unsigned char b : bytes) {
-    out += digits[b >> 4];
-    out += digits[b & 15];
-  }
-  return out + "'";
-}
-
 }  // namespace
 
 PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes) {
@@ -183,50 +172,69 @@ PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes) {
 
 namespace {
 
-// Runs SQL on a GDAL dataset's SQLite connection, throwing GDAL's message on failure.
-class Sql {
+// The SQLite connection under a GDAL GeoPackage dataset, used directly: prepared statements
+// bind the node blobs and ids instead of SQL text that SQLite would have to parse.
+class Connection {
  public:
-  explicit Sql(GDALDataset& dataset) : dataset_(dataset) {}
+  explicit Connection(GDALDataset& dataset)
+      : db_(static_cast<sqlite3*>(dataset.GetInternalHandle("SQLITE_HANDLE"))) {
+    if (!db_) fail("GDAL does not expose the file's SQLite connection");
+  }
 
-  // Runs `sql` and hands each row of its result, if any, to `row`.
-  void run(const std::string& sql, const std::function<void(OGRFeature&)>& row = {}) const {
-    CPLErrorReset();
-    OGRLayer* result = dataset_.ExecuteSQL(sql.c_str(), nullptr, nullptr);
-    if (result) {
-      for (auto& feature : *result) {
-        if (row) row(*feature);
+  // A prepared statement, reset after each step() that ends it.
+  class Statement {
+   public:
+    Statement(const Connection& connection, const std::string& sql) : connection_(connection) {
+      if (sqlite3_prepare_v2(connection_.db_, sql.c_str(), -1, &statement_, nullptr) != SQLITE_OK) {
+        connection_.fail_with_message();
       }
-      dataset_.ReleaseResultSet(result);
     }
-    if (CPLGetLastErrorType() >= CE_Failure) {
-      std::string message = CPLGetLastErrorMsg();  // may quote all of a long statement
-      if (message.size() > 300) message = message.substr(0, 300) + "...";
-      throw Error("building a GeoPackage spatial index failed: " + message);
+    Statement(const Statement&) = delete;
+    Statement& operator=(const Statement&) = delete;
+    ~Statement() { sqlite3_finalize(statement_); }
+
+    Statement& bind(int index, std::int64_t value) {
+      check(sqlite3_bind_int64(statement_, index, value));
+      return *this;
+    }
+    Statement& bind(int index, const std::vector<unsigned char>& blob) {
+      check(sqlite3_bind_blob(statement_, index, blob.data(), static_cast<int>(blob.size()),
+                              SQLITE_STATIC));
+      return *this;
+    }
+    // Runs the statement to its next row: true if there is one, false when it is done (and it
+    // is reset, its bindings kept, to run again).
+    bool step() {
+      const int result = sqlite3_step(statement_);
+      if (result == SQLITE_ROW) return true;
+      sqlite3_reset(statement_);
+      if (result != SQLITE_DONE) connection_.fail_with_message();
+      return false;
+    }
+    std::int64_t integer(int column) const { return sqlite3_column_int64(statement_, column); }
+    double real(int column) const { return sqlite3_column_double(statement_, column); }
+
+   private:
+    void check(int result) const {
+      if (result != SQLITE_OK) connection_.fail_with_message();
+    }
+    const Connection& connection_;
+    sqlite3_stmt* statement_ = nullptr;
+  };
+
+  void run(const std::string& sql) const {
+    if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, nullptr) != SQLITE_OK) {
+      fail_with_message();
     }
   }
 
  private:
-  GDALDataset& dataset_;
-};
-
-// Inserts rows into a table a few hundred kilobytes of SQL at a time.
-class RowInserter {
- public:
-  RowInserter(const Sql& sql, std::string head) : sql_(sql), head_(std::move(head)) {}
-  void add(const std::string& row) {
-    text_ += text_.empty() ? head_ + " VALUES " : std::string(",");
-    text_ += row;
-    if (text_.size() > (1u << 18)) flush();
+  [[noreturn]] static void fail(const std::string& why) {
+    throw Error("building a GeoPackage spatial index failed: " + why);
   }
-  void flush() {
-    if (!text_.empty()) sql_.run(text_);
-    text_.clear();
-  }
+  [[noreturn]] void fail_with_message() const { fail(sqlite3_errmsg(db_)); }
 
- private:
-  const Sql& sql_;
-  std::string head_;
-  std::string text_;
+  sqlite3* db_;
 };
 
 // The triggers of the GeoPackage R-tree extension (GeoPackage 1.2, F.3) on R-tree `r`, as GDAL 3.6
@@ -274,55 +282,58 @@ std::vector<std::string> rtree_triggers(const std::string& table, const std::str
 void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table) {
   OGRLayer* layer = dataset.GetLayerByName(table.c_str());
   if (!layer) throw Error("no layer '" + table + "' to index");
+  // GDAL creates the table and writes its extent and feature count when it syncs: before the
+  // connection is used behind its back.
+  if (layer->SyncToDisk() != OGRERR_NONE) {
+    throw Error("building a GeoPackage spatial index failed: " + std::string(CPLGetLastErrorMsg()));
+  }
   const std::string column = layer->GetGeometryColumn();
   const std::string fid = *layer->GetFIDColumn() ? layer->GetFIDColumn() : "fid";
   const std::string rtree = "rtree_" + table + "_" + column;
   const std::string t = quoted_identifier(table), c = quoted_identifier(column);
-  const Sql sql(dataset);
+  const Connection db(dataset);
 
   std::vector<IndexBox> boxes;
-  // Aliased: GDAL would take the id column for the rows' FIDs instead of a field.
-  sql.run("SELECT " + quoted_identifier(fid) + " + 0 AS tsk_id, ST_MinX(" + c + "), ST_MaxX(" + c +
-              "), ST_MinY(" + c + "), ST_MaxY(" + c + ") FROM " + t + " WHERE " + c +
-              " NOT NULL AND NOT ST_IsEmpty(" + c + ")",
-          [&boxes](OGRFeature& row) {
-            boxes.push_back({row.GetFieldAsInteger64(0), row.GetFieldAsDouble(1),
-                             row.GetFieldAsDouble(2), row.GetFieldAsDouble(3),
-                             row.GetFieldAsDouble(4)});
-          });
+  Connection::Statement extents(db, "SELECT " + quoted_identifier(fid) + ", ST_MinX(" + c +
+                                        "), ST_MaxX(" + c + "), ST_MinY(" + c + "), ST_MaxY(" + c +
+                                        ") FROM " + t + " WHERE " + c +
+                                        " NOT NULL AND NOT ST_IsEmpty(" + c + ")");
+  while (extents.step()) {
+    boxes.push_back(
+        {extents.integer(0), extents.real(1), extents.real(2), extents.real(3), extents.real(4)});
+  }
 
-  sql.run("CREATE VIRTUAL TABLE " + quoted_identifier(rtree) +
-          " USING rtree(id, minx, maxx, miny, maxy)");
+  db.run("CREATE VIRTUAL TABLE " + quoted_identifier(rtree) +
+         " USING rtree(id, minx, maxx, miny, maxy)");
   std::size_t node_bytes = 0;
-  sql.run("SELECT length(data) FROM " + quoted_identifier(rtree + "_node") + " WHERE nodeno = 1",
-          [&node_bytes](OGRFeature& row) {
-            node_bytes = static_cast<std::size_t>(row.GetFieldAsInteger64(0));
-          });
+  {
+    Connection::Statement root(
+        db, "SELECT length(data) FROM " + quoted_identifier(rtree + "_node") + " WHERE nodeno = 1");
+    if (root.step()) node_bytes = static_cast<std::size_t>(root.integer(0));
+  }
   const PackedRtree packed = pack_rtree(std::move(boxes), node_bytes);
-  sql.run("DELETE FROM " + quoted_identifier(rtree + "_node"));
-  RowInserter nodes(sql, "INSERT INTO " + quoted_identifier(rtree + "_node") + "(nodeno, data)");
-  RowInserter parents(
-      sql, "INSERT INTO " + quoted_identifier(rtree + "_parent") + "(nodeno, parentnode)");
-  for (const RtreeNode& node : packed.nodes) {
-    nodes.add("(" + std::to_string(node.number) + "," + hex_blob(node.blob) + ")");
-    if (node.parent != 0) {
-      parents.add("(" + std::to_string(node.number) + "," + std::to_string(node.parent) + ")");
-    }
+  db.run("DELETE FROM " + quoted_identifier(rtree + "_node"));
+  Connection::Statement node(
+      db, "INSERT INTO " + quoted_identifier(rtree + "_node") + "(nodeno, data) VALUES (?, ?)");
+  Connection::Statement parent(db, "INSERT INTO " + quoted_identifier(rtree + "_parent") +
+                                       "(nodeno, parentnode) VALUES (?, ?)");
+  for (const RtreeNode& n : packed.nodes) {
+    node.bind(1, n.number).bind(2, n.blob).step();
+    if (n.parent != 0) parent.bind(1, n.number).bind(2, n.parent).step();
   }
-  nodes.flush();
-  parents.flush();
-  RowInserter rows(sql, "INSERT INTO " + quoted_identifier(rtree + "_rowid") + "(rowid, nodeno)");
-  for (const auto& [id, leaf] : packed.leaf_of) {
-    rows.add("(" + std::to_string(id) + "," + std::to_string(leaf) + ")");
-  }
-  rows.flush();
+  // In the order of the ids, so that each row lands at the end of the table's B-tree.
+  std::vector<std::pair<std::int64_t, std::int64_t>> leaf_of = packed.leaf_of;
+  std::sort(leaf_of.begin(), leaf_of.end());
+  Connection::Statement row(
+      db, "INSERT INTO " + quoted_identifier(rtree + "_rowid") + "(rowid, nodeno) VALUES (?, ?)");
+  for (const auto& [id, leaf] : leaf_of) row.bind(1, id).bind(2, leaf).step();
 
-  for (const std::string& trigger : rtree_triggers(table, column, fid, rtree)) sql.run(trigger);
-  sql.run(
+  for (const std::string& trigger : rtree_triggers(table, column, fid, rtree)) db.run(trigger);
+  db.run(
       "CREATE TABLE IF NOT EXISTS gpkg_extensions (table_name TEXT,column_name TEXT,"
       "extension_name TEXT NOT NULL,definition TEXT NOT NULL,scope TEXT NOT NULL,"
       "CONSTRAINT ge_tce UNIQUE (table_name, column_name, extension_name))");
-  sql.run(
+  db.run(
       "INSERT INTO gpkg_extensions (table_name, column_name, extension_name, definition, scope) "
       "VALUES (" +
       quoted_literal(table) + ", " + quoted_literal(column) +

@@ -4,7 +4,9 @@
 // module, which costs 0.7 s for 100 000 strokes: more than the silhouettes themselves on
 // 8000 x 8000 (QGIS writes GeoPackages through the same GDAL). Here the boxes are packed by
 // Sort-Tile-Recursive into full nodes and written straight into the R-tree's tables in SQLite's
-// own node format, as GDAL 3.7 and later do.
+// own node format, as GDAL 3.7 and later do, through prepared statements on the SQLite connection
+// that GDAL exposes (binding blobs and ids rather than SQL text: 102 000 strokes are indexed in
+// 0.1 s).
 #pragma once
 
 #include <cstddef>
