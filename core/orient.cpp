@@ -299,26 +299,37 @@ void resample_with(const BilinearSampler<Cells>& sample, const OrientedFrame& fr
   }
   if (out.rows() != count || out.cols() != frame.length)
     out = HeightGrid(count, frame.length, kUnset);
+  // Cells [lo, hi) of each profile fall on the DEM (the sampler still checks); the margins of
+  // the line-of-sight grid, up to half of it, are nodata.
+  const auto on_dem = [&](double col0, double row0) {
+    auto [lo, hi] = inside_range(col0, frame.px_col_per_i, frame.dem_cols, frame.length);
+    const auto rows = inside_range(row0, frame.px_row_per_i, frame.dem_rows, frame.length);
+    lo = std::max(lo, rows.first);
+    hi = std::min(hi, rows.second);
+    return lo < hi ? std::make_pair(lo, hi) : std::make_pair(std::size_t{0}, std::size_t{0});
+  };
+  // Neighbouring profiles read nearly the same DEM cells, but a whole profile at a slant reads a
+  // new DEM row every cell or two, more than a core's cache holds. So the profiles are sampled a
+  // stretch of cells at a time, every profile in turn, while those cells' rows are in cache.
+  constexpr std::size_t kStretch = 256;
   parallel_for(count, threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) {
-      const auto p = static_cast<double>(first + k);
-      float* row = out.row(k);
-      // frame.to_pixel(p, i), with the profile's part worked out once (same rounding).
-      const double col0 = frame.px_col0 + frame.px_col_per_p * p;
-      const double row0 = frame.px_row0 + frame.px_row_per_p * p;
-      // Only the cells whose position falls on the DEM are sampled (the sampler still checks);
-      // the margins of the line-of-sight grid, up to half of it, are nodata.
-      auto [lo, hi] = inside_range(col0, frame.px_col_per_i, frame.dem_cols, frame.length);
-      const auto rows = inside_range(row0, frame.px_row_per_i, frame.dem_rows, frame.length);
-      lo = std::max(lo, rows.first);
-      hi = std::min(hi, rows.second);
-      if (lo >= hi) lo = hi = 0;
-      std::fill(row, row + lo, kNoData);
-      for (std::size_t i = lo; i < hi; ++i) {
-        const auto s = static_cast<double>(i);
-        row[i] = sample(col0 + frame.px_col_per_i * s, row0 + frame.px_row_per_i * s);
+    for (std::size_t i0 = 0; i0 < frame.length; i0 += kStretch) {
+      const std::size_t i1 = std::min(frame.length, i0 + kStretch);
+      for (std::size_t k = begin; k < end; ++k) {
+        const auto p = static_cast<double>(first + k);
+        float* row = out.row(k);
+        // frame.to_pixel(p, i), with the profile's part worked out once (same rounding).
+        const double col0 = frame.px_col0 + frame.px_col_per_p * p;
+        const double row0 = frame.px_row0 + frame.px_row_per_p * p;
+        const auto [lo, hi] = on_dem(col0, row0);
+        const std::size_t a = std::clamp(lo, i0, i1), b = std::clamp(hi, i0, i1);
+        std::fill(row + i0, row + a, kNoData);
+        for (std::size_t i = a; i < b; ++i) {
+          const auto s = static_cast<double>(i);
+          row[i] = sample(col0 + frame.px_col_per_i * s, row0 + frame.px_row_per_i * s);
+        }
+        std::fill(row + b, row + i1, kNoData);
       }
-      std::fill(row + hi, row + frame.length, kNoData);
     }
   });
 }

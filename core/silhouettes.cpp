@@ -28,10 +28,24 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Cells [begin, end) of a profile: from its first to its last cell with data.
+// True when the eight heights from z on are all nodata (NaN or infinite: every exponent bit set).
+static_assert(std::numeric_limits<float>::is_iec559, "eight_nodata reads IEEE 754 floats");
+bool eight_nodata(const float* z) {
+  constexpr std::uint32_t kExponent = 0x7f800000u;
+  std::uint32_t bits[8];
+  std::memcpy(bits, z, sizeof bits);
+  std::uint32_t common = kExponent;
+  for (std::uint32_t b : bits) common &= b;
+  return common == kExponent;
+}
+
+// Cells [begin, end) of a profile: from its first to its last cell with data. The nodata margins
+// of a resampled profile can be half of it, so they are skipped eight cells at a time.
 std::pair<std::size_t, std::size_t> data_range(const float* z, std::size_t length) {
   std::size_t begin = 0, end = length;
+  while (begin + 8 <= end && eight_nodata(z + begin)) begin += 8;
   while (begin < end && !is_data(z[begin])) ++begin;
+  while (end >= begin + 8 && eight_nodata(z + end - 8)) end -= 8;
   while (end > begin && !is_data(z[end - 1])) --end;
   return {begin, end};
 }
@@ -97,6 +111,12 @@ void share_out(const StageTimings& seconds, double wall, StageTimings& timings) 
   for (auto stage : kProfileStages) total += seconds.*stage;
   if (!(total > 0)) return;
   for (auto stage : kProfileStages) timings.*stage += wall * (seconds.*stage / total);
+}
+
+// The plan-oblique reference: the lowest height of `z`. Map geometry needs none, which spares a
+// pass over the grid.
+double plan_oblique_reference(const HeightGrid& z, const SilhouetteParams& params) {
+  return params.geometry == Geometry::oblique ? lowest_height(z) : 0.0;
 }
 
 }  // namespace
@@ -375,7 +395,7 @@ SilhouetteResult run_resampled_silhouettes(const HeightGrid& dem, const Oriented
   constexpr std::size_t kStrip = 1024;
   double resampling = 0;
   SilhouetteResult result = run_in_strips(
-      frame, geotransform, params, lowest_height(dem), kStrip,
+      frame, geotransform, params, plan_oblique_reference(dem, params), kStrip,
       [&](std::size_t first, std::size_t count, HeightGrid& strip) {
         const auto start = Clock::now();
         resample_profiles(dem, frame, first, count, strip, params.threads);
@@ -408,8 +428,8 @@ SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame
   if (oriented.rows() != frame.profiles || oriented.cols() != frame.length) {
     throw Error("oriented grid does not match its frame");
   }
-  SilhouetteStream stream(frame, geotransform, params, z_ref ? *z_ref : lowest_height(oriented),
-                          progress);
+  SilhouetteStream stream(frame, geotransform, params,
+                          z_ref ? *z_ref : plan_oblique_reference(oriented, params), progress);
   stream.add_strip(oriented, 0, frame.profiles, true);
   return stream.finish();
 }

@@ -393,3 +393,36 @@ TEST_CASE("stage counts are the flags counted, on profiles longer than a countin
     if (cols > 100) CHECK(counted.thinned > 0);  // the counts were put to the test
   }
 }
+
+TEST_CASE("the per-profile stages classify as the whole-grid stages, nodata margins included",
+          "[pipeline][oracle]") {
+  // Margins of 0 to 25 nodata cells (NaN or infinite) before and after each profile's data: the
+  // pipeline skips them, the whole-grid stages do not.
+  std::mt19937 rng(21);
+  HeightGrid dem = test::random_terrain(80, 120, 21, 0.02);
+  const float nodata[] = {kNoData, std::numeric_limits<float>::infinity(),
+                          -std::numeric_limits<float>::infinity()};
+  for (std::size_t p = 0; p < dem.rows(); ++p) {
+    const std::size_t before = rng() % 26, after = rng() % 26;
+    for (std::size_t i = 0; i < before; ++i) dem(p, i) = nodata[rng() % 3];
+    for (std::size_t i = 0; i < after; ++i) dem(p, dem.cols() - 1 - i) = nodata[rng() % 3];
+  }
+  const SilhouetteParams params;
+  const OrientedFrame frame = make_frame(dem.rows(), dem.cols(), 10, 10, 90);  // from the west
+  const SilhouetteResult r = run_silhouettes(dem, frame, GeoTransform{}, params);
+  CellFlags whole;
+  classify_visibility(dem, frame.d, params.view, whole);
+  select_candidates(dem, frame.d, params.view, whole);
+  apply_slope_filter(dem, frame.d, frame.w, params.filter, whole);
+  thin(whole, params.placement);
+  std::size_t filtered = 0, thinned = 0;
+  for (std::size_t p = 0; p < dem.rows(); ++p)
+    for (std::size_t i = 0; i < dem.cols(); ++i) {
+      INFO("profile " << p << ", cell " << i);
+      REQUIRE(static_cast<int>(r.flags(p, i)) == static_cast<int>(whole(p, i)));
+      filtered += (whole(p, i) & cell::filtered) != 0;
+      thinned += (whole(p, i) & cell::thinned) != 0;
+    }
+  CHECK(filtered > 60);
+  CHECK(thinned > 0);
+}
