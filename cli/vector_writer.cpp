@@ -11,7 +11,7 @@
 #include <map>
 
 #include "gdal_util.h"
-#include "gpkg_spatial_index.h"
+#include "gpkg_line_appender.h"
 #include "output_files.h"
 
 namespace tsk::io {
@@ -43,12 +43,84 @@ std::string vector_driver_for(const std::string& path, const std::string& format
 
 namespace {
 
-// Creates `path` with one line layer, lets add_fields define its fields and add_features fill it,
-// all inside a transaction; whole or not at all.
+// A field of a line layer.
+struct Field {
+  const char* name;
+  OGRFieldType type;
+};
+
+// Where the features of a line layer go: the attributes of a feature by field position (drivers
+// may shorten names: shapefile to 10 characters), then its line.
+class LineOutput {
+ public:
+  virtual ~LineOutput() = default;
+  virtual void set(int field, std::int64_t value) = 0;
+  virtual void set(int field, double value) = 0;  // NaN and infinities are null
+  virtual void set(int field, const char* text) = 0;
+  virtual void add(const std::vector<StrokePoint>& points) = 0;
+};
+
+// Features through OGR, for any vector format.
+class OgrLineOutput : public LineOutput {
+ public:
+  OgrLineOutput(OGRLayer& layer, const std::string& path, const GdalErrorCapture& capture)
+      : layer_(layer), path_(path), capture_(capture), feature_(layer.GetLayerDefn()) {}
+  void set(int field, std::int64_t value) override { feature_.SetField(field, GIntBig{value}); }
+  void set(int field, double value) override {
+    if (std::isfinite(value)) {
+      feature_.SetField(field, value);
+    } else {
+      feature_.SetFieldNull(field);
+    }
+  }
+  void set(int field, const char* text) override { feature_.SetField(field, text); }
+  void add(const std::vector<StrokePoint>& points) override {
+    OGRLineString line;
+    line.setNumPoints(static_cast<int>(points.size()));
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      line.setPoint(static_cast<int>(k), points[k].x, points[k].y);
+    }
+    feature_.SetGeometry(&line);
+    feature_.SetFID(OGRNullFID);  // a new feature each time
+    check(layer_.CreateFeature(&feature_), "writing a line to '" + path_ + "'", capture_);
+  }
+
+ private:
+  OGRLayer& layer_;
+  const std::string& path_;
+  const GdalErrorCapture& capture_;
+  OGRFeature feature_;
+};
+
+// Features straight into a GeoPackage's SQLite tables (gpkg_line_appender.h).
+class GpkgLineOutput : public LineOutput {
+ public:
+  GpkgLineOutput(GDALDataset& dataset, OGRLayer& layer)
+      : appender_(dataset, layer.GetName(), field_names(layer)) {}
+  void set(int field, std::int64_t value) override { appender_.set(field, value); }
+  void set(int field, double value) override { appender_.set(field, value); }
+  void set(int field, const char* text) override { appender_.set(field, text); }
+  void add(const std::vector<StrokePoint>& points) override { appender_.add(points); }
+  void finish() { appender_.finish(); }
+
+ private:
+  static std::vector<std::string> field_names(OGRLayer& layer) {
+    std::vector<std::string> names;
+    const OGRFeatureDefn* defn = layer.GetLayerDefn();
+    for (int k = 0; k < defn->GetFieldCount(); ++k)
+      names.push_back(defn->GetFieldDefn(k)->GetNameRef());
+    return names;
+  }
+  GpkgLineAppender appender_;
+};
+
+// Creates `path` with one line layer of `fields` and lets add_features fill it, all inside a
+// transaction; whole or not at all. A GeoPackage is filled through SQLite and gets its spatial
+// index in bulk; other formats through OGR.
 void write_line_layer(const std::string& path, const std::string& format,
                       const std::string& srs_wkt, const std::string& layer_name,
-                      const std::function<void(OGRLayer&, const GdalErrorCapture&)>& add_fields,
-                      const std::function<void(OGRLayer&, const GdalErrorCapture&)>& add_features) {
+                      const std::vector<Field>& fields,
+                      const std::function<void(LineOutput&)>& add_features) {
   GdalErrorCapture capture;
   const std::string driver_name = vector_driver_for(path, format);
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
@@ -59,10 +131,9 @@ void write_line_layer(const std::string& path, const std::string& format,
   OGRSpatialReference srs;
   const bool has_srs = !srs_wkt.empty() && srs.importFromWkt(srs_wkt.c_str()) == OGRERR_NONE;
   srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  // A GeoPackage gets its spatial index in bulk once the features are in.
-  const bool bulk_index = driver_name == "GPKG";
+  const bool gpkg = driver_name == "GPKG";
   CPLStringList layer_options;
-  if (bulk_index) layer_options.SetNameValue("SPATIAL_INDEX", "NO");
+  if (gpkg) layer_options.SetNameValue("SPATIAL_INDEX", "NO");
 
   write_atomically(path, [&](const std::filesystem::path& staged) {
     DatasetPtr ds(driver->Create(staged.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
@@ -70,10 +141,19 @@ void write_line_layer(const std::string& path, const std::string& format,
     OGRLayer* layer = ds->CreateLayer(layer_name.c_str(), has_srs ? &srs : nullptr, wkbLineString,
                                       layer_options.List());
     if (!layer) throw Error("cannot create layer in '" + path + "': " + capture.message());
-    add_fields(*layer, capture);
+    for (const Field& field : fields) {
+      OGRFieldDefn defn(field.name, field.type);
+      check(layer->CreateField(&defn), std::string("creating field '") + field.name + "'", capture);
+    }
     const bool transaction = ds->StartTransaction() == OGRERR_NONE;
-    add_features(*layer, capture);
-    if (bulk_index) add_gpkg_spatial_index(*ds, layer->GetName());
+    if (gpkg) {
+      GpkgLineOutput output(*ds, *layer);
+      add_features(output);
+      output.finish();
+    } else {
+      OgrLineOutput output(*layer, path, capture);
+      add_features(output);
+    }
     if (transaction) check(ds->CommitTransaction(), "committing '" + path + "'", capture);
     CPLErrorReset();
     ds.reset();  // closing flushes: a failure here means an incomplete file
@@ -83,56 +163,22 @@ void write_line_layer(const std::string& path, const std::string& format,
   });
 }
 
-void add_field(OGRLayer& layer, const char* name, OGRFieldType type,
-               const GdalErrorCapture& capture) {
-  OGRFieldDefn defn(name, type);
-  check(layer.CreateField(&defn), std::string("creating field '") + name + "'", capture);
-}
-
-// Writes one line feature whose attributes `set` has filled.
-void add_line(OGRLayer& layer, OGRFeature& feature, const std::vector<StrokePoint>& points,
-              const std::string& path, const GdalErrorCapture& capture) {
-  OGRLineString line;
-  line.setNumPoints(static_cast<int>(points.size()));
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    line.setPoint(static_cast<int>(k), points[k].x, points[k].y);
-  }
-  feature.SetGeometry(&line);
-  check(layer.CreateFeature(&feature), "writing a line to '" + path + "'", capture);
-}
-
 }  // namespace
 
 void write_strokes(const std::string& path, const std::string& format, const std::string& srs_wkt,
                    const std::function<void(const StrokeWriter& write)>& produce,
                    const std::string& layer_name) {
-  write_line_layer(
-      path, format, srs_wkt, layer_name,
-      [](OGRLayer& layer, const GdalErrorCapture& capture) {
-        add_field(layer, "class", OFTString, capture);
-        add_field(layer, "cells", OFTInteger, capture);
-        for (const StrokeRealField& f : stroke_real_fields())
-          add_field(layer, f.name, OFTReal, capture);
-      },
-      [&](OGRLayer& layer, const GdalErrorCapture& capture) {
-        // Fields by position: drivers may shorten names (shapefile: 10 characters).
-        produce([&](const Stroke& s) {
-          OGRFeature feature(layer.GetLayerDefn());
-          feature.SetField(0, stroke_class_name(s.cls));
-          feature.SetField(1, s.cells);
-          int index = 2;
-          for (const StrokeRealField& f : stroke_real_fields()) {
-            const double value = s.*(f.member);
-            if (std::isfinite(value)) {
-              feature.SetField(index, value);
-            } else {
-              feature.SetFieldNull(index);
-            }
-            ++index;
-          }
-          add_line(layer, feature, s.points, path, capture);
-        });
-      });
+  std::vector<Field> fields = {{"class", OFTString}, {"cells", OFTInteger}};
+  for (const StrokeRealField& f : stroke_real_fields()) fields.push_back({f.name, OFTReal});
+  write_line_layer(path, format, srs_wkt, layer_name, fields, [&](LineOutput& output) {
+    produce([&](const Stroke& s) {
+      output.set(0, stroke_class_name(s.cls));
+      output.set(1, std::int64_t{s.cells});
+      int index = 2;
+      for (const StrokeRealField& f : stroke_real_fields()) output.set(index++, s.*(f.member));
+      output.add(s.points);
+    });
+  });
 }
 
 void write_strokes(const std::string& path, const std::string& format,
@@ -148,38 +194,26 @@ void write_strokes(const std::string& path, const std::string& format,
 
 void write_profile_lines(const std::string& path, const std::string& format,
                          const std::vector<ProfileLine>& lines, const std::string& srs_wkt) {
-  write_line_layer(
-      path, format, srs_wkt, "profiles",
-      [](OGRLayer& layer, const GdalErrorCapture& capture) {
-        add_field(layer, "section", OFTInteger, capture);
-        add_field(layer, "distance", OFTReal, capture);
-      },
-      [&](OGRLayer& layer, const GdalErrorCapture& capture) {
-        for (const ProfileLine& line : lines) {
-          OGRFeature feature(layer.GetLayerDefn());
-          feature.SetField(0, static_cast<int>(line.cross_section));
-          feature.SetField(1, line.distance);
-          add_line(layer, feature, line.points, path, capture);
-        }
-      });
+  write_line_layer(path, format, srs_wkt, "profiles",
+                   {{"section", OFTInteger}, {"distance", OFTReal}}, [&](LineOutput& output) {
+                     for (const ProfileLine& line : lines) {
+                       output.set(0, static_cast<std::int64_t>(line.cross_section));
+                       output.set(1, line.distance);
+                       output.add(line.points);
+                     }
+                   });
 }
 
 void write_pstrokes(const std::string& path, const std::string& format,
                     const std::vector<PStroke>& strokes, const std::string& srs_wkt) {
-  write_line_layer(
-      path, format, srs_wkt, "pstrokes",
-      [](OGRLayer& layer, const GdalErrorCapture& capture) {
-        add_field(layer, "class", OFTString, capture);
-        add_field(layer, "score_m2", OFTReal, capture);
-      },
-      [&](OGRLayer& layer, const GdalErrorCapture& capture) {
-        for (const PStroke& s : strokes) {
-          OGRFeature feature(layer.GetLayerDefn());
-          feature.SetField(0, pstroke_class_name(s.cls));
-          feature.SetField(1, s.score_m2);
-          add_line(layer, feature, s.points, path, capture);
-        }
-      });
+  write_line_layer(path, format, srs_wkt, "pstrokes", {{"class", OFTString}, {"score_m2", OFTReal}},
+                   [&](LineOutput& output) {
+                     for (const PStroke& s : strokes) {
+                       output.set(0, pstroke_class_name(s.cls));
+                       output.set(1, s.score_m2);
+                       output.add(s.points);
+                     }
+                   });
 }
 
 }  // namespace tsk::io

@@ -2,7 +2,6 @@
 
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
-#include <sqlite3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,9 +10,14 @@
 #include <memory>
 
 #include "errors.h"
+#include "gpkg_connection.h"
 
 namespace tsk::io {
 namespace {
+
+using gpkg::Connection;
+using gpkg::quoted_identifier;
+using gpkg::quoted_literal;
 
 // A box as the R-tree stores it: float bounds rounded outwards. `ref` is a feature id in a
 // leaf, a child's index in its level otherwise.
@@ -88,18 +92,6 @@ void put_float(unsigned char* out, float value) {
   put_big_endian(out, bits, 4);
 }
 
-std::string quoted_identifier(const std::string& name) {
-  std::string out = "\"";
-  for (char c : name) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
-std::string quoted_literal(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
-}
-
 }  // namespace
 
 PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes) {
@@ -172,71 +164,6 @@ PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes) {
 
 namespace {
 
-// The SQLite connection under a GDAL GeoPackage dataset, used directly: prepared statements
-// bind the node blobs and ids instead of SQL text that SQLite would have to parse.
-class Connection {
- public:
-  explicit Connection(GDALDataset& dataset)
-      : db_(static_cast<sqlite3*>(dataset.GetInternalHandle("SQLITE_HANDLE"))) {
-    if (!db_) fail("GDAL does not expose the file's SQLite connection");
-  }
-
-  // A prepared statement, reset after each step() that ends it.
-  class Statement {
-   public:
-    Statement(const Connection& connection, const std::string& sql) : connection_(connection) {
-      if (sqlite3_prepare_v2(connection_.db_, sql.c_str(), -1, &statement_, nullptr) != SQLITE_OK) {
-        connection_.fail_with_message();
-      }
-    }
-    Statement(const Statement&) = delete;
-    Statement& operator=(const Statement&) = delete;
-    ~Statement() { sqlite3_finalize(statement_); }
-
-    Statement& bind(int index, std::int64_t value) {
-      check(sqlite3_bind_int64(statement_, index, value));
-      return *this;
-    }
-    Statement& bind(int index, const std::vector<unsigned char>& blob) {
-      check(sqlite3_bind_blob(statement_, index, blob.data(), static_cast<int>(blob.size()),
-                              SQLITE_STATIC));
-      return *this;
-    }
-    // Runs the statement to its next row: true if there is one, false when it is done (and it
-    // is reset, its bindings kept, to run again).
-    bool step() {
-      const int result = sqlite3_step(statement_);
-      if (result == SQLITE_ROW) return true;
-      sqlite3_reset(statement_);
-      if (result != SQLITE_DONE) connection_.fail_with_message();
-      return false;
-    }
-    std::int64_t integer(int column) const { return sqlite3_column_int64(statement_, column); }
-    double real(int column) const { return sqlite3_column_double(statement_, column); }
-
-   private:
-    void check(int result) const {
-      if (result != SQLITE_OK) connection_.fail_with_message();
-    }
-    const Connection& connection_;
-    sqlite3_stmt* statement_ = nullptr;
-  };
-
-  void run(const std::string& sql) const {
-    if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, nullptr) != SQLITE_OK) {
-      fail_with_message();
-    }
-  }
-
- private:
-  [[noreturn]] static void fail(const std::string& why) {
-    throw Error("building a GeoPackage spatial index failed: " + why);
-  }
-  [[noreturn]] void fail_with_message() const { fail(sqlite3_errmsg(db_)); }
-
-  sqlite3* db_;
-};
-
 // The triggers of the GeoPackage R-tree extension (GeoPackage 1.2, F.3) on R-tree `r`, as GDAL 3.6
 // makes them.
 std::vector<std::string> rtree_triggers(const std::string& table, const std::string& column,
@@ -277,31 +204,46 @@ std::vector<std::string> rtree_triggers(const std::string& table, const std::str
   };
 }
 
-}  // namespace
-
-void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table) {
+// The layer `table` of `dataset`, synced: GDAL creates the table and writes its extent and
+// feature count when it syncs, which must come before the connection is used behind its back.
+OGRLayer& synced_layer(GDALDataset& dataset, const std::string& table) {
   OGRLayer* layer = dataset.GetLayerByName(table.c_str());
   if (!layer) throw Error("no layer '" + table + "' to index");
-  // GDAL creates the table and writes its extent and feature count when it syncs: before the
-  // connection is used behind its back.
   if (layer->SyncToDisk() != OGRERR_NONE) {
     throw Error("building a GeoPackage spatial index failed: " + std::string(CPLGetLastErrorMsg()));
   }
-  const std::string column = layer->GetGeometryColumn();
-  const std::string fid = *layer->GetFIDColumn() ? layer->GetFIDColumn() : "fid";
-  const std::string rtree = "rtree_" + table + "_" + column;
-  const std::string t = quoted_identifier(table), c = quoted_identifier(column);
-  const Connection db(dataset);
+  return *layer;
+}
 
+std::string fid_column(OGRLayer& layer) {
+  return *layer.GetFIDColumn() ? layer.GetFIDColumn() : "fid";
+}
+
+}  // namespace
+
+void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table) {
+  OGRLayer& layer = synced_layer(dataset, table);
+  const std::string c = quoted_identifier(layer.GetGeometryColumn());
+  const Connection db(dataset, "building a GeoPackage spatial index");
   std::vector<IndexBox> boxes;
-  Connection::Statement extents(db, "SELECT " + quoted_identifier(fid) + ", ST_MinX(" + c +
-                                        "), ST_MaxX(" + c + "), ST_MinY(" + c + "), ST_MaxY(" + c +
-                                        ") FROM " + t + " WHERE " + c +
-                                        " NOT NULL AND NOT ST_IsEmpty(" + c + ")");
+  Connection::Statement extents(db, "SELECT " + quoted_identifier(fid_column(layer)) +
+                                        ", ST_MinX(" + c + "), ST_MaxX(" + c + "), ST_MinY(" + c +
+                                        "), ST_MaxY(" + c + ") FROM " + quoted_identifier(table) +
+                                        " WHERE " + c + " NOT NULL AND NOT ST_IsEmpty(" + c + ")");
   while (extents.step()) {
     boxes.push_back(
         {extents.integer(0), extents.real(1), extents.real(2), extents.real(3), extents.real(4)});
   }
+  add_gpkg_spatial_index(dataset, table, std::move(boxes));
+}
+
+void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
+                            std::vector<IndexBox> boxes) {
+  OGRLayer& layer = synced_layer(dataset, table);
+  const std::string column = layer.GetGeometryColumn();
+  const std::string fid = fid_column(layer);
+  const std::string rtree = "rtree_" + table + "_" + column;
+  const Connection db(dataset, "building a GeoPackage spatial index");
 
   db.run("CREATE VIRTUAL TABLE " + quoted_identifier(rtree) +
          " USING rtree(id, minx, maxx, miny, maxy)");

@@ -49,6 +49,10 @@ PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes);
 // if any. Throws tsk::Error with GDAL's message on failure.
 void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table);
 
+// The same with the features' boxes given (by a writer that knows them), not read back.
+void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
+                            std::vector<IndexBox> boxes);
+
 // The same for a GeoPackage file written and closed by someone else (QGIS's feature sinks), in a
 // transaction of its own. An empty `table` names the file's only layer.
 void add_gpkg_spatial_index(const std::string& path, const std::string& table);

@@ -1,0 +1,53 @@
+// Line features appended to a GeoPackage layer straight through SQLite.
+//
+// GDAL creates the file, the layer and its fields; the rows are then inserted with one prepared
+// statement, each line's GeoPackage geometry blob built in reused memory, rather than through an
+// OGRFeature and GDAL's GeoPackage writer per stroke (102 000 strokes: 0.3 s of a 0.9 s run).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gpkg_spatial_index.h"
+#include "strokes.h"
+
+class GDALDataset;
+
+namespace tsk::io {
+
+class GpkgLineAppender {
+ public:
+  // `table` is a line layer of `dataset` with no features yet whose attribute columns include
+  // `fields`, the ones every row sets, numbered in this order by set().
+  GpkgLineAppender(GDALDataset& dataset, const std::string& table,
+                   const std::vector<std::string>& fields);
+  ~GpkgLineAppender();
+  GpkgLineAppender(const GpkgLineAppender&) = delete;
+  GpkgLineAppender& operator=(const GpkgLineAppender&) = delete;
+
+  // The value of attribute `field` for the next row.
+  void set(int field, std::int64_t value);
+  void set(int field, double value);      // NaN and infinities are written as null
+  void set(int field, const char* text);  // must outlive the next add()
+  // Inserts a row: the line through `points` with the attributes set since the last row.
+  void add(const std::vector<StrokePoint>& points);
+  // Writes the layer's extent and feature count, and its spatial index in bulk.
+  void finish();
+
+ private:
+  class Rows;
+  GDALDataset& dataset_;
+  std::string table_;
+  std::unique_ptr<Rows> rows_;
+  std::vector<unsigned char> blob_;  // the geometry of the row being added
+  std::vector<IndexBox> boxes_;
+  std::string count_trigger_;  // GDAL's, dropped while rows are inserted
+  double min_x_ = std::numeric_limits<double>::infinity(), max_x_ = -min_x_;
+  double min_y_ = min_x_, max_y_ = -min_x_;
+};
+
+}  // namespace tsk::io
