@@ -77,6 +77,10 @@ GpkgLineAppender::GpkgLineAppender(GDALDataset& dataset, const std::string& tabl
 
 GpkgLineAppender::~GpkgLineAppender() = default;
 
+void GpkgLineAppender::set_null(int field) {
+  rows_->insert.bind_null(field + 2);
+}
+
 void GpkgLineAppender::set(int field, std::int64_t value) {
   rows_->insert.bind(field + 2, value);
 }
@@ -85,7 +89,7 @@ void GpkgLineAppender::set(int field, double value) {
   if (std::isfinite(value)) {
     rows_->insert.bind(field + 2, value);
   } else {
-    rows_->insert.bind_null(field + 2);
+    set_null(field);
   }
 }
 
@@ -143,6 +147,43 @@ void GpkgLineAppender::finish() {
   if (!count_trigger_.empty()) db.run(count_trigger_);
   add_gpkg_spatial_index(dataset_, table_, std::move(boxes_));
   boxes_.clear();
+}
+
+GpkgFileAppender::GpkgFileAppender(const std::string& path, const std::string& table,
+                                   const std::vector<std::string>& fields)
+    : path_(path) {
+  GDALAllRegister();
+  CPLErrorReset();
+  dataset_.reset(static_cast<GDALDataset*>(
+      GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE, nullptr, nullptr, nullptr)));
+  if (!dataset_) throw Error("cannot open '" + path + "' to write lines: " + CPLGetLastErrorMsg());
+  OGRLayer* layer = table.empty() && dataset_->GetLayerCount() == 1
+                        ? dataset_->GetLayer(0)
+                        : dataset_->GetLayerByName(table.c_str());
+  if (!layer) throw Error("'" + path + "' has no layer '" + table + "' to write lines to");
+  if (dataset_->StartTransaction() != OGRERR_NONE) {
+    throw Error("cannot start a transaction in '" + path + "': " + CPLGetLastErrorMsg());
+  }
+  lines_ = std::make_unique<GpkgLineAppender>(*dataset_, layer->GetName(), fields);
+}
+
+GpkgFileAppender::~GpkgFileAppender() {
+  if (!dataset_) return;
+  lines_.reset();
+  dataset_->RollbackTransaction();
+}
+
+void GpkgFileAppender::finish() {
+  lines_->finish();
+  lines_.reset();  // its statements end before the commit
+  if (dataset_->CommitTransaction() != OGRERR_NONE) {
+    throw Error("cannot commit the lines written to '" + path_ + "': " + CPLGetLastErrorMsg());
+  }
+  CPLErrorReset();
+  dataset_.reset();
+  if (CPLGetLastErrorType() >= CE_Failure) {
+    throw Error("closing '" + path_ + "' failed: " + CPLGetLastErrorMsg());
+  }
 }
 
 }  // namespace tsk::io

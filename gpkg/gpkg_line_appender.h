@@ -30,6 +30,7 @@ class GpkgLineAppender {
   GpkgLineAppender& operator=(const GpkgLineAppender&) = delete;
 
   // The value of attribute `field` for the next row.
+  void set_null(int field);
   void set(int field, std::int64_t value);
   void set(int field, double value);      // NaN and infinities are written as null
   void set(int field, const char* text);  // must outlive the next add()
@@ -48,6 +49,27 @@ class GpkgLineAppender {
   std::string count_trigger_;  // GDAL's, dropped while rows are inserted
   double min_x_ = std::numeric_limits<double>::infinity(), max_x_ = -min_x_;
   double min_y_ = min_x_, max_y_ = -min_x_;
+};
+
+// Lines appended to a layer of a GeoPackage file that someone else created and closed (QGIS's
+// feature sinks, made with no spatial index), in a transaction of its own: whole or not at all.
+class GpkgFileAppender {
+ public:
+  // An empty `table` names the file's only layer; `fields` as for GpkgLineAppender.
+  GpkgFileAppender(const std::string& path, const std::string& table,
+                   const std::vector<std::string>& fields);
+  ~GpkgFileAppender();  // without finish(), nothing of the lines is kept
+  GpkgFileAppender(const GpkgFileAppender&) = delete;
+  GpkgFileAppender& operator=(const GpkgFileAppender&) = delete;
+
+  GpkgLineAppender& lines() { return *lines_; }
+  // Writes the layer's extent, count and spatial index, commits and closes the file.
+  void finish();
+
+ private:
+  std::string path_;
+  std::unique_ptr<GDALDataset> dataset_;
+  std::unique_ptr<GpkgLineAppender> lines_;
 };
 
 }  // namespace tsk::io

@@ -215,33 +215,13 @@ OGRLayer& synced_layer(GDALDataset& dataset, const std::string& table) {
   return *layer;
 }
 
-std::string fid_column(OGRLayer& layer) {
-  return *layer.GetFIDColumn() ? layer.GetFIDColumn() : "fid";
-}
-
 }  // namespace
-
-void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table) {
-  OGRLayer& layer = synced_layer(dataset, table);
-  const std::string c = quoted_identifier(layer.GetGeometryColumn());
-  const Connection db(dataset, "building a GeoPackage spatial index");
-  std::vector<IndexBox> boxes;
-  Connection::Statement extents(db, "SELECT " + quoted_identifier(fid_column(layer)) +
-                                        ", ST_MinX(" + c + "), ST_MaxX(" + c + "), ST_MinY(" + c +
-                                        "), ST_MaxY(" + c + ") FROM " + quoted_identifier(table) +
-                                        " WHERE " + c + " NOT NULL AND NOT ST_IsEmpty(" + c + ")");
-  while (extents.step()) {
-    boxes.push_back(
-        {extents.integer(0), extents.real(1), extents.real(2), extents.real(3), extents.real(4)});
-  }
-  add_gpkg_spatial_index(dataset, table, std::move(boxes));
-}
 
 void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
                             std::vector<IndexBox> boxes) {
   OGRLayer& layer = synced_layer(dataset, table);
   const std::string column = layer.GetGeometryColumn();
-  const std::string fid = fid_column(layer);
+  const std::string fid = *layer.GetFIDColumn() ? layer.GetFIDColumn() : "fid";
   const std::string rtree = "rtree_" + table + "_" + column;
   const Connection db(dataset, "building a GeoPackage spatial index");
 
@@ -281,30 +261,6 @@ void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
       quoted_literal(table) + ", " + quoted_literal(column) +
       ", 'gpkg_rtree_index', 'http://www.geopackage.org/spec120/#extension_rtree', "
       "'write-only')");
-}
-
-void add_gpkg_spatial_index(const std::string& path, const std::string& table) {
-  GDALAllRegister();
-  CPLErrorReset();
-  std::unique_ptr<GDALDataset> dataset(static_cast<GDALDataset*>(
-      GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE, nullptr, nullptr, nullptr)));
-  if (!dataset) throw Error("cannot open '" + path + "' to index it: " + CPLGetLastErrorMsg());
-  OGRLayer* layer = table.empty() && dataset->GetLayerCount() == 1
-                        ? dataset->GetLayer(0)
-                        : dataset->GetLayerByName(table.c_str());
-  if (!layer) throw Error("'" + path + "' has no layer '" + table + "' to index");
-  if (dataset->StartTransaction() != OGRERR_NONE) {
-    throw Error("cannot start a transaction in '" + path + "': " + CPLGetLastErrorMsg());
-  }
-  add_gpkg_spatial_index(*dataset, layer->GetName());
-  if (dataset->CommitTransaction() != OGRERR_NONE) {
-    throw Error("cannot commit the spatial index of '" + path + "': " + CPLGetLastErrorMsg());
-  }
-  CPLErrorReset();
-  dataset.reset();
-  if (CPLGetLastErrorType() >= CE_Failure) {
-    throw Error("closing '" + path + "' failed: " + CPLGetLastErrorMsg());
-  }
 }
 
 }  // namespace tsk::io

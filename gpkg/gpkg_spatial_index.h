@@ -44,17 +44,10 @@ struct PackedRtree {
 PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes);
 
 // Gives `table` of an open GeoPackage, whose features are in and which has no spatial index yet
-// (made with the layer option SPATIAL_INDEX=NO), the R-tree, the triggers that keep it up to date
-// and the extension entry that GDAL would have made, in bulk. Runs in the caller's transaction,
-// if any. Throws tsk::Error with GDAL's message on failure.
-void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table);
-
-// The same with the features' boxes given (by a writer that knows them), not read back.
+// (made with the layer option SPATIAL_INDEX=NO), the R-tree of the features' `boxes`, the
+// triggers that keep it up to date and the extension entry that GDAL would have made, in bulk.
+// Runs in the caller's transaction, if any. Throws tsk::Error with SQLite's message on failure.
 void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
                             std::vector<IndexBox> boxes);
-
-// The same for a GeoPackage file written and closed by someone else (QGIS's feature sinks), in a
-// transaction of its own. An empty `table` names the file's only layer.
-void add_gpkg_spatial_index(const std::string& path, const std::string& table);
 
 }  // namespace tsk::io

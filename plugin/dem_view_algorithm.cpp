@@ -9,7 +9,7 @@
 #include <algorithm>
 
 #include "errors.h"
-#include "gpkg_spatial_index.h"
+#include "gpkg_line_sink.h"
 #include "plugin_paths.h"
 #include "qgis_compat.h"
 #include "raster_grid.h"
@@ -125,27 +125,29 @@ bool DemViewAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
 std::unique_ptr<QgsFeatureSink> DemViewAlgorithm::lineSink(
     const QVariantMap& parameters, const QString& key, QgsProcessingContext& context,
     QString& destination, const QgsFields& fields, const QgsCoordinateReferenceSystem& crs) {
-  const bool bulkIndex = parameterAsOutputLayer(parameters, key, context)
-                             .endsWith(QLatin1String(".gpkg"), Qt::CaseInsensitive);
+  const bool gpkg = parameterAsOutputLayer(parameters, key, context)
+                        .endsWith(QLatin1String(".gpkg"), Qt::CaseInsensitive);
   std::unique_ptr<QgsFeatureSink> sink(
       parameterAsSink(parameters, key, context, destination, fields, kLineString, crs,
                       QgsFeatureSink::SinkFlags(), QVariantMap(), QStringList(),
-                      bulkIndex ? QStringList{QStringLiteral("SPATIAL_INDEX=NO")} : QStringList()));
+                      gpkg ? QStringList{QStringLiteral("SPATIAL_INDEX=NO")} : QStringList()));
   if (!sink) throw QgsProcessingException(invalidSinkError(parameters, key));
-  if (bulkIndex) mUnindexed.insert(destination);
-  return sink;
-}
-
-void DemViewAlgorithm::closeLineSink(std::unique_ptr<QgsFeatureSink>& sink,
-                                     const QString& destination) {
+  if (!gpkg) return sink;
+  // QGIS made the file and its empty layer; closed, the lines go in through SQLite.
   sink.reset();
-  if (!mUnindexed.remove(destination)) return;
   const QVariantMap parts =
       QgsProviderRegistry::instance()->decodeUri(QStringLiteral("ogr"), destination);
-  withCoreErrors([&parts] {
-    io::add_gpkg_spatial_index(parts.value(QStringLiteral("path")).toString().toStdString(),
-                               parts.value(QStringLiteral("layerName")).toString().toStdString());
+  return withCoreErrors([&] {
+    return std::make_unique<GpkgLineSink>(parts.value(QStringLiteral("path")).toString(),
+                                          parts.value(QStringLiteral("layerName")).toString(),
+                                          fields);
   });
+}
+
+void DemViewAlgorithm::closeLineSink(std::unique_ptr<QgsFeatureSink>& sink) {
+  if (auto* gpkg = dynamic_cast<GpkgLineSink*>(sink.get()))
+    withCoreErrors([gpkg] { gpkg->finish(); });
+  sink.reset();
 }
 
 void DemViewAlgorithm::addToSink(QgsFeatureSink& sink, QgsFeature& feature,

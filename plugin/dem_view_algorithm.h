@@ -5,7 +5,6 @@
 #include <qgsprocessingalgorithm.h>
 
 #include <QCoreApplication>
-#include <QSet>
 #include <memory>
 
 #include "core_errors.h"
@@ -43,15 +42,15 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   bool prepareAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,
                         QgsProcessingFeedback* feedback) override;
 
-  // The sink of line output `key`, as parameterAsSink makes it, except that a GeoPackage file is
-  // made without a spatial index, which closeLineSink builds in bulk once the features are in
-  // (QGIS would have GDAL insert every box in turn; see gpkg_spatial_index.h).
+  // The sink of line output `key`, as parameterAsSink makes it, except that into a GeoPackage file
+  // the features go straight through SQLite, and its spatial index is built in bulk once they are
+  // in (QGIS would have GDAL insert every feature and every box in turn; see gpkg_line_sink.h).
   std::unique_ptr<QgsFeatureSink> lineSink(const QVariantMap& parameters, const QString& key,
                                            QgsProcessingContext& context, QString& destination,
                                            const QgsFields& fields,
                                            const QgsCoordinateReferenceSystem& crs);
-  // Closes a sink that lineSink made for `destination` and indexes it if it is a GeoPackage.
-  void closeLineSink(std::unique_ptr<QgsFeatureSink>& sink, const QString& destination);
+  // Closes a sink that lineSink made, finishing a GeoPackage's layer and its spatial index.
+  void closeLineSink(std::unique_ptr<QgsFeatureSink>& sink);
 
   // Adds `feature` to the sink of output `key`, failing with QGIS's write error. Every 500
   // features it checks for cancellation and moves progress from `from` towards 100 %.
@@ -74,7 +73,6 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   std::unique_ptr<RasterGrid> mRaster;
   double mAzimuth = 90;
   std::size_t mWritten = 0;
-  QSet<QString> mUnindexed;  // GeoPackage destinations that closeLineSink must index
 };
 
 }  // namespace tsk::plugin

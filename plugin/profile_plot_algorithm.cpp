@@ -75,7 +75,7 @@ QVariantMap ProfilePlotAlgorithm::processAlgorithm(const QVariantMap& parameters
     feature.setGeometry(lineGeometry(line.points));
     addToSink(*sink, feature, parameters, QStringLiteral("OUTPUT"), feedback, lines.size(), 50);
   }
-  closeLineSink(sink, mOutput);
+  closeLineSink(sink);
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), mOutput}};
 }

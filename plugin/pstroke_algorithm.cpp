@@ -109,7 +109,7 @@ QVariantMap PStrokeAlgorithm::processAlgorithm(const QVariantMap& parameters,
     feature.setGeometry(lineGeometry(s.points));
     addToSink(*sink, feature, parameters, QStringLiteral("OUTPUT"), feedback, strokes.size(), 50);
   }
-  closeLineSink(sink, mOutput);
+  closeLineSink(sink);
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), mOutput}};
 }

@@ -159,8 +159,8 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
     addToSink(isFactual ? *factual : *formulated, feature, parameters,
               isFactual ? kFactual : kFormulated, feedback, result.strokes.size(), kCoreEnd);
   }
-  closeLineSink(factual, mFactualId);
-  closeLineSink(formulated, mFormulatedId);
+  closeLineSink(factual);
+  closeLineSink(formulated);
 
   QVariantMap outputs;
   outputs.insert(kFactual, mFactualId);

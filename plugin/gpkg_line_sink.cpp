@@ -1,0 +1,70 @@
+#include "gpkg_line_sink.h"
+
+#include <qgsfeature.h>
+#include <qgsgeometry.h>
+#include <qgslinestring.h>
+
+namespace tsk::plugin {
+namespace {
+
+std::vector<std::string> fieldNames(const QgsFields& fields) {
+  std::vector<std::string> names;
+  for (int k = 0; k < fields.count(); ++k) names.push_back(fields.at(k).name().toStdString());
+  return names;
+}
+
+}  // namespace
+
+GpkgLineSink::GpkgLineSink(const QString& path, const QString& layer, const QgsFields& fields)
+    : mFile(std::make_unique<io::GpkgFileAppender>(path.toStdString(), layer.toStdString(),
+                                                   fieldNames(fields))),
+      mTexts(static_cast<std::size_t>(fields.count())) {}
+
+GpkgLineSink::~GpkgLineSink() = default;
+
+bool GpkgLineSink::addFeature(QgsFeature& feature, QgsFeatureSink::Flags) {
+  try {
+    io::GpkgLineAppender& lines = mFile->lines();
+    const QgsAttributes attributes = feature.attributes();
+    for (int k = 0; k < attributes.count() && k < static_cast<int>(mTexts.size()); ++k) {
+      const QVariant& value = attributes.at(k);
+      switch (value.isValid() && !value.isNull() ? value.userType() : QMetaType::UnknownType) {
+        case QMetaType::QString:
+          mTexts[static_cast<std::size_t>(k)] = value.toString().toUtf8();
+          lines.set(k, mTexts[static_cast<std::size_t>(k)].constData());
+          break;
+        case QMetaType::Int:
+        case QMetaType::LongLong:
+          lines.set(k, static_cast<std::int64_t>(value.toLongLong()));
+          break;
+        case QMetaType::Double:
+          lines.set(k, value.toDouble());
+          break;
+        default:
+          lines.set_null(k);
+      }
+    }
+    const auto* line = qgsgeometry_cast<const QgsLineString*>(feature.geometry().constGet());
+    if (!line) throw Error("a feature without a line");
+    mPoints.resize(static_cast<std::size_t>(line->numPoints()));
+    for (int k = 0; k < line->numPoints(); ++k)
+      mPoints[static_cast<std::size_t>(k)] = {line->xAt(k), line->yAt(k)};
+    lines.add(mPoints);
+    return true;
+  } catch (const Error& e) {
+    mError = QString::fromStdString(e.what());
+    return false;
+  }
+}
+
+bool GpkgLineSink::addFeatures(QgsFeatureList& features, QgsFeatureSink::Flags flags) {
+  for (QgsFeature& feature : features)
+    if (!addFeature(feature, flags)) return false;
+  return true;
+}
+
+void GpkgLineSink::finish() {
+  mFile->finish();
+}
+
+}  // namespace tsk::plugin
