@@ -1,7 +1,10 @@
 #include "candidates.h"
 
+#include "vector_clones.h"
+
 namespace tsk {
 
+TSK_VECTOR_CLONES
 void select_profile_candidates(const float* z, std::uint8_t* flags, std::size_t length, double d,
                                const ViewParams& view) {
   // is_candidate_slope(column_slope(...)) without branches, so that it vectorises. Its nodata

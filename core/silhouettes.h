@@ -108,8 +108,8 @@ std::size_t strip_profiles(const OrientedFrame& frame);
 
 // Runs every stage on an oriented grid (see orient.h). z_ref is the DEM's lowest height, the
 // plan-oblique reference; without it the grid's lowest height stands in (in oblique geometry),
-// which is the DEM's for a cardinal view but may lie above it for a resampled one. Throws Error on bad parameters or a
-// grid that does not match the frame, Cancelled when `progress` returns false.
+// which is the DEM's for a cardinal view but may lie above it for a resampled one. Throws Error on
+// bad parameters or a grid that does not match the frame, Cancelled when `progress` returns false.
 SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,
                                  const GeoTransform& geotransform, const SilhouetteParams& params,
                                  const ProgressFn& progress = {},

@@ -1,6 +1,8 @@
 #include "slope_filter.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "candidates.h"
 
@@ -19,11 +21,24 @@ void filter_profile(const ProfileRows& profile, std::uint8_t* flags, std::size_t
   // Local copies: the compiler cannot tell that writing flags leaves the arguments unchanged.
   const ProfileRows rows = profile;
   const FilterRule rule(filter);
-  for (std::size_t i = 0; i < length; ++i) {
-    if ((flags[i] & (cell::candidate | cell::hidden)) != cell::candidate) continue;
-    const double col_pct = std::fabs(column_slope(rows.centre, length, i, d)) * 100.0;
-    const double row_pct = std::fabs(row_slope(rows, i, w)) * 100.0;
-    if (rule.accepts(col_pct, row_pct)) flags[i] |= cell::filtered;
+  // Which cells are visible c-set cells is hard to predict, so a stretch of cells is first sifted
+  // for them without branches, and only those are then filtered, also without branching on the
+  // outcome.
+  constexpr std::size_t kStretch = 256;
+  std::uint32_t sifted[kStretch];
+  for (std::size_t begin = 0; begin < length; begin += kStretch) {
+    const std::size_t end = std::min(length, begin + kStretch);
+    std::size_t count = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+      sifted[count] = static_cast<std::uint32_t>(i - begin);
+      count += (flags[i] & (cell::candidate | cell::hidden)) == cell::candidate;
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t i = begin + sifted[k];
+      const double col_pct = std::fabs(column_slope(rows.centre, length, i, d)) * 100.0;
+      const double row_pct = std::fabs(row_slope(rows, i, w)) * 100.0;
+      flags[i] |= static_cast<std::uint8_t>(rule.accepts(col_pct, row_pct) * cell::filtered);
+    }
   }
 }
 

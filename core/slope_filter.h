@@ -51,10 +51,11 @@ class FilterRule {
   // True when (col_pct, row_pct) lies outside the removal polygon (0,0) (col_cut,0) ctrl
   // (0,row_cut), or outside the rectangle of the cut-offs when diagonals are off.
   bool accepts(double col_pct, double row_pct) const {
-    if (!diagonals_) return !(col_pct < col_cut_ && row_pct < row_cut_);
+    // Both sides of each test are worked out (&, not &&): no branch on the outcome.
+    if (!diagonals_) return !((col_pct < col_cut_) & (row_pct < row_cut_));
     const double eq3 = row_cut_ + eq3_rate_ * col_pct;
     const double eq4 = ctrl_row_ * (col_cut_ - col_pct) / eq4_run_;
-    return row_pct > eq3 && row_pct > eq4;
+    return (row_pct > eq3) & (row_pct > eq4);
   }
 
  private:

@@ -1,0 +1,13 @@
+// Marks a function whose loops the compiler vectorises to be built twice on x86-64, for the
+// baseline and for AVX2, the one to run chosen when the library loads (function multiversioning
+// through glibc's ifunc; GCC, and Clang from 14). The baseline's SSE2 cannot vectorise loops that
+// mix floats, doubles and bytes. The results are the same bit for bit: the same IEEE operations,
+// and neither clone may fuse multiplies and adds (AVX2 alone brings no FMA).
+#pragma once
+
+#if defined(__x86_64__) && defined(__ELF__) && \
+    (defined(__clang__) ? __clang_major__ >= 14 : defined(__GNUC__))
+#define TSK_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define TSK_VECTOR_CLONES
+#endif
