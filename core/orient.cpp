@@ -8,6 +8,11 @@
 #include <utility>
 
 #include "parallel.h"
+#include "vector_clones.h"
+
+#if TSK_HAS_AVX2_CODE
+#include <immintrin.h>
+#endif
 
 namespace tsk {
 namespace {
@@ -201,6 +206,16 @@ class GridCells {
  public:
   explicit GridCells(const HeightGrid& dem) : z_(dem.data()), cols_(dem.cols()) {}
   const float* at(std::size_t r, std::size_t c) const { return z_ + (r * cols_ + c); }
+#if TSK_HAS_AVX2_CODE
+  // at(r, c) is base() + row_offsets(r) + c, for four rows (below 2^31) at a time.
+  const float* base() const {
+    return z_;
+  }
+  TSK_AVX2 __m256i row_offsets(__m128i rows, __m256i) const {
+    return _mm256_mul_epu32(_mm256_cvtepu32_epi64(rows),
+                            _mm256_set1_epi64x(static_cast<long long>(cols_)));
+  }
+#endif
 
  private:
   const float* z_;
@@ -216,10 +231,48 @@ class BandCells {
     assert(k < band_.rows() && c >= band_.col_begin(k) && c < band_.col_end(k));
     return band_.heights() + (band_.row_base(k) + static_cast<std::ptrdiff_t>(c));
   }
+#if TSK_HAS_AVX2_CODE
+  // As GridCells': the rows' bases looked up in the 64-bit `lanes` set, 0 in the others.
+  const float* base() const {
+    return band_.heights();
+  }
+  TSK_AVX2 __m256i row_offsets(__m128i rows, __m256i lanes) const {
+    const __m128i k = _mm_sub_epi32(rows, _mm_set1_epi32(static_cast<int>(band_.first_row())));
+    return _mm256_mask_i32gather_epi64(
+        _mm256_setzero_si256(), reinterpret_cast<const long long*>(band_.row_bases()), k, lanes, 8);
+  }
+#endif
 
  private:
   const DemBand& band_;
 };
+
+#if TSK_HAS_AVX2_CODE
+// Helpers of BilinearSampler::run_avx2, each lane as its scalar operator() does it.
+// The 32-bit lanes of a 64-bit lane mask.
+TSK_AVX2 inline __m128i avx2_narrow(__m256d mask) {
+  return _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(
+      _mm256_castpd_si256(mask), _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7)));
+}
+
+// std::clamp(t, 0.0, 1.0)
+TSK_AVX2 inline __m256d avx2_clamp01(__m256d t) {
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+  t = _mm256_blendv_pd(t, one, _mm256_cmp_pd(one, t, _CMP_LT_OQ));
+  return _mm256_blendv_pd(t, zero, _mm256_cmp_pd(t, zero, _CMP_LT_OQ));
+}
+
+// weight < 1e-9 ? 0.0 : weight * height
+TSK_AVX2 inline __m256d avx2_term(__m256d weight, __m128 height) {
+  return _mm256_blendv_pd(_mm256_mul_pd(weight, _mm256_cvtps_pd(height)), _mm256_setzero_pd(),
+                          _mm256_cmp_pd(weight, _mm256_set1_pd(1e-9), _CMP_LT_OQ));
+}
+
+// The heights at base + at in the lanes of `mask`, nodata in the others (not read).
+TSK_AVX2 inline __m128 avx2_heights(const float* base, __m256i at, __m128 mask) {
+  return _mm256_mask_i64gather_ps(_mm_set1_ps(kNoData), base, at, mask, 4);
+}
+#endif
 
 // Bilinear sampling of a DEM of rows x cols cells held as `Cells`, with what every sample needs
 // worked out once.
@@ -263,7 +316,84 @@ class BilinearSampler {
     return std::isfinite(z) ? static_cast<float>(z) : kNoData;
   }
 
+  // Samples the positions (col0 + dcol * i, row0 + drow * i) for i in [begin, end) into out[i],
+  // as operator() samples each: four at a time where the processor has AVX2.
+  void run(double col0, double row0, double dcol, double drow, std::size_t begin, std::size_t end,
+           float* out) const {
+    std::size_t i = begin;
+#if TSK_HAS_AVX2_CODE
+    if (cpu_has_avx2()) i = run_avx2(col0, row0, dcol, drow, i, end, out);
+#endif
+    for (; i < end; ++i) {
+      const auto s = static_cast<double>(i);
+      out[i] = (*this)(col0 + dcol * s, row0 + drow * s);
+    }
+  }
+
  private:
+#if TSK_HAS_AVX2_CODE
+  // operator() on four positions at once, operation for operation in its order, so that each
+  // lane gives the same float; returns where it stopped (fewer than four positions left).
+  TSK_AVX2 std::size_t run_avx2(double col0, double row0, double dcol, double drow, std::size_t i,
+                                std::size_t end, float* out) const {
+    constexpr double kEdge = 1e-9;
+    const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+    const __m256d half = _mm256_set1_pd(0.5), low = _mm256_set1_pd(-kEdge);
+    const __m256d u_high = _mm256_set1_pd(last_col_ + kEdge);
+    const __m256d v_high = _mm256_set1_pd(last_row_ + kEdge);
+    const __m256d largest = _mm256_set1_pd(std::numeric_limits<double>::max());
+    const __m256d magnitude = _mm256_castsi256_pd(_mm256_set1_epi64x(0x7fffffffffffffffLL));
+    const __m128i max_c0 = _mm_set1_epi32(static_cast<int>(max_c0_));
+    const __m128i max_r0 = _mm_set1_epi32(static_cast<int>(max_r0_));
+    const __m128i next_row = _mm_set1_epi32(static_cast<int>(dr_));
+    const __m256i next_col = _mm256_set1_epi64x(static_cast<long long>(dc_));
+    const __m128 nodata = _mm_set1_ps(kNoData);
+    const __m256d lanes = _mm256_setr_pd(0, 1, 2, 3);
+    const float* base = cells_.base();
+    for (; i + 4 <= end; i += 4) {
+      const __m256d s = _mm256_add_pd(_mm256_set1_pd(static_cast<double>(i)), lanes);
+      const __m256d u = _mm256_sub_pd(
+          _mm256_add_pd(_mm256_set1_pd(col0), _mm256_mul_pd(_mm256_set1_pd(dcol), s)), half);
+      const __m256d v = _mm256_sub_pd(
+          _mm256_add_pd(_mm256_set1_pd(row0), _mm256_mul_pd(_mm256_set1_pd(drow), s)), half);
+      const __m256d inside = _mm256_and_pd(
+          _mm256_and_pd(_mm256_cmp_pd(u, low, _CMP_GE_OQ), _mm256_cmp_pd(u, u_high, _CMP_LE_OQ)),
+          _mm256_and_pd(_mm256_cmp_pd(v, low, _CMP_GE_OQ), _mm256_cmp_pd(v, v_high, _CMP_LE_OQ)));
+      if (_mm256_movemask_pd(inside) == 0) {
+        _mm_storeu_ps(out + i, nodata);
+        continue;
+      }
+      const __m128i inside32 = avx2_narrow(inside);
+      // Truncated and capped as operator() does, and 0 in the lanes outside (whose positions
+      // need not convert).
+      const __m128i c0 = _mm_and_si128(
+          _mm_min_epi32(_mm256_cvttpd_epi32(_mm256_max_pd(u, zero)), max_c0), inside32);
+      const __m128i r0 = _mm_and_si128(
+          _mm_min_epi32(_mm256_cvttpd_epi32(_mm256_max_pd(v, zero)), max_r0), inside32);
+      const __m256d fu = dc_ ? avx2_clamp01(_mm256_sub_pd(u, _mm256_cvtepi32_pd(c0))) : zero;
+      const __m256d fv = dr_ ? avx2_clamp01(_mm256_sub_pd(v, _mm256_cvtepi32_pd(r0))) : zero;
+      const __m256d gu = _mm256_sub_pd(one, fu), gv = _mm256_sub_pd(one, fv);
+      const __m256i lanes_in = _mm256_castpd_si256(inside);
+      const __m128 read = _mm_castsi128_ps(inside32);
+      const __m256i col = _mm256_cvtepu32_epi64(c0);
+      const __m256i near = _mm256_add_epi64(cells_.row_offsets(r0, lanes_in), col);
+      const __m256i far =
+          _mm256_add_epi64(cells_.row_offsets(_mm_add_epi32(r0, next_row), lanes_in), col);
+      const __m256d t00 = avx2_term(_mm256_mul_pd(gu, gv), avx2_heights(base, near, read));
+      const __m256d t01 = avx2_term(_mm256_mul_pd(fu, gv),
+                                    avx2_heights(base, _mm256_add_epi64(near, next_col), read));
+      const __m256d t10 = avx2_term(_mm256_mul_pd(gu, fv), avx2_heights(base, far, read));
+      const __m256d t11 = avx2_term(_mm256_mul_pd(fu, fv),
+                                    avx2_heights(base, _mm256_add_epi64(far, next_col), read));
+      const __m256d z = _mm256_add_pd(_mm256_add_pd(_mm256_add_pd(t00, t01), t10), t11);
+      const __m256d finite = _mm256_cmp_pd(_mm256_and_pd(z, magnitude), largest, _CMP_LE_OQ);
+      const __m128i keep = avx2_narrow(_mm256_and_pd(finite, inside));
+      _mm_storeu_ps(out + i, _mm_blendv_ps(nodata, _mm256_cvtpd_ps(z), _mm_castsi128_ps(keep)));
+    }
+    return i;
+  }
+#endif
+
   Cells cells_;
   double last_col_, last_row_;
   std::size_t max_c0_, max_r0_;
@@ -311,7 +441,7 @@ void resample_with(const BilinearSampler<Cells>& sample, const OrientedFrame& fr
   // Neighbouring profiles read nearly the same DEM cells, but a whole profile at a slant reads a
   // new DEM row every cell or two, more than a core's cache holds. So the profiles are sampled a
   // stretch of cells at a time, every profile in turn, while those cells' rows are in cache.
-  constexpr std::size_t kStretch = 256;
+  constexpr std::size_t kStretch = 1024;
   parallel_for(count, threads, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i0 = 0; i0 < frame.length; i0 += kStretch) {
       const std::size_t i1 = std::min(frame.length, i0 + kStretch);
@@ -324,10 +454,7 @@ void resample_with(const BilinearSampler<Cells>& sample, const OrientedFrame& fr
         const auto [lo, hi] = on_dem(col0, row0);
         const std::size_t a = std::clamp(lo, i0, i1), b = std::clamp(hi, i0, i1);
         std::fill(row + i0, row + a, kNoData);
-        for (std::size_t i = a; i < b; ++i) {
-          const auto s = static_cast<double>(i);
-          row[i] = sample(col0 + frame.px_col_per_i * s, row0 + frame.px_row_per_i * s);
-        }
+        sample.run(col0, row0, frame.px_col_per_i, frame.px_row_per_i, a, b, row);
         std::fill(row + b, row + i1, kNoData);
       }
     }

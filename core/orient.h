@@ -122,6 +122,7 @@ class DemBand {
   std::size_t col_begin(std::size_t k) const { return col_begin_[k]; }
   std::size_t col_end(std::size_t k) const { return col_end_[k]; }
   std::ptrdiff_t row_base(std::size_t k) const { return row_base_[k]; }
+  const std::ptrdiff_t* row_bases() const { return row_base_.data(); }
   const float* heights() const { return heights_.data(); }
 
  private:

@@ -1,13 +1,24 @@
-// Marks a function whose loops the compiler vectorises to be built twice on x86-64, for the
-// baseline and for AVX2, the one to run chosen when the library loads (function multiversioning
-// through glibc's ifunc; GCC, and Clang from 14). The baseline's SSE2 cannot vectorise loops that
-// mix floats, doubles and bytes. The results are the same bit for bit: the same IEEE operations,
-// and neither clone may fuse multiplies and adds (AVX2 alone brings no FMA).
+// TSK_VECTOR_CLONES marks a function whose loops the compiler vectorises to be built twice on
+// x86-64, for the baseline and for AVX2, the one to run chosen when the library loads (function
+// multiversioning through glibc's ifunc; GCC, and Clang from 14). The baseline's SSE2 cannot
+// vectorise loops that mix floats, doubles and bytes. The results are the same bit for bit: the
+// same IEEE operations, and neither clone may fuse multiplies and adds (AVX2 alone brings no FMA).
 #pragma once
 
 #if defined(__x86_64__) && defined(__ELF__) && \
     (defined(__clang__) ? __clang_major__ >= 14 : defined(__GNUC__))
 #define TSK_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+// Code written for AVX2 by hand may be built (with TSK_AVX2 on its functions) and run where
+// cpu_has_avx2() says so.
+#define TSK_HAS_AVX2_CODE 1
+#define TSK_AVX2 __attribute__((target("avx2")))
+namespace tsk {
+inline bool cpu_has_avx2() {
+  static const bool has = __builtin_cpu_supports("avx2");
+  return has;
+}
+}  // namespace tsk
 #else
 #define TSK_VECTOR_CLONES
+#define TSK_HAS_AVX2_CODE 0
 #endif
