@@ -20,24 +20,22 @@ std::size_t next_with_bit(const std::uint8_t* f, std::size_t i, std::size_t end,
   return i;
 }
 
-// Index of the candidate of `next` not yet in `used` with the smallest |cell - i| among those
-// whose [cell, reach] overlaps [lo, hi]; ties go to the smaller cell. -1 if none.
+// Index of the candidate of `next`, from index `from` on, not yet in `used` with the smallest
+// |cell - i| among those whose [cell, reach] overlaps [lo, hi]; ties go to the smaller cell. -1 if
+// none. `from` is the first candidate whose reach is at least lo.
 std::ptrdiff_t nearest_overlapping(const ProfileCandidates& next,
-                                   const std::vector<std::uint8_t>& used, std::int32_t i,
-                                   std::int32_t lo, std::int32_t hi) {
-  // Intervals on a profile are disjoint and sorted, so reach is sorted too.
-  const auto first = std::lower_bound(next.reach.begin(), next.reach.end(), lo);
+                                   const std::vector<std::uint8_t>& used, std::size_t from,
+                                   std::int32_t i, std::int32_t hi) {
   std::ptrdiff_t best = -1;
   std::int64_t best_gap = std::numeric_limits<std::int64_t>::max();
-  for (auto k = first - next.reach.begin(); k < static_cast<std::ptrdiff_t>(next.cell.size());
-       ++k) {
-    const std::int32_t j = next.cell[static_cast<std::size_t>(k)];
+  for (std::size_t k = from; k < next.cell.size(); ++k) {
+    const std::int32_t j = next.cell[k];
     if (j > hi) break;
-    if (used[static_cast<std::size_t>(k)]) continue;
+    if (used[k]) continue;
     const std::int64_t gap = std::llabs(static_cast<std::int64_t>(j) - i);
     if (gap < best_gap) {  // strict: on a tie the earlier (smaller j) stays
       best_gap = gap;
-      best = k;
+      best = static_cast<std::ptrdiff_t>(k);
     }
   }
   return best;
@@ -102,11 +100,20 @@ const std::vector<ChainRef>& ChainLinker::add_profile(ProfileCandidates next) {
   joined_.assign(next.cell.size(), ChainRef{0, 0});
   closed_.clear();
   still_open_.clear();
+  // Where each last cell's search starts in `next`: the first candidate reaching its low end.
+  // Both profiles are sorted and so are the low ends, so one merge finds them all.
+  const auto low_end = [this](std::size_t k) {
+    return factual_ ? last_.cell[k] : last_.cell[k] - window_;
+  };
+  search_from_.resize(last_.cell.size());
+  for (std::size_t k = 0, from = 0; k < last_.cell.size(); ++k) {
+    while (from < next.reach.size() && next.reach[from] < low_end(k)) ++from;
+    search_from_[k] = from;
+  }
   for (const Open& o : open_) {
     const std::int32_t i = last_.cell[o.k];
-    const std::int32_t lo = factual_ ? i : i - window_;
     const std::int32_t hi = factual_ ? last_.reach[o.k] : i + window_;
-    const std::ptrdiff_t found = nearest_overlapping(next, used_, i, lo, hi);
+    const std::ptrdiff_t found = nearest_overlapping(next, used_, search_from_[o.k], i, hi);
     if (found < 0) {
       closed_.push_back(o.chain);
       continue;

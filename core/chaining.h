@@ -72,6 +72,7 @@ class ChainLinker {
   std::vector<Open> open_, still_open_;
   std::vector<ChainRef> joined_, closed_;
   std::vector<std::uint8_t> used_;
+  std::vector<std::size_t> search_from_;  // per candidate of the last profile
   std::vector<std::uint32_t> free_slots_;
   std::size_t started_ = 0;
   std::uint32_t slot_count_ = 0;
