@@ -2,23 +2,10 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <cstring>
 #include <limits>
 
 namespace tsk {
 namespace {
-
-// The first cell from `i` on whose flags have `bit`, or `end`. Few cells are occluding or in the
-// t-set, so the cells are read eight at a time.
-std::size_t next_with_bit(const std::uint8_t* f, std::size_t i, std::size_t end, std::uint8_t bit) {
-  const std::uint64_t in_any_byte = 0x0101010101010101ull * bit;
-  for (std::uint64_t word; i + 8 <= end; i += 8) {
-    std::memcpy(&word, f + i, sizeof word);
-    if (word & in_any_byte) break;
-  }
-  while (i < end && !(f[i] & bit)) ++i;
-  return i;
-}
 
 // Index of the candidate of `next`, from index `from` on, not yet in `used` with the smallest
 // |cell - i| among those whose [cell, reach] overlaps [lo, hi]; ties go to the smaller cell. -1 if
@@ -66,8 +53,8 @@ ProfileCandidates profile_candidates(const std::uint8_t* f, std::size_t length, 
                                      std::size_t first) {
   const std::uint8_t bit = factual ? cell::occluding : cell::thinned;
   ProfileCandidates out;
-  for (std::size_t i = next_with_bit(f, first, length, bit); i < length;
-       i = next_with_bit(f, i, length, bit)) {
+  for (std::size_t i = next_cell_with(f, first, length, bit); i < length;
+       i = next_cell_with(f, i, length, bit)) {
     const auto index = static_cast<std::int32_t>(i);
     out.cell.push_back(index);
     out.reach.push_back(index);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 
 #include "grid.h"
 
@@ -17,5 +18,18 @@ constexpr std::uint8_t thinned = 32;   // t-set: what thinning keeps of the f-se
 }  // namespace cell
 
 using CellFlags = Grid<std::uint8_t>;
+
+// The first cell from `i` on whose flags have `bit`, or `end`: for bits that few cells have, so
+// the cells are read eight at a time.
+inline std::size_t next_cell_with(const std::uint8_t* f, std::size_t i, std::size_t end,
+                                  std::uint8_t bit) {
+  const std::uint64_t in_any_byte = 0x0101010101010101ull * bit;
+  for (std::uint64_t word; i + 8 <= end; i += 8) {
+    std::memcpy(&word, f + i, sizeof word);
+    if (word & in_any_byte) break;
+  }
+  while (i < end && !(f[i] & bit)) ++i;
+  return i;
+}
 
 }  // namespace tsk

@@ -3,12 +3,8 @@
 namespace tsk {
 
 void thin_profile(std::uint8_t* flags, std::size_t length, Placement placement) {
-  std::size_t i = 0;
-  while (i < length) {
-    if (!(flags[i] & cell::filtered)) {
-      ++i;
-      continue;
-    }
+  for (std::size_t i = next_cell_with(flags, 0, length, cell::filtered); i < length;
+       i = next_cell_with(flags, i, length, cell::filtered)) {
     const std::size_t first = i;
     while (i + 1 < length && (flags[i + 1] & cell::filtered)) ++i;
     const std::size_t last = i;
