@@ -518,7 +518,6 @@ void DemBand::load(const OrientedFrame& frame, std::size_t first, std::size_t co
   const std::size_t end_row = clamped_floor(y_max + 0.5 + kMargin + 1, frame.dem_rows);
   const std::size_t rows = end_row > first_row_ ? end_row - first_row_ : 0;
   col_begin_.resize(rows), col_end_.resize(rows), row_base_.resize(rows);
-  std::size_t cells = 0;
   for (std::size_t k = 0; k < rows; ++k) {
     const auto r = static_cast<double>(first_row_ + k);
     const auto [x_lo, x_hi] = x_range_in_rows(corners, r - 0.5 - kMargin, r + 1.5 + kMargin);
@@ -527,28 +526,41 @@ void DemBand::load(const OrientedFrame& frame, std::size_t first, std::size_t co
         x_lo <= x_hi ? clamped_floor(x_hi + 0.5 + kMargin + 1, frame.dem_cols) : 0;
     col_begin_[k] = begin;
     col_end_[k] = std::max(begin, end);
-    row_base_[k] = static_cast<std::ptrdiff_t>(cells) - static_cast<std::ptrdiff_t>(begin);
-    cells += col_end_[k] - begin;
+  }
+  // Rows are read a few at a time, each chunk as the window spanning their runs, straight into
+  // the band: a row holds the window's columns. A chunk grows while its window stays within an
+  // eighth more than its widest run (a diagonal band's runs shift from row to row).
+  constexpr std::size_t kMostChunkRows = 64;
+  struct Chunk {
+    std::size_t k0, k1, c0, c1, offset;
+  };
+  std::vector<Chunk> chunks;
+  std::size_t cells = 0;
+  for (std::size_t k0 = 0; k0 < rows;) {
+    Chunk chunk{k0, k0 + 1, col_begin_[k0], col_end_[k0], cells};
+    std::size_t widest = col_end_[k0] - col_begin_[k0];
+    while (chunk.k1 < rows && chunk.k1 - k0 < kMostChunkRows) {
+      const std::size_t k = chunk.k1;
+      const std::size_t c0 = std::min(chunk.c0, col_begin_[k]);
+      const std::size_t c1 = std::max(chunk.c1, col_end_[k]);
+      const std::size_t run = std::max(widest, col_end_[k] - col_begin_[k]);
+      if ((c1 - c0) * 8 > run * 9) break;
+      chunk.c0 = c0, chunk.c1 = c1, widest = run, ++chunk.k1;
+    }
+    const std::size_t width = chunk.c1 - chunk.c0;
+    for (std::size_t k = chunk.k0; k < chunk.k1; ++k) {
+      row_base_[k] = static_cast<std::ptrdiff_t>(cells + (k - chunk.k0) * width) -
+                     static_cast<std::ptrdiff_t>(chunk.c0);
+    }
+    cells += (chunk.k1 - chunk.k0) * width;
+    chunks.push_back(chunk);
+    k0 = chunk.k1;
   }
   heights_.resize(cells);
-  // Rows are read a few at a time, as the window spanning their runs, then cut to their runs.
-  constexpr std::size_t kChunkRows = 64;
-  for (std::size_t k0 = 0; k0 < rows; k0 += kChunkRows) {
-    const std::size_t k1 = std::min(rows, k0 + kChunkRows);
-    std::size_t c0 = frame.dem_cols, c1 = 0;
-    for (std::size_t k = k0; k < k1; ++k) {
-      if (col_begin_[k] == col_end_[k]) continue;
-      c0 = std::min(c0, col_begin_[k]), c1 = std::max(c1, col_end_[k]);
-    }
-    if (c0 >= c1) continue;
-    const DemWindow window{first_row_ + k0, c0, k1 - k0, c1 - c0};
-    chunk_.resize(window.rows * window.cols);
-    read(window, chunk_.data());
-    for (std::size_t k = k0; k < k1; ++k) {
-      const float* src = chunk_.data() + (k - k0) * window.cols;
-      std::copy(src + (col_begin_[k] - c0), src + (col_end_[k] - c0),
-                heights_.data() + (row_base_[k] + static_cast<std::ptrdiff_t>(col_begin_[k])));
-    }
+  for (const Chunk& chunk : chunks) {
+    if (chunk.c0 >= chunk.c1) continue;
+    read({first_row_ + chunk.k0, chunk.c0, chunk.k1 - chunk.k0, chunk.c1 - chunk.c0},
+         heights_.data() + chunk.offset);
   }
 }
 

@@ -101,7 +101,8 @@ void read_row_blocks(
 double dem_lowest_height(std::size_t rows, std::size_t cols, const WindowReader& read);
 
 // The DEM cells that the bilinear samples of profiles [first, first + count) of a resampled frame
-// read, and no others: DEM rows [first_row, first_row + rows), each with its own run of columns.
+// read, and few others: DEM rows [first_row, first_row + rows), each with its own run of columns
+// (held with the columns of the runs of the rows read with it, at most an eighth more).
 // A strip of a non-cardinal view lies diagonally on the DEM, so its bounding window can be the
 // whole DEM; the band holds about as many cells as the strip.
 class DemBand {
@@ -131,7 +132,6 @@ class DemBand {
   std::vector<std::size_t> col_begin_, col_end_;
   std::vector<std::ptrdiff_t> row_base_;
   std::vector<float, LargePageAllocator<float>> heights_;
-  std::vector<float> chunk_;  // rows read at once, before they are cut to their runs
 };
 
 // resample_profiles from the band of those profiles (DemBand::load), with the same heights;
