@@ -117,7 +117,7 @@ tsk::SilhouetteResult run_once(const tsk::HeightGrid& dem, double azimuth, unsig
 // prints the stages of the median run and returns its wall time. One result is alive at a time,
 // so the peak memory is that of one run.
 double timed_run(const tsk::HeightGrid& dem, double azimuth, unsigned threads, const char* label,
-                 tsk::StageStats* stats = nullptr, tsk::StageTimings* timings = nullptr) {
+                 tsk::StageStats* stats = nullptr) {
   struct Run {
     double whole, orient_s;
     tsk::StageTimings timings;
@@ -132,7 +132,6 @@ double timed_run(const tsk::HeightGrid& dem, double azimuth, unsigned threads, c
   }
   std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.whole < b.whole; });
   const Run& median = runs[1];
-  if (timings) *timings = median.timings;
   print_stages(label, median.timings, median.whole, static_cast<double>(dem.size()));
   if (median.orient_s > 0) {
     std::printf("  %-22s (resampling %.3f s, alongside the stages; runs %.3f / %.3f / %.3f s)\n",
@@ -152,8 +151,7 @@ void bench_size(std::size_t n, bool with_gdaldem) {
   std::printf("\n== synthetic %zux%zu (%.0f MiB Float32), generated in %.2f s\n", n, n, raster_mib,
               gen);
   tsk::StageStats stats;
-  tsk::StageTimings all_cores, one_thread;
-  const double whole = timed_run(dem, 90, 0, "azimuth 90, all cores", &stats, &all_cores);
+  const double whole = timed_run(dem, 90, 0, "azimuth 90, all cores", &stats);
   const double peak = peak_rss_mib();
   std::printf(
       "  %zu factual + %zu formulated strokes; c-set %.1f %%, f-set %.1f %%, t-set %.1f %%, "
@@ -161,15 +159,9 @@ void bench_size(std::size_t n, bool with_gdaldem) {
       stats.factual_strokes, stats.formulated_strokes, stats.pct(stats.candidate),
       stats.pct(stats.filtered), stats.pct(stats.thinned), stats.pct(stats.generalised));
   std::printf("  peak memory %.0f MiB = %.2f x the raster's bytes\n", peak, peak / raster_mib);
-  const double single = timed_run(dem, 90, 1, "azimuth 90, 1 thread", nullptr, &one_thread);
-  // The stages that run profile by profile on every core; chaining includes the linking, which
-  // runs in scan order on one.
-  const auto per_profile = [](const tsk::StageTimings& t) {
-    return t.visibility + t.candidates + t.filter + t.thinning;
-  };
-  std::printf("  %-22s %.2f x on %u threads (the per-profile stages before chaining: %.2f x)\n",
-              "thread speed-up", single / whole, tsk::resolve_threads(0),
-              per_profile(one_thread) / per_profile(all_cores));
+  const double single = timed_run(dem, 90, 1, "azimuth 90, 1 thread");
+  std::printf("  %-22s %.2f x on %u threads\n", "thread speed-up", single / whole,
+              tsk::resolve_threads(0));
   const double oblique = timed_run(dem, 45, 0, "azimuth 45, all cores");
   std::printf("  %-22s %.2f x the cardinal time\n", "non-cardinal cost", oblique / whole);
 #ifdef TSK_BENCH_WITH_GDAL
