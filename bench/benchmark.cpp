@@ -143,6 +143,25 @@ double timed_run(const tsk::HeightGrid& dem, double azimuth, unsigned threads, c
   return median.whole;
 }
 
+// The stages that run profile by profile, from visibility to thinning, each over the whole grid
+// on `threads` threads (seen from the west the DEM is the oriented grid): the median of three.
+double per_profile_stages(const tsk::HeightGrid& dem, unsigned threads) {
+  const tsk::SilhouetteParams params;
+  const double d = 25, w = 25;
+  std::vector<double> runs;
+  tsk::CellFlags flags;
+  for (int run = 0; run < 3; ++run) {
+    const auto t = Clock::now();
+    tsk::classify_visibility(dem, d, params.view, flags, threads);
+    tsk::select_candidates(dem, d, params.view, flags, threads);
+    tsk::apply_slope_filter(dem, d, w, params.filter, flags, threads);
+    tsk::thin(flags, params.placement, threads);
+    runs.push_back(seconds_since(t));
+  }
+  std::sort(runs.begin(), runs.end());
+  return runs[1];
+}
+
 void bench_size(std::size_t n, bool with_gdaldem) {
   const auto t_gen = Clock::now();
   const tsk::HeightGrid dem = synthetic_dem(n);
@@ -162,6 +181,11 @@ void bench_size(std::size_t n, bool with_gdaldem) {
   const double single = timed_run(dem, 90, 1, "azimuth 90, 1 thread");
   std::printf("  %-22s %.2f x on %u threads\n", "thread speed-up", single / whole,
               tsk::resolve_threads(0));
+  const double stages_1 = per_profile_stages(dem, 1), stages_all = per_profile_stages(dem, 0);
+  std::printf(
+      "  %-22s visibility to thinning, grid by grid: %.3f s on 1 thread, %.3f s on %u: "
+      "%.2f x\n",
+      "per-profile stages", stages_1, stages_all, tsk::resolve_threads(0), stages_1 / stages_all);
   const double oblique = timed_run(dem, 45, 0, "azimuth 45, all cores");
   std::printf("  %-22s %.2f x the cardinal time\n", "non-cardinal cost", oblique / whole);
 #ifdef TSK_BENCH_WITH_GDAL

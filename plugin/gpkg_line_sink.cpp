@@ -44,7 +44,8 @@ bool GpkgLineSink::addFeature(QgsFeature& feature, QgsFeatureSink::Flags) {
           lines.set_null(k);
       }
     }
-    const auto* line = qgsgeometry_cast<const QgsLineString*>(feature.geometry().constGet());
+    const QgsGeometry geometry = feature.geometry();
+    const auto* line = qgsgeometry_cast<const QgsLineString*>(geometry.constGet());
     if (!line) throw Error("a feature without a line");
     mPoints.resize(static_cast<std::size_t>(line->numPoints()));
     for (int k = 0; k < line->numPoints(); ++k)
