@@ -7,15 +7,14 @@ namespace tsk {
 TSK_VECTOR_CLONES
 void select_profile_candidates(const float* z, std::uint8_t* flags, std::size_t length, double d,
                                const ViewParams& view) {
-  // is_candidate_slope(column_slope(...)) without branches, so that it vectorises. Its nodata
-  // checks are not needed: with ve > 0 and d > 0, a NaN or infinite height at either end gives a
-  // NaN or infinite exaggerated slope, which fails one of the two comparisons.
-  const double ve = view.ve, steepest = -view.base_slope();
+  // is_candidate_slope(column_slope(...)) without column_slope's nodata checks, so that it
+  // vectorises. They are not needed: with ve > 0 and d > 0, a NaN or infinite height at either
+  // end gives a NaN or infinite slope, which fails one of the rule's comparisons. (A local copy
+  // of the view: the compiler cannot tell that writing flags leaves it unchanged.)
+  const ViewParams local_view = view;
   for (std::size_t i = 0; i + 1 < length; ++i) {
-    const double exaggerated =
-        ve * ((static_cast<double>(z[i + 1]) - static_cast<double>(z[i])) / d);
-    const bool candidate = (exaggerated < 0.0) & (exaggerated > steepest);
-    flags[i] |= static_cast<std::uint8_t>(candidate * cell::candidate);
+    const double gc = (static_cast<double>(z[i + 1]) - static_cast<double>(z[i])) / d;
+    flags[i] |= static_cast<std::uint8_t>(is_candidate_slope(gc, local_view) * cell::candidate);
   }
 }
 

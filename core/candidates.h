@@ -20,10 +20,11 @@ inline double column_slope(const float* z, std::size_t length, std::size_t i, do
   return (static_cast<double>(z[i + 1]) - static_cast<double>(z[i])) / d;
 }
 
-// The c-set rule: back-facing (gc < 0) yet front-facing once exaggerated and tilted.
+// The c-set rule: back-facing (gc < 0) yet front-facing once exaggerated and tilted. Both
+// comparisons are worked out (&, not &&), so that a loop over cells has no branch on the outcome.
 inline bool is_candidate_slope(double gc, const ViewParams& view) {
   const double exaggerated = view.ve * gc;
-  return exaggerated < 0.0 && exaggerated > -view.base_slope();
+  return (exaggerated < 0.0) & (exaggerated > -view.base_slope());
 }
 
 // Sets `candidate` on the cells of one profile that satisfy -B < ve * gc < 0.
