@@ -95,8 +95,7 @@ class OgrLineOutput : public LineOutput {
 // Features straight into a GeoPackage's SQLite tables (gpkg_line_appender.h).
 class GpkgLineOutput : public LineOutput {
  public:
-  GpkgLineOutput(GDALDataset& dataset, OGRLayer& layer)
-      : appender_(dataset, layer.GetName(), field_names(layer)) {}
+  GpkgLineOutput(GDALDataset& dataset, OGRLayer& layer) : appender_(dataset, layer.GetName()) {}
   void set(int field, std::int64_t value) override { appender_.set(field, value); }
   void set(int field, double value) override { appender_.set(field, value); }
   void set(int field, const char* text) override { appender_.set(field, text); }
@@ -104,13 +103,6 @@ class GpkgLineOutput : public LineOutput {
   void finish() { appender_.finish(); }
 
  private:
-  static std::vector<std::string> field_names(OGRLayer& layer) {
-    std::vector<std::string> names;
-    const OGRFeatureDefn* defn = layer.GetLayerDefn();
-    for (int k = 0; k < defn->GetFieldCount(); ++k)
-      names.push_back(defn->GetFieldDefn(k)->GetNameRef());
-    return names;
-  }
   GpkgLineAppender appender_;
 };
 

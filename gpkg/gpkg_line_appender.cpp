@@ -41,8 +41,7 @@ class GpkgLineAppender::Rows {
   Connection::Statement insert;
 };
 
-GpkgLineAppender::GpkgLineAppender(GDALDataset& dataset, const std::string& table,
-                                   const std::vector<std::string>& fields)
+GpkgLineAppender::GpkgLineAppender(GDALDataset& dataset, const std::string& table)
     : dataset_(dataset), table_(table) {
   OGRLayer* layer = dataset.GetLayerByName(table.c_str());
   if (!layer) throw Error("no layer '" + table + "' to write to");
@@ -51,8 +50,9 @@ GpkgLineAppender::GpkgLineAppender(GDALDataset& dataset, const std::string& tabl
     throw Error(std::string(kWhat) + " failed: " + CPLGetLastErrorMsg());
   }
   std::string columns = quoted_identifier(layer->GetGeometryColumn()), values = "?";
-  for (const std::string& field : fields)
-    columns += ", " + quoted_identifier(field), values += ", ?";
+  const OGRFeatureDefn* fields = layer->GetLayerDefn();
+  for (int k = 0; k < fields->GetFieldCount(); ++k)
+    columns += ", " + quoted_identifier(fields->GetFieldDefn(k)->GetNameRef()), values += ", ?";
   rows_ = std::make_unique<Rows>(dataset, "INSERT INTO " + quoted_identifier(table) + " (" +
                                               columns + ") VALUES (" + values + ")");
   Connection::Statement srs(rows_->db,
@@ -149,8 +149,7 @@ void GpkgLineAppender::finish() {
   boxes_.clear();
 }
 
-GpkgFileAppender::GpkgFileAppender(const std::string& path, const std::string& table,
-                                   const std::vector<std::string>& fields)
+GpkgFileAppender::GpkgFileAppender(const std::string& path, const std::string& table)
     : path_(path) {
   GDALAllRegister();
   CPLErrorReset();
@@ -164,7 +163,7 @@ GpkgFileAppender::GpkgFileAppender(const std::string& path, const std::string& t
   if (dataset_->StartTransaction() != OGRERR_NONE) {
     throw Error("cannot start a transaction in '" + path + "': " + CPLGetLastErrorMsg());
   }
-  lines_ = std::make_unique<GpkgLineAppender>(*dataset_, layer->GetName(), fields);
+  lines_ = std::make_unique<GpkgLineAppender>(*dataset_, layer->GetName());
 }
 
 GpkgFileAppender::~GpkgFileAppender() {

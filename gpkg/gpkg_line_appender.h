@@ -21,10 +21,9 @@ namespace tsk::io {
 
 class GpkgLineAppender {
  public:
-  // `table` is a line layer of `dataset` with no features yet whose attribute columns include
-  // `fields`, the ones every row sets, numbered in this order by set().
-  GpkgLineAppender(GDALDataset& dataset, const std::string& table,
-                   const std::vector<std::string>& fields);
+  // `table` is a line layer of `dataset` with no features yet; set() numbers its attribute
+  // fields in the layer's order, and every row sets them all.
+  GpkgLineAppender(GDALDataset& dataset, const std::string& table);
   ~GpkgLineAppender();
   GpkgLineAppender(const GpkgLineAppender&) = delete;
   GpkgLineAppender& operator=(const GpkgLineAppender&) = delete;
@@ -55,9 +54,8 @@ class GpkgLineAppender {
 // feature sinks, made with no spatial index), in a transaction of its own: whole or not at all.
 class GpkgFileAppender {
  public:
-  // An empty `table` names the file's only layer; `fields` as for GpkgLineAppender.
-  GpkgFileAppender(const std::string& path, const std::string& table,
-                   const std::vector<std::string>& fields);
+  // An empty `table` names the file's only layer.
+  GpkgFileAppender(const std::string& path, const std::string& table);
   ~GpkgFileAppender();  // without finish(), nothing of the lines is kept
   GpkgFileAppender(const GpkgFileAppender&) = delete;
   GpkgFileAppender& operator=(const GpkgFileAppender&) = delete;

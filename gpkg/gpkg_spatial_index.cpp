@@ -204,24 +204,14 @@ std::vector<std::string> rtree_triggers(const std::string& table, const std::str
   };
 }
 
-// The layer `table` of `dataset`, synced: GDAL creates the table and writes its extent and
-// feature count when it syncs, which must come before the connection is used behind its back.
-OGRLayer& synced_layer(GDALDataset& dataset, const std::string& table) {
-  OGRLayer* layer = dataset.GetLayerByName(table.c_str());
-  if (!layer) throw Error("no layer '" + table + "' to index");
-  if (layer->SyncToDisk() != OGRERR_NONE) {
-    throw Error("building a GeoPackage spatial index failed: " + std::string(CPLGetLastErrorMsg()));
-  }
-  return *layer;
-}
-
 }  // namespace
 
 void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
                             std::vector<IndexBox> boxes) {
-  OGRLayer& layer = synced_layer(dataset, table);
-  const std::string column = layer.GetGeometryColumn();
-  const std::string fid = *layer.GetFIDColumn() ? layer.GetFIDColumn() : "fid";
+  OGRLayer* layer = dataset.GetLayerByName(table.c_str());
+  if (!layer) throw Error("no layer '" + table + "' to index");
+  const std::string column = layer->GetGeometryColumn();
+  const std::string fid = *layer->GetFIDColumn() ? layer->GetFIDColumn() : "fid";
   const std::string rtree = "rtree_" + table + "_" + column;
   const Connection db(dataset, "building a GeoPackage spatial index");
 

@@ -43,8 +43,9 @@ struct PackedRtree {
 // sets how many boxes a node holds). Any number of boxes, none included.
 PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes);
 
-// Gives `table` of an open GeoPackage, whose features are in and which has no spatial index yet
-// (made with the layer option SPATIAL_INDEX=NO), the R-tree of the features' `boxes`, the
+// Gives `table` of an open GeoPackage, whose features are in (its table written, as GDAL does when
+// it syncs the layer) and which has no spatial index yet (made with the layer option
+// SPATIAL_INDEX=NO), the R-tree of the features' `boxes`, the
 // triggers that keep it up to date and the extension entry that GDAL would have made, in bulk.
 // Runs in the caller's transaction, if any. Throws tsk::Error with SQLite's message on failure.
 void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,

@@ -5,19 +5,9 @@
 #include <qgslinestring.h>
 
 namespace tsk::plugin {
-namespace {
-
-std::vector<std::string> fieldNames(const QgsFields& fields) {
-  std::vector<std::string> names;
-  for (int k = 0; k < fields.count(); ++k) names.push_back(fields.at(k).name().toStdString());
-  return names;
-}
-
-}  // namespace
 
 GpkgLineSink::GpkgLineSink(const QString& path, const QString& layer, const QgsFields& fields)
-    : mFile(std::make_unique<io::GpkgFileAppender>(path.toStdString(), layer.toStdString(),
-                                                   fieldNames(fields))),
+    : mFile(std::make_unique<io::GpkgFileAppender>(path.toStdString(), layer.toStdString())),
       mTexts(static_cast<std::size_t>(fields.count())) {}
 
 GpkgLineSink::~GpkgLineSink() = default;

@@ -17,7 +17,7 @@ namespace tsk::plugin {
 
 class GpkgLineSink : public QgsFeatureSink {
  public:
-  // Layer `layer` of the GeoPackage at `path`, with `fields`, closed by QGIS and still empty.
+  // Layer `layer` of the GeoPackage at `path`, made by QGIS with `fields`, closed and still empty.
   GpkgLineSink(const QString& path, const QString& layer, const QgsFields& fields);
   ~GpkgLineSink() override;
 
