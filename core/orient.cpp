@@ -429,32 +429,39 @@ void resample_with(const BilinearSampler<Cells>& sample, const OrientedFrame& fr
   }
   if (out.rows() != count || out.cols() != frame.length)
     out = HeightGrid(count, frame.length, kUnset);
-  // Cells [lo, hi) of each profile fall on the DEM (the sampler still checks); the margins of
-  // the line-of-sight grid, up to half of it, are nodata.
-  const auto on_dem = [&](double col0, double row0) {
-    auto [lo, hi] = inside_range(col0, frame.px_col_per_i, frame.dem_cols, frame.length);
-    const auto rows = inside_range(row0, frame.px_row_per_i, frame.dem_rows, frame.length);
-    lo = std::max(lo, rows.first);
-    hi = std::min(hi, rows.second);
-    return lo < hi ? std::make_pair(lo, hi) : std::make_pair(std::size_t{0}, std::size_t{0});
+  // Where each profile starts in pixel coordinates (frame.to_pixel(p, i) with the profile's part
+  // worked out once, same rounding) and its cells [lo, hi) that fall on the DEM (the sampler
+  // still checks); the margins of the line-of-sight grid, up to half of it, are nodata.
+  struct Profile {
+    double col0, row0;
+    std::size_t lo, hi;
+  };
+  const auto profile = [&](std::size_t k) {
+    const auto p = static_cast<double>(first + k);
+    Profile pr{frame.px_col0 + frame.px_col_per_p * p, frame.px_row0 + frame.px_row_per_p * p, 0,
+               0};
+    const auto cols = inside_range(pr.col0, frame.px_col_per_i, frame.dem_cols, frame.length);
+    const auto rows = inside_range(pr.row0, frame.px_row_per_i, frame.dem_rows, frame.length);
+    pr.lo = std::max(cols.first, rows.first);
+    pr.hi = std::min(cols.second, rows.second);
+    if (pr.lo >= pr.hi) pr.lo = pr.hi = 0;
+    return pr;
   };
   // Neighbouring profiles read nearly the same DEM cells, but a whole profile at a slant reads a
   // new DEM row every cell or two, more than a core's cache holds. So the profiles are sampled a
   // stretch of cells at a time, every profile in turn, while those cells' rows are in cache.
   constexpr std::size_t kStretch = 1024;
   parallel_for(count, threads, [&](std::size_t begin, std::size_t end) {
+    std::vector<Profile> profiles(end - begin);
+    for (std::size_t k = begin; k < end; ++k) profiles[k - begin] = profile(k);
     for (std::size_t i0 = 0; i0 < frame.length; i0 += kStretch) {
       const std::size_t i1 = std::min(frame.length, i0 + kStretch);
       for (std::size_t k = begin; k < end; ++k) {
-        const auto p = static_cast<double>(first + k);
+        const Profile& pr = profiles[k - begin];
         float* row = out.row(k);
-        // frame.to_pixel(p, i), with the profile's part worked out once (same rounding).
-        const double col0 = frame.px_col0 + frame.px_col_per_p * p;
-        const double row0 = frame.px_row0 + frame.px_row_per_p * p;
-        const auto [lo, hi] = on_dem(col0, row0);
-        const std::size_t a = std::clamp(lo, i0, i1), b = std::clamp(hi, i0, i1);
+        const std::size_t a = std::clamp(pr.lo, i0, i1), b = std::clamp(pr.hi, i0, i1);
         std::fill(row + i0, row + a, kNoData);
-        sample.run(col0, row0, frame.px_col_per_i, frame.px_row_per_i, a, b, row);
+        sample.run(pr.col0, pr.row0, frame.px_col_per_i, frame.px_row_per_i, a, b, row);
         std::fill(row + b, row + i1, kNoData);
       }
     }
