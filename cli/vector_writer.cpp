@@ -164,10 +164,7 @@ void write_strokes(const std::string& path, const std::string& format, const std
   for (const StrokeRealField& f : stroke_real_fields()) fields.push_back({f.name, OFTReal});
   write_line_layer(path, format, srs_wkt, layer_name, fields, [&](LineOutput& output) {
     produce([&](const Stroke& s) {
-      output.set(0, stroke_class_name(s.cls));
-      output.set(1, std::int64_t{s.cells});
-      int index = 2;
-      for (const StrokeRealField& f : stroke_real_fields()) output.set(index++, s.*(f.member));
+      set_stroke_attributes(output, s);
       output.add(s.points);
     });
   });

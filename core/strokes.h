@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "chaining.h"
@@ -49,6 +50,17 @@ struct StrokeRealField {
   double Stroke::*member;
 };
 const std::vector<StrokeRealField>& stroke_real_fields();
+
+// Hands the attributes of `stroke` to `row` by field position in output order: class (text),
+// cells, then stroke_real_fields(). `row` has set(int, const char*), set(int, std::int64_t) and
+// set(int, double).
+template <typename Row>
+void set_stroke_attributes(Row& row, const Stroke& stroke) {
+  row.set(0, stroke_class_name(stroke.cls));
+  row.set(1, std::int64_t{stroke.cells});
+  int field = 2;
+  for (const StrokeRealField& f : stroke_real_fields()) row.set(field++, stroke.*(f.member));
+}
 
 // What placing stroke cells needs to know about the grid and the view. The grid may hold only a
 // strip of profiles: its row 0 is profile `first_profile`.

@@ -1,15 +1,13 @@
 #include "dem_view_algorithm.h"
 
-#include <qgsfeaturesink.h>
 #include <qgsprocessingfeedback.h>
-#include <qgsproviderregistry.h>
 #include <qgsrasterlayer.h>
 
 #include <QIcon>
 #include <algorithm>
 
 #include "errors.h"
-#include "gpkg_line_sink.h"
+#include "line_output.h"
 #include "plugin_paths.h"
 #include "qgis_compat.h"
 #include "raster_grid.h"
@@ -122,40 +120,10 @@ bool DemViewAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
   return true;
 }
 
-std::unique_ptr<QgsFeatureSink> DemViewAlgorithm::lineSink(
-    const QVariantMap& parameters, const QString& key, QgsProcessingContext& context,
-    QString& destination, const QgsFields& fields, const QgsCoordinateReferenceSystem& crs) {
-  const bool gpkg = parameterAsOutputLayer(parameters, key, context)
-                        .endsWith(QLatin1String(".gpkg"), Qt::CaseInsensitive);
-  std::unique_ptr<QgsFeatureSink> sink(
-      parameterAsSink(parameters, key, context, destination, fields, kLineString, crs,
-                      QgsFeatureSink::SinkFlags(), QVariantMap(), QStringList(),
-                      gpkg ? QStringList{QStringLiteral("SPATIAL_INDEX=NO")} : QStringList()));
-  if (!sink) throw QgsProcessingException(invalidSinkError(parameters, key));
-  if (!gpkg) return sink;
-  // QGIS made the file and its empty layer; closed, the lines go in through SQLite.
-  sink.reset();
-  const QVariantMap parts =
-      QgsProviderRegistry::instance()->decodeUri(QStringLiteral("ogr"), destination);
-  return withCoreErrors([&] {
-    return std::make_unique<GpkgLineSink>(parts.value(QStringLiteral("path")).toString(),
-                                          parts.value(QStringLiteral("layerName")).toString(),
-                                          fields);
-  });
-}
-
-void DemViewAlgorithm::closeLineSink(std::unique_ptr<QgsFeatureSink>& sink) {
-  if (auto* gpkg = dynamic_cast<GpkgLineSink*>(sink.get()))
-    withCoreErrors([gpkg] { gpkg->finish(); });
-  sink.reset();
-}
-
-void DemViewAlgorithm::addToSink(QgsFeatureSink& sink, QgsFeature& feature,
-                                 const QVariantMap& parameters, const QString& key,
-                                 QgsProcessingFeedback* feedback, std::size_t total, double from) {
-  if (!sink.addFeature(feature, QgsFeatureSink::FastInsert)) {
-    throw QgsProcessingException(writeFeatureError(&sink, parameters, key));
-  }
+void DemViewAlgorithm::addWithProgress(LineOutput& output, QgsFeature& feature,
+                                       QgsProcessingFeedback* feedback, std::size_t total,
+                                       double from) {
+  output.add(feature);
   if (feedback && ++mWritten % 500 == 0) {
     if (feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
     feedback->setProgress(from + (100.0 - from) * static_cast<double>(mWritten) /

@@ -13,6 +13,7 @@
 
 namespace tsk::plugin {
 
+class LineOutput;
 class RasterGrid;
 
 class DemViewAlgorithm : public QgsProcessingAlgorithm {
@@ -42,21 +43,10 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   bool prepareAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,
                         QgsProcessingFeedback* feedback) override;
 
-  // The sink of line output `key`, as parameterAsSink makes it, except that into a GeoPackage file
-  // the features go straight through SQLite, and its spatial index is built in bulk once they are
-  // in (QGIS would have GDAL insert every feature and every box in turn; see gpkg_line_sink.h).
-  std::unique_ptr<QgsFeatureSink> lineSink(const QVariantMap& parameters, const QString& key,
-                                           QgsProcessingContext& context, QString& destination,
-                                           const QgsFields& fields,
-                                           const QgsCoordinateReferenceSystem& crs);
-  // Closes a sink that lineSink made, finishing a GeoPackage's layer and its spatial index.
-  void closeLineSink(std::unique_ptr<QgsFeatureSink>& sink);
-
-  // Adds `feature` to the sink of output `key`, failing with QGIS's write error. Every 500
-  // features it checks for cancellation and moves progress from `from` towards 100 %.
-  void addToSink(QgsFeatureSink& sink, QgsFeature& feature, const QVariantMap& parameters,
-                 const QString& key, QgsProcessingFeedback* feedback, std::size_t total,
-                 double from);
+  // Adds `feature` to `output`. Every 500 features it checks for cancellation and moves progress
+  // from `from` towards 100 %.
+  void addWithProgress(LineOutput& output, QgsFeature& feature, QgsProcessingFeedback* feedback,
+                       std::size_t total, double from);
 
   // Worker thread: reads the DEM oriented for the azimuth, progress 0 to `progressTo` percent.
   RasterGrid& readRaster(QgsProcessingFeedback* feedback, double progressTo);

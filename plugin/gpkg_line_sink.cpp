@@ -48,6 +48,12 @@ bool GpkgLineSink::addFeature(QgsFeature& feature, QgsFeatureSink::Flags) {
   }
 }
 
+void GpkgLineSink::addStroke(const Stroke& stroke) {
+  io::GpkgLineAppender& lines = mFile->lines();
+  set_stroke_attributes(lines, stroke);
+  lines.add(stroke.points);
+}
+
 bool GpkgLineSink::addFeatures(QgsFeatureList& features, QgsFeatureSink::Flags flags) {
   for (QgsFeature& feature : features)
     if (!addFeature(feature, flags)) return false;

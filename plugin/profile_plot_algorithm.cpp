@@ -1,10 +1,10 @@
 #include "profile_plot_algorithm.h"
 
-#include <qgsfeaturesink.h>
 #include <qgsprocessingfeedback.h>
 
 #include "errors.h"
 #include "layer_style.h"
+#include "line_output.h"
 #include "profile_plot.h"
 #include "qgis_compat.h"
 #include "raster_grid.h"
@@ -67,15 +67,15 @@ QVariantMap ProfilePlotAlgorithm::processAlgorithm(const QVariantMap& parameters
   QgsFields fields;
   fields.append(makeField(QStringLiteral("section"), FieldKind::Integer));
   fields.append(makeField(QStringLiteral("distance"), FieldKind::Real));
-  std::unique_ptr<QgsFeatureSink> sink =
-      lineSink(parameters, QStringLiteral("OUTPUT"), context, mOutput, fields, raster.crs());
+  LineOutput output(*this, parameters, QStringLiteral("OUTPUT"), context, fields, raster.crs());
   for (const ProfileLine& line : lines) {
     QgsFeature feature(fields);
     feature.setAttributes({static_cast<int>(line.cross_section), line.distance});
     feature.setGeometry(lineGeometry(line.points));
-    addToSink(*sink, feature, parameters, QStringLiteral("OUTPUT"), feedback, lines.size(), 50);
+    addWithProgress(output, feature, feedback, lines.size(), 50);
   }
-  closeLineSink(sink);
+  output.finish();
+  mOutput = output.destination();
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), mOutput}};
 }

@@ -1,10 +1,10 @@
 #include "pstroke_algorithm.h"
 
-#include <qgsfeaturesink.h>
 #include <qgsprocessingfeedback.h>
 
 #include "errors.h"
 #include "layer_style.h"
+#include "line_output.h"
 #include "qgis_compat.h"
 #include "raster_grid.h"
 #include "silhouettes.h"
@@ -99,17 +99,17 @@ QVariantMap PStrokeAlgorithm::processAlgorithm(const QVariantMap& parameters,
   QgsFields fields;
   fields.append(makeField(QStringLiteral("class"), FieldKind::Text));
   fields.append(makeField(QStringLiteral("score_m2"), FieldKind::Real));
-  std::unique_ptr<QgsFeatureSink> sink =
-      lineSink(parameters, QStringLiteral("OUTPUT"), context, mOutput, fields, raster.crs());
+  LineOutput output(*this, parameters, QStringLiteral("OUTPUT"), context, fields, raster.crs());
   for (const PStroke& s : strokes) {
     QgsFeature feature(fields);
     QgsAttributes attributes;
     attributes << QString::fromLatin1(pstroke_class_name(s.cls)) << s.score_m2;
     feature.setAttributes(attributes);
     feature.setGeometry(lineGeometry(s.points));
-    addToSink(*sink, feature, parameters, QStringLiteral("OUTPUT"), feedback, strokes.size(), 50);
+    addWithProgress(output, feature, feedback, strokes.size(), 50);
   }
-  closeLineSink(sink);
+  output.finish();
+  mOutput = output.destination();
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), mOutput}};
 }

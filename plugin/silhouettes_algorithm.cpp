@@ -8,6 +8,7 @@
 
 #include "errors.h"
 #include "layer_style.h"
+#include "line_output.h"
 #include "qgis_compat.h"
 #include "raster_grid.h"
 #include "silhouettes.h"
@@ -26,8 +27,9 @@ const QString kStrips = QStringLiteral("STRIPS");
 const QString kFactual = QStringLiteral("FACTUAL");
 const QString kFormulated = QStringLiteral("FORMULATED");
 
-// Progress shares: reading the raster, the core stages, writing the strokes.
-constexpr double kCoreEnd = 90.0;
+// Progress share of the stages with the strokes written alongside; the rest is the outputs'
+// completion (a GeoPackage's spatial index).
+constexpr double kCoreEnd = 95.0;
 
 }  // namespace
 
@@ -145,22 +147,20 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
   const std::size_t strip =
       mStrips > 0 ? static_cast<std::size_t>(mStrips) : strip_profiles(raster.frame());
   if (feedback) feedback->pushInfo(tr("Processing the DEM in strips of %1 profiles.").arg(strip));
-  const SilhouetteResult result = withCoreErrors([&] { return runInStrips(strip, feedback); });
-
   const QgsFields fields = strokeFields();
-  std::unique_ptr<QgsFeatureSink> factual =
-      lineSink(parameters, kFactual, context, mFactualId, fields, raster.crs());
-  std::unique_ptr<QgsFeatureSink> formulated =
-      lineSink(parameters, kFormulated, context, mFormulatedId, fields, raster.crs());
-
-  for (const Stroke& stroke : result.strokes) {
-    const bool isFactual = stroke.cls == StrokeClass::factual;
-    QgsFeature feature = strokeFeature(stroke, fields);
-    addToSink(isFactual ? *factual : *formulated, feature, parameters,
-              isFactual ? kFactual : kFormulated, feedback, result.strokes.size(), kCoreEnd);
-  }
-  closeLineSink(factual);
-  closeLineSink(formulated);
+  LineOutput factual(*this, parameters, kFactual, context, fields, raster.crs());
+  LineOutput formulated(*this, parameters, kFormulated, context, fields, raster.crs());
+  // Each stroke goes to its output as it completes, from the thread that links the chains, while
+  // the other threads work on the next profiles. A failure or cancel discards both outputs.
+  const SilhouetteResult result = withCoreErrors([&] {
+    return runInStrips(strip, feedback, [&](Stroke&& stroke) {
+      (stroke.cls == StrokeClass::factual ? factual : formulated).add(stroke);
+    });
+  });
+  factual.finish();
+  formulated.finish();
+  mFactualId = factual.destination();
+  mFormulatedId = formulated.destination();
 
   QVariantMap outputs;
   outputs.insert(kFactual, mFactualId);
@@ -175,7 +175,8 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
 }
 
 SilhouetteResult SilhouettesAlgorithm::runInStrips(std::size_t strip,
-                                                   QgsProcessingFeedback* feedback) {
+                                                   QgsProcessingFeedback* feedback,
+                                                   StrokeSink sink) {
   RasterGrid& raster = preparedRaster();
   const OrientedFrame& frame = raster.frame();
   const double zRef = mParams.geometry == Geometry::oblique ? raster.lowestHeight() : 0.0;
@@ -188,7 +189,8 @@ SilhouetteResult SilhouettesAlgorithm::runInStrips(std::size_t strip,
         if (!feedback) return true;
         feedback->setProgress(kCoreEnd * f);
         return !feedback->isCanceled();
-      });
+      },
+      std::move(sink));
 }
 
 QVariantMap SilhouettesAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,

@@ -8,14 +8,19 @@
 #include <qgsprocessingcontext.h>
 #include <qgsprocessingfeedback.h>
 #include <qgsprocessingregistry.h>
+#include <qgsprocessingutils.h>
 #include <qgsrasterblock.h>
 #include <qgsrasterdataprovider.h>
 #include <qgsrasterlayer.h>
 #include <qgsvectorlayer.h>
 
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <functional>
 #include <memory>
 
 #include "dem_reader.h"
@@ -66,9 +71,11 @@ struct Run {
 };
 
 // Runs algorithm `id` with `extra` parameters on top of INPUT/BAND and outputs in `dir`.
+// A memory output's layer stays in `context`, if given.
 Run runAlgorithm(const QString& input, const QVariantMap& extra, const QTemporaryDir& dir,
                  RecordingFeedback* feedback = nullptr,
-                 const QString& id = QStringLiteral("silhouettes")) {
+                 const QString& id = QStringLiteral("silhouettes"),
+                 QgsProcessingContext* context = nullptr) {
   algorithm();  // registers the provider
   std::unique_ptr<QgsProcessingAlgorithm> alg(
       QgsApplication::processingRegistry()->algorithmById("terrainsketch:" + id)->create());
@@ -78,11 +85,11 @@ Run runAlgorithm(const QString& input, const QVariantMap& extra, const QTemporar
                      {"FORMULATED", dir.filePath("formulated.gpkg")},
                      {"OUTPUT", dir.filePath(id == "profileplot" ? "out.gpkg" : "out.tif")}};
   for (auto it = extra.begin(); it != extra.end(); ++it) params.insert(it.key(), it.value());
-  QgsProcessingContext context;
+  QgsProcessingContext ownContext;
   RecordingFeedback defaultFeedback;
   RecordingFeedback* log = feedback ? feedback : &defaultFeedback;
   Run run;
-  run.results = alg->run(params, context, log, &run.ok);
+  run.results = alg->run(params, context ? *context : ownContext, log, &run.ok);
   run.error = log->errors.join('\n');
   return run;
 }
@@ -202,17 +209,112 @@ TEST_CASE("a raster without CRS runs with a warning in the log", "[plugin]") {
   CHECK(log.warnings.join(' ').contains("no CRS"));
 }
 
+// Cancels the run once progress reaches `at` percent.
+class CancelAt : public RecordingFeedback {
+ public:
+  explicit CancelAt(double at, std::function<void()> onCancel = {}) {
+    connect(this, &QgsFeedback::progressChanged, this, [this, at, onCancel](double progress) {
+      if (progress < at || isCanceled()) return;
+      if (onCancel) onCancel();
+      cancel();
+    });
+  }
+};
+
+// The layer names of a vector file.
+QStringList layerNames(const QString& path) {
+  QStringList names;
+  GDALDatasetH ds =
+      GDALOpenEx(path.toUtf8().constData(), GDAL_OF_VECTOR, nullptr, nullptr, nullptr);
+  if (!ds) return names;
+  for (int k = 0; k < GDALDatasetGetLayerCount(ds); ++k)
+    names << QString::fromUtf8(OGR_L_GetName(GDALDatasetGetLayer(ds, k)));
+  GDALClose(ds);
+  return names;
+}
+
 TEST_CASE("cancelling stops the run with an error and no result", "[plugin]") {
-  class CancelAtStart : public RecordingFeedback {
-   public:
-    CancelAtStart() {
-      connect(this, &QgsFeedback::progressChanged, this, [this](double) { cancel(); });
-    }
-  } feedback;
+  CancelAt feedback(0);
   QTemporaryDir dir;
   const Run run = runAlgorithm(kData + "/jacksboro_utm16n.tif", {}, dir, &feedback);
   CHECK_FALSE(run.ok);
   CHECK(run.error.contains("Cancelled"));
+  CHECK(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+}
+
+TEST_CASE("strokes written before a cancel are removed with their files", "[plugin][outputs]") {
+  QTemporaryDir dir;
+  // Strokes go to the outputs as they complete: halfway, the shapefile holds some.
+  qint64 shapefileBytes = 0;
+  CancelAt feedback(50, [&] { shapefileBytes = QFileInfo(dir.filePath("factual.shp")).size(); });
+  const Run run =
+      runAlgorithm(kData + "/gorillas_utm32n.tif",
+                   {{"STRIPS", 17}, {"FACTUAL", dir.filePath("factual.shp")}}, dir, &feedback);
+  CHECK_FALSE(run.ok);
+  CHECK(run.error.contains("Cancelled"));
+  CHECK(shapefileBytes > 1000);
+  CHECK(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+}
+
+TEST_CASE("a cancelled run drops the layer it added to an existing GeoPackage",
+          "[plugin][outputs]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/gorillas_utm32n.tif";
+  const QString base = dir.filePath("base.gpkg");
+  REQUIRE(runAlgorithm(dem, {{"FACTUAL", base}}, dir).ok);
+  const QStringList before = layerNames(base);
+  REQUIRE(before.size() == 1);
+  const QString added = QStringLiteral("ogr:dbname='%1' table=\"added\" (geom)").arg(base);
+
+  CancelAt feedback(50);
+  const Run cancelled = runAlgorithm(dem, {{"STRIPS", 17}, {"FACTUAL", added}}, dir, &feedback);
+  CHECK_FALSE(cancelled.ok);
+  CHECK(layerNames(base) == before);
+  QgsVectorLayer kept(base, "kept", "ogr");
+  CHECK(kept.featureCount() > 0);
+
+  const Run run = runAlgorithm(dem, {{"FACTUAL", added}}, dir);
+  REQUIRE(run.ok);
+  CHECK(layerNames(base) == (before + QStringList{"added"}));
+  QgsVectorLayer layer(run.results.value("FACTUAL").toString(), "added", "ogr");
+  CHECK(layer.featureCount() == kept.featureCount());
+}
+
+TEST_CASE("strokes stream into shapefiles and memory layers too", "[plugin][outputs]") {
+  const QString dem = kData + "/jacksboro_utm16n.tif";
+  QTemporaryDir dir;
+  QgsProcessingContext context;
+  const Run run = runAlgorithm(
+      dem, {{"FACTUAL", dir.filePath("factual.shp")}, {"FORMULATED", "TEMPORARY_OUTPUT"}}, dir,
+      nullptr, QStringLiteral("silhouettes"), &context);
+  INFO(run.error.toStdString());
+  REQUIRE(run.ok);
+  const SilhouetteResult core = coreResult(dem, 90, Geometry::map);
+  QgsVectorLayer shapefile(run.results.value("FACTUAL").toString(), "f", "ogr");
+  auto* memory = qobject_cast<QgsVectorLayer*>(
+      QgsProcessingUtils::mapLayerFromString(run.results.value("FORMULATED").toString(), context));
+  REQUIRE(shapefile.isValid());
+  REQUIRE(memory != nullptr);
+  CHECK(memory->providerType() == "memory");
+  std::size_t k = 0;
+  for (QgsVectorLayer* layer : {&shapefile, memory}) {
+    QgsFeatureIterator it = layer->getFeatures();
+    QgsFeature feature;
+    while (it.nextFeature(feature)) {
+      REQUIRE(k < core.strokes.size());
+      const Stroke& s = core.strokes[k++];
+      REQUIRE(feature.attribute("class").toString() == stroke_class_name(s.cls));
+      REQUIRE(feature.attribute("cells").toInt() == s.cells);
+      REQUIRE(feature.attribute("mean_depth").isNull() == std::isnan(s.mean_depth_m));
+      // A shapefile reads back its lines as multi-lines of one part.
+      const QgsGeometry geometry = feature.geometry();
+      const QgsPolylineXY line = geometry.isMultipart() ? geometry.asMultiPolyline().value(0)
+                                                        : geometry.asPolyline();
+      REQUIRE(static_cast<std::size_t>(line.size()) == s.points.size());
+      REQUIRE(line.back().x() == Approx(s.points.back().x));
+    }
+  }
+  CHECK(k == core.strokes.size());
 }
 
 TEST_CASE("the German translation loads for the de locale", "[plugin][i18n]") {

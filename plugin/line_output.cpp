@@ -1,0 +1,140 @@
+#include "line_output.h"
+
+#include <gdal.h>
+#include <ogr_api.h>
+#include <qgsdatasourceuri.h>
+#include <qgsprocessingparameters.h>
+#include <qgsproviderregistry.h>
+
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <exception>
+
+#include "core_errors.h"
+#include "gpkg_line_sink.h"
+#include "qgis_compat.h"
+#include "stroke_features.h"
+
+namespace tsk::plugin {
+namespace {
+
+// Where an output destination puts its layer on disk, as QGIS reads the destination: "ogr:" with
+// a database adds (or replaces) a layer in that file when it exists; any other provider prefix
+// ("memory:", "postgres:", ...) writes no file of ours; a plain path is a file QGIS writes.
+struct FileTarget {
+  QString path;            // empty: not a file
+  bool addsLayer = false;  // to a file that existed before
+};
+
+FileTarget fileTarget(const QString& target) {
+  if (target.startsWith(QLatin1String("ogr:"))) {
+    const QString path = QgsDataSourceUri(target.mid(4)).database();
+    return {path, QFileInfo(path).isFile()};
+  }
+  static const QRegularExpression providerPrefix(QStringLiteral("^[A-Za-z_]{2,}:"));
+  if (target.isEmpty() || providerPrefix.match(target).hasMatch()) return {};
+  return {target, false};
+}
+
+// Removes a dataset with the files its format keeps beside it (a shapefile's .shx, .dbf, ...).
+void deleteDataset(const QString& path) {
+  const QByteArray file = QFile::encodeName(path);
+  if (GDALDeleteDataset(nullptr, file.constData()) != CE_None) QFile::remove(path);
+}
+
+void dropLayer(const QString& path, const QString& layer) {
+  GDALDatasetH dataset = GDALOpenEx(QFile::encodeName(path).constData(),
+                                    GDAL_OF_VECTOR | GDAL_OF_UPDATE, nullptr, nullptr, nullptr);
+  if (!dataset) return;
+  for (int k = 0; k < GDALDatasetGetLayerCount(dataset); ++k) {
+    if (layer == QString::fromUtf8(OGR_L_GetName(GDALDatasetGetLayer(dataset, k)))) {
+      GDALDatasetDeleteLayer(dataset, k);
+      break;
+    }
+  }
+  GDALClose(dataset);
+}
+
+}  // namespace
+
+LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
+                       const QString& key, QgsProcessingContext& context, const QgsFields& fields,
+                       const QgsCoordinateReferenceSystem& crs)
+    : mKey(key), mFields(fields), mExceptionsAtStart(std::uncaught_exceptions()) {
+  const QgsProcessingParameterDefinition* definition = algorithm.parameterDefinition(key);
+  const QString target =
+      QgsProcessingParameters::parameterAsOutputLayer(definition, parameters, context);
+  const FileTarget file = fileTarget(target);
+  const bool gpkg = !file.addsLayer && target.endsWith(QLatin1String(".gpkg"), Qt::CaseInsensitive);
+  mSink.reset(QgsProcessingParameters::parameterAsSink(
+      definition, parameters, fields, kLineString, crs, context, mDestination,
+      QgsFeatureSink::SinkFlags(), QVariantMap(), QStringList(),
+      gpkg ? QStringList{QStringLiteral("SPATIAL_INDEX=NO")} : QStringList()));
+  if (!mSink) {
+    throw QgsProcessingException(
+        tr("Could not create destination layer for %1: invalid value").arg(key));
+  }
+  const QVariantMap parts =
+      QgsProviderRegistry::instance()->decodeUri(QStringLiteral("ogr"), mDestination);
+  if (!file.path.isEmpty()) {
+    mFile = parts.value(QStringLiteral("path")).toString();
+    if (file.addsLayer) mAddedLayer = parts.value(QStringLiteral("layerName")).toString();
+  }
+  if (!gpkg) return;
+  // QGIS made the file and its empty layer; closed, the lines go in through SQLite.
+  mSink.reset();
+  auto sink = withCoreErrors([&] {
+    return std::make_unique<GpkgLineSink>(
+        mFile, parts.value(QStringLiteral("layerName")).toString(), fields);
+  });
+  mGpkg = sink.get();
+  mSink = std::move(sink);
+}
+
+LineOutput::~LineOutput() {
+  if (!mFinished || std::uncaught_exceptions() > mExceptionsAtStart) discard();
+}
+
+void LineOutput::add(QgsFeature& feature) {
+  if (!mSink->addFeature(feature, QgsFeatureSink::FastInsert)) failWriting(mSink->lastError());
+}
+
+void LineOutput::add(const Stroke& stroke) {
+  if (!mGpkg) {
+    QgsFeature feature = strokeFeature(stroke, mFields);
+    add(feature);
+    return;
+  }
+  try {
+    mGpkg->addStroke(stroke);
+  } catch (const Error& e) {
+    failWriting(QString::fromStdString(e.what()));
+  }
+}
+
+void LineOutput::finish() {
+  if (mGpkg) withCoreErrors([this] { mGpkg->finish(); });
+  mGpkg = nullptr;
+  mSink.reset();  // QGIS's writer flushes and closes the file
+  mFinished = true;
+}
+
+void LineOutput::failWriting(const QString& reason) const {
+  throw QgsProcessingException(reason.isEmpty()
+                                   ? tr("Could not write a feature into %1").arg(mKey)
+                                   : tr("Could not write a feature into %1: %2").arg(mKey, reason));
+}
+
+void LineOutput::discard() noexcept {
+  mGpkg = nullptr;
+  mSink.reset();  // rolls a GeoPackage's rows back; closes QGIS's writer
+  if (mFile.isEmpty() || !QFileInfo(mFile).isFile()) return;
+  if (mAddedLayer.isEmpty()) {
+    deleteDataset(mFile);
+  } else {
+    dropLayer(mFile, mAddedLayer);
+  }
+}
+
+}  // namespace tsk::plugin

@@ -1,0 +1,64 @@
+// A line output of an algorithm, whole or not at all. The features go to the sink QGIS makes for
+// the destination or, into a GeoPackage file, straight through SQLite (gpkg_line_sink.h). An
+// output that goes out of scope unfinished, or by an exception (the run failed or was cancelled,
+// perhaps after this output was finished), is discarded: a GeoPackage's rows roll back, and the
+// file QGIS created or overwrote for it is deleted, or the layer QGIS added to a file that already
+// existed is dropped. Features may be added from any one thread at a time.
+#pragma once
+
+#include <qgscoordinatereferencesystem.h>
+#include <qgsfeature.h>
+#include <qgsfeaturesink.h>
+#include <qgsfields.h>
+#include <qgsprocessingalgorithm.h>
+
+#include <QCoreApplication>
+#include <QString>
+#include <QVariantMap>
+#include <memory>
+
+#include "strokes.h"
+
+namespace tsk::plugin {
+
+class GpkgLineSink;
+
+class LineOutput {
+  Q_DECLARE_TR_FUNCTIONS(LineOutput)
+
+ public:
+  // Line output `key` of `algorithm` with `fields`, in `crs`. Throws QgsProcessingException when
+  // the destination cannot be created.
+  LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
+             const QString& key, QgsProcessingContext& context, const QgsFields& fields,
+             const QgsCoordinateReferenceSystem& crs);
+  ~LineOutput();
+  LineOutput(const LineOutput&) = delete;
+  LineOutput& operator=(const LineOutput&) = delete;
+
+  // QGIS's identifier of the output layer, for the algorithm's results.
+  const QString& destination() const { return mDestination; }
+
+  // Both throw QgsProcessingException when the line cannot be written.
+  void add(QgsFeature& feature);
+  void add(const Stroke& stroke);  // with the fields of strokeFields()
+
+  // Completes the output: a GeoPackage's extent, count and spatial index, and its commit.
+  void finish();
+
+ private:
+  [[noreturn]] void failWriting(const QString& reason) const;
+  void discard() noexcept;
+
+  QString mKey;
+  QgsFields mFields;
+  std::unique_ptr<QgsFeatureSink> mSink;
+  GpkgLineSink* mGpkg = nullptr;  // mSink, when it writes through SQLite
+  QString mDestination;
+  QString mFile;        // the file holding the output; empty for a memory layer or a database
+  QString mAddedLayer;  // the layer QGIS added to a file that existed before; empty: QGIS's file
+  bool mFinished = false;
+  int mExceptionsAtStart;  // exceptions in flight when the output was made
+};
+
+}  // namespace tsk::plugin
