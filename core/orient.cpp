@@ -195,7 +195,7 @@ void orient_window(const OrientedFrame& frame, const HeightGrid& window, HeightG
   // The window seen from the same side is exactly its run of profiles, in order.
   const OrientedFrame turned = make_frame(window.rows(), window.cols(), 1, 1, frame.azimuth_deg);
   if (out.rows() != turned.profiles || out.cols() != turned.length)
-    out = HeightGrid(turned.profiles, turned.length, kUnset);
+    out.reshape(turned.profiles, turned.length, kUnset);
   scatter_dem_rows(turned, 0, window.rows(), window.data(), window.cols(), out);
 }
 
@@ -427,8 +427,7 @@ void resample_with(const BilinearSampler<Cells>& sample, const OrientedFrame& fr
   if (!frame.resampled || first > frame.profiles || count > frame.profiles - first) {
     throw Error("the profiles do not match the resampled frame");
   }
-  if (out.rows() != count || out.cols() != frame.length)
-    out = HeightGrid(count, frame.length, kUnset);
+  if (out.rows() != count || out.cols() != frame.length) out.reshape(count, frame.length, kUnset);
   // Where each profile starts in pixel coordinates (frame.to_pixel(p, i) with the profile's part
   // worked out once, same rounding) and its cells [lo, hi) that fall on the DEM (the sampler
   // still checks); the margins of the line-of-sight grid, up to half of it, are nodata.
@@ -563,6 +562,18 @@ void DemBand::load(const OrientedFrame& frame, std::size_t first, std::size_t co
     chunks.push_back(chunk);
     k0 = chunk.k1;
   }
+  if (cells > heights_.capacity()) {
+    // A band holds about as many DEM cells as its strip covers, and the strips across the middle
+    // of the DEM cover the most: room for those from the start, rather than growing band by band
+    // into fresh memory (each page of it a fault), copying what is to be overwritten.
+    const double cells_per_sample =
+        std::abs(frame.px_col_per_i * frame.px_row_per_p - frame.px_row_per_i * frame.px_col_per_p);
+    const double largest =
+        std::min(cells_per_sample * static_cast<double>(count) * static_cast<double>(frame.length),
+                 static_cast<double>(frame.dem_rows) * static_cast<double>(frame.dem_cols));
+    heights_ = {};
+    heights_.reserve(std::max(cells, static_cast<std::size_t>(1.125 * largest)));
+  }
   heights_.resize(cells);
   for (const Chunk& chunk : chunks) {
     if (chunk.c0 >= chunk.c1) continue;
@@ -614,8 +625,7 @@ void StripLoader::load(std::size_t first, std::size_t count, HeightGrid& strip) 
   // Seen from the west the window is the strip as it is; any other cardinal view turns it.
   const bool turned = frame_.row_per_p <= 0 || frame_.col_per_i <= 0;
   HeightGrid& target = turned ? window_ : strip;
-  if (target.rows() != w.rows || target.cols() != w.cols)
-    target = HeightGrid(w.rows, w.cols, kUnset);
+  if (target.rows() != w.rows || target.cols() != w.cols) target.reshape(w.rows, w.cols, kUnset);
   read_(w, target.data());
   if (turned) orient_window(frame_, window_, strip);
 }

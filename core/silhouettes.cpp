@@ -242,7 +242,7 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
   // order on a thread of their own while the next batch is collected.
   CellFlags& flags = st.flags;  // rows of the neighbours stay unused
   if (flags.rows() != z.rows() || flags.cols() != z.cols())
-    flags = CellFlags(z.rows(), z.cols(), kUnset);
+    flags.reshape(z.rows(), z.cols(), kUnset);
   const std::size_t length = frame.length;
   const StrokeContext context{
       z,        flags,         frame, view, st.geotransform, st.params.geometry, st.params.subcell,

@@ -65,6 +65,21 @@ TEST_CASE("orientation refuses empty grids, bad cell sizes and huge sizes", "[or
   CHECK_THROWS_AS(checked_cell_count(std::size_t{1} << 31, std::size_t{1} << 31), Error);
 }
 
+TEST_CASE("a grid reshaped smaller keeps its memory, larger takes new", "[orient]") {
+  HeightGrid strip(4, 6, 1.0f);
+  const float* memory = strip.data();
+  strip.reshape(3, 5, kUnset);
+  CHECK(strip.rows() == 3);
+  CHECK(strip.cols() == 5);
+  CHECK(strip.size() == 15);
+  CHECK(strip.data() == memory);
+  strip.reshape(5, 6, kUnset);
+  CHECK(strip.size() == 30);
+  CHECK(strip.row(4) == strip.data() + 24);
+  CHECK_THROWS_AS(strip.reshape(std::size_t{1} << 31, std::size_t{1} << 31, kUnset), Error);
+  CHECK(strip.size() == 30);
+}
+
 TEST_CASE("a DEM read block by block equals one turned at once", "[orient]") {
   const HeightGrid dem = numbered(7, 4);
   for (double az : {0.0, 90.0, 180.0, 270.0}) {
