@@ -301,6 +301,12 @@ void bench_real_dems() {
         "  %-22s %zux%zu: read %.3f s, pipeline %.4f s (%.1f Mcells/s), %zu + %zu strokes\n", name,
         dem.rows, dem.cols, read_s, whole, static_cast<double>(dem.rows * dem.cols) / whole / 1e6,
         r.stats.factual_strokes, r.stats.formulated_strokes);
+    const tsk::StageTimings& stage = r.timings;
+    std::printf(
+        "  %-22s stages (ms): visibility %.2f | candidates %.2f | filter %.2f | thinning %.2f | "
+        "chaining %.2f | strokes %.2f\n",
+        "", 1e3 * stage.visibility, 1e3 * stage.candidates, 1e3 * stage.filter,
+        1e3 * stage.thinning, 1e3 * stage.chaining, 1e3 * stage.strokes);
   }
 }
 #endif
