@@ -242,6 +242,24 @@ TEST_CASE("cancelling stops the run with an error and no result", "[plugin]") {
   CHECK(QDir(dir.path()).entryList(QDir::Files).isEmpty());
 }
 
+TEST_CASE("an output that cannot be written fails the run and leaves no other output",
+          "[plugin][outputs]") {
+  QTemporaryDir dir;
+  for (const char* format : {"gpkg", "shp"}) {
+    CAPTURE(format);
+    const QString missing = dir.filePath(QStringLiteral("missing/formulated.%1").arg(format));
+    const Run run =
+        runAlgorithm(kData + "/jacksboro_utm16n.tif",
+                     {{"FACTUAL", dir.filePath(QStringLiteral("factual.%1").arg(format))},
+                      {"FORMULATED", missing}},
+                     dir);
+    CHECK_FALSE(run.ok);
+    INFO(run.error.toStdString());
+    CHECK(run.error.contains(missing));
+    CHECK(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+  }
+}
+
 TEST_CASE("strokes written before a cancel are removed with their files", "[plugin][outputs]") {
   QTemporaryDir dir;
   // Strokes go to the outputs as they complete: halfway, the shapefile holds some.
@@ -308,8 +326,8 @@ TEST_CASE("strokes stream into shapefiles and memory layers too", "[plugin][outp
       REQUIRE(feature.attribute("mean_depth").isNull() == std::isnan(s.mean_depth_m));
       // A shapefile reads back its lines as multi-lines of one part.
       const QgsGeometry geometry = feature.geometry();
-      const QgsPolylineXY line = geometry.isMultipart() ? geometry.asMultiPolyline().value(0)
-                                                        : geometry.asPolyline();
+      const QgsPolylineXY line =
+          geometry.isMultipart() ? geometry.asMultiPolyline().value(0) : geometry.asPolyline();
       REQUIRE(static_cast<std::size_t>(line.size()) == s.points.size());
       REQUIRE(line.back().x() == Approx(s.points.back().x));
     }
