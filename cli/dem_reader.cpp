@@ -172,6 +172,55 @@ std::vector<HeightGrid> read_bands(const std::string& path) {
   return bands;
 }
 
+BandWindows::BandWindows(const std::string& path, int band) {
+  GdalErrorCapture capture;
+  dataset_ = open_raster(path);
+  if (band < 1 || band > dataset_->GetRasterCount()) {
+    throw Error("band " + std::to_string(band) + " does not exist in '" + path + "'");
+  }
+  band_ = dataset_->GetRasterBand(band);
+  read_ = band_reader(*band_, path);
+  rows_ = static_cast<std::size_t>(dataset_->GetRasterYSize());
+  cols_ = static_cast<std::size_t>(dataset_->GetRasterXSize());
+  int block_width = 0, block_height = 0;
+  band_->GetBlockSize(&block_width, &block_height);
+  block_rows_ = static_cast<std::size_t>(std::max(1, block_height));
+  blocks_per_row_ = (cols_ + static_cast<std::size_t>(std::max(1, block_width)) - 1) /
+                    static_cast<std::size_t>(std::max(1, block_width));
+  // At least 64 rows a run, so that a file of one-row blocks is not read row by row.
+  run_rows_ = block_rows_ * ((64 + block_rows_ - 1) / block_rows_);
+}
+
+BandWindows::~BandWindows() = default;
+
+bool BandWindows::geotransform(GeoTransform& gt) const {
+  return dataset_->GetGeoTransform(gt.a.data()) == CE_None;
+}
+
+bool BandWindows::unscaled() const {
+  return band_->GetScale() == 1.0 && band_->GetOffset() == 0.0;
+}
+
+void BandWindows::read(const DemWindow& window, float* heights) const {
+  const std::size_t end = window.row0 + window.rows;
+  for (std::size_t top = window.row0; top < end;) {
+    const std::size_t run_end = std::min(end, (top / run_rows_ + 1) * run_rows_);
+    cached_from_ = std::min(cached_from_, top / block_rows_);
+    read_({top, window.col0, run_end - top, window.cols},
+          heights + (top - window.row0) * window.cols);
+    // The next strip of a cardinal view starts on the row before this one's last.
+    drop_block_rows_above((run_end - std::min<std::size_t>(run_end, 2)) / block_rows_);
+    top = run_end;
+  }
+}
+
+void BandWindows::drop_block_rows_above(std::size_t keep) const {
+  for (; cached_from_ < keep; ++cached_from_) {
+    for (std::size_t x = 0; x < blocks_per_row_; ++x)
+      band_->FlushBlock(static_cast<int>(x), static_cast<int>(cached_from_), FALSE);
+  }
+}
+
 struct DemStripReader::Source {
   DatasetPtr dataset;
   WindowReader read;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "gdal_util.h"
 #include "orient.h"
 #include "strokes.h"
 
@@ -47,6 +48,40 @@ class DemStripReader {
   Dem dem_;
   struct Source;
   std::unique_ptr<Source> source_;
+};
+
+// Windows of one band of a raster file read as Float32, nodata as NaN, through a dataset of its
+// own. The QGIS plugin reads a GDAL layer's file through it rather than through the layer's
+// provider, which copies every block once more and leaves what it read in GDAL's process-wide
+// block cache (a share of the machine's memory in QGIS, so a whole large DEM). Readers go down
+// the DEM, strip by strip or band by band, so this one lets GDAL drop the blocks above the last
+// rows read as it goes: GDAL keeps about a run of block rows, whatever its cache's size.
+// One thread at a time.
+class BandWindows {
+ public:
+  // Throws Error when `path` cannot be opened as a raster or has no band `band`.
+  BandWindows(const std::string& path, int band);
+  ~BandWindows();
+  std::size_t rows() const { return rows_; }
+  std::size_t cols() const { return cols_; }
+  // The file's geotransform; false when it has none.
+  bool geotransform(GeoTransform& gt) const;
+  // True when the band's values are its heights: no scale or offset to apply.
+  bool unscaled() const;
+  // Throws Error with GDAL's message when the read fails.
+  void read(const DemWindow& window, float* heights) const;
+
+ private:
+  // Lets GDAL drop the blocks of the block rows above block row `keep`.
+  void drop_block_rows_above(std::size_t keep) const;
+
+  DatasetPtr dataset_;
+  GDALRasterBand* band_;
+  WindowReader read_;
+  std::size_t rows_, cols_;
+  std::size_t block_rows_ = 1, blocks_per_row_ = 1;
+  std::size_t run_rows_ = 1;  // windows are read in runs of rows ending on these multiples
+  mutable std::size_t cached_from_ = static_cast<std::size_t>(-1);  // highest block row read
 };
 
 // Every band of a raster as grids on its own pixel grid (row 0 north), nodata as NaN: the

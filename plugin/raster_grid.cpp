@@ -3,10 +3,12 @@
 #include <qgscoordinatetransform.h>
 #include <qgsexception.h>
 #include <qgsprocessingfeedback.h>
+#include <qgsproviderregistry.h>
 #include <qgsrasterblock.h>
 #include <qgsrasterdataprovider.h>
 #include <qgsrasterlayer.h>
 
+#include <QFile>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "core_errors.h"
+#include "dem_reader.h"
 #include "qgis_compat.h"
 
 namespace tsk::plugin {
@@ -97,6 +100,41 @@ RasterGrid::RasterGrid(QgsRasterLayer* layer, int band,
   if (bands > 1) mNotes << tr("The raster has %1 bands; band %2 is used.").arg(bands).arg(band);
   mProvider.reset(layer->dataProvider()->clone());
   if (!mProvider) throw QgsProcessingException(tr("Could not open the raster's data provider."));
+  mFile = openFile(*layer, band);
+}
+
+std::unique_ptr<io::BandWindows> RasterGrid::openFile(QgsRasterLayer& layer, int band) const {
+  QgsRasterDataProvider& provider = *layer.dataProvider();
+  const bool sourceNoData =
+      !provider.sourceHasNoDataValue(band) || provider.useSourceNoDataValue(band);
+  if (layer.providerType() != QLatin1String("gdal") || !sourceNoData ||
+      !provider.userNoDataValues(band).isEmpty()) {
+    return nullptr;
+  }
+  // A plain file, not a layer or subdataset of one, nor opened with options.
+  const QVariantMap parts =
+      QgsProviderRegistry::instance()->decodeUri(QStringLiteral("gdal"), layer.source());
+  for (auto it = parts.begin(); it != parts.end(); ++it) {
+    if (it.key() != QLatin1String("path") && !it.value().toString().isEmpty()) return nullptr;
+  }
+  std::unique_ptr<io::BandWindows> file;
+  try {
+    file = std::make_unique<io::BandWindows>(
+        QFile::encodeName(parts.value(QStringLiteral("path")).toString()).toStdString(), band);
+  } catch (const Error&) {
+    return nullptr;
+  }
+  // The same grid as the layer's: QGIS shows a rotated raster through a warped copy.
+  GeoTransform gt;
+  const double dx = mExtent.width() / mCols, dy = mExtent.height() / mRows;
+  const auto near = [](double a, double b, double cell) { return std::abs(a - b) <= 1e-6 * cell; };
+  if (!file->unscaled() || file->rows() != static_cast<std::size_t>(mRows) ||
+      file->cols() != static_cast<std::size_t>(mCols) || !file->geotransform(gt) ||
+      gt.a[2] != 0.0 || gt.a[4] != 0.0 || !near(gt.a[0], mExtent.xMinimum(), dx) ||
+      !near(gt.a[3], mExtent.yMaximum(), dy) || !near(gt.a[1], dx, dx) || !near(-gt.a[5], dy, dy)) {
+    return nullptr;
+  }
+  return file;
 }
 
 RasterGrid::~RasterGrid() = default;
@@ -118,6 +156,10 @@ void RasterGrid::readProfiles(std::size_t first, std::size_t count, HeightGrid& 
 }
 
 void RasterGrid::readWindow(const DemWindow& w, float* heights) const {
+  if (mFile) {
+    mFile->read(w, heights);
+    return;
+  }
   // In blocks of at most 4 MiB: memory the allocator reuses from block to block, where one
   // block per window would be fresh pages for every strip.
   const double dx = mExtent.width() / mCols, dy = mExtent.height() / mRows;

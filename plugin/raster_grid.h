@@ -19,6 +19,10 @@ class QgsRasterLayer;
 class QgsProcessingFeedback;
 class QgsCoordinateTransformContext;
 
+namespace tsk::io {
+class BandWindows;
+}
+
 namespace tsk::plugin {
 
 // Copies a raster block of `count` rows into `out` as floats with NaN for nodata.
@@ -57,14 +61,21 @@ class RasterGrid {
   const QgsCoordinateReferenceSystem& crs() const { return mCrs; }
   const QgsRectangle& extent() const { return mExtent; }
   const QStringList& notes() const { return mNotes; }
+  // True when the layer's file is read straight through GDAL (see openFile).
+  bool readsFileDirectly() const { return mFile != nullptr; }
 
  private:
   // Reads the band in blocks of rows into mOriented.
   void readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo);
-  // Reads a window of the band through the provider, NaN for nodata.
+  // The layer's file read straight through GDAL when that gives what its provider would: a GDAL
+  // layer of one file whose grid is the layer's, without scale, offset or nodata set in QGIS.
+  // Null otherwise (the provider reads it).
+  std::unique_ptr<io::BandWindows> openFile(QgsRasterLayer& layer, int band) const;
+  // Reads a window of the band, NaN for nodata.
   void readWindow(const DemWindow& window, float* heights) const;
 
   std::unique_ptr<QgsRasterDataProvider> mProvider;
+  std::unique_ptr<io::BandWindows> mFile;
   int mBand = 1;
   int mCols = 0;
   int mRows = 0;

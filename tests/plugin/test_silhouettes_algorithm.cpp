@@ -12,12 +12,14 @@
 #include <qgsrasterblock.h>
 #include <qgsrasterdataprovider.h>
 #include <qgsrasterlayer.h>
+#include <qgsrasterrange.h>
 #include <qgsvectorlayer.h>
 
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
@@ -30,6 +32,7 @@
 #include "profile_plot.h"
 #include "provider.h"
 #include "pstrokes.h"
+#include "raster_grid.h"
 #include "silhouettes.h"
 #include "translation.h"
 #include "visibility.h"
@@ -534,5 +537,57 @@ TEST_CASE("strips through the raster provider give the whole-DEM strokes", "[plu
         ++k;
       }
     }
+  }
+}
+
+TEST_CASE("a GDAL layer's file is read straight through GDAL, with the provider's heights",
+          "[plugin][strips]") {
+  const QString dem = kData + "/gorillas_utm32n.tif";  // with a nodata border
+  QgsRasterLayer plain(dem, "plain", "gdal");
+  QgsRasterLayer masked(dem, "masked", "gdal");
+  // A nodata range set in QGIS, holding no height: the provider must read it, same heights.
+  masked.dataProvider()->setUserNoDataValue(1, {QgsRasterRange(-1e30, -1e29)});
+  QTemporaryDir dir;
+  const QString scaledPath = dir.filePath("scaled.tif");
+  {
+    GDALDatasetH source = GDALOpen(dem.toUtf8().constData(), GA_ReadOnly);
+    GDALDatasetH copy =
+        GDALCreateCopy(GDALGetDriverByName("GTiff"), scaledPath.toUtf8().constData(), source, 0,
+                       nullptr, nullptr, nullptr);
+    GDALSetRasterScale(GDALGetRasterBand(copy, 1), 2.0);
+    GDALClose(copy);
+    GDALClose(source);
+  }
+  QgsRasterLayer scaled(scaledPath, "scaled", "gdal");
+  const QgsCoordinateTransformContext transforms;
+  plugin::RasterGrid direct(&plain, 1, transforms), provider(&masked, 1, transforms);
+  CHECK(direct.readsFileDirectly());
+  CHECK_FALSE(provider.readsFileDirectly());
+  CHECK_FALSE(plugin::RasterGrid(&scaled, 1, transforms).readsFileDirectly());
+  const auto same = [](const HeightGrid& a, const HeightGrid& b) {
+    if (a.rows() != b.rows() || a.cols() != b.cols()) return false;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      const float x = a.data()[k], y = b.data()[k];
+      if (!(x == y || (std::isnan(x) && std::isnan(y)))) return false;
+    }
+    return true;
+  };
+  CHECK(direct.lowestHeight() == provider.lowestHeight());
+  for (double az : {90.0, 0.0, 45.0}) {
+    CAPTURE(az);
+    direct.setView(az);
+    provider.setView(az);
+    const std::size_t profiles = direct.frame().profiles;
+    HeightGrid a, b;
+    std::size_t nodata = 0;
+    for (std::size_t first = 0; first < profiles; first += 17) {
+      const std::size_t count = std::min<std::size_t>(19, profiles - first);
+      direct.readProfiles(first, count, a);
+      provider.readProfiles(first, count, b);
+      REQUIRE(same(a, b));
+      nodata += static_cast<std::size_t>(
+          std::count_if(a.data(), a.data() + a.size(), [](float z) { return std::isnan(z); }));
+    }
+    CHECK(nodata > 0);
   }
 }
