@@ -4,7 +4,9 @@
 #include <gdal_priv.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -66,6 +68,36 @@ void write_tiff(const std::string& path, int rows, int cols, int bands, F f,
     ds->SetSpatialRef(&srs);
   }
   GDALClose(ds);
+}
+
+// North-up, 10 m cells, in UTM.
+inline const double kNorthUp[6] = {500000, 10, 0, 4000000, 0, -10};
+
+// A round hill 300 m high on a 40 x 40 grid, for write_tiff.
+inline float hill(int, int r, int c) {
+  return static_cast<float>(300 * std::exp(-((r - 20) * (r - 20) + (c - 20) * (c - 20)) / 60.0));
+}
+
+// A 40 x 80 VRT at `vrt` whose top half is the 40 x 40 GeoTIFF `top` beside it and whose bottom
+// half's file, gone.tif, does not exist: it opens, and reading it fails halfway down.
+inline void write_half_missing_vrt(const std::string& vrt, const std::string& top) {
+  std::ofstream(vrt) << R"(<VRTDataset rasterXSize="40" rasterYSize="80">
+  <SRS>EPSG:32616</SRS>
+  <GeoTransform>500000, 10, 0, 4000000, 0, -10</GeoTransform>
+  <VRTRasterBand dataType="Float32" band="1">
+    <SimpleSource>
+      <SourceFilename relativeToVRT="1">)"
+                     << top << R"(</SourceFilename><SourceBand>1</SourceBand>
+      <SrcRect xOff="0" yOff="0" xSize="40" ySize="40"/>
+      <DstRect xOff="0" yOff="0" xSize="40" ySize="40"/>
+    </SimpleSource>
+    <SimpleSource>
+      <SourceFilename relativeToVRT="1">gone.tif</SourceFilename><SourceBand>1</SourceBand>
+      <SrcRect xOff="0" yOff="0" xSize="40" ySize="40"/>
+      <DstRect xOff="0" yOff="40" xSize="40" ySize="40"/>
+    </SimpleSource>
+  </VRTRasterBand>
+</VRTDataset>)";
 }
 
 }  // namespace tsk::test

@@ -61,11 +61,8 @@ std::string slurp(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-const double kNorthUp[6] = {500000, 10, 0, 4000000, 0, -10};
-
-float hill(int, int r, int c) {
-  return static_cast<float>(300 * std::exp(-((r - 20) * (r - 20) + (c - 20) * (c - 20)) / 60.0));
-}
+using test::hill;
+using test::kNorthUp;
 
 }  // namespace
 
@@ -241,22 +238,7 @@ TEST_CASE("a read that fails after strokes were written leaves no output", "[cli
   // file is gone, so the run fails after the first strips' strokes are in the file.
   ScratchDir dir("midway");
   test::write_tiff(dir / "top.tif", 40, 40, 1, hill, kNorthUp, 32616);
-  std::ofstream(dir / "dem.vrt") << R"(<VRTDataset rasterXSize="40" rasterYSize="80">
-  <SRS>EPSG:32616</SRS>
-  <GeoTransform>500000, 10, 0, 4000000, 0, -10</GeoTransform>
-  <VRTRasterBand dataType="Float32" band="1">
-    <SimpleSource>
-      <SourceFilename relativeToVRT="1">top.tif</SourceFilename><SourceBand>1</SourceBand>
-      <SrcRect xOff="0" yOff="0" xSize="40" ySize="40"/>
-      <DstRect xOff="0" yOff="0" xSize="40" ySize="40"/>
-    </SimpleSource>
-    <SimpleSource>
-      <SourceFilename relativeToVRT="1">gone.tif</SourceFilename><SourceBand>1</SourceBand>
-      <SrcRect xOff="0" yOff="0" xSize="40" ySize="40"/>
-      <DstRect xOff="0" yOff="40" xSize="40" ySize="40"/>
-    </SimpleSource>
-  </VRTRasterBand>
-</VRTDataset>)";
+  test::write_half_missing_vrt(dir / "dem.vrt", "top.tif");
   const CliRun top = run_cli({"silhouettes", dir / "top.tif", dir / "top.gpkg"});
   REQUIRE(top.code == 0);
   REQUIRE(summarise(dir / "top.gpkg").features > 0);

@@ -28,6 +28,7 @@
 #include "dem_reader.h"
 #include "diagnostics.h"
 #include "drape.h"
+#include "gdal_test_support.h"
 #include "gpkg_index_check.h"
 #include "profile_plot.h"
 #include "provider.h"
@@ -589,5 +590,26 @@ TEST_CASE("a GDAL layer's file is read straight through GDAL, with the provider'
           std::count_if(a.data(), a.data() + a.size(), [](float z) { return std::isnan(z); }));
     }
     CHECK(nodata > 0);
+  }
+}
+
+TEST_CASE("a raster that fails to read partway fails the run and leaves no output",
+          "[plugin][outputs][robustness]") {
+  QTemporaryDir dir;
+  const std::string folder = dir.path().toStdString();
+  test::write_tiff(folder + "/top.tif", 40, 40, 1, test::hill, test::kNorthUp, 32616);
+  test::write_half_missing_vrt(folder + "/dem.vrt", "top.tif");
+  const QStringList before = QDir(dir.path()).entryList(QDir::Files);
+  for (const char* format : {"gpkg", "shp"}) {
+    CAPTURE(format);
+    const Run run =
+        runAlgorithm(dir.filePath("dem.vrt"),
+                     {{"STRIPS", 5},
+                      {"FACTUAL", dir.filePath(QStringLiteral("factual.%1").arg(format))},
+                      {"FORMULATED", dir.filePath(QStringLiteral("formulated.%1").arg(format))}},
+                     dir);
+    CHECK_FALSE(run.ok);
+    CHECK(run.error.contains("gone.tif"));
+    CHECK(QDir(dir.path()).entryList(QDir::Files) == before);
   }
 }
