@@ -249,14 +249,6 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
   } else {
     reader = std::make_unique<io::DemStripReader>(o.input, o.dem, o.params.threads);
     dem = reader->info();
-    // Read strip by strip, every block is read once: a cache of an eighth of the DEM, from 8 to
-    // 64 MB, is plenty, and keeps a small DEM's run small.
-    if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) {
-      const double bytes =
-          4.0 * static_cast<double>(dem.frame.dem_rows) * static_cast<double>(dem.frame.dem_cols);
-      GDALSetCacheMax64(
-          static_cast<GIntBig>(std::clamp(bytes / 8, 8.0 * (1 << 20), 64.0 * (1 << 20))));
-    }
     if (!dem.notes.empty()) err << "note: " << dem.notes;
   }
   // Strokes are written as they complete, so they are never all held (but for the preview).

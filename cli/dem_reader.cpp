@@ -172,9 +172,16 @@ std::vector<HeightGrid> read_bands(const std::string& path) {
   return bands;
 }
 
-BandWindows::BandWindows(const std::string& path, int band) {
-  GdalErrorCapture capture;
-  dataset_ = open_raster(path);
+BandWindows::BandWindows(const std::string& path, int band)
+    : BandWindows(
+          [&] {
+            GdalErrorCapture capture;
+            return open_raster(path);
+          }(),
+          path, band) {}
+
+BandWindows::BandWindows(DatasetPtr dataset, const std::string& path, int band)
+    : dataset_(std::move(dataset)) {
   if (band < 1 || band > dataset_->GetRasterCount()) {
     throw Error("band " + std::to_string(band) + " does not exist in '" + path + "'");
   }
@@ -222,7 +229,7 @@ void BandWindows::drop_block_rows_above(std::size_t keep) const {
 }
 
 struct DemStripReader::Source {
-  DatasetPtr dataset;
+  std::unique_ptr<BandWindows> file;
   WindowReader read;
   std::unique_ptr<StripLoader> loader;
 };
@@ -230,9 +237,12 @@ struct DemStripReader::Source {
 DemStripReader::DemStripReader(const std::string& path, const DemOptions& options, unsigned threads)
     : source_(std::make_unique<Source>()) {
   GdalErrorCapture capture;
-  source_->dataset = open_raster(path);
-  dem_ = describe_dem(*source_->dataset, path, options);
-  source_->read = band_reader(*source_->dataset->GetRasterBand(options.band), path);
+  DatasetPtr dataset = open_raster(path);
+  dem_ = describe_dem(*dataset, path, options);
+  source_->file = std::make_unique<BandWindows>(std::move(dataset), path, options.band);
+  source_->read = [&file = *source_->file](const DemWindow& w, float* heights) {
+    file.read(w, heights);
+  };
   source_->loader = std::make_unique<StripLoader>(dem_.frame, source_->read, threads);
 }
 

@@ -34,7 +34,8 @@ Dem read_dem(const std::string& path, const DemOptions& options);
 
 // Reads a DEM strip by strip for DEMs too large for memory: profiles [first, first + count) are
 // read window by window (rows or columns of the DEM for a cardinal view, the band of cells their
-// samples need for any other) and turned into oriented rows.
+// samples need for any other) and turned into oriented rows, through BandWindows, so GDAL's cache
+// holds about two rows of blocks.
 class DemStripReader {
  public:
   DemStripReader(const std::string& path, const DemOptions& options, unsigned threads = 0);
@@ -61,6 +62,8 @@ class BandWindows {
  public:
   // Throws Error when `path` cannot be opened as a raster or has no band `band`.
   BandWindows(const std::string& path, int band);
+  // Band `band` of `dataset`, opened from `path`.
+  BandWindows(DatasetPtr dataset, const std::string& path, int band);
   ~BandWindows();
   std::size_t rows() const { return rows_; }
   std::size_t cols() const { return cols_; }

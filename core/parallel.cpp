@@ -62,4 +62,44 @@ void parallel_for(std::size_t count, unsigned threads,
   if (cancelled) throw Cancelled();
 }
 
+Worker::Worker(bool on_own_thread) {
+  if (on_own_thread) thread_ = std::thread([this] { serve(); });
+}
+
+Worker::~Worker() {
+  if (!thread_.joinable()) return;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_one();
+  thread_.join();
+}
+
+std::future<void> Worker::run(std::function<void()> task) {
+  if (!thread_.joinable()) return std::async(std::launch::deferred, std::move(task));
+  std::packaged_task<void()> packaged(std::move(task));
+  std::future<void> done = packaged.get_future();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    tasks_.push_back(std::move(packaged));
+  }
+  wake_.notify_one();
+  return done;
+}
+
+void Worker::serve() {
+  for (;;) {
+    std::packaged_task<void()> task;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [this] { return stopping_ || !tasks_.empty(); });
+      if (tasks_.empty()) return;  // stopping, every task done
+      task = std::move(tasks_.front());
+      tasks_.pop_front();
+    }
+    task();  // what it throws goes to its future
+  }
+}
+
 }  // namespace tsk

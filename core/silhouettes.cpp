@@ -367,16 +367,16 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
     const std::size_t hi = std::min(frame.profiles, first + strip + 1);
     read(lo, hi - lo, heights);
   };
-  // The next strip is read while this one is processed, into memory of its own.
-  const auto launch =
-      resolve_threads(params.threads) > 1 ? std::launch::async : std::launch::deferred;
+  // The next strip is read while this one is processed, into memory of its own, by a reader of
+  // its own.
   HeightGrid current, next;
-  read_strip(0, current);
+  Worker reader(resolve_threads(params.threads) > 1);
+  reader.run([&] { read_strip(0, current); }).get();
   for (std::size_t first = 0; first < frame.profiles; first += strip) {
     std::future<void> reading;
     if (first + strip < frame.profiles)
-      reading = std::async(launch, read_strip, first + strip, std::ref(next));
-    // If processing throws, the future's destructor waits for the read to end.
+      reading = reader.run([&, first] { read_strip(first + strip, next); });
+    // If processing throws, the reader finishes the read before it goes.
     stream.add_strip(current, first, std::min(strip, frame.profiles - first));
     if (reading.valid()) reading.get();
     std::swap(current, next);

@@ -426,3 +426,27 @@ TEST_CASE("the per-profile stages classify as the whole-grid stages, nodata marg
   CHECK(filtered > 60);
   CHECK(thinned > 0);
 }
+
+TEST_CASE("a worker runs its tasks in turn on one thread of its own", "[pipeline]") {
+  std::vector<std::thread::id> ran;
+  {
+    Worker worker;
+    std::vector<std::future<void>> done;
+    for (int k = 0; k < 5; ++k)
+      done.push_back(worker.run([&ran] { ran.push_back(std::this_thread::get_id()); }));
+    done.push_back(worker.run([] { throw Error("read failed"); }));
+    for (int k = 0; k < 5; ++k) done[static_cast<std::size_t>(k)].get();
+    CHECK_THROWS_WITH(done.back().get(), "read failed");
+    worker.run([&ran] { ran.push_back(std::this_thread::get_id()); });  // finished on destruction
+  }
+  REQUIRE(ran.size() == 6);
+  CHECK(std::all_of(ran.begin(), ran.end(), [&](std::thread::id id) { return id == ran.front(); }));
+  CHECK(ran.front() != std::this_thread::get_id());
+  // Without a thread of its own, a task runs on the caller's thread when its result is asked for.
+  Worker in_turn(false);
+  bool run = false;
+  std::future<void> later = in_turn.run([&run] { run = true; });
+  CHECK_FALSE(run);
+  later.get();
+  CHECK(run);
+}
