@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gdal_util.h"
+#include "silhouettes.h"
 
 namespace tsk::io {
 namespace {
@@ -149,6 +150,12 @@ Dem read_dem(const std::string& path, const DemOptions& options) {
   GdalErrorCapture capture;
   auto dataset = open_raster(path);
   Dem dem = describe_dem(*dataset, path, options);
+  if (too_large_to_turn_whole(dem.frame)) {
+    throw Error("'" + path + "' (" + std::to_string(dem.cols) + " x " + std::to_string(dem.rows) +
+                " cells) is too large for this command, which holds the whole DEM turned to the "
+                "view: that would take more than half of this machine's memory. `silhouettes` "
+                "reads large DEMs strip by strip; or clip or resample the DEM");
+  }
   try {
     read_band(path, *dataset->GetRasterBand(options.band), dem);
   } catch (const std::bad_alloc&) {

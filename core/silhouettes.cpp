@@ -406,11 +406,26 @@ SilhouetteResult run_resampled_silhouettes(const HeightGrid& dem, const Oriented
   return result;
 }
 
-bool too_large_to_hold(std::size_t rows, std::size_t cols) {
+namespace {
+
+bool over_half_the_memory(double bytes) {
   const double memory =
       static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
-  const double bytes = 5.0 * static_cast<double>(rows) * static_cast<double>(cols);
   return memory > 0 && bytes > 0.5 * memory;
+}
+
+}  // namespace
+
+bool too_large_to_hold(std::size_t rows, std::size_t cols) {
+  return over_half_the_memory(5.0 * static_cast<double>(rows) * static_cast<double>(cols));
+}
+
+bool too_large_to_turn_whole(const OrientedFrame& frame) {
+  const double dem = frame.resampled ? 4.0 * static_cast<double>(frame.dem_rows) *
+                                           static_cast<double>(frame.dem_cols)
+                                     : 0.0;
+  return over_half_the_memory(dem + 5.0 * static_cast<double>(frame.profiles) *
+                                        static_cast<double>(frame.length));
 }
 
 std::size_t strip_profiles(const OrientedFrame& frame) {

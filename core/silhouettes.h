@@ -101,6 +101,11 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
 // memory: it must be read in strips.
 bool too_large_to_hold(std::size_t rows, std::size_t cols);
 
+// True when turning a whole DEM for this view and classifying it would take more than half of
+// this machine's memory: the turned grid at 5 bytes a cell and, resampled, the DEM beside it at 4.
+// Reading that much could not fail cleanly: memory is promised freely and taken at first use.
+bool too_large_to_turn_whole(const OrientedFrame& frame);
+
 // Profiles per strip for a strip-by-strip run of this view: up to 1024, fewer for profiles so
 // long that a run's strips (two of heights, the classification and, resampled, the band: 9 or
 // 13 bytes a cell) would pass 512 MiB, at least 16.

@@ -18,6 +18,7 @@
 #include "core_errors.h"
 #include "dem_reader.h"
 #include "qgis_compat.h"
+#include "silhouettes.h"
 
 namespace tsk::plugin {
 namespace {
@@ -192,6 +193,14 @@ double RasterGrid::lowestHeight() const {
 void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
                       double progressTo) {
   setView(azimuthDeg);
+  if (too_large_to_turn_whole(mFrame)) {
+    throw QgsProcessingException(
+        tr("The raster (%1 x %2 cells) is too large for this algorithm, which holds the whole DEM "
+           "turned to the view: that would take more than half of this machine's memory. The "
+           "Silhouettes algorithm reads large DEMs strip by strip; or clip or resample the DEM.")
+            .arg(mCols)
+            .arg(mRows));
+  }
   try {
     readBlocks(feedback, progressFrom, progressTo);
   } catch (const Error& e) {

@@ -100,4 +100,14 @@ inline void write_half_missing_vrt(const std::string& vrt, const std::string& to
 </VRTDataset>)";
 }
 
+// A VRT of 100000 x 100000 cells with no source (every cell nodata): it opens at once, and
+// holding it whole would take 50 GB.
+inline void write_huge_vrt(const std::string& vrt) {
+  std::ofstream(vrt) << R"(<VRTDataset rasterXSize="100000" rasterYSize="100000">
+  <SRS>EPSG:32616</SRS>
+  <GeoTransform>500000, 10, 0, 4000000, 0, -10</GeoTransform>
+  <VRTRasterBand dataType="Float32" band="1"><NoDataValue>-9999</NoDataValue></VRTRasterBand>
+</VRTDataset>)";
+}
+
 }  // namespace tsk::test

@@ -503,3 +503,20 @@ TEST_CASE("band windows read a file's heights and let GDAL keep only the rows in
   CHECK_THROWS_AS(io::BandWindows(path, 2), Error);
   CHECK_THROWS_AS(io::BandWindows(dir / "missing.tif", 1), Error);
 }
+
+TEST_CASE("a DEM too large to hold whole is refused by the commands that need it whole",
+          "[cli][robustness]") {
+  ScratchDir dir("huge");
+  test::write_huge_vrt(dir / "huge.vrt");
+  for (const char* command : {"classify", "row-slope"}) {
+    CAPTURE(command);
+    const CliRun run = run_cli({command, dir / "huge.vrt", dir / "out.tif"});
+    CHECK(run.code == 1);
+    CHECK_THAT(run.err, Catch::Contains("too large") && Catch::Contains("strip by strip"));
+  }
+  const CliRun preview =
+      run_cli({"silhouettes", dir / "huge.vrt", dir / "out.gpkg", "--preview", dir / "p.png"});
+  CHECK(preview.code == 1);
+  CHECK_THAT(preview.err, Catch::Contains("too large"));
+  CHECK(dir.file_count() == 1);
+}

@@ -295,6 +295,10 @@ TEST_CASE("strips are needed only for DEMs too large to hold and are sized by pr
           "[pipeline][strips]") {
   CHECK_FALSE(too_large_to_hold(100, 100));
   CHECK(too_large_to_hold(std::size_t{1} << 30, std::size_t{1} << 20));
+  // Turned whole: 5 bytes a cell of the turned grid, with the DEM beside it when resampled.
+  CHECK_FALSE(too_large_to_turn_whole(make_frame(1000, 1000, 10, 10, 45)));
+  CHECK(too_large_to_turn_whole(make_frame(100000, 100000, 10, 10, 90)));
+  CHECK(too_large_to_turn_whole(make_frame(100000, 100000, 10, 10, 45)));
   CHECK(strip_profiles(make_frame(8000, 8000, 25, 25, 90)) == 1024);
   // 40000 x 40000 at 45 degrees: profiles 56 569 cells long, 13 bytes a cell.
   const OrientedFrame diagonal = make_frame(40000, 40000, 25, 25, 45);

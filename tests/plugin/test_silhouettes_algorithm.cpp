@@ -613,3 +613,16 @@ TEST_CASE("a raster that fails to read partway fails the run and leaves no outpu
     CHECK(QDir(dir.path()).entryList(QDir::Files) == before);
   }
 }
+
+TEST_CASE("a DEM too large to hold whole is refused by the algorithms that need it whole",
+          "[plugin][robustness]") {
+  QTemporaryDir dir;
+  test::write_huge_vrt(dir.filePath("huge.vrt").toStdString());
+  for (const char* id : {"classification", "rowslope", "profileplot"}) {
+    CAPTURE(id);
+    const Run run = runAlgorithm(dir.filePath("huge.vrt"), {}, dir, nullptr, id);
+    CHECK_FALSE(run.ok);
+    CHECK(run.error.contains("too large"));
+    CHECK(QDir(dir.path()).entryList(QDir::Files) == QStringList{"huge.vrt"});
+  }
+}
