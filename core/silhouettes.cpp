@@ -355,11 +355,35 @@ SilhouetteResult SilhouetteStream::finish() {
   return std::move(result);
 }
 
+namespace {
+
+bool over_half_the_memory(double bytes) {
+  const double memory =
+      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+  return memory > 0 && bytes > 0.5 * memory;
+}
+
+// What a strip-by-strip run holds per profile of a strip: two strips of heights (the one processed
+// and the one being read), the classification and, resampled, the band of DEM cells.
+double strip_bytes_per_profile(const OrientedFrame& frame) {
+  return (frame.resampled ? 13.0 : 9.0) *
+         static_cast<double>(std::max<std::size_t>(1, frame.length));
+}
+
+}  // namespace
+
 SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& geotransform,
                                const SilhouetteParams& params, double z_ref, std::size_t strip,
                                const ProfileReader& read, const ProgressFn& progress,
                                StrokeSink sink) {
   if (strip == 0) throw Error("a strip needs at least one profile");
+  const std::size_t held = std::min(strip, frame.profiles) + 2;
+  if (over_half_the_memory(strip_bytes_per_profile(frame) * static_cast<double>(held))) {
+    throw Error("strips of " + std::to_string(strip) + " profiles of " +
+                std::to_string(frame.length) +
+                " cells would take more than half of this machine's memory; choose fewer "
+                "profiles per strip (0 chooses them)");
+  }
   SilhouetteStream stream(frame, geotransform, params, z_ref, progress, std::move(sink));
   // The strip starting at `first` with its neighbours.
   auto read_strip = [&](std::size_t first, HeightGrid& heights) {
@@ -406,16 +430,6 @@ SilhouetteResult run_resampled_silhouettes(const HeightGrid& dem, const Oriented
   return result;
 }
 
-namespace {
-
-bool over_half_the_memory(double bytes) {
-  const double memory =
-      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
-  return memory > 0 && bytes > 0.5 * memory;
-}
-
-}  // namespace
-
 bool too_large_to_hold(std::size_t rows, std::size_t cols) {
   return over_half_the_memory(5.0 * static_cast<double>(rows) * static_cast<double>(cols));
 }
@@ -430,8 +444,7 @@ bool too_large_to_turn_whole(const OrientedFrame& frame) {
 
 std::size_t strip_profiles(const OrientedFrame& frame) {
   constexpr double kBudget = 512.0 * 1024 * 1024;
-  const double bytes_per_profile =
-      (frame.resampled ? 13.0 : 9.0) * static_cast<double>(std::max<std::size_t>(1, frame.length));
+  const double bytes_per_profile = strip_bytes_per_profile(frame);
   return static_cast<std::size_t>(
       std::clamp(std::floor(kBudget / bytes_per_profile), 16.0, 1024.0));
 }

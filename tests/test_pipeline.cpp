@@ -371,6 +371,18 @@ TEST_CASE("what a stroke sink throws ends the run", "[pipeline][strips]") {
       "disk full");
 }
 
+TEST_CASE("strips too wide for the machine's memory are refused before any read",
+          "[pipeline][strips]") {
+  // Profiles 2^24 cells long: 2^16 of them in a strip would be 9 TiB.
+  const OrientedFrame frame = make_frame(std::size_t{1} << 16, std::size_t{1} << 24, 10, 10, 90);
+  bool read = false;
+  const ProfileReader reader = [&read](std::size_t, std::size_t, HeightGrid&) { read = true; };
+  CHECK_THROWS_WITH(run_in_strips(frame, {}, {}, 0.0, std::size_t{1} << 16, reader),
+                    Catch::Contains("more than half of this machine's memory"));
+  CHECK_FALSE(read);
+  CHECK(strip_profiles(frame) == 16);
+}
+
 TEST_CASE("stage counts are the flags counted, on profiles longer than a counting block",
           "[pipeline]") {
   // Counts are gathered eight cells at a time in blocks of 2040 cells: lengths around that.
