@@ -99,9 +99,10 @@ RasterGrid::RasterGrid(QgsRasterLayer* layer, int band,
     }
   }
   if (bands > 1) mNotes << tr("The raster has %1 bands; band %2 is used.").arg(bands).arg(band);
+  mFile = openFile(*layer, band);
+  if (mFile) return;
   mProvider.reset(layer->dataProvider()->clone());
   if (!mProvider) throw QgsProcessingException(tr("Could not open the raster's data provider."));
-  mFile = openFile(*layer, band);
 }
 
 std::unique_ptr<io::BandWindows> RasterGrid::openFile(QgsRasterLayer& layer, int band) const {

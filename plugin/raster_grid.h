@@ -1,5 +1,6 @@
 // Adapter from a QGIS raster layer to the core's oriented grid: prepared on the main thread,
-// read on the worker thread through a clone of the layer's data provider.
+// read on the worker thread from the layer's file through GDAL, or through a clone of its data
+// provider.
 #pragma once
 
 #include <qgscoordinatereferencesystem.h>
@@ -74,8 +75,8 @@ class RasterGrid {
   // Reads a window of the band, NaN for nodata.
   void readWindow(const DemWindow& window, float* heights) const;
 
-  std::unique_ptr<QgsRasterDataProvider> mProvider;
   std::unique_ptr<io::BandWindows> mFile;
+  std::unique_ptr<QgsRasterDataProvider> mProvider;  // when mFile is null
   int mBand = 1;
   int mCols = 0;
   int mRows = 0;
