@@ -627,18 +627,21 @@ TEST_CASE("a DEM too large to hold whole is refused by the algorithms that need 
   }
 }
 
-TEST_CASE("a rotated raster is read as QGIS warps it, through its provider",
+TEST_CASE("a rotated or south-up raster is read as QGIS warps it, through its provider",
           "[plugin][robustness]") {
   QTemporaryDir dir;
   const double rotated[6] = {500000, 10, 2, 4000000, 2, -10};
-  const QString path = dir.filePath("rotated.tif");
-  test::write_tiff(path.toStdString(), 40, 40, 1, test::hill, rotated, 32616);
-  QgsRasterLayer layer(path, "rotated", "gdal");
-  REQUIRE(layer.isValid());
-  CHECK(layer.width() != 40);  // QGIS shows it through a warped, north-up copy
-  CHECK_FALSE(plugin::RasterGrid(&layer, 1, QgsCoordinateTransformContext()).readsFileDirectly());
-  const Run run = runAlgorithm(path, {}, dir);
-  INFO(run.error.toStdString());
-  REQUIRE(run.ok);
-  CHECK(run.results.value("FACTUAL_STROKES").toDouble() > 0);
+  const double southUp[6] = {500000, 10, 0, 3999600, 0, 10};
+  for (const double* transform : {rotated, southUp}) {
+    const QString path = dir.filePath(transform == rotated ? "rotated.tif" : "south_up.tif");
+    CAPTURE(path.toStdString());
+    test::write_tiff(path.toStdString(), 40, 40, 1, test::hill, transform, 32616);
+    QgsRasterLayer layer(path, "warped", "gdal");
+    REQUIRE(layer.isValid());
+    CHECK_FALSE(plugin::RasterGrid(&layer, 1, QgsCoordinateTransformContext()).readsFileDirectly());
+    const Run run = runAlgorithm(path, {}, dir);
+    INFO(run.error.toStdString());
+    REQUIRE(run.ok);
+    CHECK(run.results.value("FACTUAL_STROKES").toDouble() > 0);
+  }
 }
