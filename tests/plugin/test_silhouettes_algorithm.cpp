@@ -645,3 +645,30 @@ TEST_CASE("a rotated or south-up raster is read as QGIS warps it, through its pr
     CHECK(run.results.value("FACTUAL_STROKES").toDouble() > 0);
   }
 }
+
+TEST_CASE("the band asked for is the band read from the file", "[plugin][strips]") {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("two_bands.tif");
+  test::write_tiff(
+      path.toStdString(), 40, 40, 2, [](int b, int r, int c) { return test::hill(b, r, c) * b; },
+      test::kNorthUp, 32616);
+  QgsRasterLayer layer(path, "two", "gdal");
+  REQUIRE(layer.isValid());
+  plugin::RasterGrid first(&layer, 1, QgsCoordinateTransformContext());
+  plugin::RasterGrid second(&layer, 2, QgsCoordinateTransformContext());
+  REQUIRE(second.readsFileDirectly());
+  HeightGrid a, b;
+  first.setView(90);
+  second.setView(90);
+  first.readProfiles(0, 40, a);
+  second.readProfiles(0, 40, b);
+  REQUIRE(a.size() == b.size());
+  std::size_t compared = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (a.data()[k] > 1) {
+      REQUIRE(b.data()[k] == 2 * a.data()[k]);
+      ++compared;
+    }
+  }
+  CHECK(compared > 100);
+}
