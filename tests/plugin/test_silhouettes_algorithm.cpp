@@ -672,3 +672,22 @@ TEST_CASE("the band asked for is the band read from the file", "[plugin][strips]
   }
   CHECK(compared > 100);
 }
+
+TEST_CASE("both outputs can go into one new GeoPackage", "[plugin][outputs]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/jacksboro_utm16n.tif";
+  const QString file = dir.filePath("both.gpkg");
+  const auto layer = [&file](const char* name) {
+    return QStringLiteral("ogr:dbname='%1' table=\"%2\" (geom)").arg(file, name);
+  };
+  const Run run =
+      runAlgorithm(dem, {{"FACTUAL", layer("factual")}, {"FORMULATED", layer("formulated")}}, dir);
+  INFO(run.error.toStdString());
+  REQUIRE(run.ok);
+  CHECK(layerNames(file) == (QStringList{"factual", "formulated"}));
+  const SilhouetteResult core = coreResult(dem, 90, Geometry::map);
+  QgsVectorLayer factual(run.results.value("FACTUAL").toString(), "f", "ogr");
+  QgsVectorLayer formulated(run.results.value("FORMULATED").toString(), "o", "ogr");
+  CHECK(factual.featureCount() == static_cast<long long>(core.stats.factual_strokes));
+  CHECK(formulated.featureCount() == static_cast<long long>(core.stats.formulated_strokes));
+}
