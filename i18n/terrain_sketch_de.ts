@@ -39,97 +39,97 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="47" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="45" />
         <source>Elevation (DEM)</source>
         <translation>Höhenmodell (DGM)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="48" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="46" />
         <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
         <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="49" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="47" />
         <source>Band</source>
         <translation>Kanal</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="51" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="49" />
         <source>The band holding the heights.</source>
         <translation>Der Kanal mit den Höhen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="53" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="51" />
         <source>View azimuth (degrees)</source>
         <translation>Blickrichtung (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="54" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="52" />
         <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
         <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="60" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
         <source>Vertical exaggeration</source>
         <translation>Überhöhung</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="61" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="59" />
         <source>Factor applied to heights before occlusion is computed.</source>
         <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="62" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="60" />
         <source>Base slope (%)</source>
         <translation>Grundneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="64" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="62" />
         <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
         <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="70" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="68" />
         <source>Row slope cut-off (%)</source>
         <translation>Grenzwert Zeilenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="72" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="70" />
         <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
         <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="74" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="72" />
         <source>Column slope cut-off (%)</source>
         <translation>Grenzwert Spaltenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="76" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="74" />
         <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
         <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="78" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="76" />
         <source>Control point column slope (%)</source>
         <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="80" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="78" />
         <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
         <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="84" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="82" />
         <source>Allow for diagonals</source>
         <translation>Diagonalen berücksichtigen</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="85" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="83" />
         <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
         <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="158" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="128" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -209,6 +209,24 @@
         <location filename="../plugin/filter_diagram_algorithm.cpp" line="67" />
         <source>Could not write %1.</source>
         <translation>%1 konnte nicht geschrieben werden.</translation>
+    </message>
+</context>
+<context>
+    <name>LineOutput</name>
+    <message>
+        <location filename="../plugin/line_output.cpp" line="76" />
+        <source>Could not create destination layer for %1: invalid value</source>
+        <translation>Die Zielebene für %1 konnte nicht erstellt werden: ungültiger Wert</translation>
+    </message>
+    <message>
+        <location filename="../plugin/line_output.cpp" line="125" />
+        <source>Could not write a feature into %1</source>
+        <translation>Ein Objekt konnte nicht in %1 geschrieben werden</translation>
+    </message>
+    <message>
+        <location filename="../plugin/line_output.cpp" line="126" />
+        <source>Could not write a feature into %1: %2</source>
+        <translation>Ein Objekt konnte nicht in %1 geschrieben werden: %2</translation>
     </message>
 </context>
 <context>
@@ -348,57 +366,62 @@
 <context>
     <name>RasterGrid</name>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="65" />
+        <location filename="../plugin/raster_grid.cpp" line="69" />
         <source>The input raster layer is not valid.</source>
         <translation>Der Eingaberasterlayer ist ungültig.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="70" />
+        <location filename="../plugin/raster_grid.cpp" line="74" />
         <source>Band %1 does not exist: the raster has %2 band(s).</source>
         <translation>Kanal %1 existiert nicht: das Raster hat %2 Kanal/Kanäle.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="77" />
+        <location filename="../plugin/raster_grid.cpp" line="81" />
         <source>The raster has no cells.</source>
         <translation>Das Raster hat keine Zellen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="80" />
+        <location filename="../plugin/raster_grid.cpp" line="84" />
         <source>The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres like its heights. Reproject it to a metric CRS first, for example with Raster &gt; Projections &gt; Warp (Reproject) to the UTM zone of the area.</source>
         <translation>Das Raster liegt in einem geographischen KBS (%1): seine Zellgrößen sind Grad, nicht Meter wie seine Höhen. Projizieren Sie es zuerst in ein metrisches KBS, zum Beispiel mit Raster &gt; Projektionen &gt; Transformieren (Reprojizieren) in die UTM-Zone des Gebiets.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="86" />
+        <location filename="../plugin/raster_grid.cpp" line="90" />
         <source>The raster has no CRS: cell sizes are taken as metres and the outputs have no CRS.</source>
         <translation>Das Raster hat kein KBS: Zellgrößen werden als Meter angenommen, die Ausgaben haben kein KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="92" />
+        <location filename="../plugin/raster_grid.cpp" line="96" />
         <source>Mercator projection: map units are not ground metres here; cell sizes are scaled by cos(latitude of the centre) = %1.</source>
         <translation>Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen werden mit cos(Breite der Mitte) = %1 skaliert.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="97" />
+        <location filename="../plugin/raster_grid.cpp" line="101" />
         <source>The raster has %1 bands; band %2 is used.</source>
         <translation>Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="99" />
+        <location filename="../plugin/raster_grid.cpp" line="105" />
         <source>Could not open the raster's data provider.</source>
         <translation>Der Datenanbieter des Rasters konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="159" />
+        <location filename="../plugin/raster_grid.cpp" line="199" />
+        <source>The raster (%1 x %2 cells) is too large for this algorithm, which holds the whole DEM turned to the view: that would take more than half of this machine's memory. The Silhouettes algorithm reads large DEMs strip by strip; or clip or resample the DEM.</source>
+        <translation>Das Raster (%1 x %2 Zellen) ist zu groß für diesen Algorithmus, der das ganze DGM zur Blickrichtung gedreht im Speicher hält: das würde mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen. Der Algorithmus Silhouetten liest große DGM Streifen für Streifen; oder schneiden Sie das DGM zu oder verringern Sie seine Auflösung.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="211" />
         <source>Not enough memory for a %1 x %2 raster.</source>
         <translation>Nicht genug Speicher für ein Raster von %1 x %2.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="171" />
+        <location filename="../plugin/raster_grid.cpp" line="222" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="135" />
+        <location filename="../plugin/raster_grid.cpp" line="179" />
         <source>Could not read rows %1 to %2 of the raster.</source>
         <translation>Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
     </message>
@@ -442,22 +465,22 @@
 <context>
     <name>SilhouettesAlgorithm</name>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="39" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="41" />
         <source>Silhouettes (factual and formulated)</source>
         <translation>Silhouetten (faktisch und formuliert)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="43" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="45" />
         <source>silhouette,occluding contour,sketch,oblique,panorama,block diagram,plan oblique,terrain,dem,hidden</source>
         <translation>Silhouette,Verdeckungskontur,Skizze,Schrägansicht,Panorama,Blockbild,Plan oblique,Gelände,DGM,verdeckt</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="49" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="51" />
         <source>Draws the silhouette lines of a DEM seen obliquely from above as vector strokes.</source>
         <translation>Zeichnet die Silhouettenlinien eines schräg von oben gesehenen DGM als Vektorstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="53" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="55" />
         <source>Finds the lines a cartographer sketches first when drawing terrain seen obliquely from above.
 
 Factual Silhouettes are occluding contours: cells beyond which the terrain hides what lies behind it, in a parallel view with vertical exaggeration and a base slope added along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view brings into sight (the candidate set), kept where the slope filter finds them significant (outside the weak/weak corner of column slope against row slope), thinned to the cell furthest from the viewer and chained across profiles.
@@ -478,107 +501,107 @@ Zwei Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter
 Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="88" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="90" />
         <source>Chaining window (cells)</source>
         <translation>Verkettungsfenster (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="89" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="91" />
         <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
         <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="90" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="92" />
         <source>Minimum stroke cells</source>
         <translation>Mindestzahl Zellen je Strich</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="91" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
         <source>Strokes with fewer cells are dropped (generalisation).</source>
         <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="92" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="94" />
         <source>Geometry</source>
         <translation>Geometrie</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="95" />
         <source>Map (cell centres)</source>
         <translation>Karte (Zellmittelpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="95" />
         <source>Plan oblique (the sketch)</source>
         <translation>Plan oblique (die Skizze)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="95" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="97" />
         <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
         <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="98" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="100" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="99" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="101" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="99" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="101" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="101" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="103" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="104" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="103" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="105" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="106" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="108" />
         <source>Profiles per strip (0: automatic)</source>
         <translation>Profile je Streifen (0: automatisch)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="107" />
-        <source>The DEM is read and processed this many profiles at a time, the next strip read while this one is processed, so DEMs larger than memory run too. 0 chooses 1024, or fewer when profiles are so long that the strips would take more than 512 MB.</source>
-        <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden.</translation>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="109" />
+        <source>The DEM is read and processed this many profiles at a time, the next strip read while this one is processed, so DEMs larger than memory run too. 0 chooses 1024, or fewer when profiles are so long that the strips would take more than 512 MB. Strips that would take more than half of this machine's memory are refused.</source>
+        <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="114" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="112" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="114" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="147" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="150" />
         <source>Processing the DEM in strips of %1 profiles.</source>
         <translation>Das DGM wird in Streifen zu %1 Profilen verarbeitet.</translation>
     </message>

@@ -262,11 +262,25 @@ GERMAN = {
     "Profiles per strip (0: automatic)": "Profile je Streifen (0: automatisch)",
     "The DEM is read and processed this many profiles at a time, the next strip read while this "
     "one is processed, so DEMs larger than memory run too. 0 chooses 1024, or fewer when profiles "
-    "are so long that the strips would take more than 512 MB.":
+    "are so long that the strips would take more than 512 MB. Strips that would take more than "
+    "half of this machine's memory are refused.":
         "Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen "
         "wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der "
         "Speicher sind. 0 wählt 1024, oder weniger, wenn die Profile so lang sind, dass die "
-        "Streifen mehr als 512 MB belegen würden.",
+        "Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des "
+        "Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.",
+    "Could not create destination layer for %1: invalid value":
+        "Die Zielebene für %1 konnte nicht erstellt werden: ungültiger Wert",
+    "Could not write a feature into %1": "Ein Objekt konnte nicht in %1 geschrieben werden",
+    "Could not write a feature into %1: %2":
+        "Ein Objekt konnte nicht in %1 geschrieben werden: %2",
+    "The raster (%1 x %2 cells) is too large for this algorithm, which holds the whole DEM turned "
+    "to the view: that would take more than half of this machine's memory. The Silhouettes "
+    "algorithm reads large DEMs strip by strip; or clip or resample the DEM.":
+        "Das Raster (%1 x %2 Zellen) ist zu groß für diesen Algorithmus, der das ganze DGM zur "
+        "Blickrichtung gedreht im Speicher hält: das würde mehr als die Hälfte des "
+        "Arbeitsspeichers dieses Rechners belegen. Der Algorithmus Silhouetten liest große DGM "
+        "Streifen für Streifen; oder schneiden Sie das DGM zu oder verringern Sie seine Auflösung.",
     "Processing the DEM in strips of %1 profiles.": "Das DGM wird in Streifen zu %1 Profilen verarbeitet.",
     "P-strokes as lines with their class and score.":
         "P-Striche als Linien mit ihrer Klasse und Bewertung.",
