@@ -3,7 +3,6 @@
 #include <cpl_conv.h>
 #include <gdal.h>
 
-#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdio>
@@ -218,23 +217,13 @@ void write_text(const std::string& path, const std::string& text) {
   });
 }
 
-// True when the DEM would not fit in half of this machine's memory.
-bool raster_too_large_to_hold(const std::string& path) {
-  const auto dataset = io::open_raster(path);
-  const auto rows = static_cast<std::size_t>(dataset->GetRasterYSize());
-  const auto cols = static_cast<std::size_t>(dataset->GetRasterXSize());
-  return too_large_to_hold(rows, cols);
-}
-
 int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
   io::vector_driver_for(o.output, o.format);  // an unknown format fails before any work
-  // The preview draws the whole turned grid, so it needs the DEM whole.
+  // The preview draws the whole turned grid, so it needs the DEM whole (read_dem refuses one too
+  // large to hold).
   const bool whole = !o.preview.empty();
   if (whole && o.strips > 0) throw Error("--preview needs the whole DEM in memory; drop --strips");
-  if (whole && raster_too_large_to_hold(o.input)) {
-    throw Error("the DEM is too large to hold whole, which --preview needs; drop --preview");
-  }
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();

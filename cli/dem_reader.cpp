@@ -154,7 +154,7 @@ Dem read_dem(const std::string& path, const DemOptions& options) {
     throw Error("'" + path + "' (" + std::to_string(dem.cols) + " x " + std::to_string(dem.rows) +
                 " cells) is too large for this command, which holds the whole DEM turned to the "
                 "view: that would take more than half of this machine's memory. `silhouettes` "
-                "reads large DEMs strip by strip; or clip or resample the DEM");
+                "without `--preview` reads large DEMs strip by strip; or clip or resample the DEM");
   }
   try {
     read_band(path, *dataset->GetRasterBand(options.band), dem);

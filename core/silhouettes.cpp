@@ -430,10 +430,6 @@ SilhouetteResult run_resampled_silhouettes(const HeightGrid& dem, const Oriented
   return result;
 }
 
-bool too_large_to_hold(std::size_t rows, std::size_t cols) {
-  return over_half_the_memory(5.0 * static_cast<double>(rows) * static_cast<double>(cols));
-}
-
 bool too_large_to_turn_whole(const OrientedFrame& frame) {
   const double dem = frame.resampled ? 4.0 * static_cast<double>(frame.dem_rows) *
                                            static_cast<double>(frame.dem_cols)

@@ -97,10 +97,6 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
                                const ProfileReader& read, const ProgressFn& progress = {},
                                StrokeSink sink = {});
 
-// True for a DEM that, held whole (5 bytes a cell), would not fit in half of this machine's
-// memory: it must be read in strips.
-bool too_large_to_hold(std::size_t rows, std::size_t cols);
-
 // True when turning a whole DEM for this view and classifying it would take more than half of
 // this machine's memory: the turned grid at 5 bytes a cell and, resampled, the DEM beside it at 4.
 // Reading that much could not fail cleanly: memory is promised freely and taken at first use.

@@ -293,9 +293,10 @@ TEST_CASE("run_in_strips reads every strip with its neighbours and equals the wh
 
 TEST_CASE("strips are needed only for DEMs too large to hold and are sized by profile length",
           "[pipeline][strips]") {
-  CHECK_FALSE(too_large_to_hold(100, 100));
-  CHECK(too_large_to_hold(std::size_t{1} << 30, std::size_t{1} << 20));
   // Turned whole: 5 bytes a cell of the turned grid, with the DEM beside it when resampled.
+  CHECK_FALSE(too_large_to_turn_whole(make_frame(100, 100, 10, 10, 90)));
+  CHECK(
+      too_large_to_turn_whole(make_frame(std::size_t{1} << 30, std::size_t{1} << 20, 10, 10, 90)));
   CHECK_FALSE(too_large_to_turn_whole(make_frame(1000, 1000, 10, 10, 45)));
   CHECK(too_large_to_turn_whole(make_frame(100000, 100000, 10, 10, 90)));
   CHECK(too_large_to_turn_whole(make_frame(100000, 100000, 10, 10, 45)));
