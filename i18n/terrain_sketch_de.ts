@@ -212,24 +212,6 @@
     </message>
 </context>
 <context>
-    <name>LineOutput</name>
-    <message>
-        <location filename="../plugin/line_output.cpp" line="76" />
-        <source>Could not create destination layer for %1: invalid value</source>
-        <translation>Die Zielebene für %1 konnte nicht erstellt werden: ungültiger Wert</translation>
-    </message>
-    <message>
-        <location filename="../plugin/line_output.cpp" line="125" />
-        <source>Could not write a feature into %1</source>
-        <translation>Ein Objekt konnte nicht in %1 geschrieben werden</translation>
-    </message>
-    <message>
-        <location filename="../plugin/line_output.cpp" line="126" />
-        <source>Could not write a feature into %1: %2</source>
-        <translation>Ein Objekt konnte nicht in %1 geschrieben werden: %2</translation>
-    </message>
-</context>
-<context>
     <name>PStrokeAlgorithm</name>
     <message>
         <location filename="../plugin/pstroke_algorithm.cpp" line="19" />

@@ -269,11 +269,6 @@ GERMAN = {
         "Speicher sind. 0 wählt 1024, oder weniger, wenn die Profile so lang sind, dass die "
         "Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des "
         "Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.",
-    "Could not create destination layer for %1: invalid value":
-        "Die Zielebene für %1 konnte nicht erstellt werden: ungültiger Wert",
-    "Could not write a feature into %1": "Ein Objekt konnte nicht in %1 geschrieben werden",
-    "Could not write a feature into %1: %2":
-        "Ein Objekt konnte nicht in %1 geschrieben werden: %2",
     "The raster (%1 x %2 cells) is too large for this algorithm, which holds the whole DEM turned "
     "to the view: that would take more than half of this machine's memory. The Silhouettes "
     "algorithm reads large DEMs strip by strip; or clip or resample the DEM.":

@@ -60,6 +60,9 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   RasterGrid& preparedRaster() { return *mRaster; }
 
  private:
+  // For QGIS's own messages on a sink that cannot be made or written (protected in QGIS).
+  friend class LineOutput;
+
   std::unique_ptr<RasterGrid> mRaster;
   double mAzimuth = 90;
   std::size_t mWritten = 0;

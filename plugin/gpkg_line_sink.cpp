@@ -48,10 +48,16 @@ bool GpkgLineSink::addFeature(QgsFeature& feature, QgsFeatureSink::Flags) {
   }
 }
 
-void GpkgLineSink::addStroke(const Stroke& stroke) {
-  io::GpkgLineAppender& lines = mFile->lines();
-  set_stroke_attributes(lines, stroke);
-  lines.add(stroke.points);
+bool GpkgLineSink::addStroke(const Stroke& stroke) {
+  try {
+    io::GpkgLineAppender& lines = mFile->lines();
+    set_stroke_attributes(lines, stroke);
+    lines.add(stroke.points);
+    return true;
+  } catch (const Error& e) {
+    mError = QString::fromStdString(e.what());
+    return false;
+  }
 }
 
 bool GpkgLineSink::addFeatures(QgsFeatureList& features, QgsFeatureSink::Flags flags) {

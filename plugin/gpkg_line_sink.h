@@ -26,9 +26,9 @@ class GpkgLineSink : public QgsFeatureSink {
   bool addFeatures(QgsFeatureList& features,
                    QgsFeatureSink::Flags flags = QgsFeatureSink::Flags()) override;
   QString lastError() const override { return mError; }
-  // Adds `stroke` with the attributes of strokeFields() without making a feature of it; throws
-  // tsk::Error.
-  void addStroke(const Stroke& stroke);
+  // Adds `stroke` with the attributes of strokeFields() without making a feature of it; false
+  // (with lastError()) when it cannot, as addFeature.
+  bool addStroke(const Stroke& stroke);
 
   // Writes the layer's extent, count and spatial index and closes the file; throws tsk::Error.
   // Without it, nothing of the features is kept.

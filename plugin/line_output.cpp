@@ -12,6 +12,7 @@
 #include <exception>
 
 #include "core_errors.h"
+#include "dem_view_algorithm.h"
 #include "gpkg_line_sink.h"
 #include "qgis_compat.h"
 #include "stroke_features.h"
@@ -58,10 +59,13 @@ void dropLayer(const QString& path, const QString& layer) {
 
 }  // namespace
 
-LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
+LineOutput::LineOutput(const DemViewAlgorithm& algorithm, const QVariantMap& parameters,
                        const QString& key, QgsProcessingContext& context, const QgsFields& fields,
                        const QgsCoordinateReferenceSystem& crs)
-    : mKey(key), mFields(fields), mExceptionsAtStart(std::uncaught_exceptions()) {
+    : mParameters(parameters),
+      mKey(key),
+      mFields(fields),
+      mExceptionsAtStart(std::uncaught_exceptions()) {
   const QgsProcessingParameterDefinition* definition = algorithm.parameterDefinition(key);
   const QString target =
       QgsProcessingParameters::parameterAsOutputLayer(definition, parameters, context);
@@ -71,10 +75,7 @@ LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMa
       definition, parameters, fields, kLineString, crs, context, mDestination,
       QgsFeatureSink::SinkFlags(), QVariantMap(), QStringList(),
       gpkg ? QStringList{QStringLiteral("SPATIAL_INDEX=NO")} : QStringList()));
-  if (!mSink) {
-    throw QgsProcessingException(
-        tr("Could not create destination layer for %1: invalid value").arg(key));
-  }
+  if (!mSink) throw QgsProcessingException(DemViewAlgorithm::invalidSinkError(parameters, key));
   const QVariantMap parts =
       QgsProviderRegistry::instance()->decodeUri(QStringLiteral("ogr"), mDestination);
   if (!file.path.isEmpty()) {
@@ -97,19 +98,15 @@ LineOutput::~LineOutput() {
 }
 
 void LineOutput::add(QgsFeature& feature) {
-  if (!mSink->addFeature(feature, QgsFeatureSink::FastInsert)) failWriting(mSink->lastError());
+  if (!mSink->addFeature(feature, QgsFeatureSink::FastInsert)) failWriting();
 }
 
 void LineOutput::add(const Stroke& stroke) {
   if (!mGpkg) {
     QgsFeature feature = strokeFeature(stroke, mFields);
     add(feature);
-    return;
-  }
-  try {
-    mGpkg->addStroke(stroke);
-  } catch (const Error& e) {
-    failWriting(QString::fromStdString(e.what()));
+  } else if (!mGpkg->addStroke(stroke)) {
+    failWriting();
   }
 }
 
@@ -120,10 +117,8 @@ void LineOutput::finish() {
   mFinished = true;
 }
 
-void LineOutput::failWriting(const QString& reason) const {
-  throw QgsProcessingException(reason.isEmpty()
-                                   ? tr("Could not write a feature into %1").arg(mKey)
-                                   : tr("Could not write a feature into %1: %2").arg(mKey, reason));
+void LineOutput::failWriting() const {
+  throw QgsProcessingException(DemViewAlgorithm::writeFeatureError(mSink.get(), mParameters, mKey));
 }
 
 void LineOutput::discard() noexcept {

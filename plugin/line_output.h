@@ -10,9 +10,8 @@
 #include <qgsfeature.h>
 #include <qgsfeaturesink.h>
 #include <qgsfields.h>
-#include <qgsprocessingalgorithm.h>
+#include <qgsprocessingcontext.h>
 
-#include <QCoreApplication>
 #include <QString>
 #include <QVariantMap>
 #include <memory>
@@ -21,16 +20,15 @@
 
 namespace tsk::plugin {
 
+class DemViewAlgorithm;
 class GpkgLineSink;
 
 class LineOutput {
-  Q_DECLARE_TR_FUNCTIONS(LineOutput)
-
  public:
-  // Line output `key` of `algorithm` with `fields`, in `crs`. Throws QgsProcessingException when
-  // the destination cannot be created.
-  LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
-             const QString& key, QgsProcessingContext& context, const QgsFields& fields,
+  // Line output `key` of `algorithm` with `fields`, in `crs`. Throws QgsProcessingException with
+  // QGIS's message when the destination cannot be created.
+  LineOutput(const DemViewAlgorithm& algorithm, const QVariantMap& parameters, const QString& key,
+             QgsProcessingContext& context, const QgsFields& fields,
              const QgsCoordinateReferenceSystem& crs);
   ~LineOutput();
   LineOutput(const LineOutput&) = delete;
@@ -39,7 +37,7 @@ class LineOutput {
   // QGIS's identifier of the output layer, for the algorithm's results.
   const QString& destination() const { return mDestination; }
 
-  // Both throw QgsProcessingException when the line cannot be written.
+  // Both throw QgsProcessingException with QGIS's message when the line cannot be written.
   void add(QgsFeature& feature);
   void add(const Stroke& stroke);  // with the fields of strokeFields()
 
@@ -47,9 +45,10 @@ class LineOutput {
   void finish();
 
  private:
-  [[noreturn]] void failWriting(const QString& reason) const;
+  [[noreturn]] void failWriting() const;
   void discard() noexcept;
 
+  QVariantMap mParameters;  // for QGIS's message on a failed write
   QString mKey;
   QgsFields mFields;
   std::unique_ptr<QgsFeatureSink> mSink;
