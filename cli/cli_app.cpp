@@ -9,11 +9,13 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <new>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "dem_reader.h"
 #include "gdal_util.h"
@@ -114,6 +116,41 @@ struct Options {
   PStrokeParams pstrokes;
 };
 
+// True when paths a and b name one file: the same existing file, or the same path to be made.
+bool same_file(const std::string& a, const std::string& b) {
+  if (a.empty() || b.empty()) return false;
+  std::error_code ec;
+  if (std::filesystem::equivalent(a, b, ec)) return true;
+  const auto full_a = std::filesystem::weakly_canonical(a, ec);
+  if (ec) return false;
+  const auto full_b = std::filesystem::weakly_canonical(b, ec);
+  return !ec && full_a == full_b;
+}
+
+// Every output replaces its file whole, so an output named as an input would destroy it (a DEM
+// in a GeoPackage written over by its own strokes) and two outputs of one name would lose one.
+void refuse_clashing_paths(const Options& o) {
+  const std::pair<const char*, const std::string*> outputs[] = {
+      {"OUTPUT", &o.output}, {"--stats-json", &o.stats_json}, {"--preview", &o.preview}};
+  const std::pair<const char*, const std::string*> inputs[] = {{"INPUT", &o.input},
+                                                               {"--source", &o.source}};
+  for (std::size_t k = 0; k < std::size(outputs); ++k) {
+    const auto& [name, path] = outputs[k];
+    for (const auto& [input_name, input] : inputs) {
+      if (same_file(*path, *input)) {
+        throw Error(std::string(name) + " '" + *path + "' names the " + input_name +
+                    " raster, which writing it would replace; choose another path");
+      }
+    }
+    for (std::size_t j = 0; j < k; ++j) {
+      if (same_file(*path, *outputs[j].second)) {
+        throw Error(std::string(name) + " '" + *path + "' names " + outputs[j].first +
+                    " too; choose another path");
+      }
+    }
+  }
+}
+
 Options parse(const std::vector<std::string>& args) {
   Options o;
   std::vector<std::string> positional;
@@ -182,6 +219,7 @@ Options parse(const std::vector<std::string>& args) {
   o.output = positional[1];
   o.dem.azimuth_deg = o.params.view.azimuth_deg;
   o.params.validate();
+  refuse_clashing_paths(o);
   return o;
 }
 

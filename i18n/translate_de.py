@@ -276,6 +276,10 @@ GERMAN = {
         "Blickrichtung gedreht im Speicher hält: das würde mehr als die Hälfte des "
         "Arbeitsspeichers dieses Rechners belegen. Der Algorithmus Silhouetten liest große DGM "
         "Streifen für Streifen; oder schneiden Sie das DGM zu oder verringern Sie seine Auflösung.",
+    "%1 would be written into %2, the file of %3, which this algorithm reads; choose another "
+    "file.":
+        "%1 würde in %2 geschrieben, die Datei von %3, die dieser Algorithmus liest; wählen Sie "
+        "eine andere Datei.",
     "Processing the DEM in strips of %1 profiles.": "Das DGM wird in Streifen zu %1 Profilen verarbeitet.",
     "P-strokes as lines with their class and score.":
         "P-Striche als Linien mit ihrer Klasse und Bewertung.",

@@ -1,8 +1,11 @@
 #include "dem_view_algorithm.h"
 
 #include <qgsprocessingfeedback.h>
+#include <qgsproviderregistry.h>
 #include <qgsrasterlayer.h>
 
+#include <QDir>
+#include <QFileInfo>
 #include <QIcon>
 #include <algorithm>
 
@@ -105,10 +108,44 @@ FilterParams DemViewAlgorithm::readFilter(const QVariantMap& parameters,
   return filter;
 }
 
+namespace {
+
+// The file `path` names, resolved (links, "..") so that two names of one file compare equal;
+// empty when there is no such file.
+QString existingFile(const QString& path) {
+  return path.isEmpty() ? QString() : QFileInfo(path).canonicalFilePath();
+}
+
+}  // namespace
+
+void DemViewAlgorithm::refuseOutputsOverInputs(const QVariantMap& parameters,
+                                               QgsProcessingContext& context) const {
+  for (const QgsProcessingParameterDefinition* input : parameterDefinitions()) {
+    if (input->type() != QgsProcessingParameterRasterLayer::typeName()) continue;
+    const QgsRasterLayer* layer = parameterAsRasterLayer(parameters, input->name(), context);
+    if (!layer) continue;
+    const QString inputFile = existingFile(QgsProviderRegistry::instance()
+                                               ->decodeUri(layer->providerType(), layer->source())
+                                               .value(QStringLiteral("path"))
+                                               .toString());
+    if (inputFile.isEmpty()) continue;
+    for (const QgsProcessingParameterDefinition* output : destinationParameterDefinitions()) {
+      const QString target = parameterAsOutputLayer(parameters, output->name(), context);
+      if (existingFile(destinationFile(target)) != inputFile) continue;
+      throw QgsProcessingException(
+          tr("%1 would be written into %2, the file of %3, which this algorithm reads; choose "
+             "another file.")
+              .arg(output->description(), QDir::toNativeSeparators(inputFile),
+                   input->description()));
+    }
+  }
+}
+
 bool DemViewAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
                                         QgsProcessingContext& context,
                                         QgsProcessingFeedback* feedback) {
   mAzimuth = withCoreErrors([&] { return readParameters(parameters, context); });
+  refuseOutputsOverInputs(parameters, context);
   QgsRasterLayer* layer = parameterAsRasterLayer(parameters, QStringLiteral("INPUT"), context);
   if (!layer) throw QgsProcessingException(invalidRasterError(parameters, QStringLiteral("INPUT")));
   mRaster = std::make_unique<RasterGrid>(

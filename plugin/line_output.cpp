@@ -20,22 +20,15 @@
 namespace tsk::plugin {
 namespace {
 
-// Where an output destination puts its layer on disk, as QGIS reads the destination: "ogr:" with
-// a database adds (or replaces) a layer in that file when it exists; any other provider prefix
-// ("memory:", "postgres:", ...) writes no file of ours; a plain path is a file QGIS writes.
+// Where an output destination puts its layer on disk: see destinationFile().
 struct FileTarget {
   QString path;            // empty: not a file
   bool addsLayer = false;  // to a file that existed before
 };
 
 FileTarget fileTarget(const QString& target) {
-  if (target.startsWith(QLatin1String("ogr:"))) {
-    const QString path = QgsDataSourceUri(target.mid(4)).database();
-    return {path, QFileInfo(path).isFile()};
-  }
-  static const QRegularExpression providerPrefix(QStringLiteral("^[A-Za-z_]{2,}:"));
-  if (target.isEmpty() || providerPrefix.match(target).hasMatch()) return {};
-  return {target, false};
+  const QString path = destinationFile(target);
+  return {path, target.startsWith(QLatin1String("ogr:")) && QFileInfo(path).isFile()};
 }
 
 // Removes a dataset with the files its format keeps beside it (a shapefile's .shx, .dbf, ...).
@@ -58,6 +51,13 @@ void dropLayer(const QString& path, const QString& layer) {
 }
 
 }  // namespace
+
+QString destinationFile(const QString& target) {
+  if (target.startsWith(QLatin1String("ogr:"))) return QgsDataSourceUri(target.mid(4)).database();
+  static const QRegularExpression providerPrefix(QStringLiteral("^[A-Za-z_]{2,}:"));
+  if (target.isEmpty() || providerPrefix.match(target).hasMatch()) return {};
+  return target;
+}
 
 LineOutput::LineOutput(const DemViewAlgorithm& algorithm, const QVariantMap& parameters,
                        const QString& key, QgsProcessingContext& context, const QgsFields& fields,

@@ -23,6 +23,11 @@ namespace tsk::plugin {
 class DemViewAlgorithm;
 class GpkgLineSink;
 
+// The file an output destination writes, as QGIS reads the destination: "ogr:" with a database
+// adds (or replaces) a layer in that file when it exists; any other provider prefix ("memory:",
+// "postgres:", ...) writes no file (empty); a plain path is a file QGIS writes whole.
+QString destinationFile(const QString& target);
+
 class LineOutput {
  public:
   // Line output `key` of `algorithm` with `fields`, in `crs`. Throws QgsProcessingException with

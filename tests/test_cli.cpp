@@ -182,6 +182,14 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
   const double south_up[6] = {500000, 10, 0, 4000000, 0, 10};
   test::write_tiff(dir / "southup.tif", 40, 40, 1, hill, south_up, 32616);
   test::write_tiff(dir / "nogeo.tif", 40, 40, 1, hill, nullptr, 0);
+  // A DEM in a GeoPackage, where the strokes could go too.
+  test::write_tiff(dir / "hill.tif", 40, 40, 1, hill, kNorthUp, 32616);
+  GDALDatasetH tiff = GDALOpen((dir / "hill.tif").c_str(), GA_ReadOnly);
+  GDALClose(GDALCreateCopy(GDALGetDriverByName("GPKG"), (dir / "dem.gpkg").c_str(), tiff, false,
+                           nullptr, nullptr, nullptr));
+  GDALClose(tiff);
+  const std::string dem_gpkg_bytes = slurp(dir / "dem.gpkg");
+  REQUIRE(!dem_gpkg_bytes.empty());
   const std::size_t inputs = dir.file_count();
 
   struct Bad {
@@ -211,6 +219,13 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"silhouettes", kSample, out, "--ve"}, "needs a value"},
       {{"silhouettes", kSample}, "expected INPUT and OUTPUT"},
       {{"silhouettes", kSample, out, "--format", "NoSuchDriver"}, "not an OGR vector driver"},
+      {{"silhouettes", dir / "dem.gpkg", dir / "dem.gpkg"}, "names the INPUT raster"},
+      {{"classify", dir / "multi.tif", dir / "./multi.tif"}, "names the INPUT raster"},
+      {{"drape", dir / "multi.tif", dir / "drape.tif", "--source", dir / "drape.tif"},
+       "names the --source raster"},
+      {{"silhouettes", kSample, out, "--stats-json", out}, "names OUTPUT too"},
+      {{"silhouettes", kSample, out, "--preview", dir / "p.png", "--stats-json", dir / "p.png"},
+       "names --stats-json too"},
   };
   for (const Bad& b : cases) {
     const CliRun run = run_cli(b.args);
@@ -219,6 +234,7 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
     CHECK_THAT(run.err, Catch::Contains(b.message));
     CHECK(dir.file_count() == inputs);
   }
+  CHECK(slurp(dir / "dem.gpkg") == dem_gpkg_bytes);
   CHECK(run_cli({"frobnicate"}).code == 2);
   CHECK(run_cli({}).code == 2);
   CHECK(run_cli({"--help"}).code == 0);

@@ -302,6 +302,52 @@ TEST_CASE("a cancelled run drops the layer it added to an existing GeoPackage",
   CHECK(layer.featureCount() == kept.featureCount());
 }
 
+TEST_CASE("an output into the file of a raster being read is refused, the raster kept",
+          "[plugin][outputs][robustness]") {
+  QTemporaryDir dir;
+  // A DEM in a GeoPackage, where the strokes could go too, and one in a GeoTIFF.
+  const QString gpkg = dir.filePath("dem.gpkg");
+  const QString tiff = dir.filePath("dem.tif");
+  REQUIRE(QFile::copy(kData + "/jacksboro_utm16n.tif", tiff));
+  REQUIRE(QFile::copy(kData + "/jacksboro_utm16n.tif.aux.xml", tiff + ".aux.xml"));
+  GDALDatasetH source = GDALOpen(QFile::encodeName(tiff).constData(), GA_ReadOnly);
+  GDALClose(GDALCreateCopy(GDALGetDriverByName("GPKG"), QFile::encodeName(gpkg).constData(), source,
+                           false, nullptr, nullptr, nullptr));
+  GDALClose(source);
+  const auto bytes = [](const QString& path) {
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+  };
+  const QByteArray gpkgBytes = bytes(gpkg), tiffBytes = bytes(tiff);
+  REQUIRE(!gpkgBytes.isEmpty());
+  struct Case {
+    QString id, input;
+    QVariantMap extra;
+  };
+  const QString addedLayer = QStringLiteral("ogr:dbname='%1' table=\"added\" (geom)").arg(gpkg);
+  const Case cases[] = {
+      {"silhouettes", gpkg, {{"FACTUAL", gpkg}}},
+      {"silhouettes", gpkg, {{"FORMULATED", addedLayer}}},
+      {"profileplot", gpkg, {{"OUTPUT", dir.filePath("./dem.gpkg")}}},
+      {"classification", tiff, {{"OUTPUT", tiff}}},
+      {"drape", gpkg, {{"SOURCE", tiff}, {"OUTPUT", tiff}}},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.id.toStdString(), c.extra.keys().join(' ').toStdString());
+    const Run run = runAlgorithm(c.input, c.extra, dir, nullptr, c.id);
+    CHECK_FALSE(run.ok);
+    CHECK(run.error.contains("which this algorithm reads"));
+    CHECK(bytes(gpkg) == gpkgBytes);
+    CHECK(bytes(tiff) == tiffBytes);
+    CHECK(QDir(dir.path()).entryList(QDir::Files).join(' ').toStdString() ==
+          "dem.gpkg dem.tif dem.tif.aux.xml");
+  }
+  // Beside the raster, in a file of their own, the outputs are written.
+  const Run run = runAlgorithm(gpkg, {}, dir);
+  INFO(run.error.toStdString());
+  CHECK(run.ok);
+}
+
 TEST_CASE("strokes stream into shapefiles and memory layers too", "[plugin][outputs]") {
   const QString dem = kData + "/jacksboro_utm16n.tif";
   QTemporaryDir dir;
