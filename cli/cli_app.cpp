@@ -257,7 +257,7 @@ void write_text(const std::string& path, const std::string& text) {
 
 int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
-  io::vector_driver_for(o.output, o.format);  // an unknown format fails before any work
+  io::check_vector_output(o.output, o.format);  // before any work
   // The preview draws the whole turned grid, so it needs the DEM whole (read_dem refuses one too
   // large to hold).
   const bool whole = !o.preview.empty();
@@ -365,7 +365,7 @@ int row_slope(const std::vector<std::string>& args, std::ostream& out, std::ostr
 
 int profiles(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
-  io::vector_driver_for(o.output, o.format);
+  io::check_vector_output(o.output, o.format);
   const io::Dem dem = load_dem(o, err);
   CellFlags flags;
   classify_visibility(dem.oriented, dem.frame.d, o.params.view, flags, o.params.threads);
@@ -379,7 +379,7 @@ int profiles(const std::vector<std::string>& args, std::ostream& out, std::ostre
 int pstrokes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Options o = parse(args);
   o.pstrokes.validate();
-  io::vector_driver_for(o.output, o.format);
+  io::check_vector_output(o.output, o.format);
   const io::Dem dem = load_dem(o, err);
   const SilhouetteResult result =
       run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);

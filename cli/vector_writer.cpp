@@ -41,6 +41,28 @@ std::string vector_driver_for(const std::string& path, const std::string& format
   return it->second;
 }
 
+void check_vector_output(const std::string& path, const std::string& format) {
+  vector_driver_for(path, format);
+  GdalErrorCapture quiet;  // a path that is no dataset (or none yet) is free to write
+  DatasetPtr existing(
+      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_RASTER | GDAL_OF_READONLY));
+  if (!existing) return;
+  const auto refuse = [&](const std::string& what) {
+    throw Error("'" + path + "' holds " + what + ", which writing it would destroy; choose " +
+                "another file");
+  };
+  const char* const* subdatasets = existing->GetMetadata("SUBDATASETS");
+  if (existing->GetRasterCount() > 0 || (subdatasets && *subdatasets)) refuse("a raster");
+  // An earlier output is one layer with one of our names, or the file's (a shapefile's, a CSV's).
+  const std::string stem = std::filesystem::path(path).stem().string();
+  for (OGRLayer* layer : existing->GetLayers()) {
+    const std::string name = layer->GetName();
+    if (name != kStrokeLayer && name != kProfileLayer && name != kPStrokeLayer && name != stem)
+      refuse("the layer '" + name + "'");
+  }
+  if (existing->GetLayerCount() > 1) refuse(std::to_string(existing->GetLayerCount()) + " layers");
+}
+
 namespace {
 
 // A field of a line layer.
@@ -113,6 +135,7 @@ void write_line_layer(const std::string& path, const std::string& format,
                       const std::string& srs_wkt, const std::string& layer_name,
                       const std::vector<Field>& fields,
                       const std::function<void(LineOutput&)>& add_features) {
+  check_vector_output(path, format);
   GdalErrorCapture capture;
   const std::string driver_name = vector_driver_for(path, format);
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
@@ -126,6 +149,12 @@ void write_line_layer(const std::string& path, const std::string& format,
   const bool gpkg = driver_name == "GPKG";
   CPLStringList layer_options;
   if (gpkg) layer_options.SetNameValue("SPATIAL_INDEX", "NO");
+  // A CSV keeps no geometry and no field types unless asked to: the lines go in a WKT column,
+  // read back as lines, and the types in a .csvt file beside it.
+  if (driver_name == "CSV") {
+    layer_options.SetNameValue("GEOMETRY", "AS_WKT");
+    layer_options.SetNameValue("CREATE_CSVT", "YES");
+  }
 
   write_atomically(path, [&](const std::filesystem::path& staged) {
     DatasetPtr ds(driver->Create(staged.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
@@ -183,7 +212,7 @@ void write_strokes(const std::string& path, const std::string& format,
 
 void write_profile_lines(const std::string& path, const std::string& format,
                          const std::vector<ProfileLine>& lines, const std::string& srs_wkt) {
-  write_line_layer(path, format, srs_wkt, "profiles",
+  write_line_layer(path, format, srs_wkt, kProfileLayer,
                    {{"section", OFTInteger}, {"distance", OFTReal}}, [&](LineOutput& output) {
                      for (const ProfileLine& line : lines) {
                        output.set(0, static_cast<std::int64_t>(line.cross_section));
@@ -195,8 +224,8 @@ void write_profile_lines(const std::string& path, const std::string& format,
 
 void write_pstrokes(const std::string& path, const std::string& format,
                     const std::vector<PStroke>& strokes, const std::string& srs_wkt) {
-  write_line_layer(path, format, srs_wkt, "pstrokes", {{"class", OFTString}, {"score_m2", OFTReal}},
-                   [&](LineOutput& output) {
+  write_line_layer(path, format, srs_wkt, kPStrokeLayer,
+                   {{"class", OFTString}, {"score_m2", OFTReal}}, [&](LineOutput& output) {
                      for (const PStroke& s : strokes) {
                        output.set(0, pstroke_class_name(s.cls));
                        output.set(1, s.score_m2);

@@ -14,6 +14,16 @@ namespace tsk::io {
 // The OGR driver for an output path: `format` if given, else by the file's extension.
 std::string vector_driver_for(const std::string& path, const std::string& format);
 
+// The layers the command line writes.
+inline constexpr const char* kStrokeLayer = "silhouettes";
+inline constexpr const char* kProfileLayer = "profiles";
+inline constexpr const char* kPStrokeLayer = "pstrokes";
+
+// Checks, before any work, that a line layer can be written to `path`: a vector format is known
+// for it, and no file is there that holds more than an earlier output (one layer named as ours
+// or as the file): a raster, or other layers as in a project's GeoPackage, would be destroyed.
+void check_vector_output(const std::string& path, const std::string& format);
+
 // Writes one stroke to the layer being filled.
 using StrokeWriter = std::function<void(const Stroke& stroke)>;
 
@@ -22,12 +32,12 @@ using StrokeWriter = std::function<void(const Stroke& stroke)>;
 // until they are written. Whole or not at all: if produce throws, nothing is left behind.
 void write_strokes(const std::string& path, const std::string& format, const std::string& srs_wkt,
                    const std::function<void(const StrokeWriter& write)>& produce,
-                   const std::string& layer_name = "silhouettes");
+                   const std::string& layer_name = kStrokeLayer);
 
 // Writes `strokes` to `path`, whole or not at all.
 void write_strokes(const std::string& path, const std::string& format,
                    const std::vector<Stroke>& strokes, const std::string& srs_wkt,
-                   const std::string& layer_name = "silhouettes");
+                   const std::string& layer_name = kStrokeLayer);
 
 // Writes profile-plot lines (fields: section, distance) to `path`, whole or not at all.
 void write_profile_lines(const std::string& path, const std::string& format,

@@ -123,12 +123,17 @@ TEST_CASE("a shapefile keeps every attribute under its shortened name", "[cli]")
 
 TEST_CASE("output formats follow the extension", "[cli]") {
   ScratchDir dir("formats");
-  for (const char* name : {"out.geojson", "out.shp", "out.fgb"}) {
+  for (const char* name :
+       {"out.geojson", "out.shp", "out.fgb", "out.gml", "out.kml", "out.sqlite", "out.csv"}) {
     CAPTURE(name);
-    const CliRun run = run_cli({"silhouettes", kData + "/volcano.tif", dir / name});
-    INFO(run.err);
-    REQUIRE(run.code == 0);
-    CHECK(summarise(dir / name).features > 0);
+    // The second run replaces the first run's output.
+    for (const char* command : {"silhouettes", "silhouettes", "profiles", "pstrokes"}) {
+      CAPTURE(command);
+      const CliRun run = run_cli({command, kData + "/volcano.tif", dir / name});
+      INFO(run.err);
+      REQUIRE(run.code == 0);
+      CHECK(summarise(dir / name).features > 0);
+    }
   }
   const CliRun bad = run_cli({"silhouettes", kSample, dir / "out.xyz"});
   CHECK(bad.code == 1);
@@ -238,6 +243,44 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
   CHECK(run_cli({"frobnicate"}).code == 2);
   CHECK(run_cli({}).code == 2);
   CHECK(run_cli({"--help"}).code == 0);
+}
+
+TEST_CASE("an output over a file holding other data is refused, the file kept",
+          "[cli][robustness]") {
+  ScratchDir dir("other_data");
+  // A project's GeoPackage with a layer of its own next to an earlier silhouettes layer, and
+  // one holding a DEM.
+  const std::string project = dir / "project.gpkg", dem = dir / "dem.gpkg";
+  REQUIRE(run_cli({"silhouettes", kData + "/volcano.tif", project}).code == 0);
+  {
+    GDALDatasetH ds =
+        GDALOpenEx(project.c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE, nullptr, nullptr, nullptr);
+    REQUIRE(ds != nullptr);
+    REQUIRE(GDALDatasetCreateLayer(ds, "roads", nullptr, wkbLineString, nullptr) != nullptr);
+    GDALClose(ds);
+  }
+  GDALDatasetH tiff = GDALOpen(kSample.c_str(), GA_ReadOnly);
+  GDALClose(GDALCreateCopy(GDALGetDriverByName("GPKG"), dem.c_str(), tiff, false, nullptr, nullptr,
+                           nullptr));
+  GDALClose(tiff);
+  const std::string project_bytes = slurp(project), dem_bytes = slurp(dem);
+  const std::size_t files = dir.file_count();
+  struct Refused {
+    std::string command, path, message;
+  };
+  const Refused cases[] = {{"silhouettes", project, "holds the layer 'roads'"},
+                           {"profiles", project, "holds the layer 'roads'"},
+                           {"pstrokes", project, "holds the layer 'roads'"},
+                           {"silhouettes", dem, "holds a raster"}};
+  for (const Refused& r : cases) {
+    CAPTURE(r.command, r.path);
+    const CliRun run = run_cli({r.command, kData + "/volcano.tif", r.path});
+    CHECK(run.code == 1);
+    CHECK_THAT(run.err, Catch::Contains(r.message));
+  }
+  CHECK(slurp(project) == project_bytes);
+  CHECK(slurp(dem) == dem_bytes);
+  CHECK(dir.file_count() == files);
 }
 
 TEST_CASE("a failed run keeps an earlier output intact", "[cli][robustness]") {
