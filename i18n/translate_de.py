@@ -280,6 +280,11 @@ GERMAN = {
     "file.":
         "%1 würde in %2 geschrieben, die Datei von %3, die dieser Algorithmus liest; wählen Sie "
         "eine andere Datei.",
+    "%1 and %2 would both be written to %3, one over the other; choose different files, or "
+    "save both to one GeoPackage with a layer name each.":
+        "%1 und %2 würden beide nach %3 geschrieben, eines über das andere; wählen Sie "
+        "verschiedene Dateien, oder speichern Sie beide in ein GeoPackage mit je einem "
+        "Layernamen.",
     "Processing the DEM in strips of %1 profiles.": "Das DGM wird in Streifen zu %1 Profilen verarbeitet.",
     "P-strokes as lines with their class and score.":
         "P-Striche als Linien mit ihrer Klasse und Bewertung.",

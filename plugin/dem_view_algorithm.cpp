@@ -8,6 +8,7 @@
 #include <QFileInfo>
 #include <QIcon>
 #include <algorithm>
+#include <vector>
 
 #include "errors.h"
 #include "line_output.h"
@@ -110,32 +111,53 @@ FilterParams DemViewAlgorithm::readFilter(const QVariantMap& parameters,
 
 namespace {
 
-// The file `path` names, resolved (links, "..") so that two names of one file compare equal;
-// empty when there is no such file.
-QString existingFile(const QString& path) {
-  return path.isEmpty() ? QString() : QFileInfo(path).canonicalFilePath();
+// The file `path` names, resolved (links, "..") so that two names of one file compare equal,
+// also when the file is still to be made; empty for an empty path.
+QString fileIdentity(const QString& path) {
+  if (path.isEmpty()) return {};
+  const QFileInfo file(path);
+  return file.exists() ? file.canonicalFilePath() : QDir::cleanPath(file.absoluteFilePath());
 }
 
 }  // namespace
 
-void DemViewAlgorithm::refuseOutputsOverInputs(const QVariantMap& parameters,
-                                               QgsProcessingContext& context) const {
+void DemViewAlgorithm::refuseClashingOutputs(const QVariantMap& parameters,
+                                             QgsProcessingContext& context) const {
+  struct Written {
+    QString file;
+    bool whole;  // a plain path, which QGIS writes whole (else a layer added to the file)
+    const QgsProcessingParameterDefinition* output;
+  };
+  std::vector<Written> written;
+  for (const QgsProcessingParameterDefinition* output : destinationParameterDefinitions()) {
+    const QString target = parameterAsOutputLayer(parameters, output->name(), context);
+    const QString file = fileIdentity(destinationFile(target));
+    if (file.isEmpty()) continue;
+    const bool whole = !target.startsWith(QLatin1String("ogr:"));
+    for (const Written& other : written) {
+      if (other.file != file || !(whole || other.whole)) continue;
+      throw QgsProcessingException(
+          tr("%1 and %2 would both be written to %3, one over the other; choose different files, "
+             "or save both to one GeoPackage with a layer name each.")
+              .arg(other.output->description(), output->description(),
+                   QDir::toNativeSeparators(file)));
+    }
+    written.push_back({file, whole, output});
+  }
   for (const QgsProcessingParameterDefinition* input : parameterDefinitions()) {
     if (input->type() != QgsProcessingParameterRasterLayer::typeName()) continue;
     const QgsRasterLayer* layer = parameterAsRasterLayer(parameters, input->name(), context);
     if (!layer) continue;
-    const QString inputFile = existingFile(QgsProviderRegistry::instance()
+    const QString inputFile = fileIdentity(QgsProviderRegistry::instance()
                                                ->decodeUri(layer->providerType(), layer->source())
                                                .value(QStringLiteral("path"))
                                                .toString());
-    if (inputFile.isEmpty()) continue;
-    for (const QgsProcessingParameterDefinition* output : destinationParameterDefinitions()) {
-      const QString target = parameterAsOutputLayer(parameters, output->name(), context);
-      if (existingFile(destinationFile(target)) != inputFile) continue;
+    for (const Written& output : written) {
+      if (output.file != inputFile) continue;
       throw QgsProcessingException(
           tr("%1 would be written into %2, the file of %3, which this algorithm reads; choose "
              "another file.")
-              .arg(output->description(), QDir::toNativeSeparators(inputFile),
+              .arg(output.output->description(), QDir::toNativeSeparators(inputFile),
                    input->description()));
     }
   }
@@ -145,7 +167,7 @@ bool DemViewAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
                                         QgsProcessingContext& context,
                                         QgsProcessingFeedback* feedback) {
   mAzimuth = withCoreErrors([&] { return readParameters(parameters, context); });
-  refuseOutputsOverInputs(parameters, context);
+  refuseClashingOutputs(parameters, context);
   QgsRasterLayer* layer = parameterAsRasterLayer(parameters, QStringLiteral("INPUT"), context);
   if (!layer) throw QgsProcessingException(invalidRasterError(parameters, QStringLiteral("INPUT")));
   mRaster = std::make_unique<RasterGrid>(

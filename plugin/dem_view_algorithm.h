@@ -60,10 +60,10 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   RasterGrid& preparedRaster() { return *mRaster; }
 
  private:
-  // Throws when an output would write into the file of a raster the algorithm reads: QGIS writes
-  // over a plain path's file whole, and a layer added to the GeoPackage being read would race
-  // the reads.
-  void refuseOutputsOverInputs(const QVariantMap& parameters, QgsProcessingContext& context) const;
+  // Throws when an output would write into the file of a raster the algorithm reads, or two
+  // outputs into one file not both as added layers: QGIS writes over a plain path's file whole,
+  // and a layer added to the GeoPackage being read would race the reads.
+  void refuseClashingOutputs(const QVariantMap& parameters, QgsProcessingContext& context) const;
 
   // For QGIS's own messages on a sink that cannot be made or written (protected in QGIS).
   friend class LineOutput;

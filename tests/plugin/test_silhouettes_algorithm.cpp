@@ -348,6 +348,33 @@ TEST_CASE("an output into the file of a raster being read is refused, the raster
   CHECK(run.ok);
 }
 
+TEST_CASE("two outputs into one file are refused unless both add a layer",
+          "[plugin][outputs][robustness]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/volcano.tif";
+  const auto layer = [&dir](const char* name) {
+    return QStringLiteral("ogr:dbname='%1' table=\"%2\" (geom)")
+        .arg(dir.filePath("both.gpkg"), name);
+  };
+  // The second output made would write over the first: the factual strokes were lost.
+  const QVariantMap clashes[] = {
+      {{"FACTUAL", dir.filePath("both.shp")}, {"FORMULATED", dir.filePath("./both.shp")}},
+      {{"FACTUAL", dir.filePath("both.gpkg")}, {"FORMULATED", dir.filePath("both.gpkg")}},
+      {{"FACTUAL", dir.filePath("both.gpkg")}, {"FORMULATED", layer("formulated")}},
+  };
+  for (const QVariantMap& outputs : clashes) {
+    CAPTURE(outputs.value("FORMULATED").toString().toStdString());
+    const Run run = runAlgorithm(dem, outputs, dir);
+    CHECK_FALSE(run.ok);
+    CHECK(run.error.contains("would both be written"));
+    CHECK(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+  }
+  const Run run =
+      runAlgorithm(dem, {{"FACTUAL", layer("factual")}, {"FORMULATED", layer("formulated")}}, dir);
+  INFO(run.error.toStdString());
+  CHECK(run.ok);
+}
+
 TEST_CASE("strokes stream into shapefiles and memory layers too", "[plugin][outputs]") {
   const QString dem = kData + "/jacksboro_utm16n.tif";
   QTemporaryDir dir;
