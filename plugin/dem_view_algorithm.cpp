@@ -35,14 +35,16 @@ void DemViewAlgorithm::addWithHelp(QgsProcessingParameterDefinition* parameter, 
   addParameter(parameter);
 }
 
-namespace {
-
-QgsProcessingParameterNumber* number(const QString& key, const QString& label, double value,
-                                     double min, double max) {
-  return new QgsProcessingParameterNumber(key, label, kDoubleNumber, value, false, min, max);
+QgsProcessingParameterNumber* DemViewAlgorithm::number(const QString& key, const QString& label,
+                                                       double value, double min, double max) {
+  auto* parameter =
+      new QgsProcessingParameterNumber(key, label, kDoubleNumber, value, false, min, max);
+  // The widget's six decimals by default would show 90 as 90.000000; enough to reach the minimum.
+  const int decimals = min > 0 && min < 0.01 ? 3 : 2;
+  parameter->setMetadata(
+      {{QStringLiteral("widget_wrapper"), QVariantMap{{QStringLiteral("decimals"), decimals}}}});
+  return parameter;
 }
-
-}  // namespace
 
 void DemViewAlgorithm::addDemAndViewParameters(bool exaggeration) {
   const ViewParams defaults;

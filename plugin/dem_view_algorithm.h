@@ -29,6 +29,9 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   // Adds `parameter` with its help text, optionally as an advanced parameter.
   void addWithHelp(QgsProcessingParameterDefinition* parameter, const QString& help,
                    bool advanced = false);
+  // A decimal number parameter from `min` to `max`, its widget showing a few decimals.
+  static QgsProcessingParameterNumber* number(const QString& key, const QString& label,
+                                              double value, double min, double max);
   // INPUT, BAND and AZIMUTH; with `exaggeration` also VE and BASE_SLOPE.
   void addDemAndViewParameters(bool exaggeration);
   // ROW_CUT, COL_CUT, CTRL_COL, DIAGONALS.

@@ -40,9 +40,7 @@ void PStrokeAlgorithm::initAlgorithm(const QVariantMap&) {
   addFilterParameters();
   const PStrokeParams defaults;
   auto area = [this](const QString& key, const QString& label, double value, const QString& help) {
-    addWithHelp(
-        new QgsProcessingParameterNumber(key, label, kDoubleNumber, value, false, 0.001, 1e12),
-        help);
+    addWithHelp(number(key, label, value, 0.001, 1e12), help);
   };
   area(QStringLiteral("CONVEX_COLUMN"), tr("Convex column tolerance (m²)"),
        defaults.convex_column_m2, tr("Effective area a convex bend along the view must reach."));

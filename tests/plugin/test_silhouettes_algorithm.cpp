@@ -7,6 +7,8 @@
 #include <qgsfeatureiterator.h>
 #include <qgsprocessingcontext.h>
 #include <qgsprocessingfeedback.h>
+#include <qgsprocessingparameters.h>
+#include <qgsprocessingprovider.h>
 #include <qgsprocessingregistry.h>
 #include <qgsprocessingutils.h>
 #include <qgsrasterblock.h>
@@ -410,6 +412,35 @@ TEST_CASE("strokes stream into shapefiles and memory layers too", "[plugin][outp
     }
   }
   CHECK(k == core.strokes.size());
+}
+
+TEST_CASE("every algorithm and parameter has help, and numbers show what they can take",
+          "[plugin]") {
+  algorithm();  // registers the provider
+  const QgsProcessingProvider* provider =
+      QgsApplication::processingRegistry()->providerById(QStringLiteral("terrainsketch"));
+  REQUIRE(provider != nullptr);
+  REQUIRE(provider->algorithms().size() == 7);
+  for (const QgsProcessingAlgorithm* alg : provider->algorithms()) {
+    CAPTURE(alg->id().toStdString());
+    CHECK(alg->shortHelpString().size() > 100);
+    for (const QgsProcessingParameterDefinition* parameter : alg->parameterDefinitions()) {
+      CAPTURE(parameter->name().toStdString());
+      CHECK(parameter->help().size() > 10);
+      const auto* number = dynamic_cast<const QgsProcessingParameterNumber*>(parameter);
+      if (!number || number->dataType() != QgsProcessingParameterNumber::Double) continue;
+      // The widget rounds to its decimals: both the default and the minimum must survive.
+      const int decimals = number->metadata()
+                               .value(QStringLiteral("widget_wrapper"))
+                               .toMap()
+                               .value(QStringLiteral("decimals"), 6)
+                               .toInt();
+      CHECK(decimals <= 3);
+      const double scale = std::pow(10.0, decimals);
+      for (const double value : {number->defaultValue().toDouble(), number->minimum()})
+        CHECK(std::round(value * scale) / scale == Approx(value).margin(1e-12));
+    }
+  }
 }
 
 TEST_CASE("the German translation loads for the de locale", "[plugin][i18n]") {
