@@ -107,7 +107,7 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
   } else if (options.cell_size > 0.0) {
     dem.geotransform.a = {0.0, options.cell_size, 0.0, 0.0, 0.0, -options.cell_size};
     dem.notes +=
-        "no georeferencing: cells taken as " + std::to_string(options.cell_size) + " m squares\n";
+        "no georeferencing: cells taken as " + number_text(options.cell_size) + " m squares\n";
   } else {
     throw Error("'" + path +
                 "' has no georeferencing, so its cell size is unknown; give it with --cell-size");
@@ -125,7 +125,7 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
       dem.notes +=
           "Mercator projection: map units are not ground metres here; cell sizes scaled by "
           "cos(latitude of the centre) = " +
-          std::to_string(dem.ground_scale) + "\n";
+          number_text(dem.ground_scale) + "\n";
     }
     if (srs->IsProjected() && std::fabs(srs->GetLinearUnits() - 1.0) > 1e-9) {
       dem.notes += "the CRS's linear unit is not the metre; heights must be in that same unit\n";

@@ -11,6 +11,10 @@ class Error : public std::runtime_error {
   explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
+// `value` as a person writes it in a message: 45, 22.5, 0.001, 1e+300, nan (where std::to_string
+// gives 45.000000).
+std::string number_text(double value);
+
 // The caller's progress callback asked to stop.
 class Cancelled : public std::runtime_error {
  public:

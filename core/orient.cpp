@@ -23,8 +23,8 @@ void check_dem(std::size_t rows, std::size_t cols, double dx, double dy) {
   if (rows == 0 || cols == 0) throw Error("the DEM has no cells");
   checked_cell_count(rows, cols);
   if (!std::isfinite(dx) || !std::isfinite(dy) || dx <= 0.0 || dy <= 0.0) {
-    throw Error("cell sizes must be finite and positive, got " + std::to_string(dx) + " x " +
-                std::to_string(dy));
+    throw Error("cell sizes must be finite and positive, got " + number_text(dx) + " x " +
+                number_text(dy));
   }
 }
 
@@ -104,9 +104,10 @@ OrientedFrame make_resampled_frame(std::size_t rows, std::size_t cols, double dx
   const double limit = std::max(8.0 * dem_cells, static_cast<double>(1 << 20));
   if (profiles * length > limit || profiles > static_cast<double>(kMaxGridSide) ||
       length > static_cast<double>(kMaxGridSide)) {
-    throw Error("seen at azimuth " + std::to_string(azimuth) + " this DEM would need " +
-                std::to_string(static_cast<long long>(profiles * length)) +
-                " resampled cells (it is very elongated or its cells are far from square); "
+    throw Error("seen at azimuth " + number_text(azimuth) + " this DEM would need " +
+                number_text(profiles * length) + " resampled cells, more than " +
+                number_text(limit) +
+                " (it is very elongated or its cells are far from square); "
                 "resample it to near-square cells (gdalwarp -tr), crop it, or use a cardinal "
                 "azimuth (0, 90, 180, 270)");
   }

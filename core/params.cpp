@@ -14,8 +14,8 @@ void require(bool ok, const std::string& message) {
 // Rejects NaN and infinities along with values outside [lo, hi].
 void require_range(double value, double lo, double hi, const std::string& what) {
   require(std::isfinite(value) && value >= lo && value <= hi,
-          what + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
-              ", got " + std::to_string(value));
+          what + " must be between " + number_text(lo) + " and " + number_text(hi) + ", got " +
+              number_text(value));
 }
 
 }  // namespace
@@ -23,9 +23,9 @@ void require_range(double value, double lo, double hi, const std::string& what) 
 void ViewParams::validate() const {
   require_range(azimuth_deg, -360.0, 360.0, "azimuth (degrees)");
   require(std::isfinite(ve) && ve > 0.0 && ve <= 1000.0,
-          "vertical exaggeration must be > 0 and at most 1000, got " + std::to_string(ve));
+          "vertical exaggeration must be > 0 and at most 1000, got " + number_text(ve));
   require(std::isfinite(base_slope_pct) && base_slope_pct > 0.0 && base_slope_pct <= 10000.0,
-          "base slope must be > 0 % and at most 10000 %, got " + std::to_string(base_slope_pct));
+          "base slope must be > 0 % and at most 10000 %, got " + number_text(base_slope_pct));
 }
 
 void FilterParams::validate() const {
@@ -35,7 +35,7 @@ void FilterParams::validate() const {
           "column slope cut-off must be > 0 % and at most 10000 %");
   require(std::isfinite(ctrl_col_pct) && ctrl_col_pct > 0.0 && ctrl_col_pct < col_cut_pct,
           "control point column slope must be > 0 and below the column cut-off (" +
-              std::to_string(col_cut_pct) + " %), got " + std::to_string(ctrl_col_pct));
+              number_text(col_cut_pct) + " %), got " + number_text(ctrl_col_pct));
 }
 
 void ChainParams::validate() const {

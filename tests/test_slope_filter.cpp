@@ -122,6 +122,11 @@ TEST_CASE("parameters out of range are refused with a message", "[filter][params
   ViewParams v;
   v.ve = 0;
   CHECK_THROWS_WITH(v.validate(), Catch::Contains("exaggeration"));
+  // Numbers are written as people write them, not as 0.000000.
+  CHECK_THROWS_WITH(v.validate(), Catch::EndsWith("got 0"));
+  v = ViewParams{};
+  v.azimuth_deg = 400.5;
+  CHECK_THROWS_WITH(v.validate(), Catch::EndsWith("between -360 and 360, got 400.5"));
   v = ViewParams{};
   v.base_slope_pct = -1;
   CHECK_THROWS_AS(v.validate(), Error);
