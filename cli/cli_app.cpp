@@ -72,9 +72,10 @@ input and output:
   --preview PNG        render the oblique sketch to a PNG picture
   --threads N          worker threads (default: all cores)
   --timings            print the time of reading, each stage and writing to stderr
-  --strips N           read and process N profiles at a time (default: 1024, fewer for profiles
-                       so long that strips would pass 512 MB; memory is about 9 bytes x cells
-                       of N profiles, 13 at a non-cardinal azimuth)
+  --strips N           read and process N profiles at a time (default: 1024, more for profiles
+                       under 1024 cells, fewer for profiles so long that strips would pass
+                       512 MB; memory is about 9 bytes x cells of N profiles, 13 at a
+                       non-cardinal azimuth)
 profiles:
   --every N            draw every N-th cross-section (default 10)
 pstrokes (tolerances: effective areas in m2 of the profiles' distance-height triangles):

@@ -102,9 +102,10 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
 // Reading that much could not fail cleanly: memory is promised freely and taken at first use.
 bool too_large_to_turn_whole(const OrientedFrame& frame);
 
-// Profiles per strip for a strip-by-strip run of this view: up to 1024, fewer for profiles so
-// long that a run's strips (two of heights, the classification and, resampled, the band: 9 or
-// 13 bytes a cell) would pass 512 MiB, at least 16.
+// Profiles per strip for a strip-by-strip run of this view: 1024, more for profiles under 1024
+// cells (1 Mi cells a strip, up to 65536 profiles), fewer for profiles so long that a run's
+// strips (two of heights, the classification and, resampled, the band: 9 or 13 bytes a cell)
+// would pass 512 MiB, at least 16.
 std::size_t strip_profiles(const OrientedFrame& frame);
 
 // Runs every stage on an oriented grid (see orient.h). z_ref is the DEM's lowest height, the

@@ -39,107 +39,107 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="49" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="51" />
         <source>Elevation (DEM)</source>
         <translation>Höhenmodell (DGM)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="50" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="52" />
         <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
         <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="51" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="53" />
         <source>Band</source>
         <translation>Kanal</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="53" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="55" />
         <source>The band holding the heights.</source>
         <translation>Der Kanal mit den Höhen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="55" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="57" />
         <source>View azimuth (degrees)</source>
         <translation>Blickrichtung (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="56" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
         <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
         <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="62" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="64" />
         <source>Vertical exaggeration</source>
         <translation>Überhöhung</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="63" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="65" />
         <source>Factor applied to heights before occlusion is computed.</source>
         <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="64" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="66" />
         <source>Base slope (%)</source>
         <translation>Grundneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="66" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="68" />
         <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
         <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="72" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="74" />
         <source>Row slope cut-off (%)</source>
         <translation>Grenzwert Zeilenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="74" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="76" />
         <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
         <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="76" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="78" />
         <source>Column slope cut-off (%)</source>
         <translation>Grenzwert Spaltenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="78" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="80" />
         <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
         <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="80" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="82" />
         <source>Control point column slope (%)</source>
         <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="82" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="84" />
         <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
         <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="86" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="88" />
         <source>Allow for diagonals</source>
         <translation>Diagonalen berücksichtigen</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="87" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="89" />
         <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
         <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="140" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="142" />
         <source>%1 and %2 would both be written to %3, one over the other; choose different files, or save both to one GeoPackage with a layer name each.</source>
         <translation>%1 und %2 würden beide nach %3 geschrieben, eines über das andere; wählen Sie verschiedene Dateien, oder speichern Sie beide in ein GeoPackage mit je einem Layernamen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="158" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="160" />
         <source>%1 would be written into %2, the file of %3, which this algorithm reads; choose another file.</source>
         <translation>%1 würde in %2 geschrieben, die Datei von %3, die dieser Algorithmus liest; wählen Sie eine andere Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="187" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="189" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -234,82 +234,82 @@
         <translation>Kurze Striche quer zur Blickrichtung, wo das Gelände knickt (Visvalingam und Dowson 1998). Jedes Profil entlang der Ansicht (Spalte) und quer dazu (Zeile) wird mit Visvalingams Linienvereinfachung nach effektiver Fläche bewertet; eine sichtbare Zelle, deren konvexe oder konkave Bewertung die Toleranz ihrer Klasse erreicht, setzt einen Strich entlang des Querschnitts. Die Toleranzen sind effektive Flächen in Quadratmetern der Dreiecke aus Abstand (m) und nicht überhöhter Höhe (m) entlang der Profile; die Vorgaben sind die der spärlichen Skizze eines 50-m-DGM in der Dissertation. Zusammen mit den Silhouetten: kein P-Strich beginnt in einer Zelle der f-Menge, und keiner wird in eine hinein verlängert.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="47" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="45" />
         <source>Convex column tolerance (m²)</source>
         <translation>Toleranz konvex entlang (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="48" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="46" />
         <source>Effective area a convex bend along the view must reach.</source>
         <translation>Effektive Fläche, die ein konvexer Knick entlang der Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="49" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="47" />
         <source>Concave column tolerance (m²)</source>
         <translation>Toleranz konkav entlang (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="50" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="48" />
         <source>Effective area a concave bend along the view must reach.</source>
         <translation>Effektive Fläche, die ein konkaver Knick entlang der Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="51" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="49" />
         <source>Convex row tolerance (m²)</source>
         <translation>Toleranz konvex quer (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="52" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="50" />
         <source>Effective area a convex bend across the view must reach.</source>
         <translation>Effektive Fläche, die ein konvexer Knick quer zur Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="53" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="51" />
         <source>Concave row tolerance (m²)</source>
         <translation>Toleranz konkav quer (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="54" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="52" />
         <source>Effective area a concave bend across the view must reach.</source>
         <translation>Effektive Fläche, die ein konkaver Knick quer zur Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="56" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="54" />
         <source>Stroke half length (cells)</source>
         <translation>Halbe Strichlänge (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="58" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="56" />
         <source>Cells drawn on each side of a seed along the cross-section.</source>
         <translation>Zellen, die auf jeder Seite eines Startpunkts entlang des Querschnitts gezeichnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="60" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="58" />
         <source>Geometry</source>
         <translation>Geometrie</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="61" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="59" />
         <source>Map (cell centres)</source>
         <translation>Karte (Zellmittelpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="61" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="59" />
         <source>Plan oblique (the sketch)</source>
         <translation>Plan oblique (die Skizze)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="62" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="60" />
         <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
         <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="66" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="64" />
         <source>P-strokes</source>
         <translation>P-Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="67" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="65" />
         <source>P-strokes as lines with their class and score.</source>
         <translation>P-Striche als Linien mit ihrer Klasse und Bewertung.</translation>
     </message>
@@ -569,31 +569,31 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
     </message>
     <message>
         <location filename="../plugin/silhouettes_algorithm.cpp" line="109" />
-        <source>The DEM is read and processed this many profiles at a time, the next strip read while this one is processed, so DEMs larger than memory run too. 0 chooses 1024, or fewer when profiles are so long that the strips would take more than 512 MB. Strips that would take more than half of this machine's memory are refused.</source>
-        <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.</translation>
+        <source>The DEM is read and processed this many profiles at a time, the next strip read while this one is processed, so DEMs larger than memory run too. 0 chooses 1024, more for profiles under 1024 cells (a million cells a strip), or fewer when profiles are so long that the strips would take more than 512 MB. Strips that would take more than half of this machine's memory are refused.</source>
+        <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, mehr für Profile unter 1024 Zellen (eine Million Zellen je Streifen), oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="114" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="118" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="150" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="151" />
         <source>Processing the DEM in strips of %1 profiles.</source>
         <translation>Das DGM wird in Streifen zu %1 Profilen verarbeitet.</translation>
     </message>

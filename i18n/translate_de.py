@@ -260,15 +260,17 @@ GERMAN = {
         "Zellen, die auf jeder Seite eines Startpunkts entlang des Querschnitts gezeichnet werden.",
     "P-strokes": "P-Striche",
     "Profiles per strip (0: automatic)": "Profile je Streifen (0: automatisch)",
-    "The DEM is read and processed this many profiles at a time, the next strip read while this "
-    "one is processed, so DEMs larger than memory run too. 0 chooses 1024, or fewer when profiles "
-    "are so long that the strips would take more than 512 MB. Strips that would take more than "
-    "half of this machine's memory are refused.":
+    "The DEM is read and processed this many profiles at a time, the next strip read while "
+    "this one is processed, so DEMs larger than memory run too. 0 chooses 1024, more for "
+    "profiles under 1024 cells (a million cells a strip), or fewer when profiles are so long "
+    "that the strips would take more than 512 MB. Strips that would take more than half of this "
+    "machine's memory are refused.":
         "Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen "
         "wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der "
-        "Speicher sind. 0 wählt 1024, oder weniger, wenn die Profile so lang sind, dass die "
-        "Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des "
-        "Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.",
+        "Speicher sind. 0 wählt 1024, mehr für Profile unter 1024 Zellen (eine Million Zellen "
+        "je Streifen), oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als "
+        "512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses "
+        "Rechners belegen würden, werden abgelehnt.",
     "The raster (%1 x %2 cells) is too large for this algorithm, which holds the whole DEM turned "
     "to the view: that would take more than half of this machine's memory. The Silhouettes "
     "algorithm reads large DEMs strip by strip; or clip or resample the DEM.":

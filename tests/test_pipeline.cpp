@@ -205,8 +205,9 @@ TEST_CASE("threads do not change the result", "[pipeline]") {
 }
 
 TEST_CASE("progress rises to one and cancelling stops the run", "[pipeline]") {
-  const HeightGrid dem = test::random_terrain(300, 300, 2);
-  const OrientedFrame f = make_frame(300, 300, 10, 10, 90);
+  // Progress is told batch by batch: 256 profiles of this length, so three batches.
+  const HeightGrid dem = test::random_terrain(600, 8192, 2);
+  const OrientedFrame f = make_frame(600, 8192, 10, 10, 90);
   const HeightGrid z = orient(dem, f);
   double last = 0;
   bool monotonic = true;
@@ -305,6 +306,9 @@ TEST_CASE("strips are needed only for DEMs too large to hold and are sized by pr
   const OrientedFrame diagonal = make_frame(40000, 40000, 25, 25, 45);
   CHECK(strip_profiles(diagonal) == 730);
   CHECK(strip_profiles(make_frame(1, 2000000000, 25, 25, 90)) == 16);
+  // Short profiles, more to a strip: 1 Mi cells, at most 65536 profiles.
+  CHECK(strip_profiles(make_frame(100000, 256, 25, 25, 90)) == 4096);
+  CHECK(strip_profiles(make_frame(1000000, 1, 25, 25, 90)) == 65536);
   CHECK(is_cardinal(90));
   CHECK(is_cardinal(-180));
   CHECK_FALSE(is_cardinal(45));
