@@ -40,13 +40,13 @@ double peak_rss_mib() {
 }
 
 // Rolling synthetic terrain: ridges and valleys at several scales, 25 m cells.
-tsk::HeightGrid synthetic_dem(std::size_t n) {
-  tsk::HeightGrid g(n, n);
-  tsk::parallel_for(n, 0, [&](std::size_t begin, std::size_t end) {
+tsk::HeightGrid synthetic_dem(std::size_t rows, std::size_t cols) {
+  tsk::HeightGrid g(rows, cols);
+  tsk::parallel_for(rows, 0, [&](std::size_t begin, std::size_t end) {
     for (std::size_t r = begin; r < end; ++r) {
       float* row = g.row(r);
       const double y = static_cast<double>(r);
-      for (std::size_t c = 0; c < n; ++c) {
+      for (std::size_t c = 0; c < cols; ++c) {
         const double x = static_cast<double>(c);
         const double z = 400 + 180 * std::sin(x * 0.011 + 0.4 * std::sin(y * 0.007)) +
                          120 * std::sin(y * 0.013 + x * 0.004) +
@@ -178,8 +178,10 @@ double timed_run(const tsk::HeightGrid& dem, double azimuth, unsigned threads, c
   const Run& median = runs[1];
   print_stages(label, median.timings, median.whole, static_cast<double>(dem.size()));
   if (median.orient_s > 0) {
-    std::printf("  %-22s (resampling %.3f s, alongside the stages; runs %.3f / %.3f / %.3f s)\n",
-                "", median.orient_s, runs[0].whole, runs[1].whole, runs[2].whole);
+    std::printf("  %-22s (%s %.3f s; runs %.3f / %.3f / %.3f s)\n", "",
+                tsk::is_cardinal(azimuth) ? "turning the DEM, before the stages,"
+                                          : "resampling, alongside the stages,",
+                median.orient_s, runs[0].whole, runs[1].whole, runs[2].whole);
   } else {
     std::printf("  %-22s (runs %.3f / %.3f / %.3f s)\n", "", runs[0].whole, runs[1].whole,
                 runs[2].whole);
@@ -208,7 +210,7 @@ double per_profile_stages(const tsk::HeightGrid& dem, unsigned threads) {
 
 void bench_size(std::size_t n, bool with_gdaldem) {
   const auto t_gen = Clock::now();
-  const tsk::HeightGrid dem = synthetic_dem(n);
+  const tsk::HeightGrid dem = synthetic_dem(n, n);
   const double gen = seconds_since(t_gen);
   const double raster_mib = static_cast<double>(dem.size() * sizeof(float)) / (1024.0 * 1024.0);
   std::printf("\n== synthetic %zux%zu (%.0f MiB Float32), generated in %.2f s\n", n, n, raster_mib,
@@ -283,6 +285,20 @@ void bench_size(std::size_t n, bool with_gdaldem) {
 #endif
 }
 
+// A long strip of terrain seen along it and across it: a million profiles of 64 cells, then 64
+// profiles of a million cells, where the cost of each profile and of each cell show.
+void bench_elongated() {
+  const std::size_t rows = 64, cols = 1000000;
+  const tsk::HeightGrid dem = synthetic_dem(rows, cols);
+  std::printf("\n== synthetic %zux%zu, seen along it and across it\n", rows, cols);
+  const double along = timed_run(dem, 0, 0, "azimuth 0, all cores");
+  std::printf("  %-22s %zu profiles of %zu cells: %.0f ns a profile\n", "", cols, rows,
+              1e9 * along / static_cast<double>(cols));
+  const double across = timed_run(dem, 90, 0, "azimuth 90, all cores");
+  std::printf("  %-22s %zu profiles of %zu cells: %.2f x the time along it\n", "", rows, cols,
+              across / along);
+}
+
 #ifdef TSK_BENCH_WITH_GDAL
 void bench_real_dems() {
   std::printf("\n== real DEMs (tests/data), all cores, read through GDAL\n");
@@ -337,6 +353,7 @@ int main(int argc, char** argv) {
 #ifdef TSK_BENCH_WITH_GDAL
   bench_real_dems();
 #endif
+  bench_elongated();
   for (std::size_t n : sizes) {
     std::fflush(stdout);
     const pid_t child = fork();

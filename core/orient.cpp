@@ -151,24 +151,32 @@ void scatter_dem_rows(const OrientedFrame& frame, std::size_t first_row, std::si
       oriented.rows() != frame.profiles || oriented.cols() != frame.length) {
     throw Error("DEM block does not match the oriented frame");
   }
-  for (std::size_t k = 0; k < count; ++k) {
-    const std::size_t r = first_row + k;
-    const float* src = rows + k * cols;
-    if (profiles_are_rows) {
+  if (profiles_are_rows) {
+    for (std::size_t k = 0; k < count; ++k) {
       // The row is one profile, possibly reversed.
-      const auto p =
-          static_cast<std::size_t>((static_cast<std::int64_t>(r) - frame.row0) * frame.row_per_p);
+      const float* src = rows + k * cols;
+      const auto p = static_cast<std::size_t>(
+          (static_cast<std::int64_t>(first_row + k) - frame.row0) * frame.row_per_p);
       float* dst = oriented.row(p);
       if (frame.col_per_i > 0) {
         std::copy(src, src + cols, dst);
       } else {
         std::reverse_copy(src, src + cols, dst);
       }
-    } else {
-      // The row is cell i of every profile.
-      const auto i =
-          static_cast<std::size_t>((static_cast<std::int64_t>(r) - frame.row0) * frame.row_per_i);
-      for (std::size_t c = 0; c < cols; ++c) {
+    }
+    return;
+  }
+  // Each row is cell i of every profile: a transpose. It goes a tile of columns at a time down
+  // all the rows, so that the tile's profiles stay in cache from row to row; row by row, a DEM
+  // far wider than high would write every profile's cache line again for each row.
+  constexpr std::size_t kTile = 256;
+  for (std::size_t c0 = 0; c0 < cols; c0 += kTile) {
+    const std::size_t c1 = std::min(cols, c0 + kTile);
+    for (std::size_t k = 0; k < count; ++k) {
+      const float* src = rows + k * cols;
+      const auto i = static_cast<std::size_t>(
+          (static_cast<std::int64_t>(first_row + k) - frame.row0) * frame.row_per_i);
+      for (std::size_t c = c0; c < c1; ++c) {
         const auto p =
             static_cast<std::size_t>((static_cast<std::int64_t>(c) - frame.col0) * frame.col_per_p);
         oriented(p, i) = src[c];
