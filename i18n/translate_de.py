@@ -26,6 +26,10 @@ GERMAN = {
     "cos(latitude of the centre) = %1.":
         "Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen "
         "werden mit cos(Breite der Mitte) = %1 skaliert.",
+    "The CRS's unit is %1, not the metre: the heights must be in %1 too, and depths and lengths "
+    "come out in %1.":
+        "Die Einheit des KBS ist %1, nicht der Meter: die Höhen müssen ebenfalls in %1 sein, und "
+        "Tiefen und Längen werden in %1 ausgegeben.",
     "The raster has %1 bands; band %2 is used.": "Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.",
     "Could not open the raster's data provider.":
         "Der Datenanbieter des Rasters konnte nicht geöffnet werden.",

@@ -5,6 +5,7 @@
 #include <qgsfield.h>
 #include <qgsprocessing.h>
 #include <qgsprocessingparameters.h>
+#include <qgsunittypes.h>
 
 namespace tsk::plugin {
 
@@ -20,6 +21,13 @@ constexpr auto kLineString = QgsWkbTypes::LineString;
 constexpr auto kDoubleNumber = QgsProcessingParameterNumber::Double;
 constexpr auto kIntegerNumber = QgsProcessingParameterNumber::Integer;
 constexpr auto kAdvanced = QgsProcessingParameterDefinition::FlagAdvanced;
+#endif
+
+// The metre as the unit of a CRS (QgsCoordinateReferenceSystem::mapUnits()).
+#if _QGIS_VERSION_INT >= 33000
+constexpr auto kMetres = Qgis::DistanceUnit::Meters;
+#else
+constexpr auto kMetres = QgsUnitTypes::DistanceMeters;
 #endif
 
 enum class FieldKind { Text, Integer, Real };

@@ -97,6 +97,11 @@ RasterGrid::RasterGrid(QgsRasterLayer* layer, int band,
                    "scaled by cos(latitude of the centre) = %1.")
                     .arg(mGroundScale, 0, 'f', 4);
     }
+    if (mCrs.mapUnits() != kMetres) {
+      mNotes << tr("The CRS's unit is %1, not the metre: the heights must be in %1 too, and "
+                   "depths and lengths come out in %1.")
+                    .arg(QgsUnitTypes::toString(mCrs.mapUnits()));
+    }
   }
   if (bands > 1) mNotes << tr("The raster has %1 bands; band %2 is used.").arg(bands).arg(band);
   mFile = openFile(*layer, band);

@@ -377,6 +377,18 @@ TEST_CASE("Web Mercator cells are scaled to ground metres with a note", "[cli]")
   CHECK_THAT(dem.notes, Catch::Contains("Mercator"));
 }
 
+TEST_CASE("a CRS in feet runs with a note that heights must be in feet too", "[cli]") {
+  ScratchDir dir("feet");
+  const double geotransform[6] = {2000000, 30, 0, 700000, 0, -30};
+  test::write_tiff(dir / "feet.tif", 40, 40, 1, hill, geotransform, 2264);
+  const CliRun run = run_cli({"silhouettes", dir / "feet.tif", dir / "out.gpkg"});
+  CHECK(run.code == 0);
+  CHECK_THAT(run.err, Catch::Contains("linear unit is not the metre"));
+  const CliRun metres = run_cli({"silhouettes", kSample, dir / "metres.gpkg"});
+  CHECK(metres.code == 0);
+  CHECK_THAT(metres.err, !Catch::Contains("linear unit"));
+}
+
 TEST_CASE("classify writes the stage of every DEM cell with a colour table", "[cli][diagnostics]") {
   ScratchDir dir("classify");
   const CliRun run = run_cli({"silhouettes", kSample, dir / "s.gpkg"});

@@ -35,6 +35,7 @@
 #include "profile_plot.h"
 #include "provider.h"
 #include "pstrokes.h"
+#include "qgis_compat.h"
 #include "raster_grid.h"
 #include "silhouettes.h"
 #include "translation.h"
@@ -213,6 +214,20 @@ TEST_CASE("a raster without CRS runs with a warning in the log", "[plugin]") {
   const Run run = runAlgorithm(kData + "/bei_5m_local.tif", {}, dir, &log);
   CHECK(run.ok);
   CHECK(log.warnings.join(' ').contains("no CRS"));
+}
+
+TEST_CASE("a CRS in feet runs with a warning that heights must be in feet too", "[plugin]") {
+  QTemporaryDir dir;
+  const QString feet = dir.filePath("feet.tif");
+  const double geotransform[6] = {2000000, 30, 0, 700000, 0, -30};
+  test::write_tiff(feet.toStdString(), 40, 40, 1, test::hill, geotransform, 2264);
+  RecordingFeedback log;
+  const Run run = runAlgorithm(feet, {}, dir, &log);
+  CHECK(run.ok);
+  CHECK(log.warnings.join(' ').contains("not the metre"));
+  RecordingFeedback metres;
+  REQUIRE(runAlgorithm(kData + "/gorillas_utm32n.tif", {}, dir, &metres).ok);
+  CHECK_FALSE(metres.warnings.join(' ').contains("not the metre"));
 }
 
 // Cancels the run once progress reaches `at` percent.
@@ -428,7 +443,7 @@ TEST_CASE("every algorithm and parameter has help, and numbers show what they ca
       CAPTURE(parameter->name().toStdString());
       CHECK(parameter->help().size() > 10);
       const auto* number = dynamic_cast<const QgsProcessingParameterNumber*>(parameter);
-      if (!number || number->dataType() != QgsProcessingParameterNumber::Double) continue;
+      if (!number || number->dataType() != plugin::kDoubleNumber) continue;
       // The widget rounds to its decimals: both the default and the minimum must survive.
       const int decimals = number->metadata()
                                .value(QStringLiteral("widget_wrapper"))
