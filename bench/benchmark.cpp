@@ -39,6 +39,17 @@ double peak_rss_mib() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
+// The memory the process holds now (resident set), in MiB.
+double current_rss_mib() {
+  long pages = 0, resident = 0;
+  if (FILE* statm = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(statm, "%ld %ld", &pages, &resident) != 2) resident = 0;
+    std::fclose(statm);
+  }
+  return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) /
+         (1024.0 * 1024.0);
+}
+
 // Rolling synthetic terrain: ridges and valleys at several scales, 25 m cells.
 tsk::HeightGrid synthetic_dem(std::size_t rows, std::size_t cols) {
   tsk::HeightGrid g(rows, cols);
@@ -209,6 +220,7 @@ double per_profile_stages(const tsk::HeightGrid& dem, unsigned threads) {
 }
 
 void bench_size(std::size_t n, bool with_gdaldem) {
+  const double baseline = current_rss_mib();
   const auto t_gen = Clock::now();
   const tsk::HeightGrid dem = synthetic_dem(n, n);
   const double gen = seconds_since(t_gen);
@@ -223,7 +235,10 @@ void bench_size(std::size_t n, bool with_gdaldem) {
       "g-set %.1f %%\n",
       stats.factual_strokes, stats.formulated_strokes, stats.pct(stats.candidate),
       stats.pct(stats.filtered), stats.pct(stats.thinned), stats.pct(stats.generalised));
-  std::printf("  peak memory %.0f MiB = %.2f x the raster's bytes\n", peak, peak / raster_mib);
+  std::printf(
+      "  peak memory %.0f MiB = %.2f x the raster's bytes (%.0f MiB of it held before the DEM "
+      "was made: the program and its libraries)\n",
+      peak, peak / raster_mib, baseline);
   const double single = timed_run(dem, 90, 1, "azimuth 90, 1 thread");
   std::printf("  %-22s %.2f x on %u threads\n", "thread speed-up", single / whole,
               tsk::resolve_threads(0));
@@ -327,6 +342,21 @@ void bench_real_dems() {
 }
 #endif
 
+// Runs `bench` in a process of its own, so that its peak memory is its own; false if it failed.
+template <typename Bench>
+bool in_child(Bench&& bench) {
+  std::fflush(stdout);
+  const pid_t child = fork();
+  if (child == 0) {
+    bench();
+    std::fflush(stdout);
+    _exit(0);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -353,18 +383,9 @@ int main(int argc, char** argv) {
 #ifdef TSK_BENCH_WITH_GDAL
   bench_real_dems();
 #endif
-  bench_elongated();
   for (std::size_t n : sizes) {
-    std::fflush(stdout);
-    const pid_t child = fork();
-    if (child == 0) {
-      bench_size(n, with_gdaldem);
-      std::fflush(stdout);
-      _exit(0);
-    }
-    int status = 0;
-    waitpid(child, &status, 0);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) std::printf("  size %zu failed\n", n);
+    if (!in_child([&] { bench_size(n, with_gdaldem); })) std::printf("  size %zu failed\n", n);
   }
+  if (!in_child(bench_elongated)) std::printf("  the elongated DEM failed\n");
   return 0;
 }

@@ -252,10 +252,10 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
   const StrokeContext context{
       z,        flags,         frame, view, st.geotransform, st.params.geometry, st.params.subcell,
       st.z_ref, first - before};
-  // Batches of about two million cells: 256 profiles of 8192. Short profiles come in more to a
+  // Batches of about a million cells, at least 256 profiles. Short profiles come in more to a
   // batch, as every batch costs a thread start or two whatever its size.
   const std::size_t batch_profiles = std::clamp<std::size_t>(
-      (std::size_t{1} << 21) / std::max<std::size_t>(1, length), 256, 16384);
+      (std::size_t{1} << 20) / std::max<std::size_t>(1, length), 256, 16384);
   struct Collected {
     ProfileCandidates factual, formulated;
     std::vector<StrokeCell> factual_cells, formulated_cells;
