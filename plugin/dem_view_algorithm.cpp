@@ -165,6 +165,18 @@ void DemViewAlgorithm::refuseClashingOutputs(const QVariantMap& parameters,
   }
 }
 
+bool DemViewAlgorithm::checkParameterValues(const QVariantMap& parameters,
+                                            QgsProcessingContext& context, QString* message) const {
+  if (!QgsProcessingAlgorithm::checkParameterValues(parameters, context, message)) return false;
+  try {
+    refuseClashingOutputs(parameters, context);
+  } catch (const QgsProcessingException& e) {
+    if (message) *message = e.what();
+    return false;
+  }
+  return true;
+}
+
 bool DemViewAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
                                         QgsProcessingContext& context,
                                         QgsProcessingFeedback* feedback) {

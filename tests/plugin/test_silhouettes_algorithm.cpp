@@ -379,12 +379,21 @@ TEST_CASE("two outputs into one file are refused unless both add a layer",
       {{"FACTUAL", dir.filePath("both.gpkg")}, {"FORMULATED", dir.filePath("both.gpkg")}},
       {{"FACTUAL", dir.filePath("both.gpkg")}, {"FORMULATED", layer("formulated")}},
   };
+  std::unique_ptr<QgsProcessingAlgorithm> alg(algorithm());
   for (const QVariantMap& outputs : clashes) {
     CAPTURE(outputs.value("FORMULATED").toString().toStdString());
     const Run run = runAlgorithm(dem, outputs, dir);
     CHECK_FALSE(run.ok);
     CHECK(run.error.contains("would both be written"));
     CHECK(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+    // The dialog and batch mode ask before they run.
+    QVariantMap parameters = outputs;
+    parameters.insert("INPUT", dem);
+    parameters.insert("BAND", 1);
+    QgsProcessingContext context;
+    QString message;
+    CHECK_FALSE(alg->checkParameterValues(parameters, context, &message));
+    CHECK(message.contains("would both be written"));
   }
   const Run run =
       runAlgorithm(dem, {{"FACTUAL", layer("factual")}, {"FORMULATED", layer("formulated")}}, dir);
