@@ -130,6 +130,7 @@ bool same_file(const std::string& a, const std::string& b) {
 
 // Every output replaces its file whole, so an output named as an input would destroy it (a DEM
 // in a GeoPackage written over by its own strokes) and two outputs of one name would lose one.
+// Each output's folder must exist and be writable.
 void refuse_clashing_paths(const Options& o) {
   const std::pair<const char*, const std::string*> outputs[] = {
       {"OUTPUT", &o.output}, {"--stats-json", &o.stats_json}, {"--preview", &o.preview}};
@@ -137,6 +138,9 @@ void refuse_clashing_paths(const Options& o) {
                                                                {"--source", &o.source}};
   for (std::size_t k = 0; k < std::size(outputs); ++k) {
     const auto& [name, path] = outputs[k];
+    // All the outputs can be written, or none is: the strokes are not left for a preview that
+    // then fails.
+    if (!path->empty()) io::check_output_path(*path);
     for (const auto& [input_name, input] : inputs) {
       if (same_file(*path, *input)) {
         throw Error(std::string(name) + " '" + *path + "' names the " + input_name +

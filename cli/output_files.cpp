@@ -11,8 +11,11 @@ namespace tsk::io {
 
 namespace fs = std::filesystem;
 
-void write_atomically(const fs::path& destination,
-                      const std::function<void(const fs::path&)>& write) {
+namespace {
+
+// The folder `destination` goes in, after checking that it names a file in a folder that exists
+// and can be written.
+fs::path output_folder(const fs::path& destination) {
   if (destination.filename().empty())
     throw Error("output path '" + destination.string() + "' names no file");
   const fs::path folder = destination.has_parent_path() ? destination.parent_path() : fs::path(".");
@@ -21,6 +24,23 @@ void write_atomically(const fs::path& destination,
     throw Error("cannot write '" + destination.string() + "': folder '" + folder.string() +
                 "' does not exist");
   }
+  if (access(folder.c_str(), W_OK) != 0) {
+    throw Error("cannot write '" + destination.string() + "': folder '" + folder.string() +
+                "' is not writable");
+  }
+  return folder;
+}
+
+}  // namespace
+
+void check_output_path(const fs::path& destination) {
+  output_folder(destination);
+}
+
+void write_atomically(const fs::path& destination,
+                      const std::function<void(const fs::path&)>& write) {
+  const fs::path folder = output_folder(destination);
+  std::error_code ec;
   const fs::path staging =
       folder / ("." + destination.filename().string() + ".partial-" + std::to_string(getpid()));
   fs::remove_all(staging, ec);

@@ -8,6 +8,10 @@
 
 namespace tsk::io {
 
+// Throws Error, before any work, if write_atomically could not write `destination`: a path that
+// names no file, or a folder that does not exist or cannot be written.
+void check_output_path(const std::filesystem::path& destination);
+
 // Calls write(temporary_path) where temporary_path has the destination's file name inside a
 // fresh temporary folder next to it; on success moves every file the writer made (a shapefile
 // makes several) beside the destination. On any exception nothing is left behind.

@@ -229,6 +229,10 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"drape", dir / "multi.tif", dir / "drape.tif", "--source", dir / "drape.tif"},
        "names the --source raster"},
       {{"silhouettes", kSample, out, "--stats-json", out}, "names OUTPUT too"},
+      // The strokes would be written, then the preview or statistics fail.
+      {{"silhouettes", kSample, out, "--preview", dir / "no/such/p.png"}, "does not exist"},
+      {{"silhouettes", kSample, out, "--stats-json", dir / "no/such/s.json"}, "does not exist"},
+      {{"classify", kSample, dir / "c.tif", "--stats-json", dir / "no/s.json"}, "does not exist"},
       {{"silhouettes", kSample, out, "--preview", dir / "p.png", "--stats-json", dir / "p.png"},
        "names --stats-json too"},
   };
