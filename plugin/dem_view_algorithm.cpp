@@ -8,6 +8,7 @@
 #include <QFileInfo>
 #include <QIcon>
 #include <algorithm>
+#include <memory>
 #include <vector>
 
 #include "errors.h"
@@ -170,6 +171,11 @@ bool DemViewAlgorithm::checkParameterValues(const QVariantMap& parameters,
   if (!QgsProcessingAlgorithm::checkParameterValues(parameters, context, message)) return false;
   try {
     refuseClashingOutputs(parameters, context);
+    // The parameters the widgets cannot check alone (the control point below the column
+    // cut-off), read by a fresh instance since reading keeps them.
+    const std::unique_ptr<QgsProcessingAlgorithm> probe(create());
+    withCoreErrors(
+        [&] { return static_cast<DemViewAlgorithm&>(*probe).readParameters(parameters, context); });
   } catch (const QgsProcessingException& e) {
     if (message) *message = e.what();
     return false;

@@ -43,8 +43,9 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   // return the azimuth the raster is read for.
   virtual double readParameters(const QVariantMap& parameters, QgsProcessingContext& context) = 0;
 
-  // Refuses outputs that clash (refuseClashingOutputs) before the run starts, so that the
-  // dialog and batch mode say so before anything is done.
+  // Refuses parameters out of range together (readParameters) and outputs that clash
+  // (refuseClashingOutputs) before the run starts, so that the dialog and batch mode say so
+  // before anything is done.
   bool checkParameterValues(const QVariantMap& parameters, QgsProcessingContext& context,
                             QString* message = nullptr) const override;
   bool prepareAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,

@@ -395,6 +395,18 @@ TEST_CASE("two outputs into one file are refused unless both add a layer",
     CHECK_FALSE(alg->checkParameterValues(parameters, context, &message));
     CHECK(message.contains("would both be written"));
   }
+  // So are parameters that are each in range but not together.
+  QgsProcessingContext context;
+  QString message;
+  const QVariantMap good{{"INPUT", dem},
+                         {"BAND", 1},
+                         {"FACTUAL", "TEMPORARY_OUTPUT"},
+                         {"FORMULATED", "TEMPORARY_OUTPUT"}};
+  CHECK(alg->checkParameterValues(good, context, &message));
+  QVariantMap crossed = good;
+  crossed.insert("CTRL_COL", 13);
+  CHECK_FALSE(alg->checkParameterValues(crossed, context, &message));
+  CHECK(message.contains("control point"));
   const Run run =
       runAlgorithm(dem, {{"FACTUAL", layer("factual")}, {"FORMULATED", layer("formulated")}}, dir);
   INFO(run.error.toStdString());
