@@ -30,6 +30,7 @@ namespace tsk::cli {
 namespace {
 
 const char* const kUsage = R"(usage: terrain-sketch COMMAND INPUT OUTPUT [options]
+       terrain-sketch --version
 
 commands:
   silhouettes   Factual and Formulated Silhouettes as vector strokes (OUTPUT: vector)
@@ -437,6 +438,11 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     (args.empty() ? err : out) << kUsage;
     return args.empty() ? 2 : 0;
+  }
+  if (args[0] == "--version") {
+    out << "terrain-sketch " << TSK_VERSION << " (GDAL " << GDALVersionInfo("RELEASE_NAME")
+        << ")\n";
+    return 0;
   }
   using Command = int (*)(const std::vector<std::string>&, std::ostream&, std::ostream&);
   const std::map<std::string, Command> commands = {

@@ -247,6 +247,15 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
   CHECK(run_cli({"frobnicate"}).code == 2);
   CHECK(run_cli({}).code == 2);
   CHECK(run_cli({"--help"}).code == 0);
+  // The version is the plugin's (metadata.txt), so the two cannot drift apart.
+  const CliRun version = run_cli({"--version"});
+  CHECK(version.code == 0);
+  std::ifstream metadata(TSK_METADATA);
+  std::string line, plugin_version;
+  while (std::getline(metadata, line))
+    if (line.rfind("version=", 0) == 0) plugin_version = line.substr(8);
+  REQUIRE(!plugin_version.empty());
+  CHECK_THAT(version.out, Catch::StartsWith("terrain-sketch " + plugin_version + " (GDAL "));
 }
 
 TEST_CASE("an output over a file holding other data is refused, the file kept",
