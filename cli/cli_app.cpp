@@ -317,6 +317,13 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
           },
           {}, sink);
     }
+    // The statistics and the preview go out before the strokes are committed, so that a failure
+    // to write them discards the strokes too.
+    if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
+    if (whole) {
+      result.strokes = std::move(drawn);
+      io::write_preview(o.preview, result, dem.oriented, dem.frame, o.params.view);
+    }
     produced = Clock::now();
   });
   if (o.timings) {
@@ -326,11 +333,6 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
         << t.filter << ", thinning " << t.thinning << ", chaining " << t.chaining << ", strokes "
         << t.strokes << ", write " << write_s << " (alongside the stages) + " << since(produced)
         << " (spatial index, commit)\n";
-  }
-  if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
-  if (whole) {
-    result.strokes = std::move(drawn);
-    io::write_preview(o.preview, result, dem.oriented, dem.frame, o.params.view);
   }
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes

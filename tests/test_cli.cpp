@@ -195,6 +195,7 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
   GDALClose(tiff);
   const std::string dem_gpkg_bytes = slurp(dir / "dem.gpkg");
   REQUIRE(!dem_gpkg_bytes.empty());
+  std::filesystem::create_directory(dir / "taken.png");
   const std::size_t inputs = dir.file_count();
 
   struct Bad {
@@ -233,6 +234,8 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"silhouettes", kSample, out, "--preview", dir / "no/such/p.png"}, "does not exist"},
       {{"silhouettes", kSample, out, "--stats-json", dir / "no/such/s.json"}, "does not exist"},
       {{"classify", kSample, dir / "c.tif", "--stats-json", dir / "no/s.json"}, "does not exist"},
+      // A preview that cannot be put in place (a folder of its name) takes the strokes with it.
+      {{"silhouettes", kSample, out, "--preview", dir / "taken.png"}, "taken.png"},
       {{"silhouettes", kSample, out, "--preview", dir / "p.png", "--stats-json", dir / "p.png"},
        "names --stats-json too"},
   };
