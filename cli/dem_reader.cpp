@@ -138,6 +138,19 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
     dem.notes += "no CRS: coordinates are written without one, cell sizes taken as metres\n";
   }
 
+  // GDAL's approximate minimum reads a sample of the blocks: milliseconds, and fill values cover
+  // whole holes and edges when they are there.
+  double range[2];
+  GDALRasterBand& band = *dataset.GetRasterBand(options.band);
+  CPLErrorReset();
+  GDALComputeRasterMinMax(&band, TRUE, range);
+  if (CPLGetLastErrorType() < CE_Failure && is_common_fill_value(range[0])) {
+    dem.notes += "heights go down to " + number_text(range[0]) +
+                 ", a common fill value: if those cells have no data, declare it as nodata "
+                 "(gdal_edit.py -a_nodata " +
+                 number_text(range[0]) + " INPUT)\n";
+  }
+
   const double dx = dem.geotransform.a[1] * dem.ground_scale;
   const double dy = -dem.geotransform.a[5] * dem.ground_scale;
   dem.frame = make_frame(dem.rows, dem.cols, dx, dy, options.azimuth_deg);

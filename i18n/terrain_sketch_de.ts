@@ -39,107 +39,107 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="51" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="52" />
         <source>Elevation (DEM)</source>
         <translation>Höhenmodell (DGM)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="52" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="53" />
         <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
         <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="53" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="54" />
         <source>Band</source>
         <translation>Kanal</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="55" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="56" />
         <source>The band holding the heights.</source>
         <translation>Der Kanal mit den Höhen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="57" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
         <source>View azimuth (degrees)</source>
         <translation>Blickrichtung (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="59" />
         <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
         <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="64" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="65" />
         <source>Vertical exaggeration</source>
         <translation>Überhöhung</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="65" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="66" />
         <source>Factor applied to heights before occlusion is computed.</source>
         <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="66" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="67" />
         <source>Base slope (%)</source>
         <translation>Grundneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="68" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="69" />
         <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
         <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="74" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="75" />
         <source>Row slope cut-off (%)</source>
         <translation>Grenzwert Zeilenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="76" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="77" />
         <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
         <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="78" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="79" />
         <source>Column slope cut-off (%)</source>
         <translation>Grenzwert Spaltenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="80" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="81" />
         <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
         <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="82" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="83" />
         <source>Control point column slope (%)</source>
         <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="84" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="85" />
         <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
         <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="88" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="89" />
         <source>Allow for diagonals</source>
         <translation>Diagonalen berücksichtigen</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="89" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="90" />
         <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
         <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="142" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="143" />
         <source>%1 and %2 would both be written to %3, one over the other; choose different files, or save both to one GeoPackage with a layer name each.</source>
         <translation>%1 und %2 würden beide nach %3 geschrieben, eines über das andere; wählen Sie verschiedene Dateien, oder speichern Sie beide in ein GeoPackage mit je einem Layernamen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="160" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="161" />
         <source>%1 would be written into %2, the file of %3, which this algorithm reads; choose another file.</source>
         <translation>%1 würde in %2 geschrieben, die Datei von %3, die dieser Algorithmus liest; wählen Sie eine andere Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="189" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="207" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -398,27 +398,32 @@
         <translation>Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="110" />
+        <location filename="../plugin/raster_grid.cpp" line="112" />
+        <source>Heights go down to %1, a common fill value: if those cells have no data, set it as the layer's no data value (Layer Properties &gt; Transparency) or in the file.</source>
+        <translation>Die Höhen reichen bis %1 hinab, ein üblicher Füllwert: wenn diese Zellen keine Daten haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften &gt; Transparenz) oder in der Datei.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="119" />
         <source>Could not open the raster's data provider.</source>
         <translation>Der Datenanbieter des Rasters konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="204" />
+        <location filename="../plugin/raster_grid.cpp" line="213" />
         <source>The raster (%1 x %2 cells) is too large for this algorithm, which holds the whole DEM turned to the view: that would take more than half of this machine's memory. The Silhouettes algorithm reads large DEMs strip by strip; or clip or resample the DEM.</source>
         <translation>Das Raster (%1 x %2 Zellen) ist zu groß für diesen Algorithmus, der das ganze DGM zur Blickrichtung gedreht im Speicher hält: das würde mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen. Der Algorithmus Silhouetten liest große DGM Streifen für Streifen; oder schneiden Sie das DGM zu oder verringern Sie seine Auflösung.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="216" />
+        <location filename="../plugin/raster_grid.cpp" line="225" />
         <source>Not enough memory for a %1 x %2 raster.</source>
         <translation>Nicht genug Speicher für ein Raster von %1 x %2.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="227" />
+        <location filename="../plugin/raster_grid.cpp" line="236" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="184" />
+        <location filename="../plugin/raster_grid.cpp" line="193" />
         <source>Could not read rows %1 to %2 of the raster.</source>
         <translation>Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
     </message>

@@ -30,6 +30,11 @@ GERMAN = {
     "come out in %1.":
         "Die Einheit des KBS ist %1, nicht der Meter: die Höhen müssen ebenfalls in %1 sein, und "
         "Tiefen und Längen werden in %1 ausgegeben.",
+    "Heights go down to %1, a common fill value: if those cells have no data, set it as the "
+    "layer's no data value (Layer Properties > Transparency) or in the file.":
+        "Die Höhen reichen bis %1 hinab, ein üblicher Füllwert: wenn diese Zellen keine Daten "
+        "haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften > Transparenz) "
+        "oder in der Datei.",
     "The raster has %1 bands; band %2 is used.": "Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.",
     "Could not open the raster's data provider.":
         "Der Datenanbieter des Rasters konnte nicht geöffnet werden.",

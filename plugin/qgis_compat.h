@@ -5,17 +5,20 @@
 #include <qgsfield.h>
 #include <qgsprocessing.h>
 #include <qgsprocessingparameters.h>
+#include <qgsrasterbandstats.h>
 #include <qgsunittypes.h>
 
 namespace tsk::plugin {
 
 #if _QGIS_VERSION_INT >= 33600
+constexpr auto kMinimumStatistic = Qgis::RasterBandStatistic::Min;
 constexpr auto kLineLayer = Qgis::ProcessingSourceType::VectorLine;
 constexpr auto kLineString = Qgis::WkbType::LineString;
 constexpr auto kDoubleNumber = Qgis::ProcessingNumberParameterType::Double;
 constexpr auto kIntegerNumber = Qgis::ProcessingNumberParameterType::Integer;
 constexpr auto kAdvanced = Qgis::ProcessingParameterFlag::Advanced;
 #else
+constexpr auto kMinimumStatistic = QgsRasterBandStats::Min;
 constexpr auto kLineLayer = QgsProcessing::TypeVectorLine;
 constexpr auto kLineString = QgsWkbTypes::LineString;
 constexpr auto kDoubleNumber = QgsProcessingParameterNumber::Double;

@@ -44,15 +44,16 @@ inline CliRun run_cli(const std::vector<std::string>& args) {
   return {code, out.str(), err.str()};
 }
 
-// Writes a GeoTIFF of `bands` bands filled by f(band, row, col), with an optional geotransform
-// and EPSG code (0: none).
+// Writes a GeoTIFF of `bands` bands filled by f(band, row, col), with an optional geotransform,
+// EPSG code (0: none) and nodata value (NaN: none).
 template <typename F>
 void write_tiff(const std::string& path, int rows, int cols, int bands, F f,
-                const double* geotransform, int epsg) {
+                const double* geotransform, int epsg, double nodata = std::nan("")) {
   GDALAllRegister();
   GDALDriver* drv = GetGDALDriverManager()->GetDriverByName("GTiff");
   GDALDataset* ds = drv->Create(path.c_str(), cols, rows, bands, GDT_Float32, nullptr);
   for (int b = 1; b <= bands; ++b) {
+    if (!std::isnan(nodata)) ds->GetRasterBand(b)->SetNoDataValue(nodata);
     std::vector<float> values(static_cast<std::size_t>(rows) * cols);
     for (int r = 0; r < rows; ++r)
       for (int c = 0; c < cols; ++c) values[static_cast<std::size_t>(r) * cols + c] = f(b, r, c);

@@ -393,6 +393,21 @@ TEST_CASE("Web Mercator cells are scaled to ground metres with a note", "[cli]")
   CHECK_THAT(dem.notes, Catch::Contains("Mercator"));
 }
 
+TEST_CASE("an undeclared fill value among the heights gets a note", "[cli]") {
+  ScratchDir dir("fill");
+  const auto filled = [](int band, int r, int c) { return c < 6 ? -9999.0f : hill(band, r, c); };
+  test::write_tiff(dir / "filled.tif", 40, 40, 1, filled, kNorthUp, 32616);
+  const CliRun run = run_cli({"silhouettes", dir / "filled.tif", dir / "out.gpkg"});
+  CHECK(run.code == 0);
+  CHECK_THAT(run.err, Catch::Contains("-9999, a common fill value"));
+  CHECK_THAT(run.err, Catch::Contains("gdal_edit.py -a_nodata -9999"));
+  // Declared as nodata, it is no height at all.
+  test::write_tiff(dir / "declared.tif", 40, 40, 1, filled, kNorthUp, 32616, -9999.0);
+  const CliRun declared = run_cli({"silhouettes", dir / "declared.tif", dir / "declared.gpkg"});
+  CHECK(declared.code == 0);
+  CHECK_THAT(declared.err, !Catch::Contains("fill value"));
+}
+
 TEST_CASE("a CRS in feet runs with a note that heights must be in feet too", "[cli]") {
   ScratchDir dir("feet");
   const double geotransform[6] = {2000000, 30, 0, 700000, 0, -30};

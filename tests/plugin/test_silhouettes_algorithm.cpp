@@ -216,6 +216,22 @@ TEST_CASE("a raster without CRS runs with a warning in the log", "[plugin]") {
   CHECK(log.warnings.join(' ').contains("no CRS"));
 }
 
+TEST_CASE("an undeclared fill value among the heights gets a warning", "[plugin]") {
+  QTemporaryDir dir;
+  const auto filled = [](int band, int r, int c) {
+    return c < 6 ? -32768.0f : test::hill(band, r, c);
+  };
+  const QString undeclared = dir.filePath("filled.tif"), declared = dir.filePath("declared.tif");
+  test::write_tiff(undeclared.toStdString(), 40, 40, 1, filled, test::kNorthUp, 32616);
+  test::write_tiff(declared.toStdString(), 40, 40, 1, filled, test::kNorthUp, 32616, -32768.0);
+  RecordingFeedback log;
+  REQUIRE(runAlgorithm(undeclared, {}, dir, &log).ok);
+  CHECK(log.warnings.join(' ').contains("-32768, a common fill value"));
+  RecordingFeedback quiet;
+  REQUIRE(runAlgorithm(declared, {}, dir, &quiet).ok);
+  CHECK_FALSE(quiet.warnings.join(' ').contains("fill value"));
+}
+
 TEST_CASE("a CRS in feet runs with a warning that heights must be in feet too", "[plugin]") {
   QTemporaryDir dir;
   const QString feet = dir.filePath("feet.tif");
