@@ -48,8 +48,8 @@ commands:
 
 INPUT is any raster GDAL reads (heights in metres, a projected CRS in metres);
 a vector OUTPUT is any OGR format, chosen by extension (.gpkg, .shp, .geojson, .fgb, ...).
-Outputs are written whole or not at all and replace an earlier output of the same name; a file
-holding anything else (the input, a raster, other layers) is refused.
+Outputs are written whole or not at all and replace an earlier output of the same name; the
+input, and a GeoPackage holding anything else (a raster, other layers), are refused.
 
 view:
   --azimuth DEG        bearing the viewer faces, clockwise from north (default 90: from the

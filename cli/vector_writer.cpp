@@ -42,10 +42,14 @@ std::string vector_driver_for(const std::string& path, const std::string& format
 }
 
 void check_vector_output(const std::string& path, const std::string& format) {
-  vector_driver_for(path, format);
+  // Only the database formats keep other data beside a layer (a project's GeoPackage) and open
+  // in a moment; a GeoJSON or KML file is one layer, and opening it would parse all of it.
+  const std::string driver = vector_driver_for(path, format);
+  if (driver != "GPKG" && driver != "SQLite") return;
   GdalErrorCapture quiet;  // a path that is no dataset (or none yet) is free to write
+  const char* const drivers[] = {driver.c_str(), nullptr};
   DatasetPtr existing(
-      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_RASTER | GDAL_OF_READONLY));
+      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_RASTER | GDAL_OF_READONLY, drivers));
   if (!existing) return;
   const auto refuse = [&](const std::string& what) {
     throw Error("'" + path + "' holds " + what + ", which writing it would destroy; choose " +
@@ -53,7 +57,7 @@ void check_vector_output(const std::string& path, const std::string& format) {
   };
   const char* const* subdatasets = existing->GetMetadata("SUBDATASETS");
   if (existing->GetRasterCount() > 0 || (subdatasets && *subdatasets)) refuse("a raster");
-  // An earlier output is one layer with one of our names, or the file's (a shapefile's, a CSV's).
+  // An earlier output is one layer with one of our names, or the file's (as QGIS names them).
   const std::string stem = std::filesystem::path(path).stem().string();
   for (OGRLayer* layer : existing->GetLayers()) {
     const std::string name = layer->GetName();

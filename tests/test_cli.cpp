@@ -264,13 +264,14 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
 TEST_CASE("an output over a file holding other data is refused, the file kept",
           "[cli][robustness]") {
   ScratchDir dir("other_data");
-  // A project's GeoPackage with a layer of its own next to an earlier silhouettes layer, and
-  // one holding a DEM.
-  const std::string project = dir / "project.gpkg", dem = dir / "dem.gpkg";
-  REQUIRE(run_cli({"silhouettes", kData + "/volcano.tif", project}).code == 0);
-  {
+  // A project's GeoPackage and SQLite database each with a layer of its own next to an earlier
+  // silhouettes layer, and a GeoPackage holding a DEM.
+  const std::string project = dir / "project.gpkg", database = dir / "project.sqlite";
+  const std::string dem = dir / "dem.gpkg";
+  for (const std::string& file : {project, database}) {
+    REQUIRE(run_cli({"silhouettes", kData + "/volcano.tif", file}).code == 0);
     GDALDatasetH ds =
-        GDALOpenEx(project.c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE, nullptr, nullptr, nullptr);
+        GDALOpenEx(file.c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE, nullptr, nullptr, nullptr);
     REQUIRE(ds != nullptr);
     REQUIRE(GDALDatasetCreateLayer(ds, "roads", nullptr, wkbLineString, nullptr) != nullptr);
     GDALClose(ds);
@@ -279,7 +280,8 @@ TEST_CASE("an output over a file holding other data is refused, the file kept",
   GDALClose(GDALCreateCopy(GDALGetDriverByName("GPKG"), dem.c_str(), tiff, false, nullptr, nullptr,
                            nullptr));
   GDALClose(tiff);
-  const std::string project_bytes = slurp(project), dem_bytes = slurp(dem);
+  const std::string project_bytes = slurp(project), database_bytes = slurp(database);
+  const std::string dem_bytes = slurp(dem);
   const std::size_t files = dir.file_count();
   struct Refused {
     std::string command, path, message;
@@ -287,6 +289,7 @@ TEST_CASE("an output over a file holding other data is refused, the file kept",
   const Refused cases[] = {{"silhouettes", project, "holds the layer 'roads'"},
                            {"profiles", project, "holds the layer 'roads'"},
                            {"pstrokes", project, "holds the layer 'roads'"},
+                           {"silhouettes", database, "holds the layer 'roads'"},
                            {"silhouettes", dem, "holds a raster"}};
   for (const Refused& r : cases) {
     CAPTURE(r.command, r.path);
@@ -295,6 +298,7 @@ TEST_CASE("an output over a file holding other data is refused, the file kept",
     CHECK_THAT(run.err, Catch::Contains(r.message));
   }
   CHECK(slurp(project) == project_bytes);
+  CHECK(slurp(database) == database_bytes);
   CHECK(slurp(dem) == dem_bytes);
   CHECK(dir.file_count() == files);
 }
