@@ -104,10 +104,13 @@ RasterGrid::RasterGrid(QgsRasterLayer* layer, int band,
     }
   }
   if (bands > 1) mNotes << tr("The raster has %1 bands; band %2 is used.").arg(bands).arg(band);
-  // The provider's minimum over a sample of the cells: fill values cover holes and edges.
-  const double lowest = layer->dataProvider()
-                            ->bandStatistics(band, kMinimumStatistic, QgsRectangle(), 250000)
-                            .minimumValue;
+  // GDAL's minimum over a sample of the cells (fill values cover holes and edges); other
+  // providers (web services) would fetch data for it on the main thread.
+  const bool gdal = layer->providerType() == QLatin1String("gdal");
+  const double lowest = gdal ? layer->dataProvider()
+                                   ->bandStatistics(band, kMinimumStatistic, QgsRectangle(), 250000)
+                                   .minimumValue
+                             : 0.0;
   if (is_common_fill_value(lowest)) {
     mNotes << tr("Heights go down to %1, a common fill value: if those cells have no data, set it "
                  "as the layer's no data value (Layer Properties > Transparency) or in the file.")
