@@ -44,8 +44,9 @@ class Grid {
   Grid(std::size_t rows, std::size_t cols, Unset)
       : rows_(rows), cols_(cols), cells_(checked_cell_count(rows, cols)) {}
 
-  // Makes this a rows x cols grid of unset cells, in the memory it has when that is large enough:
-  // for buffers refilled strip after strip, as fresh memory costs a page fault for every page.
+  // Makes this a rows x cols grid of unset cells, in the memory it has when that is large enough
+  // (nothing changes for the shape it has): for buffers refilled strip after strip, as fresh
+  // memory costs a page fault for every page.
   void reshape(std::size_t rows, std::size_t cols, Unset) {
     const std::size_t n = checked_cell_count(rows, cols);
     if (n > cells_.capacity()) cells_ = {};  // no cell is worth copying

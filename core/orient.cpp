@@ -203,8 +203,7 @@ DemWindow profile_window(const OrientedFrame& frame, std::size_t first, std::siz
 void orient_window(const OrientedFrame& frame, const HeightGrid& window, HeightGrid& out) {
   // The window seen from the same side is exactly its run of profiles, in order.
   const OrientedFrame turned = make_frame(window.rows(), window.cols(), 1, 1, frame.azimuth_deg);
-  if (out.rows() != turned.profiles || out.cols() != turned.length)
-    out.reshape(turned.profiles, turned.length, kUnset);
+  out.reshape(turned.profiles, turned.length, kUnset);
   scatter_dem_rows(turned, 0, window.rows(), window.data(), window.cols(), out);
 }
 
@@ -436,7 +435,7 @@ void resample_with(const BilinearSampler<Cells>& sample, const OrientedFrame& fr
   if (!frame.resampled || first > frame.profiles || count > frame.profiles - first) {
     throw Error("the profiles do not match the resampled frame");
   }
-  if (out.rows() != count || out.cols() != frame.length) out.reshape(count, frame.length, kUnset);
+  out.reshape(count, frame.length, kUnset);
   // Where each profile starts in pixel coordinates (frame.to_pixel(p, i) with the profile's part
   // worked out once, same rounding) and its cells [lo, hi) that fall on the DEM (the sampler
   // still checks); the margins of the line-of-sight grid, up to half of it, are nodata.
@@ -634,7 +633,7 @@ void StripLoader::load(std::size_t first, std::size_t count, HeightGrid& strip) 
   // Seen from the west the window is the strip as it is; any other cardinal view turns it.
   const bool turned = frame_.row_per_p <= 0 || frame_.col_per_i <= 0;
   HeightGrid& target = turned ? window_ : strip;
-  if (target.rows() != w.rows || target.cols() != w.cols) target.reshape(w.rows, w.cols, kUnset);
+  target.reshape(w.rows, w.cols, kUnset);
   read_(w, target.data());
   if (turned) orient_window(frame_, window_, strip);
 }

@@ -246,8 +246,7 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
   // profiles are classified and their chain candidates collected in parallel, then linked in
   // order on a thread of their own while the next batch is collected.
   CellFlags& flags = st.flags;  // rows of the neighbours stay unused
-  if (flags.rows() != z.rows() || flags.cols() != z.cols())
-    flags.reshape(z.rows(), z.cols(), kUnset);
+  flags.reshape(z.rows(), z.cols(), kUnset);
   const std::size_t length = frame.length;
   const StrokeContext context{
       z,        flags,         frame, view, st.geotransform, st.params.geometry, st.params.subcell,

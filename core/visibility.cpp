@@ -30,8 +30,7 @@ void classify_profile_visibility(const float* z, std::uint8_t* flags, std::size_
 
 void classify_visibility(const HeightGrid& z, double d, const ViewParams& view, CellFlags& flags,
                          unsigned threads, const ProgressFn& progress) {
-  if (flags.rows() != z.rows() || flags.cols() != z.cols())
-    flags.reshape(z.rows(), z.cols(), kUnset);
+  flags.reshape(z.rows(), z.cols(), kUnset);
   const std::size_t length = z.cols();
   parallel_for(
       z.rows(), threads,
