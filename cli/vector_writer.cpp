@@ -41,16 +41,16 @@ std::string vector_driver_for(const std::string& path, const std::string& format
   return it->second;
 }
 
-void check_vector_output(const std::string& path, const std::string& format) {
+std::string check_vector_output(const std::string& path, const std::string& format) {
   // Only the database formats keep other data beside a layer (a project's GeoPackage) and open
   // in a moment; a GeoJSON or KML file is one layer, and opening it would parse all of it.
-  const std::string driver = vector_driver_for(path, format);
-  if (driver != "GPKG" && driver != "SQLite") return;
+  std::string driver = vector_driver_for(path, format);
+  if (driver != "GPKG" && driver != "SQLite") return driver;
   GdalErrorCapture quiet;  // a path that is no dataset (or none yet) is free to write
   const char* const drivers[] = {driver.c_str(), nullptr};
   DatasetPtr existing(
       GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_RASTER | GDAL_OF_READONLY, drivers));
-  if (!existing) return;
+  if (!existing) return driver;
   const auto refuse = [&](const std::string& what) {
     throw Error("'" + path + "' holds " + what + ", which writing it would destroy; choose " +
                 "another file");
@@ -65,6 +65,7 @@ void check_vector_output(const std::string& path, const std::string& format) {
       refuse("the layer '" + name + "'");
   }
   if (existing->GetLayerCount() > 1) refuse(std::to_string(existing->GetLayerCount()) + " layers");
+  return driver;
 }
 
 namespace {
@@ -139,9 +140,8 @@ void write_line_layer(const std::string& path, const std::string& format,
                       const std::string& srs_wkt, const std::string& layer_name,
                       const std::vector<Field>& fields,
                       const std::function<void(LineOutput&)>& add_features) {
-  check_vector_output(path, format);
+  const std::string driver_name = check_vector_output(path, format);
   GdalErrorCapture capture;
-  const std::string driver_name = vector_driver_for(path, format);
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
   if (!driver || !driver->GetMetadataItem(GDAL_DCAP_VECTOR) ||
       !driver->GetMetadataItem(GDAL_DCAP_CREATE)) {

@@ -22,8 +22,8 @@ inline constexpr const char* kPStrokeLayer = "pstrokes";
 // Checks, before any work, that a line layer can be written to `path`: a vector format is known
 // for it, and no GeoPackage or SQLite file is there that holds more than an earlier output (one
 // layer named as ours or as the file): a raster, or other layers as in a project's GeoPackage,
-// would be destroyed.
-void check_vector_output(const std::string& path, const std::string& format);
+// would be destroyed. Returns the format's OGR driver name (vector_driver_for).
+std::string check_vector_output(const std::string& path, const std::string& format);
 
 // Writes one stroke to the layer being filled.
 using StrokeWriter = std::function<void(const Stroke& stroke)>;
