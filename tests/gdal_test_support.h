@@ -71,6 +71,18 @@ void write_tiff(const std::string& path, int rows, int cols, int bands, F f,
   GDALClose(ds);
 }
 
+// Copies the raster `from` into a new GeoPackage `to`, as a DEM kept in one.
+inline void copy_raster_to_gpkg(const std::string& from, const std::string& to) {
+  GDALAllRegister();
+  GDALDatasetH source = GDALOpen(from.c_str(), GA_ReadOnly);
+  GDALDatasetH copy = source ? GDALCreateCopy(GDALGetDriverByName("GPKG"), to.c_str(), source,
+                                              false, nullptr, nullptr, nullptr)
+                             : nullptr;
+  if (copy) GDALClose(copy);
+  if (source) GDALClose(source);
+  if (!copy) throw std::runtime_error("test GeoPackage raster copy failed");
+}
+
 // North-up, 10 m cells, in UTM.
 inline const double kNorthUp[6] = {500000, 10, 0, 4000000, 0, -10};
 

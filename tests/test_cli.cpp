@@ -189,10 +189,7 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
   test::write_tiff(dir / "nogeo.tif", 40, 40, 1, hill, nullptr, 0);
   // A DEM in a GeoPackage, where the strokes could go too.
   test::write_tiff(dir / "hill.tif", 40, 40, 1, hill, kNorthUp, 32616);
-  GDALDatasetH tiff = GDALOpen((dir / "hill.tif").c_str(), GA_ReadOnly);
-  GDALClose(GDALCreateCopy(GDALGetDriverByName("GPKG"), (dir / "dem.gpkg").c_str(), tiff, false,
-                           nullptr, nullptr, nullptr));
-  GDALClose(tiff);
+  test::copy_raster_to_gpkg(dir / "hill.tif", dir / "dem.gpkg");
   const std::string dem_gpkg_bytes = slurp(dir / "dem.gpkg");
   REQUIRE(!dem_gpkg_bytes.empty());
   std::filesystem::create_directory(dir / "taken.png");
@@ -276,10 +273,7 @@ TEST_CASE("an output over a file holding other data is refused, the file kept",
     REQUIRE(GDALDatasetCreateLayer(ds, "roads", nullptr, wkbLineString, nullptr) != nullptr);
     GDALClose(ds);
   }
-  GDALDatasetH tiff = GDALOpen(kSample.c_str(), GA_ReadOnly);
-  GDALClose(GDALCreateCopy(GDALGetDriverByName("GPKG"), dem.c_str(), tiff, false, nullptr, nullptr,
-                           nullptr));
-  GDALClose(tiff);
+  test::copy_raster_to_gpkg(kSample, dem);
   const std::string project_bytes = slurp(project), database_bytes = slurp(database);
   const std::string dem_bytes = slurp(dem);
   const std::size_t files = dir.file_count();

@@ -343,10 +343,8 @@ TEST_CASE("an output into the file of a raster being read is refused, the raster
   const QString tiff = dir.filePath("dem.tif");
   REQUIRE(QFile::copy(kData + "/jacksboro_utm16n.tif", tiff));
   REQUIRE(QFile::copy(kData + "/jacksboro_utm16n.tif.aux.xml", tiff + ".aux.xml"));
-  GDALDatasetH source = GDALOpen(QFile::encodeName(tiff).constData(), GA_ReadOnly);
-  GDALClose(GDALCreateCopy(GDALGetDriverByName("GPKG"), QFile::encodeName(gpkg).constData(), source,
-                           false, nullptr, nullptr, nullptr));
-  GDALClose(source);
+  test::copy_raster_to_gpkg(QFile::encodeName(tiff).toStdString(),
+                            QFile::encodeName(gpkg).toStdString());
   const auto bytes = [](const QString& path) {
     QFile file(path);
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
