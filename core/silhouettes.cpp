@@ -138,14 +138,14 @@ std::vector<StageFigure> stage_figures(const StageStats& s) {
 }
 
 struct SilhouetteStream::State {
-  // One class of strokes: its linker, the cells of its open chains by slot, and its complete
+  // One class of strokes: its linker, the strokes of its open chains by slot, and its complete
   // strokes waiting until every chain started before theirs is complete too.
   struct Strokes {
     Strokes(bool factual, int window)
         : linker(factual, window), cls(factual ? StrokeClass::factual : StrokeClass::formulated) {}
     ChainLinker linker;
     StrokeClass cls;
-    std::vector<std::vector<StrokeCell>> open;
+    std::vector<StrokeBuilder> open;
     std::vector<std::pair<std::size_t, Stroke>> waiting;  // a heap, the oldest chain on top
     std::vector<Stroke> handed_on;                        // without a sink
     std::size_t count = 0, cells = 0;                     // of the strokes handed on
@@ -176,9 +176,9 @@ struct SilhouetteStream::State {
   // hands on the strokes no open chain precedes.
   void link(Strokes& strokes, ProfileCandidates&& candidates, std::vector<StrokeCell>&& cells) {
     const auto& joined = strokes.linker.add_profile(std::move(candidates));
-    std::vector<std::vector<StrokeCell>>& open = strokes.open;
+    std::vector<StrokeBuilder>& open = strokes.open;
     if (open.size() < strokes.linker.slot_count()) open.resize(strokes.linker.slot_count());
-    for (std::size_t k = 0; k < joined.size(); ++k) open[joined[k].slot].push_back(cells[k]);
+    for (std::size_t k = 0; k < joined.size(); ++k) open[joined[k].slot].add(cells[k]);
     close(strokes, strokes.linker.closed());
     hand_on(strokes, strokes.linker.oldest_open());
   }
@@ -186,12 +186,12 @@ struct SilhouetteStream::State {
   // Keeps the strokes of closed chains long enough to draw; their slots' storage is reused.
   void close(Strokes& strokes, const std::vector<ChainRef>& chains) {
     for (const ChainRef& chain : chains) {
-      std::vector<StrokeCell>& cells = strokes.open[chain.slot];
-      if (static_cast<int>(cells.size()) >= params.chain.min_cells) {
-        strokes.waiting.emplace_back(chain.id, stroke_from_cells(cells, strokes.cls));
+      StrokeBuilder& builder = strokes.open[chain.slot];
+      if (builder.cells() >= params.chain.min_cells) {
+        strokes.waiting.emplace_back(chain.id, builder.stroke(strokes.cls));
         std::push_heap(strokes.waiting.begin(), strokes.waiting.end(), later_chain);
       }
-      cells.clear();
+      builder.clear();
     }
   }
 

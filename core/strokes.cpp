@@ -13,16 +13,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Mean of the finite values added, NaN when there were none.
-struct Mean {
-  double sum = 0.0;
-  int count = 0;
-  void add(double v) {
-    if (std::isfinite(v)) sum += v, ++count;
-  }
-  double value() const { return count ? sum / count : kNaN; }
-};
-
 }  // namespace
 
 const char* stroke_class_name(StrokeClass cls) {
@@ -79,36 +69,50 @@ StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, b
   return c;
 }
 
-Stroke stroke_from_cells(const std::vector<StrokeCell>& cells, StrokeClass cls) {
+void StrokeBuilder::Mean::add(double v) {
+  if (std::isfinite(v)) sum += v, ++count;
+}
+
+double StrokeBuilder::Mean::value() const {
+  return count ? sum / count : kNaN;
+}
+
+void StrokeBuilder::add(const StrokeCell& c) {
+  if (!chain_.empty()) length_ += std::hypot(c.map.x - last_map_.x, c.map.y - last_map_.y);
+  last_map_ = c.map;
+  chain_.push_back(c.cell);
+  points_.push_back(c.point);
+  slope_.add(c.slope_pct);
+  row_slope_.add(c.row_slope_pct);
+  dist_.add(c.dist);
+  z_.add(c.z);
+  // Formulated cells have no hidden zone: their NaN depths count in neither.
+  depth_.add(c.depth_m);
+  max_depth_ = std::max(max_depth_, c.depth_m);
+}
+
+Stroke StrokeBuilder::stroke(StrokeClass cls) const {
   const bool factual = cls == StrokeClass::factual;
   Stroke s;
   s.cls = cls;
-  s.cells = static_cast<int>(cells.size());
-  s.chain.reserve(cells.size());
-  s.points.reserve(cells.size());
-  Mean slope, row, depth, dist, height;
-  double max_depth = factual ? 0.0 : kNaN;
-  for (std::size_t k = 0; k < cells.size(); ++k) {
-    const StrokeCell& c = cells[k];
-    if (k > 0) s.length += std::hypot(c.map.x - cells[k - 1].map.x, c.map.y - cells[k - 1].map.y);
-    s.chain.push_back(c.cell);
-    s.points.push_back(c.point);
-    slope.add(c.slope_pct);
-    row.add(c.row_slope_pct);
-    dist.add(c.dist);
-    height.add(c.z);
-    if (factual) {
-      depth.add(c.depth_m);
-      max_depth = std::max(max_depth, c.depth_m);
-    }
-  }
-  s.mean_slope_pct = slope.value();
-  s.mean_row_slope_pct = row.value();
-  s.mean_depth_m = factual ? depth.value() : kNaN;
-  s.max_depth_m = max_depth;
-  s.mean_dist = dist.value();
-  s.mean_z = height.value();
+  s.cells = cells();
+  s.chain = chain_;
+  s.points = points_;
+  s.length = length_;
+  s.mean_slope_pct = slope_.value();
+  s.mean_row_slope_pct = row_slope_.value();
+  s.mean_depth_m = factual ? depth_.value() : kNaN;
+  s.max_depth_m = factual ? max_depth_ : kNaN;
+  s.mean_dist = dist_.value();
+  s.mean_z = z_.value();
   return s;
+}
+
+void StrokeBuilder::clear() {
+  chain_.clear();
+  points_.clear();
+  length_ = 0.0, max_depth_ = 0.0;
+  slope_ = row_slope_ = depth_ = dist_ = z_ = Mean();
 }
 
 }  // namespace tsk

@@ -93,7 +93,30 @@ double subcell_peak(const float* z, std::size_t length, std::size_t i, double d,
 // The record of cell i of profile p (a global profile index; the grid row is p - first_profile).
 StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, bool factual);
 
-// A stroke through `cells` (consecutive profiles) with its attributes.
-Stroke stroke_from_cells(const std::vector<StrokeCell>& cells, StrokeClass cls);
+// A stroke built cell by cell as its chain grows (consecutive profiles): its geometry and the
+// running sums of its attributes, so that the records of its cells need not be kept.
+class StrokeBuilder {
+ public:
+  void add(const StrokeCell& c);
+  int cells() const { return static_cast<int>(chain_.size()); }
+  // The stroke so far with its attributes, its vectors sized to fit.
+  Stroke stroke(StrokeClass cls) const;
+  // Empties the builder for the next chain, keeping its storage.
+  void clear();
+
+ private:
+  // Mean of the finite values added, NaN when there were none.
+  struct Mean {
+    double sum = 0.0;
+    int count = 0;
+    void add(double v);
+    double value() const;
+  };
+  Chain chain_;
+  std::vector<StrokePoint> points_;
+  StrokePoint last_map_{};
+  double length_ = 0.0, max_depth_ = 0.0;
+  Mean slope_, row_slope_, depth_, dist_, z_;
+};
 
 }  // namespace tsk

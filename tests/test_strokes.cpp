@@ -76,3 +76,44 @@ TEST_CASE("sub-cell placement finds the parabola peak within half a cell", "[str
   const float edge[] = {10, 2};
   CHECK(subcell_peak(edge, 2, 0, 10, view) == 0.0);
 }
+
+TEST_CASE("a stroke builder reused after clear() builds as a fresh one does", "[strokes]") {
+  const auto cell = [](int p, double x, double slope, double depth) {
+    StrokeCell c;
+    c.cell = {p, 3};
+    c.map = c.point = {x, 0.0};
+    c.dist = 30.0, c.slope_pct = slope, c.row_slope_pct = 1.0, c.depth_m = depth, c.z = 100.0 + p;
+    return c;
+  };
+  StrokeBuilder reused;
+  for (int p = 0; p < 4; ++p) reused.add(cell(p, 7.0 * p, 50.0 + p, 9.0 + p));
+  CHECK(reused.stroke(StrokeClass::factual).max_depth_m == Approx(12.0));
+  reused.clear();
+  StrokeBuilder fresh;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // Three cells in a right angle (lengths 3 and 4), one slope unknown.
+  for (StrokeBuilder* b : {&reused, &fresh}) {
+    b->add(cell(0, 0.0, 20.0, 2.0));
+    b->add(cell(1, 3.0, nan, 6.0));
+    StrokeCell last = cell(1, 3.0, 40.0, 4.0);
+    last.cell.p = 2, last.map.y = 4.0;
+    b->add(last);
+  }
+  const Stroke a = reused.stroke(StrokeClass::factual), b = fresh.stroke(StrokeClass::factual);
+  CHECK(a.cells == 3);
+  CHECK(a.chain.size() == 3);
+  CHECK(a.points.size() == 3);
+  CHECK(a.length == Approx(3.0 + 4.0));
+  CHECK(a.mean_slope_pct == Approx(30.0));  // the unknown slope left out
+  CHECK(a.mean_depth_m == Approx(4.0));
+  CHECK(a.max_depth_m == Approx(6.0));
+  for (double Stroke::*m :
+       {&Stroke::length, &Stroke::mean_slope_pct, &Stroke::mean_row_slope_pct,
+        &Stroke::mean_depth_m, &Stroke::max_depth_m, &Stroke::mean_dist, &Stroke::mean_z}) {
+    CHECK(a.*m == b.*m);
+  }
+  const Stroke formulated = fresh.stroke(StrokeClass::formulated);
+  CHECK(std::isnan(formulated.mean_depth_m));
+  CHECK(std::isnan(formulated.max_depth_m));
+  CHECK(formulated.mean_slope_pct == Approx(30.0));
+}
