@@ -329,19 +329,68 @@ class BilinearSampler {
   void run(double col0, double row0, double dcol, double drow, std::size_t begin, std::size_t end,
            float* out) const {
     std::size_t i = begin;
+    const auto sample_until = [&](std::size_t stop) {
+      for (; i < stop; ++i) {
+        const auto s = static_cast<double>(i);
+        out[i] = (*this)(col0 + dcol * s, row0 + drow * s);
+      }
+    };
 #if TSK_HAS_AVX2_CODE
-    if (cpu_has_avx2()) i = run_avx2(col0, row0, dcol, drow, i, end, out);
-#endif
-    for (; i < end; ++i) {
-      const auto s = static_cast<double>(i);
-      out[i] = (*this)(col0 + dcol * s, row0 + drow * s);
+    if (cpu_has_avx2()) {
+      // Most of a profile lies well inside the DEM, where the checks and clamps change nothing.
+      const auto [a, b] = interior(col0, row0, dcol, drow, begin, end);
+      if (a < b) {
+        i = run_avx2<false>(col0, row0, dcol, drow, i, a, out);
+        sample_until(a);
+        i = run_avx2<true>(col0, row0, dcol, drow, i, b, out);
+        sample_until(b);
+      }
+      i = run_avx2<false>(col0, row0, dcol, drow, i, end, out);
     }
+#endif
+    sample_until(end);
   }
 
  private:
+  // True when the sample at step s lies where every check and clamp of operator() leaves it as
+  // it is: its lower-left cell at least a cell from the far sides, with both neighbours there.
+  bool well_inside(double col0, double row0, double dcol, double drow, std::size_t i) const {
+    const auto s = static_cast<double>(i);
+    const double u = col0 + dcol * s - 0.5, v = row0 + drow * s - 0.5;
+    return u >= 0.0 && u < last_col_ && v >= 0.0 && v < last_row_;
+  }
+
+  // Steps [a, b) within [begin, end) that are all well_inside(), possibly empty. A coordinate
+  // start + step * s - 0.5 is monotonic in s as the floats round it, so each of the four bounds
+  // holds on an interval of steps: if the first and last step of [a, b) are well inside, all
+  // are. An estimate shrunk by two steps at either end is tried first, then two more.
+  std::pair<std::size_t, std::size_t> interior(double col0, double row0, double dcol, double drow,
+                                               std::size_t begin, std::size_t end) const {
+    if (!dc_ || !dr_ || begin >= end) return {0, 0};
+    double lo = static_cast<double>(begin), hi = static_cast<double>(end);
+    const auto within = [&lo, &hi](double start, double step, double last) {
+      if (step == 0.0) return;
+      double a = (0.5 - start) / step, b = (last + 0.5 - start) / step;
+      if (a > b) std::swap(a, b);
+      lo = std::max(lo, a), hi = std::min(hi, b);
+    };
+    within(col0, dcol, last_col_);
+    within(row0, drow, last_row_);
+    for (double shrink : {2.0, 4.0}) {
+      const double a = std::ceil(lo + shrink), b = std::floor(hi - shrink);
+      if (!(a < b)) break;
+      const auto first = static_cast<std::size_t>(a), last = static_cast<std::size_t>(b);
+      if (well_inside(col0, row0, dcol, drow, first) && well_inside(col0, row0, dcol, drow, last))
+        return {first, last + 1};
+    }
+    return {0, 0};
+  }
+
 #if TSK_HAS_AVX2_CODE
   // operator() on four positions at once, operation for operation in its order, so that each
   // lane gives the same float; returns where it stopped (fewer than four positions left).
+  // kInterior: every position is well_inside(), so the checks and clamps are left out.
+  template <bool kInterior>
   TSK_AVX2 std::size_t run_avx2(double col0, double row0, double dcol, double drow, std::size_t i,
                                 std::size_t end, float* out) const {
     constexpr double kEdge = 1e-9;
@@ -364,22 +413,33 @@ class BilinearSampler {
           _mm256_add_pd(_mm256_set1_pd(col0), _mm256_mul_pd(_mm256_set1_pd(dcol), s)), half);
       const __m256d v = _mm256_sub_pd(
           _mm256_add_pd(_mm256_set1_pd(row0), _mm256_mul_pd(_mm256_set1_pd(drow), s)), half);
-      const __m256d inside = _mm256_and_pd(
-          _mm256_and_pd(_mm256_cmp_pd(u, low, _CMP_GE_OQ), _mm256_cmp_pd(u, u_high, _CMP_LE_OQ)),
-          _mm256_and_pd(_mm256_cmp_pd(v, low, _CMP_GE_OQ), _mm256_cmp_pd(v, v_high, _CMP_LE_OQ)));
-      if (_mm256_movemask_pd(inside) == 0) {
-        _mm_storeu_ps(out + i, nodata);
-        continue;
+      __m256d inside = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+      if constexpr (!kInterior) {
+        inside = _mm256_and_pd(
+            _mm256_and_pd(_mm256_cmp_pd(u, low, _CMP_GE_OQ), _mm256_cmp_pd(u, u_high, _CMP_LE_OQ)),
+            _mm256_and_pd(_mm256_cmp_pd(v, low, _CMP_GE_OQ), _mm256_cmp_pd(v, v_high, _CMP_LE_OQ)));
+        if (_mm256_movemask_pd(inside) == 0) {
+          _mm_storeu_ps(out + i, nodata);
+          continue;
+        }
       }
       const __m128i inside32 = avx2_narrow(inside);
-      // Truncated and capped as operator() does, and 0 in the lanes outside (whose positions
-      // need not convert).
-      const __m128i c0 = _mm_and_si128(
-          _mm_min_epi32(_mm256_cvttpd_epi32(_mm256_max_pd(u, zero)), max_c0), inside32);
-      const __m128i r0 = _mm_and_si128(
-          _mm_min_epi32(_mm256_cvttpd_epi32(_mm256_max_pd(v, zero)), max_r0), inside32);
-      const __m256d fu = dc_ ? avx2_clamp01(_mm256_sub_pd(u, _mm256_cvtepi32_pd(c0))) : zero;
-      const __m256d fv = dr_ ? avx2_clamp01(_mm256_sub_pd(v, _mm256_cvtepi32_pd(r0))) : zero;
+      __m128i c0, r0;
+      __m256d fu, fv;
+      if constexpr (kInterior) {
+        c0 = _mm256_cvttpd_epi32(u), r0 = _mm256_cvttpd_epi32(v);
+        fu = _mm256_sub_pd(u, _mm256_cvtepi32_pd(c0));
+        fv = _mm256_sub_pd(v, _mm256_cvtepi32_pd(r0));
+      } else {
+        // Truncated and capped as operator() does, and 0 in the lanes outside (whose positions
+        // need not convert).
+        c0 = _mm_and_si128(_mm_min_epi32(_mm256_cvttpd_epi32(_mm256_max_pd(u, zero)), max_c0),
+                           inside32);
+        r0 = _mm_and_si128(_mm_min_epi32(_mm256_cvttpd_epi32(_mm256_max_pd(v, zero)), max_r0),
+                           inside32);
+        fu = dc_ ? avx2_clamp01(_mm256_sub_pd(u, _mm256_cvtepi32_pd(c0))) : zero;
+        fv = dr_ ? avx2_clamp01(_mm256_sub_pd(v, _mm256_cvtepi32_pd(r0))) : zero;
+      }
       const __m256d gu = _mm256_sub_pd(one, fu), gv = _mm256_sub_pd(one, fv);
       const __m256i lanes_in = _mm256_castpd_si256(inside);
       const __m128 read = _mm_castsi128_ps(inside32);
