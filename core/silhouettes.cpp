@@ -295,6 +295,8 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
           Collected& c = batch[k];
           c.factual = profile_candidates(f, e, true, b);
           c.formulated = profile_candidates(f, e, false, b);
+          c.factual_cells.reserve(c.factual.cell.size());
+          c.formulated_cells.reserve(c.formulated.cell.size());
           for (std::int32_t i : c.factual.cell)
             c.factual_cells.push_back(stroke_cell(context, p, static_cast<std::size_t>(i), true));
           for (std::int32_t i : c.formulated.cell) {

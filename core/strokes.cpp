@@ -69,10 +69,6 @@ StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, b
   return c;
 }
 
-void StrokeBuilder::Mean::add(double v) {
-  if (std::isfinite(v)) sum += v, ++count;
-}
-
 double StrokeBuilder::Mean::value() const {
   return count ? sum / count : kNaN;
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -109,7 +110,9 @@ class StrokeBuilder {
   struct Mean {
     double sum = 0.0;
     int count = 0;
-    void add(double v);
+    void add(double v) {
+      if (std::isfinite(v)) sum += v, ++count;
+    }
     double value() const;
   };
   Chain chain_;
