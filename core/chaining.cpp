@@ -32,13 +32,13 @@ std::ptrdiff_t nearest_overlapping(const ProfileCandidates& next,
 std::vector<Chain> link_grid(const CellFlags& flags, bool factual, int window) {
   ChainLinker linker(factual, window);
   std::vector<Chain> chains;
+  ProfileCandidates candidates;
   for (std::size_t p = 0; p < flags.rows(); ++p) {
-    ProfileCandidates c = profile_candidates(flags.row(p), flags.cols(), factual);
-    const std::vector<std::int32_t> cells = c.cell;
-    const auto& joined = linker.add_profile(std::move(c));
+    profile_candidates(flags.row(p), flags.cols(), factual, candidates);
+    const auto& joined = linker.add_profile(candidates);
     for (std::size_t k = 0; k < joined.size(); ++k) {
       if (joined[k].id >= chains.size()) chains.resize(joined[k].id + 1);
-      chains[joined[k].id].push_back({static_cast<std::int32_t>(p), cells[k]});
+      chains[joined[k].id].push_back({static_cast<std::int32_t>(p), candidates.cell[k]});
     }
   }
   chains.erase(
@@ -49,10 +49,11 @@ std::vector<Chain> link_grid(const CellFlags& flags, bool factual, int window) {
 
 }  // namespace
 
-ProfileCandidates profile_candidates(const std::uint8_t* f, std::size_t length, bool factual,
-                                     std::size_t first) {
+void profile_candidates(const std::uint8_t* f, std::size_t length, bool factual,
+                        ProfileCandidates& out, std::size_t first) {
   const std::uint8_t bit = factual ? cell::occluding : cell::thinned;
-  ProfileCandidates out;
+  out.cell.clear();
+  out.reach.clear();
   for (std::size_t i = next_cell_with(f, first, length, bit); i < length;
        i = next_cell_with(f, i, length, bit)) {
     const auto index = static_cast<std::int32_t>(i);
@@ -69,7 +70,6 @@ ProfileCandidates profile_candidates(const std::uint8_t* f, std::size_t length, 
       }
     }
   }
-  return out;
 }
 
 ChainLinker::ChainLinker(bool factual, int window) : factual_(factual), window_(window) {}
@@ -81,7 +81,7 @@ std::uint32_t ChainLinker::take_slot() {
   return slot;
 }
 
-const std::vector<ChainRef>& ChainLinker::add_profile(ProfileCandidates next) {
+const std::vector<ChainRef>& ChainLinker::add_profile(const ProfileCandidates& next) {
   for (const ChainRef& c : closed_) free_slots_.push_back(c.slot);
   used_.assign(next.cell.size(), 0);
   joined_.assign(next.cell.size(), ChainRef{0, 0});
@@ -116,7 +116,8 @@ const std::vector<ChainRef>& ChainLinker::add_profile(ProfileCandidates next) {
     still_open_.push_back({joined_[k], k});
   }
   std::swap(open_, still_open_);
-  last_ = std::move(next);
+  last_.cell.assign(next.cell.begin(), next.cell.end());  // into storage of its own, reused
+  last_.reach.assign(next.reach.begin(), next.reach.end());
   return joined_;
 }
 

@@ -25,9 +25,9 @@ struct ProfileCandidates {
 };
 
 // The candidates of profile p: occluding cells with their hidden zones (factual) or t-set cells,
-// among cells [first, length).
-ProfileCandidates profile_candidates(const std::uint8_t* flags, std::size_t length, bool factual,
-                                     std::size_t first = 0);
+// among cells [first, length), into `out` (whose storage is reused).
+void profile_candidates(const std::uint8_t* flags, std::size_t length, bool factual,
+                        ProfileCandidates& out, std::size_t first = 0);
 
 // A chain as the linker reports it: its id (ids count up in the order chains are started) and
 // its slot, a small index that a closed chain hands on to a later one, so a caller can keep the
@@ -46,7 +46,7 @@ class ChainLinker {
   ChainLinker(bool factual, int window);
 
   // Links the next profile. Returns, for each of its candidates, the chain it joined.
-  const std::vector<ChainRef>& add_profile(ProfileCandidates candidates);
+  const std::vector<ChainRef>& add_profile(const ProfileCandidates& candidates);
   // The chains that the last add_profile() could not extend: they are complete. Their slots are
   // handed on only from the next call on.
   const std::vector<ChainRef>& closed() const { return closed_; }

@@ -174,8 +174,9 @@ struct SilhouetteStream::State {
 
   // Moves the cells of profile candidates into their chains, finishes the closed chains and
   // hands on the strokes no open chain precedes.
-  void link(Strokes& strokes, ProfileCandidates&& candidates, std::vector<StrokeCell>&& cells) {
-    const auto& joined = strokes.linker.add_profile(std::move(candidates));
+  void link(Strokes& strokes, const ProfileCandidates& candidates,
+            const std::vector<StrokeCell>& cells) {
+    const auto& joined = strokes.linker.add_profile(candidates);
     std::vector<StrokeBuilder>& open = strokes.open;
     if (open.size() < strokes.linker.slot_count()) open.resize(strokes.linker.slot_count());
     for (std::size_t k = 0; k < joined.size(); ++k) open[joined[k].slot].add(cells[k]);
@@ -262,7 +263,7 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
   std::mutex merge;
   StageTimings seconds;  // time of each stage summed over the threads
   auto collect = [&](std::size_t b0, std::vector<Collected>& batch) {
-    batch.assign(std::min(batch_profiles, count - b0), {});
+    batch.resize(std::min(batch_profiles, count - b0));  // every entry refilled, storage reused
     parallel_for(batch.size(), resolve_threads(threads), [&](std::size_t lo, std::size_t hi) {
       StageTimings local;
       StageStats counts;
@@ -293,10 +294,10 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
         time_stage(timed, local, &StageTimings::chaining, [&] {
           count_profile(f + b, e - b, counts);
           Collected& c = batch[k];
-          c.factual = profile_candidates(f, e, true, b);
-          c.formulated = profile_candidates(f, e, false, b);
-          c.factual_cells.reserve(c.factual.cell.size());
-          c.formulated_cells.reserve(c.formulated.cell.size());
+          profile_candidates(f, e, true, c.factual, b);
+          profile_candidates(f, e, false, c.formulated, b);
+          c.factual_cells.clear();
+          c.formulated_cells.clear();
           for (std::int32_t i : c.factual.cell)
             c.factual_cells.push_back(stroke_cell(context, p, static_cast<std::size_t>(i), true));
           for (std::int32_t i : c.formulated.cell) {
@@ -313,8 +314,8 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
   auto link = [&st, &seconds, &merge](std::vector<Collected>& batch) {
     const auto start = Clock::now();
     for (Collected& c : batch) {
-      st.link(st.factual, std::move(c.factual), std::move(c.factual_cells));
-      st.link(st.formulated, std::move(c.formulated), std::move(c.formulated_cells));
+      st.link(st.factual, c.factual, c.factual_cells);
+      st.link(st.formulated, c.formulated, c.formulated_cells);
     }
     std::lock_guard<std::mutex> lock(merge);
     seconds.chaining += seconds_since(start);
