@@ -54,9 +54,16 @@ void nodata_to_nan(GDALRasterBand& band, float* values, std::size_t count) {
   if (has_nodata) std::replace(values, values + count, nodata, kNoData);
 }
 
-// Reads windows of the band as Float32, nodata to NaN.
+// Reads windows of the band as Float32, nodata to NaN, the band's scale and offset applied (a DEM
+// stored in decimetres as integers has scale 0.1), as QGIS applies them.
 WindowReader band_reader(GDALRasterBand& band, const std::string& path) {
-  return [&band, path](const DemWindow& w, float* heights) {
+  const double scale = band.GetScale(), offset = band.GetOffset();
+  if (!std::isfinite(scale) || scale == 0.0 || !std::isfinite(offset)) {
+    throw Error("'" + path + "' gives its band a scale of " + number_text(scale) +
+                " and an offset of " + number_text(offset) +
+                ", which make no heights; correct them (gdal_edit.py -scale 1 -offset 0 INPUT)");
+  }
+  return [&band, path, scale, offset](const DemWindow& w, float* heights) {
     GdalErrorCapture errors;
     if (band.RasterIO(GF_Read, static_cast<int>(w.col0), static_cast<int>(w.row0),
                       static_cast<int>(w.cols), static_cast<int>(w.rows), heights,
@@ -64,7 +71,13 @@ WindowReader band_reader(GDALRasterBand& band, const std::string& path) {
                       0) != CE_None) {
       throw Error("reading '" + path + "' failed: " + errors.message());
     }
-    nodata_to_nan(band, heights, w.rows * w.cols);
+    const std::size_t count = w.rows * w.cols;
+    nodata_to_nan(band, heights, count);
+    if (scale != 1.0 || offset != 0.0) {
+      // Heights out of float's range become infinite, which the core takes as nodata.
+      for (std::size_t k = 0; k < count; ++k)
+        heights[k] = static_cast<float>(static_cast<double>(heights[k]) * scale + offset);
+    }
   };
 }
 
@@ -149,6 +162,11 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
                  ", a common fill value: if those cells have no data, declare it as nodata "
                  "(gdal_edit.py -a_nodata " +
                  number_text(range[0]) + " INPUT)\n";
+  }
+
+  if (band.GetScale() != 1.0 || band.GetOffset() != 0.0) {
+    dem.notes += "heights are the band's values x " + number_text(band.GetScale()) + " + " +
+                 number_text(band.GetOffset()) + ", its scale and offset\n";
   }
 
   const double dx = dem.geotransform.a[1] * dem.ground_scale;

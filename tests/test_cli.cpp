@@ -406,6 +406,44 @@ TEST_CASE("an undeclared fill value among the heights gets a note", "[cli]") {
   CHECK_THAT(declared.err, !Catch::Contains("fill value"));
 }
 
+TEST_CASE("a band's scale and offset turn its values into heights, as QGIS turns them", "[cli]") {
+  ScratchDir dir("scaled");
+  // Heights in 1/64 m, so that (z - 100) * 2 stored and read back as x 0.5 + 100 is exact.
+  const auto height = [](int band, int r, int c) {
+    return std::round(hill(band, r, c) * 64.0f) / 64.0f;
+  };
+  test::write_tiff(dir / "metres.tif", 40, 40, 1, height, kNorthUp, 32616);
+  const auto stored = [&](int band, int r, int c) { return (height(band, r, c) - 100.0f) * 2.0f; };
+  const auto scaled = [&](const std::string& name, double scale, double offset) {
+    test::write_tiff(dir / name, 40, 40, 1, stored, kNorthUp, 32616);
+    GDALDatasetH ds = GDALOpen((dir / name).c_str(), GA_Update);
+    REQUIRE(ds != nullptr);
+    GDALSetRasterScale(GDALGetRasterBand(ds, 1), scale);
+    GDALSetRasterOffset(GDALGetRasterBand(ds, 1), offset);
+    GDALClose(ds);
+  };
+  scaled("scaled.tif", 0.5, 100.0);
+  const io::BandWindows windows(dir / "scaled.tif", 1);
+  std::vector<float> heights(40 * 40);
+  windows.read({0, 0, 40, 40}, heights.data());
+  for (int r = 0; r < 40; ++r)
+    for (int c = 0; c < 40; ++c)
+      REQUIRE(heights[static_cast<std::size_t>(r * 40 + c)] == height(1, r, c));
+  const CliRun metres = run_cli({"silhouettes", dir / "metres.tif", dir / "metres.geojson"});
+  const CliRun run = run_cli({"silhouettes", dir / "scaled.tif", dir / "scaled.geojson"});
+  REQUIRE(metres.code == 0);
+  REQUIRE(run.code == 0);
+  CHECK_THAT(run.err, Catch::Contains("values x 0.5 + 100, its scale and offset"));
+  CHECK(summarise(dir / "metres.geojson").features > 0);
+  CHECK(slurp(dir / "metres.geojson") == slurp(dir / "scaled.geojson"));
+  // A scale of 0 would make every height the offset.
+  scaled("zero.tif", 0.0, 100.0);
+  const CliRun zero = run_cli({"silhouettes", dir / "zero.tif", dir / "zero.geojson"});
+  CHECK(zero.code == 1);
+  CHECK_THAT(zero.err, Catch::Contains("scale of 0"));
+  CHECK_FALSE(std::filesystem::exists(dir / "zero.geojson"));
+}
+
 TEST_CASE("a CRS in feet runs with a note that heights must be in feet too", "[cli]") {
   ScratchDir dir("feet");
   const double geotransform[6] = {2000000, 30, 0, 700000, 0, -30};

@@ -710,6 +710,7 @@ TEST_CASE("a GDAL layer's file is read straight through GDAL, with the provider'
         GDALCreateCopy(GDALGetDriverByName("GTiff"), scaledPath.toUtf8().constData(), source, 0,
                        nullptr, nullptr, nullptr);
     GDALSetRasterScale(GDALGetRasterBand(copy, 1), 2.0);
+    GDALSetRasterOffset(GDALGetRasterBand(copy, 1), 100.0);
     GDALClose(copy);
     GDALClose(source);
   }
@@ -728,6 +729,25 @@ TEST_CASE("a GDAL layer's file is read straight through GDAL, with the provider'
     return true;
   };
   CHECK(direct.lowestHeight() == provider.lowestHeight());
+  {
+    // The command line's reader applies the scale and offset as QGIS's provider does.
+    plugin::RasterGrid scaledGrid(&scaled, 1, transforms);
+    scaledGrid.setView(90);  // profiles are the rows, north first, west to east
+    HeightGrid viaQgis;
+    scaledGrid.readProfiles(0, scaledGrid.frame().profiles, viaQgis);
+    const io::BandWindows file(scaledPath.toStdString(), 1);
+    HeightGrid viaGdal(file.rows(), file.cols());
+    file.read({0, 0, file.rows(), file.cols()}, viaGdal.data());
+    CHECK(same(viaQgis, viaGdal));
+    direct.setView(90);
+    HeightGrid metres;
+    direct.readProfiles(0, direct.frame().profiles, metres);
+    REQUIRE(metres.size() == viaGdal.size());
+    for (std::size_t k = 0; k < metres.size(); ++k) {
+      const float z = metres.data()[k];
+      if (is_data(z)) REQUIRE(viaGdal.data()[k] == static_cast<float>(2.0 * z + 100.0));
+    }
+  }
   for (double az : {90.0, 0.0, 45.0}) {
     CAPTURE(az);
     direct.setView(az);
