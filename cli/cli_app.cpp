@@ -3,6 +3,7 @@
 #include <cpl_conv.h>
 #include <gdal.h>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdio>
@@ -19,6 +20,7 @@
 
 #include "dem_reader.h"
 #include "gdal_util.h"
+#include "interrupt.h"
 #include "output_files.h"
 #include "preview.h"
 #include "raster_writer.h"
@@ -247,6 +249,32 @@ std::string stats_json(const StageStats& s) {
   return j.str();
 }
 
+// GDAL's progress line on a terminal, 0...10...20...30 up to 100 - done., a dot every 2.5 %.
+class ProgressLine {
+ public:
+  explicit ProgressLine(std::ostream& err) : err_(err) {}
+  void show(double fraction) {
+    const int step = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * kSteps);
+    if (step <= shown_) return;
+    for (++shown_; shown_ <= step; ++shown_) {
+      if (shown_ % 4 == 0) {
+        err_ << shown_ / 4 * 10;
+      } else {
+        err_ << '.';
+      }
+    }
+    shown_ = step;
+    if (step == kSteps) err_ << " - done.\n";
+    err_.flush();
+  }
+  bool started() const { return shown_ >= 0 && shown_ < kSteps; }
+
+ private:
+  static constexpr int kSteps = 40;
+  std::ostream& err_;
+  int shown_ = -1;  // the last step shown
+};
+
 // Reads the DEM for the view and tells the user what they should know about it.
 io::Dem load_dem(const Options& o, std::ostream& err) {
   io::Dem dem = io::read_dem(o.input, o.dem);
@@ -263,7 +291,8 @@ void write_text(const std::string& path, const std::string& text) {
   });
 }
 
-int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+                const ProgressFn& progress) {
   const Options o = parse(args);
   io::check_vector_output(o.output, o.format);  // before any work
   // The preview draws the whole turned grid, so it needs the DEM whole (read_dem refuses one too
@@ -298,7 +327,8 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
       if (whole) drawn.push_back(std::move(stroke));
     };
     if (whole) {
-      SilhouetteStream stream(dem.frame, dem.geotransform, o.params, dem.lowest_height, {}, sink);
+      SilhouetteStream stream(dem.frame, dem.geotransform, o.params, dem.lowest_height, progress,
+                              sink);
       stream.add_strip(dem.oriented, 0, dem.frame.profiles, true);
       result = stream.finish();
     } else {
@@ -315,8 +345,9 @@ int silhouettes(const std::vector<std::string>& args, std::ostream& out, std::os
             reader->read_profiles(first, count, heights);
             read_s += since(start);
           },
-          {}, sink);
+          progress, sink);
     }
+    stop_if_interrupted();  // the last chance to stop with nothing written
     // The statistics and the preview go out before the strokes are committed, so that a failure
     // to write them discards the strokes too.
     if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
@@ -347,12 +378,14 @@ void require_geotiff(const std::string& path) {
   if (ext != ".tif" && ext != ".tiff") throw Error("the output raster must be a GeoTIFF (.tif)");
 }
 
-int classify(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int classify(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+             const ProgressFn& progress) {
   const Options o = parse(args);
   require_geotiff(o.output);
   const io::Dem dem = load_dem(o, err);
   const SilhouetteResult result =
-      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
+      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params, progress);
+  stop_if_interrupted();
   io::write_classification(o.output, classification_map(result.flags, dem.frame), dem.geotransform,
                            dem.srs_wkt);
   if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
@@ -363,17 +396,20 @@ int classify(const std::vector<std::string>& args, std::ostream& out, std::ostre
   return 0;
 }
 
-int row_slope(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int row_slope(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+              const ProgressFn& /* their steps report no progress */) {
   const Options o = parse(args);
   require_geotiff(o.output);
   const io::Dem dem = load_dem(o, err);
-  io::write_float_raster(o.output, {row_slope_map(dem.oriented, dem.frame)}, dem.geotransform,
-                         dem.srs_wkt);
+  const HeightGrid slope = row_slope_map(dem.oriented, dem.frame);
+  stop_if_interrupted();
+  io::write_float_raster(o.output, {slope}, dem.geotransform, dem.srs_wkt);
   out << o.output << ": row slope in percent across azimuth " << dem.frame.azimuth_deg << "\n";
   return 0;
 }
 
-int profiles(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int profiles(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+             const ProgressFn& /* their steps report no progress */) {
   const Options o = parse(args);
   io::check_vector_output(o.output, o.format);
   const io::Dem dem = load_dem(o, err);
@@ -381,18 +417,21 @@ int profiles(const std::vector<std::string>& args, std::ostream& out, std::ostre
   classify_visibility(dem.oriented, dem.frame.d, o.params.view, flags, o.params.threads);
   const auto lines = profile_plot(dem.oriented, flags, dem.frame, o.params.view, dem.geotransform,
                                   static_cast<std::size_t>(o.every), dem.lowest_height);
+  stop_if_interrupted();
   io::write_profile_lines(o.output, o.format, lines, dem.srs_wkt);
   out << o.output << ": " << lines.size() << " visible cross-section pieces\n";
   return 0;
 }
 
-int pstrokes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int pstrokes(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+             const ProgressFn& progress) {
   const Options o = parse(args);
   o.pstrokes.validate();
   io::check_vector_output(o.output, o.format);
   const io::Dem dem = load_dem(o, err);
   const SilhouetteResult result =
-      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
+      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params, progress);
+  stop_if_interrupted();
   const auto strokes =
       pstroke_sketch(dem.oriented, result.flags, dem.frame, o.params.view, dem.geotransform,
                      o.params.geometry, o.pstrokes, dem.lowest_height, o.params.threads);
@@ -401,7 +440,8 @@ int pstrokes(const std::vector<std::string>& args, std::ostream& out, std::ostre
   return 0;
 }
 
-int drape(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int drape(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+          const ProgressFn& /* their steps report no progress */) {
   const Options o = parse(args);
   require_geotiff(o.output);
   if (o.source.empty()) throw Error("drape needs --source RASTER, the raster to drape");
@@ -412,17 +452,20 @@ int drape(const std::vector<std::string>& args, std::ostream& out, std::ostream&
   const PlanObliqueDrape drape(dem.oriented, flags, dem.frame, o.params.view, dem.lowest_height);
   std::vector<HeightGrid> bands;
   for (const HeightGrid& band : source) bands.push_back(drape.drape(band));
+  stop_if_interrupted();
   io::write_float_raster(o.output, bands, drape.geotransform(dem.geotransform), dem.srs_wkt);
   out << o.output << ": " << bands.size() << " band(s) draped, " << drape.cols() << " x "
       << drape.rows() << " cells\n";
   return 0;
 }
 
-int filter_plot(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int filter_plot(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+                const ProgressFn& progress) {
   const Options o = parse(args);
   const io::Dem dem = load_dem(o, err);
   const SilhouetteResult result =
-      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params);
+      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params, progress);
+  stop_if_interrupted();
   const double range = diagram_range_pct(o.params.filter);
   const SlopeScatter scatter =
       slope_scatter(dem.oriented, result.flags, dem.frame.d, dem.frame.w, range);
@@ -436,7 +479,8 @@ int filter_plot(const std::vector<std::string>& args, std::ostream& out, std::os
 
 }  // namespace
 
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+        bool show_progress) {
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     (args.empty() ? err : out) << kUsage;
     return args.empty() ? 2 : 0;
@@ -446,7 +490,8 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         << ")\n";
     return 0;
   }
-  using Command = int (*)(const std::vector<std::string>&, std::ostream&, std::ostream&);
+  using Command =
+      int (*)(const std::vector<std::string>&, std::ostream&, std::ostream&, const ProgressFn&);
   const std::map<std::string, Command> commands = {
       {"silhouettes", silhouettes}, {"profiles", profiles},       {"classify", classify},
       {"row-slope", row_slope},     {"filter-plot", filter_plot}, {"drape", drape},
@@ -464,8 +509,16 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   // Every raster block is read once: GDAL's default cache (5 % of RAM) would only hold a second
   // copy of the DEM. Keep it small unless the user chose a size.
   if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(64 << 20);
+  ProgressLine line(err);
+  const ProgressFn progress = [&line, show_progress](double fraction) {
+    if (show_progress) line.show(fraction);
+    return !interrupted();
+  };
   try {
-    return command->second(rest, out, err);
+    return command->second(rest, out, err, progress);
+  } catch (const Cancelled&) {
+    err << (line.started() ? "\n" : "") << "terrain-sketch: interrupted; no output written\n";
+    return 130;
   } catch (const Error& e) {
     err << "terrain-sketch: " << e.what() << "\n";
   } catch (const std::bad_alloc&) {

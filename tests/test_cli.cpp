@@ -1,9 +1,15 @@
 // The terrain-sketch command line, run in-process: outputs, formats, and every bad input it must
 // refuse with a message and without leaving a file behind.
+#include <fcntl.h>
 #include <ogrsf_frmts.h>
+#include <spawn.h>
+#include <sys/wait.h>
 
 #include <catch2/catch.hpp>
+#include <chrono>
+#include <csignal>
 #include <fstream>
+#include <thread>
 
 #include "dem_reader.h"
 #include "gdal_test_support.h"
@@ -657,4 +663,57 @@ TEST_CASE("a DEM too large to hold whole is refused by the commands that need it
   CHECK(preview.code == 1);
   CHECK_THAT(preview.err, Catch::Contains("too large"));
   CHECK(dir.file_count() == 1);
+}
+
+TEST_CASE("a command line run interrupted leaves nothing behind", "[cli][robustness]") {
+  ScratchDir dir("interrupt");
+  // About a second of work on one thread at azimuth 45.
+  const auto rolling = [](int, int r, int c) {
+    return static_cast<float>(400 + 150 * std::sin(c * 0.011 + 0.4 * std::sin(r * 0.007)) +
+                              60 * std::sin(r * 0.013 + c * 0.004));
+  };
+  test::write_tiff(dir / "dem.tif", 4000, 4000, 1, rolling, kNorthUp, 32616);
+  const std::string dem = dir / "dem.tif", output = dir / "strokes.gpkg";
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    CAPTURE(signal);
+    posix_spawn_file_actions_t quiet;
+    posix_spawn_file_actions_init(&quiet);
+    posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
+    const char* argv[] = {"terrain-sketch", "silhouettes", dem.c_str(),
+                          output.c_str(),   "--azimuth",   "45",
+                          "--threads",      "1",           nullptr};
+    pid_t child = 0;
+    REQUIRE(posix_spawn(&child, TSK_CLI_BINARY, &quiet, nullptr, const_cast<char**>(argv),
+                        environ) == 0);
+    posix_spawn_file_actions_destroy(&quiet);
+    // Once its staging folder is there, the run is writing strokes.
+    const auto writing = [&] {
+      for (const auto& entry : std::filesystem::directory_iterator(dir.path))
+        if (entry.path().filename().string().rfind(".strokes.gpkg.partial", 0) == 0) return true;
+      return false;
+    };
+    int status = 0;
+    bool ended_early = false;
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!writing() && !ended_early && std::chrono::steady_clock::now() < give_up) {
+      ended_early = waitpid(child, &status, WNOHANG) == child;
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    REQUIRE_FALSE(ended_early);
+    kill(child, signal);
+    REQUIRE(waitpid(child, &status, 0) == child);
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 130);
+    CHECK(dir.file_count() == 1);  // the DEM alone
+  }
+}
+
+TEST_CASE("the command line shows its progress as GDAL's tools do", "[cli]") {
+  ScratchDir dir("progress");
+  std::ostringstream out, err;
+  REQUIRE(cli::run({"silhouettes", kSample, dir / "out.gpkg"}, out, err, true) == 0);
+  CHECK_THAT(err.str(),
+             Catch::Contains("0...10...20...30...40...50...60...70...80...90...100 - done.\n"));
+  CHECK(run_cli({"silhouettes", kSample, dir / "quiet.gpkg"}).err.find("...") == std::string::npos);
 }

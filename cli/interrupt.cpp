@@ -1,0 +1,34 @@
+#include "interrupt.h"
+
+#include <atomic>
+#include <csignal>
+
+#include "errors.h"
+
+namespace tsk::cli {
+namespace {
+
+// Set from the signal handler, read by any thread: a lock-free atomic is safe for both.
+std::atomic<bool> signalled{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "the signal handler needs a lock-free flag");
+
+extern "C" void on_signal(int signal) {
+  signalled.store(true);
+  std::signal(signal, SIG_DFL);  // the next one ends the program
+}
+
+}  // namespace
+
+void catch_interrupts() {
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, on_signal);
+}
+
+bool interrupted() {
+  return signalled.load();
+}
+
+void stop_if_interrupted() {
+  if (interrupted()) throw Cancelled();
+}
+
+}  // namespace tsk::cli
