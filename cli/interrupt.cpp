@@ -20,7 +20,11 @@ extern "C" void on_signal(int signal) {
 }  // namespace
 
 void catch_interrupts() {
-  for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, on_signal);
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    // A signal the program was started ignoring stays ignored: nohup's SIGHUP, the SIGINT of a
+    // job a script sent to the background.
+    if (std::signal(signal, on_signal) == SIG_IGN) std::signal(signal, SIG_IGN);
+  }
 }
 
 bool interrupted() {

@@ -4,7 +4,8 @@
 
 namespace tsk::cli {
 
-// Installs the handlers (the program does; tests running commands in-process do not).
+// Installs the handlers (the program does; tests running commands in-process do not), but for
+// signals ignored when the program started.
 void catch_interrupts();
 
 // True once one of the signals came.
