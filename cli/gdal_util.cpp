@@ -16,7 +16,12 @@ GdalErrorCapture::~GdalErrorCapture() {
 
 std::string GdalErrorCapture::message() const {
   const char* msg = CPLGetLastErrorMsg();
-  return msg && *msg ? msg : "unknown GDAL error";
+  if (!msg || !*msg) return "unknown GDAL error";
+  // Some messages quote whole SQL scripts; their start and the reason at their end are enough.
+  constexpr std::size_t kEnd = 150;
+  const std::string text = msg;
+  if (text.size() <= 3 * kEnd) return text;
+  return text.substr(0, kEnd) + " [...] " + text.substr(text.size() - kEnd);
 }
 
 DatasetPtr open_raster(const std::string& path) {

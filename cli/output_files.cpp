@@ -41,8 +41,10 @@ void write_atomically(const fs::path& destination,
                       const std::function<void(const fs::path&)>& write) {
   const fs::path folder = output_folder(destination);
   std::error_code ec;
-  const fs::path staging =
-      folder / ("." + destination.filename().string() + ".partial-" + std::to_string(getpid()));
+  // Named after the output, shortened so that a name near the 255-byte limit still fits.
+  constexpr std::size_t kNameBytes = 200;
+  const fs::path staging = folder / ("." + destination.filename().string().substr(0, kNameBytes) +
+                                     ".partial-" + std::to_string(getpid()));
   fs::remove_all(staging, ec);
   if (!fs::create_directory(staging, ec)) {
     throw Error("cannot write in folder '" + folder.string() + "': " + ec.message());

@@ -13,6 +13,7 @@
 
 #include "dem_reader.h"
 #include "gdal_test_support.h"
+#include "gdal_util.h"
 #include "silhouettes.h"
 
 using namespace tsk;
@@ -729,4 +730,26 @@ TEST_CASE("the command line shows its progress as GDAL's tools do", "[cli]") {
   CHECK_THAT(err.str(),
              Catch::Contains("0...10...20...30...40...50...60...70...80...90...100 - done.\n"));
   CHECK(run_cli({"silhouettes", kSample, dir / "quiet.gpkg"}).err.find("...") == std::string::npos);
+}
+
+TEST_CASE("an output name up to the file system's 255 bytes can be written", "[cli]") {
+  ScratchDir dir("long");
+  const std::string name = std::string(255 - 8, 'n') + ".geojson";  // staged under a shorter one
+  const CliRun run = run_cli({"silhouettes", kSample, dir / name});
+  INFO(run.err);
+  CHECK(run.code == 0);
+  CHECK(summarise(dir / name).features > 100);
+  CHECK(dir.file_count() == 1);
+}
+
+TEST_CASE("a GDAL message quoting a whole script is shortened to its start and its reason",
+          "[cli]") {
+  const io::GdalErrorCapture capture;
+  const std::string script(2000, 's');
+  CPLError(CE_Failure, CPLE_AppDefined, "sqlite3_exec(%s) failed: unable to open database file",
+           script.c_str());
+  const std::string message = capture.message();
+  CHECK(message.size() < 400);
+  CHECK(message.rfind("sqlite3_exec(sss", 0) == 0);
+  CHECK_THAT(message, Catch::EndsWith("failed: unable to open database file"));
 }
