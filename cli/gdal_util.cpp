@@ -5,7 +5,6 @@
 namespace tsk::io {
 
 GdalErrorCapture::GdalErrorCapture() {
-  GDALAllRegister();
   CPLPushErrorHandler(CPLQuietErrorHandler);
   CPLErrorReset();
 }
@@ -25,6 +24,7 @@ std::string GdalErrorCapture::message() const {
 }
 
 DatasetPtr open_raster(const std::string& path) {
+  GDALAllRegister();
   GdalErrorCapture capture;
   DatasetPtr dataset(static_cast<GDALDataset*>(
       GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));

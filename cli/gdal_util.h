@@ -10,7 +10,8 @@
 
 namespace tsk::io {
 
-// While alive, GDAL errors are kept quiet and the last one is available for our own message.
+// While alive, GDAL errors on this thread are kept quiet and the last one is available for our
+// own message.
 class GdalErrorCapture {
  public:
   GdalErrorCapture();

@@ -102,6 +102,7 @@ void write_preview(const std::string& path, const SilhouetteResult& result, cons
     }
   }
 
+  GDALAllRegister();
   GdalErrorCapture capture;
   std::vector<GByte> pixels = canvas.pixels();
   GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");

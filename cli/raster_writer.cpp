@@ -16,6 +16,7 @@ template <typename Fill>
 void write_tiff(const std::string& path, const std::filesystem::path& staged, std::size_t rows,
                 std::size_t cols, GDALDataType type, const std::vector<const void*>& pixels,
                 const GeoTransform& gt, const std::string& srs_wkt, Fill fill) {
+  GDALAllRegister();
   GdalErrorCapture capture;
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
   if (!driver) throw Error("GDAL has no GTiff driver");

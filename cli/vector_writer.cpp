@@ -10,6 +10,7 @@
 #include <functional>
 #include <map>
 
+#include "checked_writes.h"
 #include "gdal_util.h"
 #include "gpkg_line_appender.h"
 #include "output_files.h"
@@ -44,6 +45,7 @@ std::string vector_driver_for(const std::string& path, const std::string& format
 std::string check_vector_output(const std::string& path, const std::string& format) {
   // Only the database formats keep other data beside a layer (a project's GeoPackage) and open
   // in a moment; a GeoJSON or KML file is one layer, and opening it would parse all of it.
+  GDALAllRegister();
   std::string driver = vector_driver_for(path, format);
   if (driver != "GPKG" && driver != "SQLite") return driver;
   GdalErrorCapture quiet;  // a path that is no dataset (or none yet) is free to write
@@ -90,8 +92,8 @@ class LineOutput {
 // Features through OGR, for any vector format.
 class OgrLineOutput : public LineOutput {
  public:
-  OgrLineOutput(OGRLayer& layer, const std::string& path, const GdalErrorCapture& capture)
-      : layer_(layer), path_(path), capture_(capture), feature_(layer.GetLayerDefn()) {}
+  OgrLineOutput(OGRLayer& layer, const std::string& path)
+      : layer_(layer), path_(path), feature_(layer.GetLayerDefn()) {}
   void set(int field, std::int64_t value) override { feature_.SetField(field, GIntBig{value}); }
   void set(int field, double value) override {
     if (std::isfinite(value)) {
@@ -109,13 +111,15 @@ class OgrLineOutput : public LineOutput {
     }
     feature_.SetGeometry(&line);
     feature_.SetFID(OGRNullFID);  // a new feature each time
-    check(layer_.CreateFeature(&feature_), "writing a line to '" + path_ + "'", capture_);
+    // Captured here: strokes are written from the thread that links them, which GDAL's error
+    // handlers (one stack per thread) set on the caller's would not keep quiet.
+    const GdalErrorCapture capture;
+    check(layer_.CreateFeature(&feature_), "writing a line to '" + path_ + "'", capture);
   }
 
  private:
   OGRLayer& layer_;
   const std::string& path_;
-  const GdalErrorCapture& capture_;
   OGRFeature feature_;
 };
 
@@ -160,8 +164,9 @@ void write_line_layer(const std::string& path, const std::string& format,
     layer_options.SetNameValue("CREATE_CSVT", "YES");
   }
 
-  write_atomically(path, [&](const std::filesystem::path& staged) {
-    DatasetPtr ds(driver->Create(staged.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+  // Creates the layer at `target`, fills it and closes it.
+  const auto fill = [&](const std::string& target) {
+    DatasetPtr ds(driver->Create(target.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
     if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
     OGRLayer* layer = ds->CreateLayer(layer_name.c_str(), has_srs ? &srs : nullptr, wkbLineString,
                                       layer_options.List());
@@ -176,7 +181,7 @@ void write_line_layer(const std::string& path, const std::string& format,
       add_features(output);
       output.finish();
     } else {
-      OgrLineOutput output(*layer, path, capture);
+      OgrLineOutput output(*layer, path);
       add_features(output);
     }
     if (transaction) check(ds->CommitTransaction(), "committing '" + path + "'", capture);
@@ -185,6 +190,24 @@ void write_line_layer(const std::string& path, const std::string& format,
     if (CPLGetLastErrorType() >= CE_Failure) {
       throw Error("closing '" + path + "' failed: " + capture.message());
     }
+  };
+  // The database formats report their failed writes themselves.
+  const bool database = gpkg || driver_name == "SQLite";
+  write_atomically(path, [&](const std::filesystem::path& staged) {
+    const std::filesystem::path folder = staged.parent_path();
+    take_write_failure(folder);  // none left from an earlier try in this folder
+    // A write that failed explains a driver's error best, and some drivers report none at all.
+    const auto fail_if_a_write_failed = [&] {
+      const std::string failure = take_write_failure(folder);
+      if (!failure.empty()) throw Error("writing '" + path + "' failed: " + failure);
+    };
+    try {
+      fill(database ? staged.string() : checked_path(staged));
+    } catch (const Error&) {
+      fail_if_a_write_failed();
+      throw;
+    }
+    fail_if_a_write_failed();
   });
 }
 

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <ogrsf_frmts.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 
 #include <catch2/catch.hpp>
@@ -752,4 +753,43 @@ TEST_CASE("a GDAL message quoting a whole script is shortened to its start and i
   CHECK(message.size() < 400);
   CHECK(message.rfind("sqlite3_exec(sss", 0) == 0);
   CHECK_THAT(message, Catch::EndsWith("failed: unable to open database file"));
+}
+
+TEST_CASE("a disk that fills up fails the run in every format and leaves nothing behind",
+          "[cli][robustness]") {
+  // A file size limit stands in for a full disk: writes past it fail as they would (EFBIG
+  // rather than ENOSPC). GeoJSON, KML and GML ignore whether their writes succeed; they used to
+  // close the cut-off file as if whole, and the run reported success.
+  ScratchDir dir("full");
+  for (const char* extension : {"geojson", "kml", "gml", "csv", "fgb", "shp", "gpkg", "sqlite"}) {
+    CAPTURE(extension);
+    const std::string output = dir / (std::string("strokes.") + extension);
+    const std::string errors = dir.path.parent_path() / "full-disk-errors.txt";
+    const pid_t child = fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+      const rlimit limit{64 * 1024, 64 * 1024};
+      setrlimit(RLIMIT_FSIZE, &limit);
+      std::signal(SIGXFSZ, SIG_IGN);  // a failed write, not the end of the program
+      const int err = open(errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      dup2(err, 2);
+      const int null = open("/dev/null", O_WRONLY);
+      dup2(null, 1);
+      execl(TSK_CLI_BINARY, "terrain-sketch", "silhouettes", kSample.c_str(), output.c_str(),
+            nullptr);
+      _exit(127);
+    }
+    int status = 0;
+    REQUIRE(waitpid(child, &status, 0) == child);
+    const std::string message = slurp(errors);
+    INFO(message);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 1);
+    CHECK(dir.file_count() == 0);
+    std::filesystem::remove(errors);
+  }
+  // Without the limit every format is written.
+  const CliRun whole = run_cli({"silhouettes", kSample, dir / "strokes.kml"});
+  CHECK(whole.code == 0);
+  CHECK(summarise(dir / "strokes.kml").features > 100);
 }
