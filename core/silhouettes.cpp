@@ -172,8 +172,8 @@ struct SilhouetteStream::State {
         sink(std::move(sk)),
         formulated(false, p.chain.window) {}
 
-  // Moves the cells of profile candidates into their chains, finishes the closed chains and
-  // hands on the strokes no open chain precedes.
+  // Adds the cells of a profile's candidates to the strokes of their chains, finishes the closed
+  // chains and hands on the strokes no open chain precedes.
   void link(Strokes& strokes, const ProfileCandidates& candidates,
             const std::vector<StrokeCell>& cells) {
     const auto& joined = strokes.linker.add_profile(candidates);
