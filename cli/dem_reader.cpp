@@ -242,10 +242,6 @@ bool BandWindows::geotransform(GeoTransform& gt) const {
   return dataset_->GetGeoTransform(gt.a.data()) == CE_None;
 }
 
-bool BandWindows::unscaled() const {
-  return band_->GetScale() == 1.0 && band_->GetOffset() == 0.0;
-}
-
 void BandWindows::read(const DemWindow& window, float* heights) const {
   const std::size_t end = window.row0 + window.rows;
   for (std::size_t top = window.row0; top < end;) {

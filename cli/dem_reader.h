@@ -69,8 +69,6 @@ class BandWindows {
   std::size_t cols() const { return cols_; }
   // The file's geotransform; false when it has none.
   bool geotransform(GeoTransform& gt) const;
-  // True when the band's values are its heights: no scale or offset to apply.
-  bool unscaled() const;
   // Throws Error with GDAL's message when the read fails.
   void read(const DemWindow& window, float* heights) const;
 

@@ -147,7 +147,7 @@ std::unique_ptr<io::BandWindows> RasterGrid::openFile(QgsRasterLayer& layer, int
   GeoTransform gt;
   const double dx = mExtent.width() / mCols, dy = mExtent.height() / mRows;
   const auto near = [](double a, double b, double cell) { return std::abs(a - b) <= 1e-6 * cell; };
-  if (!file->unscaled() || file->rows() != static_cast<std::size_t>(mRows) ||
+  if (file->rows() != static_cast<std::size_t>(mRows) ||
       file->cols() != static_cast<std::size_t>(mCols) || !file->geotransform(gt) ||
       gt.a[2] != 0.0 || gt.a[4] != 0.0 || !near(gt.a[0], mExtent.xMinimum(), dx) ||
       !near(gt.a[3], mExtent.yMaximum(), dy) || !near(gt.a[1], dx, dx) || !near(-gt.a[5], dy, dy)) {

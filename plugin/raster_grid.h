@@ -69,8 +69,8 @@ class RasterGrid {
   // Reads the band in blocks of rows into mOriented.
   void readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo);
   // The layer's file read straight through GDAL when that gives what its provider would: a GDAL
-  // layer of one file whose grid is the layer's, without scale, offset or nodata set in QGIS.
-  // Null otherwise (the provider reads it).
+  // layer of one file whose grid is the layer's, without nodata set in QGIS (a band's scale and
+  // offset are applied as the provider applies them). Null otherwise (the provider reads it).
   std::unique_ptr<io::BandWindows> openFile(QgsRasterLayer& layer, int band) const;
   // Reads a window of the band, NaN for nodata.
   void readWindow(const DemWindow& window, float* heights) const;

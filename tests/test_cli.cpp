@@ -614,7 +614,6 @@ TEST_CASE("band windows read a file's heights and let GDAL keep only the rows in
   const io::BandWindows windows(path, 1);
   CHECK(windows.rows() == kRows);
   CHECK(windows.cols() == kCols);
-  CHECK(windows.unscaled());
   const auto check_window = [&](const DemWindow& w) {
     std::vector<float> heights(w.rows * w.cols);
     windows.read(w, heights.data());

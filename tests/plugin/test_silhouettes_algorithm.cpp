@@ -714,12 +714,18 @@ TEST_CASE("a GDAL layer's file is read straight through GDAL, with the provider'
     GDALClose(copy);
     GDALClose(source);
   }
+  // Its values x 2 + 100: read straight, the scale and offset are applied as the provider does.
   QgsRasterLayer scaled(scaledPath, "scaled", "gdal");
+  QgsRasterLayer scaledMasked(scaledPath, "scaled, masked", "gdal");
+  scaledMasked.dataProvider()->setUserNoDataValue(1, {QgsRasterRange(-1e30, -1e29)});
   const QgsCoordinateTransformContext transforms;
   plugin::RasterGrid direct(&plain, 1, transforms), provider(&masked, 1, transforms);
+  plugin::RasterGrid scaledDirect(&scaled, 1, transforms);
+  plugin::RasterGrid scaledProvider(&scaledMasked, 1, transforms);
   CHECK(direct.readsFileDirectly());
   CHECK_FALSE(provider.readsFileDirectly());
-  CHECK_FALSE(plugin::RasterGrid(&scaled, 1, transforms).readsFileDirectly());
+  CHECK(scaledDirect.readsFileDirectly());
+  CHECK_FALSE(scaledProvider.readsFileDirectly());
   const auto same = [](const HeightGrid& a, const HeightGrid& b) {
     if (a.rows() != b.rows() || a.cols() != b.cols()) return false;
     for (std::size_t k = 0; k < a.size(); ++k) {
@@ -729,41 +735,37 @@ TEST_CASE("a GDAL layer's file is read straight through GDAL, with the provider'
     return true;
   };
   CHECK(direct.lowestHeight() == provider.lowestHeight());
-  {
-    // The command line's reader applies the scale and offset as QGIS's provider does.
-    plugin::RasterGrid scaledGrid(&scaled, 1, transforms);
-    scaledGrid.setView(90);  // profiles are the rows, north first, west to east
-    HeightGrid viaQgis;
-    scaledGrid.readProfiles(0, scaledGrid.frame().profiles, viaQgis);
-    const io::BandWindows file(scaledPath.toStdString(), 1);
-    HeightGrid viaGdal(file.rows(), file.cols());
-    file.read({0, 0, file.rows(), file.cols()}, viaGdal.data());
-    CHECK(same(viaQgis, viaGdal));
-    direct.setView(90);
-    HeightGrid metres;
-    direct.readProfiles(0, direct.frame().profiles, metres);
-    REQUIRE(metres.size() == viaGdal.size());
-    for (std::size_t k = 0; k < metres.size(); ++k) {
-      const float z = metres.data()[k];
-      if (is_data(z)) REQUIRE(viaGdal.data()[k] == static_cast<float>(2.0 * z + 100.0));
+  CHECK(scaledDirect.lowestHeight() == scaledProvider.lowestHeight());
+  CHECK(scaledDirect.lowestHeight() == Approx(2 * direct.lowestHeight() + 100));
+  for (auto [straight, through] :
+       {std::pair{&direct, &provider}, std::pair{&scaledDirect, &scaledProvider}}) {
+    for (double az : {90.0, 0.0, 45.0}) {
+      CAPTURE(straight == &scaledDirect, az);
+      straight->setView(az);
+      through->setView(az);
+      const std::size_t profiles = straight->frame().profiles;
+      HeightGrid a, b;
+      std::size_t nodata = 0;
+      for (std::size_t first = 0; first < profiles; first += 17) {
+        const std::size_t count = std::min<std::size_t>(19, profiles - first);
+        straight->readProfiles(first, count, a);
+        through->readProfiles(first, count, b);
+        REQUIRE(same(a, b));
+        nodata += static_cast<std::size_t>(
+            std::count_if(a.data(), a.data() + a.size(), [](float z) { return std::isnan(z); }));
+      }
+      CHECK(nodata > 0);
     }
   }
-  for (double az : {90.0, 0.0, 45.0}) {
-    CAPTURE(az);
-    direct.setView(az);
-    provider.setView(az);
-    const std::size_t profiles = direct.frame().profiles;
-    HeightGrid a, b;
-    std::size_t nodata = 0;
-    for (std::size_t first = 0; first < profiles; first += 17) {
-      const std::size_t count = std::min<std::size_t>(19, profiles - first);
-      direct.readProfiles(first, count, a);
-      provider.readProfiles(first, count, b);
-      REQUIRE(same(a, b));
-      nodata += static_cast<std::size_t>(
-          std::count_if(a.data(), a.data() + a.size(), [](float z) { return std::isnan(z); }));
-    }
-    CHECK(nodata > 0);
+  direct.setView(90);  // profiles are the rows
+  scaledDirect.setView(90);
+  HeightGrid metres, values;
+  direct.readProfiles(0, direct.frame().profiles, metres);
+  scaledDirect.readProfiles(0, scaledDirect.frame().profiles, values);
+  REQUIRE(metres.size() == values.size());
+  for (std::size_t k = 0; k < metres.size(); ++k) {
+    const float z = metres.data()[k];
+    if (is_data(z)) REQUIRE(values.data()[k] == static_cast<float>(2.0 * z + 100.0));
   }
 }
 
