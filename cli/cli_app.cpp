@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -97,6 +98,8 @@ double parse_number(const std::string& option, const std::string& text) {
   double value = 0;
   try {
     value = std::stod(text, &used);
+  } catch (const std::out_of_range&) {
+    throw Error(option + " got '" + text + "', too large or too small a number");
   } catch (const std::exception&) {
     used = 0;
   }
@@ -106,8 +109,10 @@ double parse_number(const std::string& option, const std::string& text) {
 
 int parse_int(const std::string& option, const std::string& text) {
   const double value = parse_number(option, text);
-  if (value != static_cast<double>(static_cast<long long>(value)) || value < -1e9 || value > 1e9) {
-    throw Error(option + " needs a whole number, got '" + text + "'");
+  // The range first: converting a double beyond an integer's range is undefined.
+  if (!(value >= -1e9 && value <= 1e9) || value != std::trunc(value)) {
+    throw Error(option + " needs a whole number from -1000000000 to 1000000000, got '" + text +
+                "'");
   }
   return static_cast<int>(value);
 }
