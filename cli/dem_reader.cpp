@@ -16,13 +16,18 @@
 namespace tsk::io {
 namespace {
 
+// Warped, a DEM gains cells around its own; without a nodata value they would be 0, and their
+// edge a cliff in every view.
+constexpr char kWarpNoData[] = "-dstnodata -9999";
+
 // A reprojection hint for a geographic DEM: the UTM zone of its centre.
 std::string utm_hint(const GeoTransform& gt, std::size_t rows, std::size_t cols) {
   double lon = 0, lat = 0;
   gt.apply({static_cast<double>(cols) / 2, static_cast<double>(rows) / 2}, lon, lat);
   const int zone = std::clamp(static_cast<int>(std::floor((lon + 180.0) / 6.0)) + 1, 1, 60);
   const int epsg = (lat >= 0 ? 32600 : 32700) + zone;
-  return "gdalwarp -t_srs EPSG:" + std::to_string(epsg) + " -r bilinear INPUT OUTPUT_utm.tif";
+  return "gdalwarp -t_srs EPSG:" + std::to_string(epsg) + " -r bilinear " + kWarpNoData +
+         " INPUT OUTPUT_utm.tif";
 }
 
 // Ground metres per map unit at the DEM's centre: cos(latitude) for Mercator projections (Web
@@ -109,12 +114,14 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
     if (gt[2] != 0.0 || gt[4] != 0.0) {
       throw Error("'" + path +
                   "' has a rotated or sheared geotransform; make it north-up first, e.g. "
-                  "gdalwarp INPUT OUTPUT_northup.tif");
+                  "gdalwarp " +
+                  kWarpNoData + " INPUT OUTPUT_northup.tif");
     }
     if (!(gt[1] > 0.0) || !(gt[5] < 0.0)) {
       throw Error("'" + path +
                   "' is not north-up (row 0 must be north, column 0 west); warp it first, e.g. "
-                  "gdalwarp INPUT OUTPUT_northup.tif");
+                  "gdalwarp " +
+                  kWarpNoData + " INPUT OUTPUT_northup.tif");
     }
     std::copy(gt, gt + 6, dem.geotransform.a.begin());
   } else if (options.cell_size > 0.0) {

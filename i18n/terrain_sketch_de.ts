@@ -358,72 +358,77 @@
 <context>
     <name>RasterGrid</name>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="69" />
+        <location filename="../plugin/raster_grid.cpp" line="82" />
         <source>The input raster layer is not valid.</source>
         <translation>Der Eingaberasterlayer ist ungültig.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="74" />
+        <location filename="../plugin/raster_grid.cpp" line="87" />
         <source>Band %1 does not exist: the raster has %2 band(s).</source>
         <translation>Kanal %1 existiert nicht: das Raster hat %2 Kanal/Kanäle.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="81" />
+        <location filename="../plugin/raster_grid.cpp" line="94" />
         <source>The raster has no cells.</source>
         <translation>Das Raster hat keine Zellen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="84" />
+        <location filename="../plugin/raster_grid.cpp" line="97" />
         <source>The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres like its heights. Reproject it to a metric CRS first, for example with Raster &gt; Projections &gt; Warp (Reproject) to the UTM zone of the area.</source>
         <translation>Das Raster liegt in einem geographischen KBS (%1): seine Zellgrößen sind Grad, nicht Meter wie seine Höhen. Projizieren Sie es zuerst in ein metrisches KBS, zum Beispiel mit Raster &gt; Projektionen &gt; Transformieren (Reprojizieren) in die UTM-Zone des Gebiets.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="90" />
+        <location filename="../plugin/raster_grid.cpp" line="103" />
         <source>The raster has no CRS: cell sizes are taken as metres and the outputs have no CRS.</source>
         <translation>Das Raster hat kein KBS: Zellgrößen werden als Meter angenommen, die Ausgaben haben kein KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="96" />
+        <location filename="../plugin/raster_grid.cpp" line="109" />
         <source>Mercator projection: map units are not ground metres here; cell sizes are scaled by cos(latitude of the centre) = %1.</source>
         <translation>Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen werden mit cos(Breite der Mitte) = %1 skaliert.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="101" />
+        <location filename="../plugin/raster_grid.cpp" line="114" />
         <source>The CRS's unit is %1, not the metre: the heights must be in %1 too, and depths and lengths come out in %1.</source>
         <translation>Die Einheit des KBS ist %1, nicht der Meter: die Höhen müssen ebenfalls in %1 sein, und Tiefen und Längen werden in %1 ausgegeben.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="106" />
+        <location filename="../plugin/raster_grid.cpp" line="119" />
         <source>The raster has %1 bands; band %2 is used.</source>
         <translation>Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="112" />
+        <location filename="../plugin/raster_grid.cpp" line="128" />
         <source>Heights go down to %1, a common fill value: if those cells have no data, set it as the layer's no data value (Layer Properties &gt; Transparency) or in the file.</source>
         <translation>Die Höhen reichen bis %1 hinab, ein üblicher Füllwert: wenn diese Zellen keine Daten haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften &gt; Transparenz) oder in der Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="119" />
+        <location filename="../plugin/raster_grid.cpp" line="137" />
+        <source>The raster is rotated: QGIS turns it north-up, and the cells it adds around it are left out as no data.</source>
+        <translation>Das Raster ist gedreht: QGIS richtet es nach Norden aus, und die Zellen, die es dabei rundum hinzufügt, bleiben als NoData außen vor.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="142" />
         <source>Could not open the raster's data provider.</source>
         <translation>Der Datenanbieter des Rasters konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="213" />
+        <location filename="../plugin/raster_grid.cpp" line="258" />
         <source>The raster (%1 x %2 cells) is too large for this algorithm, which holds the whole DEM turned to the view: that would take more than half of this machine's memory. The Silhouettes algorithm reads large DEMs strip by strip; or clip or resample the DEM.</source>
         <translation>Das Raster (%1 x %2 Zellen) ist zu groß für diesen Algorithmus, der das ganze DGM zur Blickrichtung gedreht im Speicher hält: das würde mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen. Der Algorithmus Silhouetten liest große DGM Streifen für Streifen; oder schneiden Sie das DGM zu oder verringern Sie seine Auflösung.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="225" />
+        <location filename="../plugin/raster_grid.cpp" line="270" />
         <source>Not enough memory for a %1 x %2 raster.</source>
         <translation>Nicht genug Speicher für ein Raster von %1 x %2.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="236" />
+        <location filename="../plugin/raster_grid.cpp" line="281" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="193" />
+        <location filename="../plugin/raster_grid.cpp" line="229" />
         <source>Could not read rows %1 to %2 of the raster.</source>
         <translation>Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
     </message>

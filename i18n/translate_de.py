@@ -36,6 +36,10 @@ GERMAN = {
         "haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften > Transparenz) "
         "oder in der Datei.",
     "The raster has %1 bands; band %2 is used.": "Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.",
+    "The raster is rotated: QGIS turns it north-up, and the cells it adds around it are left out "
+    "as no data.":
+        "Das Raster ist gedreht: QGIS richtet es nach Norden aus, und die Zellen, die es dabei "
+        "rundum hinzufügt, bleiben als NoData außen vor.",
     "Could not open the raster's data provider.":
         "Der Datenanbieter des Rasters konnte nicht geöffnet werden.",
     "Not enough memory for a %1 x %2 raster.": "Nicht genug Speicher für ein Raster von %1 x %2.",

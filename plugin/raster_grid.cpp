@@ -1,5 +1,6 @@
 #include "raster_grid.h"
 
+#include <gdal.h>
 #include <qgscoordinatetransform.h>
 #include <qgsexception.h>
 #include <qgsprocessingfeedback.h>
@@ -36,6 +37,18 @@ double mercatorGroundScale(const QgsCoordinateReferenceSystem& crs, const QgsRec
   } catch (const QgsCsException&) {
     return 1.0;
   }
+}
+
+// The file of a GDAL layer that is one plain file (not a layer or subdataset of one, nor opened
+// with options); empty otherwise.
+QString plainGdalFile(const QgsRasterLayer& layer) {
+  if (layer.providerType() != QLatin1String("gdal")) return {};
+  const QVariantMap parts =
+      QgsProviderRegistry::instance()->decodeUri(QStringLiteral("gdal"), layer.source());
+  for (auto it = parts.begin(); it != parts.end(); ++it) {
+    if (it.key() != QLatin1String("path") && !it.value().toString().isEmpty()) return {};
+  }
+  return parts.value(QStringLiteral("path")).toString();
 }
 
 }  // namespace
@@ -118,6 +131,13 @@ RasterGrid::RasterGrid(QgsRasterLayer* layer, int band,
   }
   mFile = openFile(*layer, band);
   if (mFile) return;
+  const QString file = plainGdalFile(*layer);
+  if (!file.isEmpty()) mSourceCells = rotatedSourceCells(file);
+  if (mSourceCells) {
+    mNotes << tr(
+        "The raster is rotated: QGIS turns it north-up, and the cells it adds around it "
+        "are left out as no data.");
+  }
   mProvider.reset(layer->dataProvider()->clone());
   if (!mProvider) throw QgsProcessingException(tr("Could not open the raster's data provider."));
 }
@@ -126,20 +146,13 @@ std::unique_ptr<io::BandWindows> RasterGrid::openFile(QgsRasterLayer& layer, int
   QgsRasterDataProvider& provider = *layer.dataProvider();
   const bool sourceNoData =
       !provider.sourceHasNoDataValue(band) || provider.useSourceNoDataValue(band);
-  if (layer.providerType() != QLatin1String("gdal") || !sourceNoData ||
-      !provider.userNoDataValues(band).isEmpty()) {
+  const QString path = plainGdalFile(layer);
+  if (path.isEmpty() || !sourceNoData || !provider.userNoDataValues(band).isEmpty()) {
     return nullptr;
-  }
-  // A plain file, not a layer or subdataset of one, nor opened with options.
-  const QVariantMap parts =
-      QgsProviderRegistry::instance()->decodeUri(QStringLiteral("gdal"), layer.source());
-  for (auto it = parts.begin(); it != parts.end(); ++it) {
-    if (it.key() != QLatin1String("path") && !it.value().toString().isEmpty()) return nullptr;
   }
   std::unique_ptr<io::BandWindows> file;
   try {
-    file = std::make_unique<io::BandWindows>(
-        QFile::encodeName(parts.value(QStringLiteral("path")).toString()).toStdString(), band);
+    file = std::make_unique<io::BandWindows>(QFile::encodeName(path).toStdString(), band);
   } catch (const Error&) {
     return nullptr;
   }
@@ -157,6 +170,26 @@ std::unique_ptr<io::BandWindows> RasterGrid::openFile(QgsRasterLayer& layer, int
 }
 
 RasterGrid::~RasterGrid() = default;
+
+std::optional<RasterGrid::SourceCells> RasterGrid::rotatedSourceCells(const QString& path) {
+  GDALDatasetH dataset = GDALOpen(QFile::encodeName(path).constData(), GA_ReadOnly);
+  if (!dataset) return std::nullopt;
+  double gt[6];
+  SourceCells cells{};
+  const bool rotated = GDALGetGeoTransform(dataset, gt) == CE_None && (gt[2] != 0 || gt[4] != 0) &&
+                       GDALInvGeoTransform(gt, cells.toPixel);
+  cells.cols = GDALGetRasterXSize(dataset);
+  cells.rows = GDALGetRasterYSize(dataset);
+  GDALClose(dataset);
+  if (!rotated) return std::nullopt;
+  return cells;
+}
+
+bool RasterGrid::SourceCells::cover(double x, double y) const {
+  const double col = toPixel[0] + x * toPixel[1] + y * toPixel[2];
+  const double row = toPixel[3] + x * toPixel[4] + y * toPixel[5];
+  return col >= 0 && col < cols && row >= 0 && row < rows;
+}
 
 void RasterGrid::setView(double azimuthDeg) {
   const double dx = mExtent.width() / mCols;
@@ -195,7 +228,16 @@ void RasterGrid::readWindow(const DemWindow& w, float* heights) const {
       throw QgsProcessingException(
           tr("Could not read rows %1 to %2 of the raster.").arg(top).arg(top + count - 1));
     }
-    copyHeights(*block, static_cast<int>(count), heights + (top - w.row0) * w.cols);
+    float* out = heights + (top - w.row0) * w.cols;
+    copyHeights(*block, static_cast<int>(count), out);
+    if (!mSourceCells) continue;
+    for (std::size_t r = 0; r < count; ++r) {
+      const double y = mExtent.yMaximum() - (static_cast<double>(top + r) + 0.5) * dy;
+      for (std::size_t c = 0; c < w.cols; ++c) {
+        const double x = mExtent.xMinimum() + (static_cast<double>(w.col0 + c) + 0.5) * dx;
+        if (!mSourceCells->cover(x, y)) out[r * w.cols + c] = kNoData;
+      }
+    }
   }
 }
 

@@ -75,8 +75,19 @@ class RasterGrid {
   // Reads a window of the band, NaN for nodata.
   void readWindow(const DemWindow& window, float* heights) const;
 
+  // The pixel domain of a rotated or sheared file: QGIS shows such a raster through a north-up
+  // warped copy whose cells around the file's own are 0 when it has no nodata value, which would
+  // draw its edges as cliffs.
+  struct SourceCells {
+    double toPixel[6];  // the file's geotransform inverted
+    double cols, rows;
+    bool cover(double x, double y) const;
+  };
+  static std::optional<SourceCells> rotatedSourceCells(const QString& path);
+
   std::unique_ptr<io::BandWindows> mFile;
   std::unique_ptr<QgsRasterDataProvider> mProvider;  // when mFile is null
+  std::optional<SourceCells> mSourceCells;           // a rotated file read through mProvider
   int mBand = 1;
   int mCols = 0;
   int mRows = 0;

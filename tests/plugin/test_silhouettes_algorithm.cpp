@@ -820,6 +820,26 @@ TEST_CASE("a rotated or south-up raster is read as QGIS warps it, through its pr
     REQUIRE(run.ok);
     CHECK(run.results.value("FACTUAL_STROKES").toDouble() > 0);
   }
+  // A plain turned by QGIS: the cells it adds around it (0, as the file has no nodata value) are
+  // no data, not a 500 m drop along the plain's edges.
+  const QString plain = dir.filePath("rotated_plain.tif");
+  test::write_tiff(
+      plain.toStdString(), 40, 40, 1, [](int, int, int) { return 500.0f; }, rotated, 32616);
+  QgsRasterLayer layer(plain, "rotated plain", "gdal");
+  plugin::RasterGrid grid(&layer, 1, QgsCoordinateTransformContext());
+  CHECK(grid.notes().join(' ').contains("rotated"));
+  grid.setView(90);
+  HeightGrid heights;
+  grid.readProfiles(0, grid.frame().profiles, heights);
+  const auto nodata = std::count_if(heights.data(), heights.data() + heights.size(),
+                                    [](float z) { return std::isnan(z); });
+  CHECK(nodata > 0);
+  CHECK(std::all_of(heights.data(), heights.data() + heights.size(),
+                    [](float z) { return std::isnan(z) || z == 500.0f; }));
+  const Run run = runAlgorithm(plain, {}, dir);
+  REQUIRE(run.ok);
+  CHECK(run.results.value("FACTUAL_STROKES").toDouble() == 0);
+  CHECK(run.results.value("FORMULATED_STROKES").toDouble() == 0);
 }
 
 TEST_CASE("the band asked for is the band read from the file", "[plugin][strips]") {
