@@ -164,11 +164,22 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
   GDALRasterBand& band = *dataset.GetRasterBand(options.band);
   CPLErrorReset();
   GDALComputeRasterMinMax(&band, TRUE, range);
-  if (CPLGetLastErrorType() < CE_Failure && is_common_fill_value(range[0])) {
+  const bool have_range = CPLGetLastErrorType() < CE_Failure;
+  if (have_range && is_common_fill_value(range[0])) {
     dem.notes += "heights go down to " + number_text(range[0]) +
                  ", a common fill value: if those cells have no data, declare it as nodata "
                  "(gdal_edit.py -a_nodata " +
                  number_text(range[0]) + " INPUT)\n";
+  } else if (have_range) {
+    const double relief = std::fabs(band.GetScale()) * (range[1] - range[0]);
+    const double across = std::max(static_cast<double>(dem.cols) * dem.geotransform.a[1],
+                                   static_cast<double>(dem.rows) * -dem.geotransform.a[5]) *
+                          dem.ground_scale;
+    if (implausible_relief(relief, across)) {
+      dem.notes += "heights span " + number_text(relief) + " over a DEM " + number_text(across) +
+                   " across, more than any terrain: if they are millimetres or centimetres, "
+                   "give the band a scale (gdal_edit.py -scale 0.001 INPUT)\n";
+    }
   }
 
   if (band.GetScale() != 1.0 || band.GetOffset() != 0.0) {

@@ -36,6 +36,11 @@ GERMAN = {
         "haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften > Transparenz) "
         "oder in der Datei.",
     "The raster has %1 bands; band %2 is used.": "Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.",
+    "Heights span %1 over a raster %2 across, more than any terrain: if they are millimetres or "
+    "centimetres, give the band a scale in the file (gdal_edit.py -scale 0.001).":
+        "Die Höhen umfassen %1 auf einem Raster von %2 Breite, mehr als jedes Gelände: wenn es "
+        "Millimeter oder Zentimeter sind, geben Sie dem Kanal in der Datei einen Maßstab "
+        "(gdal_edit.py -scale 0.001).",
     "The raster is rotated: QGIS turns it north-up, and the cells it adds around it are left out "
     "as no data.":
         "Das Raster ist gedreht: QGIS richtet es nach Norden aus, und die Zellen, die es dabei "

@@ -11,14 +11,15 @@
 namespace tsk::plugin {
 
 #if _QGIS_VERSION_INT >= 33600
-constexpr auto kMinimumStatistic = Qgis::RasterBandStatistic::Min;
+inline const auto kRangeStatistics =
+    Qgis::RasterBandStatistic::Min | Qgis::RasterBandStatistic::Max;
 constexpr auto kLineLayer = Qgis::ProcessingSourceType::VectorLine;
 constexpr auto kLineString = Qgis::WkbType::LineString;
 constexpr auto kDoubleNumber = Qgis::ProcessingNumberParameterType::Double;
 constexpr auto kIntegerNumber = Qgis::ProcessingNumberParameterType::Integer;
 constexpr auto kAdvanced = Qgis::ProcessingParameterFlag::Advanced;
 #else
-constexpr auto kMinimumStatistic = QgsRasterBandStats::Min;
+constexpr int kRangeStatistics = QgsRasterBandStats::Min | QgsRasterBandStats::Max;
 constexpr auto kLineLayer = QgsProcessing::TypeVectorLine;
 constexpr auto kLineString = QgsWkbTypes::LineString;
 constexpr auto kDoubleNumber = QgsProcessingParameterNumber::Double;

@@ -117,17 +117,25 @@ RasterGrid::RasterGrid(QgsRasterLayer* layer, int band,
     }
   }
   if (bands > 1) mNotes << tr("The raster has %1 bands; band %2 is used.").arg(bands).arg(band);
-  // GDAL's minimum over a sample of the cells (fill values cover holes and edges); other
+  // GDAL's range over a sample of the cells (fill values cover holes and edges); other
   // providers (web services) would fetch data for it on the main thread.
-  const bool gdal = layer->providerType() == QLatin1String("gdal");
-  const double lowest = gdal ? layer->dataProvider()
-                                   ->bandStatistics(band, kMinimumStatistic, QgsRectangle(), 250000)
-                                   .minimumValue
-                             : 0.0;
-  if (is_common_fill_value(lowest)) {
-    mNotes << tr("Heights go down to %1, a common fill value: if those cells have no data, set it "
-                 "as the layer's no data value (Layer Properties > Transparency) or in the file.")
-                  .arg(lowest);
+  if (layer->providerType() == QLatin1String("gdal")) {
+    const QgsRasterBandStats range =
+        layer->dataProvider()->bandStatistics(band, kRangeStatistics, QgsRectangle(), 250000);
+    const double across = std::max(mExtent.width(), mExtent.height()) * mGroundScale;
+    const double relief = range.maximumValue - range.minimumValue;
+    if (is_common_fill_value(range.minimumValue)) {
+      mNotes << tr("Heights go down to %1, a common fill value: if those cells have no data, set "
+                   "it as the layer's no data value (Layer Properties > Transparency) or in the "
+                   "file.")
+                    .arg(range.minimumValue);
+    } else if (implausible_relief(relief, across)) {
+      mNotes << tr("Heights span %1 over a raster %2 across, more than any terrain: if they are "
+                   "millimetres or centimetres, give the band a scale in the file (gdal_edit.py "
+                   "-scale 0.001).")
+                    .arg(relief)
+                    .arg(across);
+    }
   }
   mFile = openFile(*layer, band);
   if (mFile) return;

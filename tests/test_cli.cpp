@@ -456,6 +456,25 @@ TEST_CASE("a band's scale and offset turn its values into heights, as QGIS turns
   CHECK_FALSE(std::filesystem::exists(dir / "zero.geojson"));
 }
 
+TEST_CASE("heights that rise more than any terrain get a note", "[cli]") {
+  // The hill in millimetres: 300 000 over a DEM 400 m across, and in millimetres with the scale
+  // that makes them metres.
+  ScratchDir dir("relief");
+  const auto millimetres = [](int band, int r, int c) { return 1000 * hill(band, r, c); };
+  test::write_tiff(dir / "mm.tif", 40, 40, 1, millimetres, kNorthUp, 32616);
+  const CliRun run = run_cli({"silhouettes", dir / "mm.tif", dir / "mm.gpkg"});
+  CHECK(run.code == 0);
+  CHECK_THAT(run.err, Catch::Contains("more than any terrain") &&
+                          Catch::Contains("gdal_edit.py -scale 0.001"));
+  GDALDatasetH ds = GDALOpen((dir / "mm.tif").c_str(), GA_Update);
+  REQUIRE(ds != nullptr);
+  GDALSetRasterScale(GDALGetRasterBand(ds, 1), 0.001);
+  GDALClose(ds);
+  const CliRun scaled = run_cli({"silhouettes", dir / "mm.tif", dir / "scaled.gpkg"});
+  CHECK(scaled.code == 0);
+  CHECK_THAT(scaled.err, !Catch::Contains("more than any terrain"));
+}
+
 TEST_CASE("a CRS in feet runs with a note that heights must be in feet too", "[cli]") {
   ScratchDir dir("feet");
   const double geotransform[6] = {2000000, 30, 0, 700000, 0, -30};

@@ -232,6 +232,21 @@ TEST_CASE("an undeclared fill value among the heights gets a warning", "[plugin]
   CHECK_FALSE(quiet.warnings.join(' ').contains("fill value"));
 }
 
+TEST_CASE("heights that rise more than any terrain get a warning", "[plugin]") {
+  // The hill in millimetres: 300 000 over a raster 400 m across.
+  QTemporaryDir dir;
+  const QString millimetres = dir.filePath("mm.tif"), metres = dir.filePath("m.tif");
+  test::write_tiff(
+      millimetres.toStdString(), 40, 40, 1,
+      [](int band, int r, int c) { return 1000 * test::hill(band, r, c); }, test::kNorthUp, 32616);
+  test::write_tiff(metres.toStdString(), 40, 40, 1, test::hill, test::kNorthUp, 32616);
+  RecordingFeedback log, quiet;
+  REQUIRE(runAlgorithm(millimetres, {}, dir, &log).ok);
+  CHECK(log.warnings.join(' ').contains("more than any terrain"));
+  REQUIRE(runAlgorithm(metres, {}, dir, &quiet).ok);
+  CHECK_FALSE(quiet.warnings.join(' ').contains("more than any terrain"));
+}
+
 TEST_CASE("a CRS in feet runs with a warning that heights must be in feet too", "[plugin]") {
   QTemporaryDir dir;
   const QString feet = dir.filePath("feet.tif");
