@@ -222,6 +222,14 @@
     </message>
 </context>
 <context>
+    <name>LineOutput</name>
+    <message>
+        <location filename="../plugin/line_output.cpp" line="157" />
+        <source>Could not write %1 whole: the file ends cut short. Is the disk full?</source>
+        <translation>%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der Datenträger voll?</translation>
+    </message>
+</context>
+<context>
     <name>PStrokeAlgorithm</name>
     <message>
         <location filename="../plugin/pstroke_algorithm.cpp" line="19" />

@@ -36,6 +36,9 @@ GERMAN = {
         "haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften > Transparenz) "
         "oder in der Datei.",
     "The raster has %1 bands; band %2 is used.": "Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.",
+    "Could not write %1 whole: the file ends cut short. Is the disk full?":
+        "%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der "
+        "Datenträger voll?",
     "Heights span %1 over a raster %2 across, more than any terrain: if they are millimetres or "
     "centimetres, give the band a scale in the file (gdal_edit.py -scale 0.001).":
         "Die Höhen umfassen %1 auf einem Raster von %2 Breite, mehr als jedes Gelände: wenn es "

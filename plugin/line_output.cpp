@@ -6,9 +6,11 @@
 #include <qgsprocessingparameters.h>
 #include <qgsproviderregistry.h>
 
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <algorithm>
 #include <exception>
 
 #include "core_errors.h"
@@ -35,6 +37,36 @@ FileTarget fileTarget(const QString& target) {
 void deleteDataset(const QString& path) {
   const QByteArray file = QFile::encodeName(path);
   if (GDALDeleteDataset(nullptr, file.constData()) != CE_None) QFile::remove(path);
+}
+
+// The files beside `path` named after it: those its format keeps with it (a shapefile's .shx and
+// .dbf, GML's .xsd, a GeoPackage's -journal), and the file itself.
+QStringList filesNamedAfter(const QString& path) {
+  const QFileInfo info(path);
+  return info.dir().entryList({info.completeBaseName() + QStringLiteral(".*")},
+                              QDir::Files | QDir::Hidden);
+}
+
+// Whether `path`, written whole by QGIS, ends as its format ends. The GDAL drivers of GeoJSON,
+// KML, GML and CSV ignore writes that fail, so on a full disk they leave a file cut short that
+// QGIS reports as written; the drivers of other formats report them.
+bool endsWhole(const QString& path) {
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  const bool geojson = suffix == QLatin1String("geojson") || suffix == QLatin1String("json");
+  if (!geojson && suffix != QLatin1String("kml") && suffix != QLatin1String("gml") &&
+      suffix != QLatin1String("csv")) {
+    return true;
+  }
+  QFile file(path);
+  if (!file.open(QIODevice::ReadOnly)) return false;
+  file.seek(std::max<qint64>(0, file.size() - 64));
+  QByteArray tail = file.readAll();
+  tail.replace('\r', QByteArray());
+  // GeoJSON's "\n]\n}\n" closes the feature list and the collection; a feature never holds it.
+  if (geojson) return tail.endsWith("\n]\n}\n");
+  if (suffix == QLatin1String("csv")) return tail.endsWith('\n');
+  tail = tail.trimmed();
+  return tail.endsWith(suffix == QLatin1String("kml") ? "</kml>" : "FeatureCollection>");
 }
 
 void dropLayer(const QString& path, const QString& layer) {
@@ -70,6 +102,7 @@ LineOutput::LineOutput(const DemViewAlgorithm& algorithm, const QVariantMap& par
   const QString target =
       QgsProcessingParameters::parameterAsOutputLayer(definition, parameters, context);
   const FileTarget file = fileTarget(target);
+  if (!file.path.isEmpty() && !file.addsLayer) mFilesBefore = filesNamedAfter(file.path);
   const bool gpkg = !file.addsLayer && target.endsWith(QLatin1String(".gpkg"), Qt::CaseInsensitive);
   mSink.reset(QgsProcessingParameters::parameterAsSink(
       definition, parameters, fields, kLineString, crs, context, mDestination,
@@ -85,12 +118,17 @@ LineOutput::LineOutput(const DemViewAlgorithm& algorithm, const QVariantMap& par
   if (!gpkg) return;
   // QGIS made the file and its empty layer; closed, the lines go in through SQLite.
   mSink.reset();
-  auto sink = withCoreErrors([&] {
-    return std::make_unique<GpkgLineSink>(
-        mFile, parts.value(QStringLiteral("layerName")).toString(), fields);
-  });
-  mGpkg = sink.get();
-  mSink = std::move(sink);
+  try {
+    auto sink = withCoreErrors([&] {
+      return std::make_unique<GpkgLineSink>(
+          mFile, parts.value(QStringLiteral("layerName")).toString(), fields);
+    });
+    mGpkg = sink.get();
+    mSink = std::move(sink);
+  } catch (...) {
+    discard();  // no destructor runs for an output whose constructor throws
+    throw;
+  }
 }
 
 LineOutput::~LineOutput() {
@@ -114,6 +152,10 @@ void LineOutput::finish() {
   if (mGpkg) withCoreErrors([this] { mGpkg->finish(); });
   mGpkg = nullptr;
   mSink.reset();  // QGIS's writer flushes and closes the file
+  if (!mFile.isEmpty() && mAddedLayer.isEmpty() && !endsWhole(mFile)) {
+    throw QgsProcessingException(
+        tr("Could not write %1 whole: the file ends cut short. Is the disk full?").arg(mFile));
+  }
   mFinished = true;
 }
 
@@ -126,7 +168,13 @@ void LineOutput::discard() noexcept {
   mSink.reset();  // rolls a GeoPackage's rows back; closes QGIS's writer
   if (mFile.isEmpty() || !QFileInfo(mFile).isFile()) return;
   if (mAddedLayer.isEmpty()) {
+    // QGIS made the file, or wrote it over: it goes, with the files made beside it that GDAL
+    // does not count as the dataset's (GML's .xsd, the journal that a write which failed on a
+    // full disk leaves beside a GeoPackage).
     deleteDataset(mFile);
+    const QDir folder = QFileInfo(mFile).dir();
+    for (const QString& name : filesNamedAfter(mFile))
+      if (!mFilesBefore.contains(name)) QFile::remove(folder.filePath(name));
   } else {
     dropLayer(mFile, mAddedLayer);
   }

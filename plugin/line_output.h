@@ -12,7 +12,9 @@
 #include <qgsfields.h>
 #include <qgsprocessingcontext.h>
 
+#include <QCoreApplication>
 #include <QString>
+#include <QStringList>
 #include <QVariantMap>
 #include <memory>
 
@@ -29,6 +31,8 @@ class GpkgLineSink;
 QString destinationFile(const QString& target);
 
 class LineOutput {
+  Q_DECLARE_TR_FUNCTIONS(LineOutput)
+
  public:
   // Line output `key` of `algorithm` with `fields`, in `crs`. Throws QgsProcessingException with
   // QGIS's message when the destination cannot be created.
@@ -61,6 +65,7 @@ class LineOutput {
   QString mDestination;
   QString mFile;        // the file holding the output; empty for a memory layer or a database
   QString mAddedLayer;  // the layer QGIS added to a file that existed before; empty: QGIS's file
+  QStringList mFilesBefore;  // named after QGIS's file, there before it was made
   bool mFinished = false;
   int mExceptionsAtStart;  // exceptions in flight when the output was made
 };

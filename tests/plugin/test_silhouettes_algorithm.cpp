@@ -16,6 +16,7 @@
 #include <qgsrasterlayer.h>
 #include <qgsrasterrange.h>
 #include <qgsvectorlayer.h>
+#include <sys/resource.h>
 
 #include <QDir>
 #include <QFile>
@@ -24,6 +25,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <csignal>
 #include <functional>
 #include <memory>
 
@@ -309,6 +311,46 @@ TEST_CASE("an output that cannot be written fails the run and leaves no other ou
     INFO(run.error.toStdString());
     CHECK(run.error.contains(missing));
     CHECK(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+  }
+}
+
+TEST_CASE("a disk that fills up fails the run in every format and leaves no file",
+          "[plugin][outputs]") {
+  // A file size limit on this process stands in for a full disk (writes past it fail, EFBIG).
+  // The GeoJSON, KML, GML and CSV drivers ignore failed writes: QGIS reported such cut-off
+  // files as written.
+  QTemporaryDir dir;
+  rlimit before{};
+  REQUIRE(getrlimit(RLIMIT_FSIZE, &before) == 0);
+  const auto previous = std::signal(SIGXFSZ, SIG_IGN);
+  for (const char* format : {"geojson", "kml", "gml", "csv", "gpkg", "shp", "fgb"}) {
+    CAPTURE(format);
+    const rlimit limit{64 * 1024, before.rlim_max};
+    REQUIRE(setrlimit(RLIMIT_FSIZE, &limit) == 0);
+    const Run run =
+        runAlgorithm(kData + "/jacksboro_utm16n.tif",
+                     {{"FACTUAL", dir.filePath(QStringLiteral("factual.%1").arg(format))},
+                      {"FORMULATED", dir.filePath(QStringLiteral("formulated.%1").arg(format))}},
+                     dir);
+    REQUIRE(setrlimit(RLIMIT_FSIZE, &before) == 0);
+    INFO(run.error.toStdString());
+    CHECK_FALSE(run.ok);
+    const QStringList left = QDir(dir.path()).entryList(QDir::Files | QDir::Hidden);
+    INFO(left.join(' ').toStdString());
+    CHECK(left.isEmpty());
+    for (const QString& file : left) QFile::remove(dir.filePath(file));
+  }
+  std::signal(SIGXFSZ, previous);
+  // Without the limit each of them is written whole.
+  for (const char* format : {"geojson", "kml", "gml", "csv"}) {
+    CAPTURE(format);
+    const Run run =
+        runAlgorithm(kData + "/jacksboro_utm16n.tif",
+                     {{"FACTUAL", dir.filePath(QStringLiteral("factual.%1").arg(format))},
+                      {"FORMULATED", dir.filePath(QStringLiteral("formulated.%1").arg(format))}},
+                     dir);
+    INFO(run.error.toStdString());
+    CHECK(run.ok);
   }
 }
 
