@@ -224,7 +224,7 @@
 <context>
     <name>LineOutput</name>
     <message>
-        <location filename="../plugin/line_output.cpp" line="157" />
+        <location filename="../plugin/line_output.cpp" line="156" />
         <source>Could not write %1 whole: the file ends cut short. Is the disk full?</source>
         <translation>%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der Datenträger voll?</translation>
     </message>
@@ -449,12 +449,17 @@
 <context>
     <name>RasterOutput</name>
     <message>
-        <location filename="../plugin/raster_output.cpp" line="33" />
+        <location filename="../plugin/raster_output.cpp" line="65" />
+        <source>Could not write the raster %1: %2</source>
+        <translation>Das Raster %1 konnte nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_output.cpp" line="81" />
         <source>Could not create the raster %1.</source>
         <translation>Das Raster %1 konnte nicht angelegt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_output.cpp" line="43" />
+        <location filename="../plugin/raster_output.cpp" line="91" />
         <source>Could not write the raster %1.</source>
         <translation>Das Raster %1 konnte nicht geschrieben werden.</translation>
     </message>

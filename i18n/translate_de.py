@@ -36,6 +36,7 @@ GERMAN = {
         "haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften > Transparenz) "
         "oder in der Datei.",
     "The raster has %1 bands; band %2 is used.": "Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.",
+    "Could not write the raster %1: %2": "Das Raster %1 konnte nicht geschrieben werden: %2",
     "Could not write %1 whole: the file ends cut short. Is the disk full?":
         "%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der "
         "Datenträger voll?",

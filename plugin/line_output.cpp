@@ -33,12 +33,6 @@ FileTarget fileTarget(const QString& target) {
   return {path, target.startsWith(QLatin1String("ogr:")) && QFileInfo(path).isFile()};
 }
 
-// Removes a dataset with the files its format keeps beside it (a shapefile's .shx, .dbf, ...).
-void deleteDataset(const QString& path) {
-  const QByteArray file = QFile::encodeName(path);
-  if (GDALDeleteDataset(nullptr, file.constData()) != CE_None) QFile::remove(path);
-}
-
 // The files beside `path` named after it: those its format keeps with it (a shapefile's .shx and
 // .dbf, GML's .xsd, a GeoPackage's -journal), and the file itself.
 QStringList filesNamedAfter(const QString& path) {
@@ -83,6 +77,11 @@ void dropLayer(const QString& path, const QString& layer) {
 }
 
 }  // namespace
+
+void deleteDataset(const QString& path) {
+  const QByteArray file = QFile::encodeName(path);
+  if (GDALDeleteDataset(nullptr, file.constData()) != CE_None) QFile::remove(path);
+}
 
 QString destinationFile(const QString& target) {
   if (target.startsWith(QLatin1String("ogr:"))) return QgsDataSourceUri(target.mid(4)).database();

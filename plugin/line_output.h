@@ -30,6 +30,9 @@ class GpkgLineSink;
 // "postgres:", ...) writes no file (empty); a plain path is a file QGIS writes whole.
 QString destinationFile(const QString& target);
 
+// Removes a dataset with the files its format keeps beside it (a shapefile's .shx, .dbf, ...).
+void deleteDataset(const QString& path);
+
 class LineOutput {
   Q_DECLARE_TR_FUNCTIONS(LineOutput)
 

@@ -1,5 +1,6 @@
 #include "raster_output.h"
 
+#include <cpl_error.h>
 #include <qgsexception.h>
 #include <qgsrasterblock.h>
 #include <qgsrasterdataprovider.h>
@@ -10,19 +11,66 @@
 #include <limits>
 #include <memory>
 
+#include "line_output.h"
 #include "raster_grid.h"
 
 namespace tsk::plugin {
 namespace {
+
+// GDAL's first failure while this lives, kept from QGIS's log: GDAL itself keeps only the last,
+// and a full disk's "File too large" is followed by libtiff's consequences of it.
+class FirstGdalFailure {
+ public:
+  FirstGdalFailure() { CPLPushErrorHandlerEx(&FirstGdalFailure::handle, this); }
+  ~FirstGdalFailure() { CPLPopErrorHandler(); }
+  FirstGdalFailure(const FirstGdalFailure&) = delete;
+  FirstGdalFailure& operator=(const FirstGdalFailure&) = delete;
+  bool failed() const { return mFailed; }
+  const QString& message() const { return mMessage; }
+
+ private:
+  static void CPL_STDCALL handle(CPLErr type, CPLErrorNum, const char* message) {
+    auto* self = static_cast<FirstGdalFailure*>(CPLGetErrorHandlerUserData());
+    if (type < CE_Failure || self->mFailed) return;
+    self->mFailed = true;
+    self->mMessage = QString::fromUtf8(message);
+  }
+  bool mFailed = false;
+  QString mMessage;
+};
 
 class RasterOutput {
   Q_DECLARE_TR_FUNCTIONS(RasterOutput)
 
  public:
   // Writes one band per entry of `bands` (cells of `bytesPerCell` bytes, rows x cols each).
+  // The raster is whole or gone: GDAL writes what it caches only as it closes the file, and a
+  // write that fails then (a full disk) shows only as a GDAL error, which QGIS merely logs.
   static void write(const QString& path, Qgis::DataType type, const std::vector<const void*>& bands,
                     std::size_t bytesPerCell, std::size_t rows, std::size_t cols, double noData,
                     const QgsRectangle& extent, const QgsCoordinateReferenceSystem& crs) {
+    QString why;
+    {
+      const FirstGdalFailure failure;
+      try {
+        writeBands(path, type, bands, bytesPerCell, rows, cols, noData, extent, crs);
+      } catch (const QgsProcessingException&) {
+        deleteDataset(path);
+        throw;
+      }
+      if (failure.failed()) why = failure.message();
+    }
+    if (!why.isEmpty()) {
+      deleteDataset(path);
+      throw QgsProcessingException(tr("Could not write the raster %1: %2").arg(path, why));
+    }
+  }
+
+ private:
+  static void writeBands(const QString& path, Qgis::DataType type,
+                         const std::vector<const void*>& bands, std::size_t bytesPerCell,
+                         std::size_t rows, std::size_t cols, double noData,
+                         const QgsRectangle& extent, const QgsCoordinateReferenceSystem& crs) {
     QgsRasterFileWriter writer(path);
     writer.setOutputProviderKey(QStringLiteral("gdal"));
     writer.setOutputFormat(QgsRasterFileWriter::driverForExtension(QFileInfo(path).suffix()));
