@@ -783,21 +783,30 @@ TEST_CASE("a disk that fills up fails the run in every format and leaves nothing
   // rather than ENOSPC). GeoJSON, KML and GML ignore whether their writes succeed; they used to
   // close the cut-off file as if whole, and the run reported success.
   ScratchDir dir("full");
-  for (const char* extension : {"geojson", "kml", "gml", "csv", "fgb", "shp", "gpkg", "sqlite"}) {
-    CAPTURE(extension);
-    const std::string output = dir / (std::string("strokes.") + extension);
+  struct Case {
+    std::string command, output;
+  };
+  std::vector<Case> cases;
+  for (const char* extension : {"geojson", "kml", "gml", "csv", "fgb", "shp", "gpkg", "sqlite"})
+    cases.push_back({"silhouettes", std::string("strokes.") + extension});
+  cases.push_back({"classify", "classes.tif"});
+  cases.push_back({"row-slope", "slope.tif"});
+  cases.push_back({"profiles", "profiles.geojson"});
+  for (const Case& c : cases) {
+    CAPTURE(c.command, c.output);
+    const std::string output = dir / c.output;
     const std::string errors = dir.path.parent_path() / "full-disk-errors.txt";
     const pid_t child = fork();
     REQUIRE(child >= 0);
     if (child == 0) {
-      const rlimit limit{64 * 1024, 64 * 1024};
+      const rlimit limit{8 * 1024, 8 * 1024};  // less than any output here, compressed or not
       setrlimit(RLIMIT_FSIZE, &limit);
       std::signal(SIGXFSZ, SIG_IGN);  // a failed write, not the end of the program
       const int err = open(errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       dup2(err, 2);
       const int null = open("/dev/null", O_WRONLY);
       dup2(null, 1);
-      execl(TSK_CLI_BINARY, "terrain-sketch", "silhouettes", kSample.c_str(), output.c_str(),
+      execl(TSK_CLI_BINARY, "terrain-sketch", c.command.c_str(), kSample.c_str(), output.c_str(),
             nullptr);
       _exit(127);
     }
