@@ -190,35 +190,35 @@
 <context>
     <name>FilterDiagramAlgorithm</name>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="19" />
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="39" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="21" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="41" />
         <source>Slope filter diagram</source>
         <translation>Diagramm des Neigungsfilters</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="23" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="25" />
         <source>Plots, for every cell, the magnitude of its column slope (along the view) against its row slope (across the view): all cells grey, the candidate set red, the cells the slope filter keeps black, over the filter's removal region in grey with the control point circled. Run it with different filter parameters to see what they keep before drawing the silhouettes. The page opens in the Results Viewer.</source>
         <translation>Trägt für jede Zelle den Betrag ihrer Spaltenneigung (entlang der Blickrichtung) gegen ihre Zeilenneigung (quer dazu) auf: alle Zellen grau, die Kandidatenmenge rot, die vom Neigungsfilter behaltenen Zellen schwarz, über dem grauen Entfernungsbereich des Filters mit eingekreistem Kontrollpunkt. Mit verschiedenen Filterparametern ausführen, um vor dem Zeichnen der Silhouetten zu sehen, was sie behalten. Die Seite öffnet sich im Ergebnisanzeiger.</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="39" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="41" />
         <source>HTML files (*.html)</source>
         <translation>HTML-Dateien (*.html)</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="40" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="42" />
         <source>HTML page with the diagram as SVG.</source>
         <translation>HTML-Seite mit dem Diagramm als SVG.</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="60" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="62" />
         <source>Slope filter</source>
         <translation>Neigungsfilter</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="67" />
-        <source>Could not write %1.</source>
-        <translation>%1 konnte nicht geschrieben werden.</translation>
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="80" />
+        <source>Could not write %1: %2</source>
+        <translation>%1 konnte nicht geschrieben werden: %2</translation>
     </message>
 </context>
 <context>

@@ -322,7 +322,7 @@ GERMAN = {
         "Das zu drapierende Raster hat %1 x %2 Zellen, das DGM %3 x %4: tasten Sie es zuerst auf "
         "das Gitter des DGM um (Raster > Projektionen > Transformieren mit Ausdehnung und "
         "Auflösung des DGM).",
-    "Could not write %1.": "%1 konnte nicht geschrieben werden.",
+    "Could not write %1: %2": "%1 konnte nicht geschrieben werden: %2",
     "Float32 raster of |row slope| in percent.": "Float32-Raster der |Zeilenneigung| in Prozent.",
     "Terrain sketch: factual and formulated silhouettes":
         "Geländeskizze: faktische und formulierte Silhouetten",

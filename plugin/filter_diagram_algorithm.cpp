@@ -4,6 +4,8 @@
 
 #include <QFile>
 #include <algorithm>
+#include <cerrno>
+#include <system_error>
 
 #include "errors.h"
 #include "filter_diagram.h"
@@ -61,10 +63,21 @@ QVariantMap FilterDiagramAlgorithm::processAlgorithm(const QVariantMap& paramete
   });
   const QString path = parameterAsFileOutput(parameters, QStringLiteral("OUTPUT"), context);
   QFile file(path);
-  if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-      file.write(html.data(), static_cast<qint64>(html.size())) !=
-          static_cast<qint64>(html.size())) {
-    throw QgsProcessingException(tr("Could not write %1.").arg(path));
+  // Whole or not at all: what QFile buffers reaches the disk only as it flushes.
+  errno = 0;
+  bool written = file.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
+                 file.write(html.data(), static_cast<qint64>(html.size())) ==
+                     static_cast<qint64>(html.size()) &&
+                 file.flush();
+  file.close();
+  written = written && file.error() == QFileDevice::NoError;
+  if (!written) {
+    // QFile says "Unknown error" for a write cut short; the system's reason says more.
+    const QString why =
+        errno ? QString::fromStdString(std::error_code(errno, std::generic_category()).message())
+              : file.errorString();
+    file.remove();
+    throw QgsProcessingException(tr("Could not write %1: %2").arg(path, why));
   }
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), path}};

@@ -354,25 +354,32 @@ TEST_CASE("a disk that fills up fails the run in every format and leaves no file
   }
 }
 
-TEST_CASE("a disk that fills up fails a raster output and leaves no file", "[plugin][outputs]") {
+TEST_CASE("a disk that fills up fails a raster or page output and leaves no file",
+          "[plugin][outputs]") {
   // As above. GDAL writes a GeoTIFF's cached blocks as it closes it, where QGIS only logs the
   // failure: the runs succeeded with the first 64 kB of their raster.
   QTemporaryDir dir;
   rlimit before{};
   REQUIRE(getrlimit(RLIMIT_FSIZE, &before) == 0);
   const auto previous = std::signal(SIGXFSZ, SIG_IGN);
-  for (const char* id : {"classification", "rowslope"}) {
+  for (const char* id : {"classification", "rowslope", "filterdiagram"}) {
     CAPTURE(id);
     const rlimit limit{16 * 1024, before.rlim_max};
     REQUIRE(setrlimit(RLIMIT_FSIZE, &limit) == 0);
-    const Run run = runAlgorithm(kData + "/jacksboro_utm16n.tif", {}, dir, nullptr, id);
+    const QVariantMap page{{"OUTPUT", dir.filePath("out.html")}};
+    const Run run =
+        runAlgorithm(kData + "/jacksboro_utm16n.tif",
+                     id == std::string("filterdiagram") ? page : QVariantMap(), dir, nullptr, id);
     REQUIRE(setrlimit(RLIMIT_FSIZE, &before) == 0);
     INFO(run.error.toStdString());
     CHECK_FALSE(run.ok);
     CHECK(run.error.contains("File too large"));
     CHECK(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
-    CHECK(runAlgorithm(kData + "/jacksboro_utm16n.tif", {}, dir, nullptr, id).ok);
+    CHECK(runAlgorithm(kData + "/jacksboro_utm16n.tif",
+                       id == std::string("filterdiagram") ? page : QVariantMap(), dir, nullptr, id)
+              .ok);
     QFile::remove(dir.filePath("out.tif"));
+    QFile::remove(dir.filePath("out.html"));
   }
   std::signal(SIGXFSZ, previous);
 }
