@@ -11,6 +11,7 @@
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <algorithm>
+#include <cctype>
 #include <exception>
 
 #include "core_errors.h"
@@ -54,13 +55,18 @@ bool endsWhole(const QString& path) {
   QFile file(path);
   if (!file.open(QIODevice::ReadOnly)) return false;
   file.seek(std::max<qint64>(0, file.size() - 64));
-  QByteArray tail = file.readAll();
-  tail.replace('\r', QByteArray());
-  // GeoJSON's "\n]\n}\n" closes the feature list and the collection; a feature never holds it.
-  if (geojson) return tail.endsWith("\n]\n}\n");
+  const QByteArray tail = file.readAll();
   if (suffix == QLatin1String("csv")) return tail.endsWith('\n');
-  tail = tail.trimmed();
-  return tail.endsWith(suffix == QLatin1String("kml") ? "</kml>" : "FeatureCollection>");
+  if (!geojson) {
+    return tail.trimmed().endsWith(suffix == QLatin1String("kml") ? "</kml>"
+                                                                  : "FeatureCollection>");
+  }
+  // Without white space, the last feature (or none) and the end of the list and the collection:
+  // no feature holds "}]}", as "]" follows only coordinates in it.
+  QByteArray compact;
+  for (const char c : tail)
+    if (!std::isspace(static_cast<unsigned char>(c))) compact += c;
+  return compact.endsWith("}]}") || compact.endsWith("[]}");
 }
 
 void dropLayer(const QString& path, const QString& layer) {
