@@ -3,7 +3,6 @@
 #include <cpl_vsi.h>
 
 #include <cerrno>
-#include <cstring>
 #include <map>
 #include <mutex>
 #include <system_error>
@@ -24,11 +23,6 @@ void record_failure(const std::string& real, int error) {
   failures.emplace(real, why);  // the first failure of a file says the most
 }
 
-// GDAL hands the callbacks their names without the prefix.
-std::string real_path(const char* name) {
-  return name;
-}
-
 struct CheckedFile {
   VSILFILE* file;
   std::string real;
@@ -44,26 +38,20 @@ int checked(CheckedFile& f, int result) {
   return result;
 }
 
+// Every call passed on to the file itself; GDAL hands the callbacks the names without the prefix.
 VSIFilesystemPluginCallbacksStruct* callbacks() {
   VSIFilesystemPluginCallbacksStruct* c = VSIAllocFilesystemPluginCallbacksStruct();
   c->stat = [](void*, const char* name, VSIStatBufL* buf, int flags) {
-    return VSIStatExL(real_path(name).c_str(), buf, flags);
+    return VSIStatExL(name, buf, flags);
   };
-  c->unlink = [](void*, const char* name) { return VSIUnlink(real_path(name).c_str()); };
-  c->rename = [](void*, const char* from, const char* to) {
-    return VSIRename(real_path(from).c_str(), real_path(to).c_str());
-  };
-  c->mkdir = [](void*, const char* name, long mode) {
-    return VSIMkdir(real_path(name).c_str(), mode);
-  };
-  c->rmdir = [](void*, const char* name) { return VSIRmdir(real_path(name).c_str()); };
-  c->read_dir = [](void*, const char* name, int most) {
-    return VSIReadDirEx(real_path(name).c_str(), most);
-  };
+  c->unlink = [](void*, const char* name) { return VSIUnlink(name); };
+  c->rename = [](void*, const char* from, const char* to) { return VSIRename(from, to); };
+  c->mkdir = [](void*, const char* name, long mode) { return VSIMkdir(name, mode); };
+  c->rmdir = [](void*, const char* name) { return VSIRmdir(name); };
+  c->read_dir = [](void*, const char* name, int most) { return VSIReadDirEx(name, most); };
   c->open = [](void*, const char* name, const char* access) -> void* {
-    const std::string real = real_path(name);
-    VSILFILE* file = VSIFOpenExL(real.c_str(), access, TRUE);
-    return file ? new CheckedFile{file, real} : nullptr;
+    VSILFILE* file = VSIFOpenExL(name, access, TRUE);
+    return file ? new CheckedFile{file, name} : nullptr;
   };
   c->tell = [](void* h) { return VSIFTellL(as_file(h).file); };
   c->seek = [](void* h, vsi_l_offset offset, int whence) {
