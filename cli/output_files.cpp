@@ -28,6 +28,13 @@ fs::path output_folder(const fs::path& destination) {
     throw Error("cannot write '" + destination.string() + "': folder '" + folder.string() +
                 "' is not writable");
   }
+  // The output replaces what is there: only ever a file (a folder, a device or a pipe would be
+  // destroyed, or refuse at the very end).
+  const fs::file_status existing = fs::status(destination, ec);
+  if (fs::exists(existing) && !fs::is_regular_file(existing)) {
+    throw Error("'" + destination.string() +
+                "' exists and is not a file (a folder, a device or a pipe); choose another name");
+  }
   return folder;
 }
 

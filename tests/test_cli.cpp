@@ -4,6 +4,7 @@
 #include <ogrsf_frmts.h>
 #include <spawn.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <catch2/catch.hpp>
@@ -201,6 +202,10 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
   const std::string dem_gpkg_bytes = slurp(dir / "dem.gpkg");
   REQUIRE(!dem_gpkg_bytes.empty());
   std::filesystem::create_directory(dir / "taken.png");
+  // Outputs named as what no output may replace.
+  std::filesystem::create_directory(dir / "folder.gpkg");
+  std::filesystem::create_directory(dir / "folder.tif");
+  REQUIRE(mkfifo((dir / "pipe.geojson").c_str(), 0644) == 0);
   const std::size_t inputs = dir.file_count();
 
   struct Bad {
@@ -239,6 +244,9 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"drape", dir / "multi.tif", dir / "drape.tif", "--source", dir / "drape.tif"},
        "names the --source raster"},
       {{"silhouettes", kSample, out, "--stats-json", out}, "names OUTPUT too"},
+      {{"silhouettes", kSample, dir / "folder.gpkg"}, "is not a file"},
+      {{"silhouettes", kSample, dir / "pipe.geojson"}, "is not a file"},
+      {{"classify", kSample, dir / "folder.tif"}, "is not a file"},
       // The strokes would be written, then the preview or statistics fail.
       {{"silhouettes", kSample, out, "--preview", dir / "no/such/p.png"}, "does not exist"},
       {{"silhouettes", kSample, out, "--stats-json", dir / "no/such/s.json"}, "does not exist"},
