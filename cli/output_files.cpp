@@ -1,7 +1,9 @@
 #include "output_files.h"
 
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <system_error>
 #include <vector>
 
@@ -38,6 +40,24 @@ fs::path output_folder(const fs::path& destination) {
   return folder;
 }
 
+// Removes the staging folders `prefix` + PID in `folder` of runs that no longer live: a run
+// killed outright (kill -9, a power cut) leaves its partial output there, as big as it had got.
+void remove_stale_staging(const fs::path& folder, const std::string& prefix) {
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string pid = name.substr(prefix.size());
+    if (pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    // Gone, not merely another user's (EPERM).
+    if (kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH) {
+      stale.push_back(entry.path());
+    }
+  }
+  for (const fs::path& path : stale) fs::remove_all(path, ec);
+}
+
 }  // namespace
 
 void check_output_path(const fs::path& destination) {
@@ -50,8 +70,10 @@ void write_atomically(const fs::path& destination,
   std::error_code ec;
   // Named after the output, shortened so that a name near the 255-byte limit still fits.
   constexpr std::size_t kNameBytes = 200;
-  const fs::path staging = folder / ("." + destination.filename().string().substr(0, kNameBytes) +
-                                     ".partial-" + std::to_string(getpid()));
+  const std::string prefix =
+      "." + destination.filename().string().substr(0, kNameBytes) + ".partial-";
+  remove_stale_staging(folder, prefix);
+  const fs::path staging = folder / (prefix + std::to_string(getpid()));
   fs::remove_all(staging, ec);
   if (!fs::create_directory(staging, ec)) {
     throw Error("cannot write in folder '" + folder.string() + "': " + ec.message());

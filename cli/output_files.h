@@ -14,7 +14,8 @@ void check_output_path(const std::filesystem::path& destination);
 
 // Calls write(temporary_path) where temporary_path has the destination's file name inside a
 // fresh temporary folder next to it; on success moves every file the writer made (a shapefile
-// makes several) beside the destination. On any exception nothing is left behind.
+// makes several) beside the destination. On any exception nothing is left behind. The folders
+// that runs killed outright left for the same destination are removed first.
 void write_atomically(const std::filesystem::path& destination,
                       const std::function<void(const std::filesystem::path&)>& write);
 

@@ -832,3 +832,25 @@ TEST_CASE("a disk that fills up fails the run in every format and leaves nothing
   CHECK(whole.code == 0);
   CHECK(summarise(dir / "strokes.kml").features > 100);
 }
+
+TEST_CASE("what a run killed outright left for an output is removed by the next run", "[cli]") {
+  ScratchDir dir("stale");
+  // The staging folder of a process that has ended, and one of a process that lives (ours).
+  const pid_t child = fork();
+  REQUIRE(child >= 0);
+  if (child == 0) _exit(0);
+  REQUIRE(waitpid(child, nullptr, 0) == child);
+  const std::string stale = dir / (".strokes.gpkg.partial-" + std::to_string(child));
+  const std::string live = dir / (".strokes.gpkg.partial-" + std::to_string(getppid()));
+  const std::string other = dir / (".other.gpkg.partial-" + std::to_string(child));
+  for (const std::string& folder : {stale, live, other}) {
+    std::filesystem::create_directory(folder);
+    std::ofstream(folder + "/strokes.gpkg") << "half an output";
+  }
+  const CliRun run = run_cli({"silhouettes", kSample, dir / "strokes.gpkg"});
+  REQUIRE(run.code == 0);
+  CHECK_FALSE(std::filesystem::exists(stale));
+  CHECK(std::filesystem::exists(live));   // a run still going
+  CHECK(std::filesystem::exists(other));  // another output's
+  CHECK(summarise(dir / "strokes.gpkg").features > 100);
+}
