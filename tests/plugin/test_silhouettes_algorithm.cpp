@@ -103,6 +103,34 @@ Run runAlgorithm(const QString& input, const QVariantMap& extra, const QTemporar
   return run;
 }
 
+// While alive, this process's files are limited to `bytes`: writes past it fail (EFBIG) as they
+// would on a full disk, SIGXFSZ ignored meanwhile.
+class FileSizeLimit {
+ public:
+  explicit FileSizeLimit(rlim_t bytes) {
+    REQUIRE(getrlimit(RLIMIT_FSIZE, &mBefore) == 0);
+    mHandler = std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{bytes, mBefore.rlim_max};
+    REQUIRE(setrlimit(RLIMIT_FSIZE, &limit) == 0);
+  }
+  ~FileSizeLimit() {
+    setrlimit(RLIMIT_FSIZE, &mBefore);
+    std::signal(SIGXFSZ, mHandler);
+  }
+  FileSizeLimit(const FileSizeLimit&) = delete;
+  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
+
+ private:
+  rlimit mBefore{};
+  void (*mHandler)(int) = SIG_DFL;
+};
+
+// Both line outputs in `dir`, as files of `format` ("gpkg", "shp", ...).
+QVariantMap outputsAs(const QTemporaryDir& dir, const char* format) {
+  return {{"FACTUAL", dir.filePath(QStringLiteral("factual.%1").arg(format))},
+          {"FORMULATED", dir.filePath(QStringLiteral("formulated.%1").arg(format))}};
+}
+
 // Runs the core directly on the same file through the CLI's GDAL reader, as the CLI does.
 SilhouetteResult coreResult(const QString& file, double azimuth, Geometry geometry) {
   io::DemOptions options;
@@ -320,19 +348,12 @@ TEST_CASE("a disk that fills up fails the run in every format and leaves no file
   // The GeoJSON, KML, GML and CSV drivers ignore failed writes: QGIS reported such cut-off
   // files as written.
   QTemporaryDir dir;
-  rlimit before{};
-  REQUIRE(getrlimit(RLIMIT_FSIZE, &before) == 0);
-  const auto previous = std::signal(SIGXFSZ, SIG_IGN);
   for (const char* format : {"geojson", "kml", "gml", "csv", "gpkg", "shp", "fgb"}) {
     CAPTURE(format);
-    const rlimit limit{64 * 1024, before.rlim_max};
-    REQUIRE(setrlimit(RLIMIT_FSIZE, &limit) == 0);
-    const Run run =
-        runAlgorithm(kData + "/jacksboro_utm16n.tif",
-                     {{"FACTUAL", dir.filePath(QStringLiteral("factual.%1").arg(format))},
-                      {"FORMULATED", dir.filePath(QStringLiteral("formulated.%1").arg(format))}},
-                     dir);
-    REQUIRE(setrlimit(RLIMIT_FSIZE, &before) == 0);
+    const Run run = [&] {
+      const FileSizeLimit full(64 * 1024);
+      return runAlgorithm(kData + "/jacksboro_utm16n.tif", outputsAs(dir, format), dir);
+    }();
     INFO(run.error.toStdString());
     CHECK_FALSE(run.ok);
     const QStringList left = QDir(dir.path()).entryList(QDir::Files | QDir::Hidden);
@@ -340,15 +361,10 @@ TEST_CASE("a disk that fills up fails the run in every format and leaves no file
     CHECK(left.isEmpty());
     for (const QString& file : left) QFile::remove(dir.filePath(file));
   }
-  std::signal(SIGXFSZ, previous);
   // Without the limit each of them is written whole.
   for (const char* format : {"geojson", "kml", "gml", "csv"}) {
     CAPTURE(format);
-    const Run run =
-        runAlgorithm(kData + "/jacksboro_utm16n.tif",
-                     {{"FACTUAL", dir.filePath(QStringLiteral("factual.%1").arg(format))},
-                      {"FORMULATED", dir.filePath(QStringLiteral("formulated.%1").arg(format))}},
-                     dir);
+    const Run run = runAlgorithm(kData + "/jacksboro_utm16n.tif", outputsAs(dir, format), dir);
     INFO(run.error.toStdString());
     CHECK(run.ok);
   }
@@ -359,29 +375,23 @@ TEST_CASE("a disk that fills up fails a raster or page output and leaves no file
   // As above. GDAL writes a GeoTIFF's cached blocks as it closes it, where QGIS only logs the
   // failure: the runs succeeded with the first 64 kB of their raster.
   QTemporaryDir dir;
-  rlimit before{};
-  REQUIRE(getrlimit(RLIMIT_FSIZE, &before) == 0);
-  const auto previous = std::signal(SIGXFSZ, SIG_IGN);
   for (const char* id : {"classification", "rowslope", "filterdiagram"}) {
     CAPTURE(id);
-    const rlimit limit{16 * 1024, before.rlim_max};
-    REQUIRE(setrlimit(RLIMIT_FSIZE, &limit) == 0);
-    const QVariantMap page{{"OUTPUT", dir.filePath("out.html")}};
-    const Run run =
-        runAlgorithm(kData + "/jacksboro_utm16n.tif",
-                     id == std::string("filterdiagram") ? page : QVariantMap(), dir, nullptr, id);
-    REQUIRE(setrlimit(RLIMIT_FSIZE, &before) == 0);
+    const QVariantMap output = id == std::string("filterdiagram")
+                                   ? QVariantMap{{"OUTPUT", dir.filePath("out.html")}}
+                                   : QVariantMap();
+    const Run run = [&] {
+      const FileSizeLimit full(16 * 1024);
+      return runAlgorithm(kData + "/jacksboro_utm16n.tif", output, dir, nullptr, id);
+    }();
     INFO(run.error.toStdString());
     CHECK_FALSE(run.ok);
     CHECK(run.error.contains("File too large"));
     CHECK(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
-    CHECK(runAlgorithm(kData + "/jacksboro_utm16n.tif",
-                       id == std::string("filterdiagram") ? page : QVariantMap(), dir, nullptr, id)
-              .ok);
+    CHECK(runAlgorithm(kData + "/jacksboro_utm16n.tif", output, dir, nullptr, id).ok);
     QFile::remove(dir.filePath("out.tif"));
     QFile::remove(dir.filePath("out.html"));
   }
-  std::signal(SIGXFSZ, previous);
 }
 
 TEST_CASE("strokes written before a cancel are removed with their files", "[plugin][outputs]") {
