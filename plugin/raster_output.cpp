@@ -49,20 +49,16 @@ class RasterOutput {
   static void write(const QString& path, Qgis::DataType type, const std::vector<const void*>& bands,
                     std::size_t bytesPerCell, std::size_t rows, std::size_t cols, double noData,
                     const QgsRectangle& extent, const QgsCoordinateReferenceSystem& crs) {
-    QString why;
-    {
+    try {
       const FirstGdalFailure failure;
-      try {
-        writeBands(path, type, bands, bytesPerCell, rows, cols, noData, extent, crs);
-      } catch (const QgsProcessingException&) {
-        deleteDataset(path);
-        throw;
+      writeBands(path, type, bands, bytesPerCell, rows, cols, noData, extent, crs);
+      if (failure.failed()) {
+        throw QgsProcessingException(
+            tr("Could not write the raster %1: %2").arg(path, failure.message()));
       }
-      if (failure.failed()) why = failure.message();
-    }
-    if (!why.isEmpty()) {
+    } catch (const QgsProcessingException&) {
       deleteDataset(path);
-      throw QgsProcessingException(tr("Could not write the raster %1: %2").arg(path, why));
+      throw;
     }
   }
 
