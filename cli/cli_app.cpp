@@ -261,14 +261,14 @@ class ProgressLine {
   void show(double fraction) {
     const int step = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * kSteps);
     if (step <= shown_) return;
-    for (++shown_; shown_ <= step; ++shown_) {
+    while (shown_ < step) {
+      ++shown_;
       if (shown_ % 4 == 0) {
         err_ << shown_ / 4 * 10;
       } else {
         err_ << '.';
       }
     }
-    shown_ = step;
     if (step == kSteps) err_ << " - done.\n";
     err_.flush();
   }

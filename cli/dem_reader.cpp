@@ -162,6 +162,7 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
   // whole holes and edges when they are there.
   double range[2];
   GDALRasterBand& band = *dataset.GetRasterBand(options.band);
+  const double scale = band.GetScale(), offset = band.GetOffset();
   CPLErrorReset();
   GDALComputeRasterMinMax(&band, TRUE, range);
   const bool have_range = CPLGetLastErrorType() < CE_Failure;
@@ -171,7 +172,7 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
                  "(gdal_edit.py -a_nodata " +
                  number_text(range[0]) + " INPUT)\n";
   } else if (have_range) {
-    const double relief = std::fabs(band.GetScale()) * (range[1] - range[0]);
+    const double relief = std::fabs(scale) * (range[1] - range[0]);
     const double across = std::max(static_cast<double>(dem.cols) * dem.geotransform.a[1],
                                    static_cast<double>(dem.rows) * -dem.geotransform.a[5]) *
                           dem.ground_scale;
@@ -182,9 +183,9 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
     }
   }
 
-  if (band.GetScale() != 1.0 || band.GetOffset() != 0.0) {
-    dem.notes += "heights are the band's values x " + number_text(band.GetScale()) + " + " +
-                 number_text(band.GetOffset()) + ", its scale and offset\n";
+  if (scale != 1.0 || offset != 0.0) {
+    dem.notes += "heights are the band's values x " + number_text(scale) + " + " +
+                 number_text(offset) + ", its scale and offset\n";
   }
 
   const double dx = dem.geotransform.a[1] * dem.ground_scale;

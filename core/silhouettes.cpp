@@ -311,9 +311,9 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
       add_counts(counts, st.result.stats);
     });
   };
-  auto link = [&st, &seconds, &merge](std::vector<Collected>& batch) {
+  auto link = [&st, &seconds, &merge](const std::vector<Collected>& batch) {
     const auto start = Clock::now();
-    for (Collected& c : batch) {
+    for (const Collected& c : batch) {
       st.link(st.factual, c.factual, c.factual_cells);
       st.link(st.formulated, c.formulated, c.formulated_cells);
     }
@@ -328,7 +328,7 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
   for (std::size_t b0 = 0; b0 < count; b0 += batch_profiles) {
     const std::size_t next = b0 + batch_profiles;
     // get() rethrows what linking threw; if collecting throws, the future waits for the linker.
-    std::future<void> linked = std::async(launch, link, std::ref(linking));
+    std::future<void> linked = std::async(launch, link, std::cref(linking));
     if (next < count) collect(next, collecting);
     linked.get();
     std::swap(linking, collecting);
