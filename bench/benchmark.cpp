@@ -20,9 +20,6 @@
 #ifdef TSK_BENCH_WITH_GDAL
 #include <gdal_priv.h>
 
-#include <sstream>
-
-#include "cli_app.h"
 #include "dem_reader.h"
 #endif
 
@@ -130,6 +127,17 @@ void write_geotiff(const std::string& path, const tsk::HeightGrid& dem) {
     std::fprintf(stderr, "cannot write %s\n", path.c_str());
   }
   GDALClose(ds);
+}
+
+// What `command` writes on stderr (its stdout dropped).
+std::string command_stderr(const std::string& command) {
+  std::string text;
+  if (FILE* pipe = popen((command + " 2>&1 > /dev/null").c_str(), "r")) {
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe)) text += buffer;
+    pclose(pipe);
+  }
+  return text;
 }
 
 // Processor time (user and system) of the finished child processes so far.
@@ -316,9 +324,7 @@ void bench_size(std::size_t n, bool with_gdaldem) {
         "cores the CLI could take no less than %.3f s = %.2f x the hillshade\n",
         median(cli_cpu), median(hillshade_cpu), cores, median(cli_cpu) / cores,
         median(cli_cpu) / cores / median(hillshade));
-    std::ostringstream out, err;
-    tsk::cli::run({"silhouettes", tif, dir + "/out.gpkg", "--timings"}, out, err);
-    std::printf("  CLI %s", err.str().c_str());
+    std::printf("  CLI %s", command_stderr(silhouettes + " --timings").c_str());
     std::system(("rm -rf " + dir).c_str());
   }
 #else
@@ -392,6 +398,13 @@ int main(int argc, char** argv) {
     const std::string a = argv[k];
     if (a == "--gdaldem") {
       with_gdaldem = true;
+#ifdef TSK_BENCH_WITH_GDAL
+    } else if (a == "--write-dem" && k + 2 < argc) {
+      // The synthetic DEM of the benchmark as a GeoTIFF, for comparing outputs across changes.
+      const std::size_t n = std::stoul(argv[k + 2]);
+      write_geotiff(argv[k + 1], synthetic_dem(n, n));
+      return 0;
+#endif
     } else if (a == "--sizes" && k + 1 < argc) {
       sizes.clear();
       std::string list = argv[++k];
@@ -401,7 +414,9 @@ int main(int argc, char** argv) {
         pos = comma == std::string::npos ? list.size() : comma + 1;
       }
     } else {
-      std::fprintf(stderr, "usage: tsk_benchmark [--sizes 4000,8000] [--gdaldem]\n");
+      std::fprintf(
+          stderr,
+          "usage: tsk_benchmark [--sizes 4000,8000] [--gdaldem] | --write-dem FILE.tif N\n");
       return 2;
     }
   }

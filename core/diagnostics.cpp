@@ -17,16 +17,11 @@ Grid<T> to_dem_grid(const OrientedFrame& frame, T outside, F value) {
         out(frame.dem_row(p, i), frame.dem_col(p, i)) = value(p, i);
     return out;
   }
-  // Invert the affine pixel map: pixel - origin = A (p, s).
-  const double a = frame.px_col_per_p, b = frame.px_col_per_i;
-  const double c = frame.px_row_per_p, d = frame.px_row_per_i;
-  const double det = a * d - b * c;
   for (std::size_t r = 0; r < frame.dem_rows; ++r) {
     for (std::size_t col = 0; col < frame.dem_cols; ++col) {
-      const double u = static_cast<double>(col) + 0.5 - frame.px_col0;
-      const double v = static_cast<double>(r) + 0.5 - frame.px_row0;
-      const double p = std::round((d * u - b * v) / det);
-      const double s = std::round((a * v - c * u) / det);
+      double p = 0, s = 0;
+      frame.from_pixel({static_cast<double>(col) + 0.5, static_cast<double>(r) + 0.5}, p, s);
+      p = std::round(p), s = std::round(s);
       if (p < 0 || s < 0 || p >= static_cast<double>(frame.profiles) ||
           s >= static_cast<double>(frame.length)) {
         continue;

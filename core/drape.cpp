@@ -5,13 +5,14 @@
 #include <limits>
 
 #include "errors.h"
+#include "plan_oblique.h"
 
 namespace tsk {
 
 PlanObliqueDrape::PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& flags,
                                    const OrientedFrame& frame, const ViewParams& view, double z_ref)
     : frame_(frame) {
-  const double k = view.ve / (view.base_slope() * frame.d);
+  const PlanObliqueShift shift(view, frame.d, z_ref);
   // Plan-oblique positions along each profile. Visible cells have non-decreasing transformed
   // height, so their positions i + k (z - z_ref) are sorted.
   std::vector<std::vector<double>> position(frame.profiles);
@@ -21,7 +22,7 @@ PlanObliqueDrape::PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& 
     for (std::size_t i = 0; i < frame.length; ++i) {
       const std::uint8_t f = flags(p, i);
       if (!(f & cell::valid) || (f & cell::hidden)) continue;
-      const double s = static_cast<double>(i) + k * (static_cast<double>(oriented(p, i)) - z_ref);
+      const double s = shift(static_cast<double>(i), static_cast<double>(oriented(p, i)));
       position[p].push_back(s);
       cell[p].push_back(static_cast<std::int64_t>(p * frame.length + i));
       const PixelPoint px = frame.to_pixel(static_cast<double>(p), s);
@@ -43,18 +44,13 @@ PlanObliqueDrape::PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& 
         "exaggeration or raise the base slope");
   }
   source_cell_.assign(checked_cell_count(rows_, cols_), -1);
-  // Invert the affine pixel map to find each output cell's profile and position.
-  const double a = frame.px_col_per_p, b = frame.px_col_per_i;
-  const double c = frame.px_row_per_p, d = frame.px_row_per_i;
-  const double det = a * d - b * c;
   for (std::size_t r = 0; r < rows_; ++r) {
     for (std::size_t col = 0; col < cols_; ++col) {
-      const double u =
-          static_cast<double>(col0_ + static_cast<std::int64_t>(col)) + 0.5 - frame.px_col0;
-      const double v =
-          static_cast<double>(row0_ + static_cast<std::int64_t>(r)) + 0.5 - frame.px_row0;
-      const double pf = std::round((d * u - b * v) / det);
-      const double s = (a * v - c * u) / det;
+      double pf = 0, s = 0;
+      frame.from_pixel({static_cast<double>(col0_ + static_cast<std::int64_t>(col)) + 0.5,
+                        static_cast<double>(row0_ + static_cast<std::int64_t>(r)) + 0.5},
+                       pf, s);
+      pf = std::round(pf);
       if (pf < 0 || pf >= static_cast<double>(frame.profiles)) continue;
       const auto& pos = position[static_cast<std::size_t>(pf)];
       if (pos.empty() || s < pos.front() - 0.5 || s > pos.back() + 0.5) continue;

@@ -1,6 +1,7 @@
 // Runs independent profile ranges on several threads, with progress and cancellation.
 #pragma once
 
+#include <algorithm>
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -8,6 +9,7 @@
 #include <future>
 #include <mutex>
 #include <thread>
+#include <utility>
 
 namespace tsk {
 
@@ -48,5 +50,26 @@ class Worker {
   bool stopping_ = false;
   std::thread thread_;  // not started without threads
 };
+
+// Runs the batches [0, size), [size, 2 size), ... of `count` items through two steps in order:
+// collect(first, batch) fills a Batch (in parallel, as it likes), then link(batch) takes it, on a
+// thread of its own when `overlap`, while the next batch is collected; after(done) follows each
+// link with the number of items done. What link throws is rethrown; if collect throws, the
+// linking in flight finishes first.
+template <typename Batch, typename Collect, typename Link, typename After>
+void pipeline_batches(std::size_t count, std::size_t size, bool overlap, Collect&& collect,
+                      Link&& link, After&& after) {
+  const auto launch = overlap ? std::launch::async : std::launch::deferred;
+  Batch linking, collecting;
+  collect(std::size_t{0}, linking);
+  for (std::size_t first = 0; first < count; first += size) {
+    const std::size_t next = first + size;
+    std::future<void> linked = std::async(launch, [&link, &linking] { link(linking); });
+    if (next < count) collect(next, collecting);
+    linked.get();
+    std::swap(linking, collecting);
+    after(std::min(next, count));
+  }
+}
 
 }  // namespace tsk

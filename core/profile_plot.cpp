@@ -1,21 +1,16 @@
 #include "profile_plot.h"
 
 #include "errors.h"
+#include "plan_oblique.h"
 
 namespace tsk {
-
-double lowest_height(const HeightGrid& z) {
-  LowestHeight lowest;
-  lowest.add(z.data(), z.size());
-  return lowest.value();
-}
 
 std::vector<ProfileLine> profile_plot(const HeightGrid& oriented, const CellFlags& flags,
                                       const OrientedFrame& frame, const ViewParams& view,
                                       const GeoTransform& geotransform, std::size_t every_n,
                                       double z_ref) {
   if (every_n == 0) throw Error("the profile plot needs a step of at least one cross-section");
-  const double cells_per_metre = view.ve / (view.base_slope() * frame.d);
+  const PlanObliqueShift shift(view, frame.d, z_ref);
   std::vector<ProfileLine> lines;
   for (std::size_t i = 0; i < frame.length; i += every_n) {
     ProfileLine piece;
@@ -31,8 +26,7 @@ std::vector<ProfileLine> profile_plot(const HeightGrid& oriented, const CellFlag
         flush();
         continue;
       }
-      const double shifted =
-          static_cast<double>(i) + cells_per_metre * (static_cast<double>(oriented(p, i)) - z_ref);
+      const double shifted = shift(static_cast<double>(i), static_cast<double>(oriented(p, i)));
       StrokePoint pt{};
       geotransform.apply(frame.to_pixel(static_cast<double>(p), shifted), pt.x, pt.y);
       piece.points.push_back(pt);

@@ -24,7 +24,4 @@ std::vector<ProfileLine> profile_plot(const HeightGrid& oriented, const CellFlag
                                       const GeoTransform& geotransform, std::size_t every_n,
                                       double z_ref);
 
-// The lowest valid height of a grid, 0 when there is none (the plan-oblique reference).
-double lowest_height(const HeightGrid& z);
-
 }  // namespace tsk

@@ -5,6 +5,7 @@
 
 #include "errors.h"
 #include "parallel.h"
+#include "plan_oblique.h"
 
 namespace tsk {
 
@@ -104,16 +105,15 @@ std::vector<PStroke> pstroke_sketch(const HeightGrid& z, const CellFlags& flags,
       score_line(
           P, frame.w, z, [&](std::size_t p) { return p * L + i; }, row);
   });
-  const double cells_per_metre = view.ve / (view.base_slope() * frame.d);
+  const PlanObliqueShift shift(view, frame.d, z_ref);
   auto drawable = [&](std::size_t p, std::size_t i) {
     const std::uint8_t f = flags(p, i);
     return (f & cell::valid) && !(f & cell::hidden) && !(f & cell::filtered);
   };
   auto point = [&](std::size_t p, std::size_t i) {
-    double s = static_cast<double>(i);
-    if (geometry == Geometry::oblique) {
-      s += cells_per_metre * (static_cast<double>(z(p, i)) - z_ref);
-    }
+    const double s = geometry == Geometry::oblique
+                         ? shift(static_cast<double>(i), static_cast<double>(z(p, i)))
+                         : static_cast<double>(i);
     StrokePoint pt{};
     geotransform.apply(frame.to_pixel(static_cast<double>(p), s), pt.x, pt.y);
     return pt;

@@ -7,45 +7,17 @@
 #include <optional>
 #include <vector>
 
+#include "dem_windows.h"
 #include "flags.h"
+#include "geotransform.h"
+#include "memory_budget.h"
 #include "orient.h"
 #include "parallel.h"
 #include "params.h"
+#include "stage_stats.h"
 #include "strokes.h"
 
 namespace tsk {
-
-// Cell counts of each stage (SPEC 2); shares are of the valid cells.
-struct StageStats {
-  std::size_t valid = 0;
-  std::size_t hidden = 0;
-  std::size_t occluding = 0;
-  std::size_t candidate = 0;    // c-set
-  std::size_t filtered = 0;     // f-set
-  std::size_t thinned = 0;      // t-set
-  std::size_t generalised = 0;  // g-set: cells of kept strokes, factual and formulated
-  std::size_t factual_strokes = 0;
-  std::size_t formulated_strokes = 0;
-  double pct(std::size_t n) const { return valid ? 100.0 * static_cast<double>(n) / valid : 0.0; }
-};
-
-// The figures of SPEC 2 under their report keys (hidden_pct ... gset_pct in percent of valid
-// cells, then factual_strokes and formulated_strokes), in report order.
-struct StageFigure {
-  const char* key;
-  double value;
-  bool is_count;
-};
-std::vector<StageFigure> stage_figures(const StageStats& stats);
-
-// Wall time of each stage, seconds. The stages run profile by profile, interleaved, so the
-// wall time of the whole is split between them by their shares of the threads' time.
-struct StageTimings {
-  double visibility = 0, candidates = 0, filter = 0, thinning = 0, chaining = 0, strokes = 0;
-  // Turning the DEM strip by strip (run_resampled_silhouettes), each strip while the stages work
-  // on the one before: time alongside the stages, not added to them.
-  double resampling = 0;
-};
 
 struct SilhouetteResult {
   std::vector<Stroke> strokes;  // factual first, then formulated
@@ -97,16 +69,23 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
                                const ProfileReader& read, const ProgressFn& progress = {},
                                StrokeSink sink = {});
 
-// True when turning a whole DEM for this view and classifying it would take more than half of
-// this machine's memory: the turned grid at 5 bytes a cell and, resampled, the DEM beside it at 4.
-// Reading that much could not fail cleanly: memory is promised freely and taken at first use.
-bool too_large_to_turn_whole(const OrientedFrame& frame);
+// A DEM to read window by window (row 0 north, NaN for nodata) for a view: a raster file through
+// GDAL, a QGIS layer through its provider, a grid in memory.
+struct DemSource {
+  OrientedFrame frame;  // the view on the DEM (make_frame)
+  GeoTransform geotransform;
+  WindowReader read;
+};
 
-// Profiles per strip for a strip-by-strip run of this view: 1024, more for profiles under 1024
-// cells (1 Mi cells a strip, up to 65536 profiles), fewer for profiles so long that a run's
-// strips (two of heights, the classification and, resampled, the band: 9 or 13 bytes a cell)
-// would pass 512 MiB, at least 16.
-std::size_t strip_profiles(const OrientedFrame& frame);
+// The whole method on a DEM read window by window: what the front ends call. It decides the
+// memory a run takes (strips of `strip` profiles, 0: strip_profiles()), reads the next strip while
+// the stages work on this one, and for plan-oblique geometry first reads the DEM once for its
+// lowest height. Strokes go to `sink` as they complete (the result holds none) or, without one,
+// into the result. Throws Error on bad parameters or what `read` throws, Cancelled when
+// `progress` returns false.
+SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams& params,
+                                    std::size_t strip = 0, const ProgressFn& progress = {},
+                                    StrokeSink sink = {});
 
 // Runs every stage on an oriented grid (see orient.h). z_ref is the DEM's lowest height, the
 // plan-oblique reference; without it the grid's lowest height stands in (in oblique geometry),

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "candidates.h"
+#include "plan_oblique.h"
 #include "slope_filter.h"
 #include "visibility.h"
 
@@ -58,7 +59,7 @@ StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, b
   ctx.geotransform.apply(ctx.frame.to_pixel(static_cast<double>(p), along), c.map.x, c.map.y);
   c.point = c.map;
   if (ctx.geometry == Geometry::oblique) {
-    const double shifted = along + ctx.view.ve / (ctx.view.base_slope() * d) * (c.z - ctx.z_ref);
+    const double shifted = PlanObliqueShift(ctx.view, d, ctx.z_ref)(along, c.z);
     ctx.geotransform.apply(ctx.frame.to_pixel(static_cast<double>(p), shifted), c.point.x,
                            c.point.y);
   }

@@ -1,26 +1,16 @@
 // Stage 7 (SPEC 1.8, 1.9): chains to strokes with attributes, in map or plan-oblique geometry.
 #pragma once
 
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "chaining.h"
+#include "geotransform.h"
 #include "orient.h"
 #include "params.h"
 
 namespace tsk {
-
-// GDAL-style affine georeferencing: x = a0 + col * a1 + row * a2, y = a3 + col * a4 + row * a5,
-// where (col, row) is a DEM pixel position (cell corners at integers).
-struct GeoTransform {
-  std::array<double, 6> a{0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
-  void apply(const PixelPoint& px, double& x, double& y) const {
-    x = a[0] + px.col * a[1] + px.row * a[2];
-    y = a[3] + px.col * a[4] + px.row * a[5];
-  }
-};
 
 enum class StrokeClass : std::uint8_t { factual, formulated };
 const char* stroke_class_name(StrokeClass cls);

@@ -1,13 +1,16 @@
 // Terrain Sketch core: Factual and Formulated Silhouettes of a DEM seen obliquely from above.
 // Table of contents, one line per stage (SPEC section in brackets):
 //
-//   orient.h          [1.1] DEM -> oriented grid g[p][i]: profiles left to right, cells front to
-//   back visibility.h      [1.2] transformed heights, hidden cells, occluding cells, hidden zones
+//   orient.h          [1.1] DEM -> oriented grid g[p][i]: profiles left to right, cells front
+//                     to back; frame.h (the view's map to DEM pixels), resample.h (bilinear,
+//                     non-cardinal views), dem_windows.h (reading a DEM window by window)
+//   visibility.h      [1.2] transformed heights, hidden cells, occluding cells, hidden zones
 //   candidates.h      [1.3, 1.4] column slopes, the candidate set (c-set)
 //   slope_filter.h    [1.3, 1.5] row slopes, the slope filter (f-set)
 //   thinning.h        [1.6] thinning rules (a) and (b) (t-set)
 //   chaining.h        [1.7] factual and formulated chainers
 //   strokes.h         [1.8, 1.9] strokes, attributes, generalisation, map/oblique geometry
+//   plan_oblique.h    [1.9] the plan-oblique shift and its reference height
 //   silhouettes.h     [2] all stages in order with stage statistics and timings
 //
 // Applications and diagnostics:
@@ -34,6 +37,7 @@
 #include "orient.h"
 #include "parallel.h"
 #include "params.h"
+#include "plan_oblique.h"
 #include "profile_plot.h"
 #include "pstrokes.h"
 #include "silhouettes.h"

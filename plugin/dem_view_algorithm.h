@@ -73,9 +73,6 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   // and a layer added to the GeoPackage being read would race the reads.
   void refuseClashingOutputs(const QVariantMap& parameters, QgsProcessingContext& context) const;
 
-  // For QGIS's own messages on a sink that cannot be made or written (protected in QGIS).
-  friend class LineOutput;
-
   std::unique_ptr<RasterGrid> mRaster;
   double mAzimuth = 90;
   std::size_t mWritten = 0;

@@ -15,13 +15,19 @@
 #include <exception>
 
 #include "core_errors.h"
-#include "dem_view_algorithm.h"
 #include "gpkg_line_sink.h"
 #include "qgis_compat.h"
 #include "stroke_features.h"
 
 namespace tsk::plugin {
 namespace {
+
+// QGIS's own messages for a sink that cannot be made or written, which it keeps protected for the
+// algorithms: reached through a class of its own, never made, rather than a friend.
+struct SinkErrors : QgsProcessingAlgorithm {
+  using QgsProcessingAlgorithm::invalidSinkError;
+  using QgsProcessingAlgorithm::writeFeatureError;
+};
 
 // Where an output destination puts its layer on disk: see destinationFile().
 struct FileTarget {
@@ -96,7 +102,7 @@ QString destinationFile(const QString& target) {
   return target;
 }
 
-LineOutput::LineOutput(const DemViewAlgorithm& algorithm, const QVariantMap& parameters,
+LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
                        const QString& key, QgsProcessingContext& context, const QgsFields& fields,
                        const QgsCoordinateReferenceSystem& crs)
     : mParameters(parameters),
@@ -113,7 +119,7 @@ LineOutput::LineOutput(const DemViewAlgorithm& algorithm, const QVariantMap& par
       definition, parameters, fields, kLineString, crs, context, mDestination,
       QgsFeatureSink::SinkFlags(), QVariantMap(), QStringList(),
       gpkg ? QStringList{QStringLiteral("SPATIAL_INDEX=NO")} : QStringList()));
-  if (!mSink) throw QgsProcessingException(DemViewAlgorithm::invalidSinkError(parameters, key));
+  if (!mSink) throw QgsProcessingException(SinkErrors::invalidSinkError(parameters, key));
   const QVariantMap parts =
       QgsProviderRegistry::instance()->decodeUri(QStringLiteral("ogr"), mDestination);
   if (!file.path.isEmpty()) {
@@ -165,7 +171,7 @@ void LineOutput::finish() {
 }
 
 void LineOutput::failWriting() const {
-  throw QgsProcessingException(DemViewAlgorithm::writeFeatureError(mSink.get(), mParameters, mKey));
+  throw QgsProcessingException(SinkErrors::writeFeatureError(mSink.get(), mParameters, mKey));
 }
 
 void LineOutput::discard() noexcept {

@@ -10,6 +10,7 @@
 #include <qgsfeature.h>
 #include <qgsfeaturesink.h>
 #include <qgsfields.h>
+#include <qgsprocessingalgorithm.h>
 #include <qgsprocessingcontext.h>
 
 #include <QCoreApplication>
@@ -22,7 +23,6 @@
 
 namespace tsk::plugin {
 
-class DemViewAlgorithm;
 class GpkgLineSink;
 
 // The file an output destination writes, as QGIS reads the destination: "ogr:" with a database
@@ -39,8 +39,8 @@ class LineOutput {
  public:
   // Line output `key` of `algorithm` with `fields`, in `crs`. Throws QgsProcessingException with
   // QGIS's message when the destination cannot be created.
-  LineOutput(const DemViewAlgorithm& algorithm, const QVariantMap& parameters, const QString& key,
-             QgsProcessingContext& context, const QgsFields& fields,
+  LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
+             const QString& key, QgsProcessingContext& context, const QgsFields& fields,
              const QgsCoordinateReferenceSystem& crs);
   ~LineOutput();
   LineOutput(const LineOutput&) = delete;

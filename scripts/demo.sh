@@ -8,8 +8,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh qgis
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTSK_BUILD_PLUGIN=ON -DTSK_BUILD_TESTS=OFF \
-  -DTSK_BUILD_BENCH=OFF > /dev/null
+# Every option is set, so that a build folder configured otherwise before gives this build.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTSK_BUILD_CLI=ON -DTSK_BUILD_PLUGIN=ON \
+  -DTSK_BUILD_TESTS=OFF -DTSK_BUILD_BENCH=OFF -DTSK_SANITIZE=OFF -DTSK_FUZZ=OFF > /dev/null
 cmake --build build -j "$(nproc)"
 cmake --build build --target install-plugin
 mkdir -p out

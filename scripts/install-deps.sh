@@ -3,7 +3,8 @@
 # Usage: scripts/install-deps.sh [core|qgis]   (core: library, CLI and tests; qgis: plus the plugin)
 set -euo pipefail
 what=${1:-core}
-packages=(build-essential cmake catch2 libgdal-dev libsqlite3-dev gdal-bin clang libclang-rt-dev)
+packages=(build-essential cmake catch2 libgdal-dev libsqlite3-dev gdal-bin clang libclang-rt-dev
+  clang-format git)
 if [ "$what" = qgis ]; then
   packages+=(libqgis-dev qgis qgis-providers qttools5-dev-tools qttools5-dev xvfb xauth)
 fi

@@ -11,8 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "cli_app.h"
-
 namespace tsk::test {
 
 namespace fs = std::filesystem;
@@ -32,17 +30,6 @@ struct ScratchDir {
         std::distance(fs::directory_iterator(path), fs::directory_iterator{}));
   }
 };
-
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-
-inline CliRun run_cli(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = cli::run(args, out, err);
-  return {code, out.str(), err.str()};
-}
 
 // Writes a GeoTIFF of `bands` bands filled by f(band, row, col), with an optional geotransform,
 // EPSG code (0: none) and nodata value (NaN: none).

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <thread>
 
+#include "cli_run.h"
 #include "dem_reader.h"
 #include "gdal_test_support.h"
 #include "gdal_util.h"

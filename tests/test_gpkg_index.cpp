@@ -8,6 +8,7 @@
 #include <random>
 #include <set>
 
+#include "cli_run.h"
 #include "gdal_test_support.h"
 #include "gpkg_index_check.h"
 #include "gpkg_spatial_index.h"

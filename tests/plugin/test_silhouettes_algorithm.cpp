@@ -34,6 +34,7 @@
 #include "drape.h"
 #include "gdal_test_support.h"
 #include "gpkg_index_check.h"
+#include "plan_oblique.h"
 #include "profile_plot.h"
 #include "provider.h"
 #include "pstrokes.h"

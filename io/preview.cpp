@@ -9,6 +9,7 @@
 
 #include "gdal_util.h"
 #include "output_files.h"
+#include "plan_oblique.h"
 
 namespace tsk::io {
 namespace {
@@ -63,8 +64,8 @@ class Canvas {
 void write_preview(const std::string& path, const SilhouetteResult& result, const HeightGrid& z,
                    const OrientedFrame& frame, const ViewParams& view,
                    const PreviewOptions& options) {
-  // Profile plot coordinates: x across the view, y = distance + (ve / B) * height, far side up.
-  const double rise = view.ve / view.base_slope();
+  // Profile plot coordinates: x across the view, y the plan-oblique position along it (from the
+  // lowest height), far side up.
   double z_min = std::numeric_limits<double>::infinity();
   double z_max = -z_min;
   for (std::size_t k = 0; k < z.size(); ++k) {
@@ -75,7 +76,8 @@ void write_preview(const std::string& path, const SilhouetteResult& result, cons
   }
   if (!std::isfinite(z_min)) z_min = z_max = 0.0;
   const double plot_w = std::max(frame.w, static_cast<double>(frame.profiles) * frame.w);
-  const double plot_h = static_cast<double>(frame.length) * frame.d + rise * (z_max - z_min);
+  const PlanObliqueShift shift(view, frame.d, z_min);
+  const double plot_h = shift(static_cast<double>(frame.length), z_max) * frame.d;
   const int margin = 10;
   const int width = std::clamp(options.width_px, 64, 20000);
   const double scale = (width - 2.0 * margin) / plot_w;
@@ -86,7 +88,7 @@ void write_preview(const std::string& path, const SilhouetteResult& result, cons
     const double zc =
         static_cast<double>(z(static_cast<std::size_t>(c.p), static_cast<std::size_t>(c.i)));
     sx = margin + (c.p + 0.5) * frame.w * scale;
-    sy = height - margin - ((c.i + 0.5) * frame.d + rise * (zc - z_min)) * scale;
+    sy = height - margin - shift(c.i + 0.5, zc) * frame.d * scale;
   };
   // Formulated first so factual strokes stay on top.
   for (StrokeClass cls : {StrokeClass::formulated, StrokeClass::factual}) {

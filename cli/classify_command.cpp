@@ -1,0 +1,29 @@
+// terrain-sketch classify: the stage of every DEM cell as a GeoTIFF.
+#include <ostream>
+
+#include "command_support.h"
+#include "commands.h"
+#include "diagnostics.h"
+#include "interrupt.h"
+#include "raster_writer.h"
+
+namespace tsk::cli {
+
+int classify(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress) {
+  const Options o = parse(args);
+  require_geotiff(o.output);
+  const io::Dem dem = load_dem(o, err);
+  const SilhouetteResult result =
+      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params, progress);
+  stop_if_interrupted();
+  io::write_classification(o.output, classification_map(result.flags, dem.frame), dem.geotransform,
+                           dem.srs_wkt);
+  if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
+  const StageStats& s = result.stats;
+  out << o.output << ": hidden " << s.pct(s.hidden) << " %, occluding " << s.pct(s.occluding)
+      << " %, c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered) << " %, t-set "
+      << s.pct(s.thinned) << " %\n";
+  return 0;
+}
+
+}  // namespace tsk::cli

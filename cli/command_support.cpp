@@ -1,0 +1,50 @@
+#include "command_support.h"
+
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "errors.h"
+#include "output_files.h"
+
+namespace tsk::cli {
+
+io::Dem load_dem(const Options& o, std::ostream& err) {
+  io::Dem dem = io::read_dem(o.input, o.dem);
+  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  return dem;
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  io::write_atomically(path, [&](const std::filesystem::path& staged) {
+    std::ofstream f(staged);
+    f << text;
+    f.close();
+    if (!f) throw Error("cannot write '" + path + "'");
+  });
+}
+
+std::string stats_json(const StageStats& s) {
+  std::ostringstream j;
+  j.precision(6);
+  j << std::fixed << "{\n  \"valid_cells\": " << s.valid;
+  for (const StageFigure& f : stage_figures(s)) {
+    j << ",\n  \"" << f.key << "\": ";
+    if (f.is_count) {
+      j << static_cast<long long>(f.value);
+    } else {
+      j << f.value;
+    }
+  }
+  j << "\n}\n";
+  return j.str();
+}
+
+void require_geotiff(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".tif" && ext != ".tiff") throw Error("the output raster must be a GeoTIFF (.tif)");
+}
+
+}  // namespace tsk::cli

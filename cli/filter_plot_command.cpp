@@ -1,0 +1,30 @@
+// terrain-sketch filter-plot: the slope filter diagram as an HTML page.
+#include <filesystem>
+#include <ostream>
+
+#include "command_support.h"
+#include "commands.h"
+#include "filter_diagram.h"
+#include "interrupt.h"
+
+namespace tsk::cli {
+
+int filter_plot(const Args& args, std::ostream& out, std::ostream& err,
+                const ProgressFn& progress) {
+  const Options o = parse(args);
+  const io::Dem dem = load_dem(o, err);
+  const SilhouetteResult result =
+      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params, progress);
+  stop_if_interrupted();
+  const double range = diagram_range_pct(o.params.filter);
+  const SlopeScatter scatter =
+      slope_scatter(dem.oriented, result.flags, dem.frame.d, dem.frame.w, range);
+  write_text(o.output, filter_diagram_html(
+                           scatter, o.params.filter,
+                           "Slope filter: " + std::filesystem::path(o.input).filename().string()));
+  out << o.output << ": c-set " << result.stats.pct(result.stats.candidate) << " %, f-set "
+      << result.stats.pct(result.stats.filtered) << " %\n";
+  return 0;
+}
+
+}  // namespace tsk::cli

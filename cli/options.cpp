@@ -1,0 +1,156 @@
+#include "options.h"
+
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <iterator>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+#include "errors.h"
+#include "output_files.h"
+
+namespace tsk::cli {
+namespace {
+
+// Parses a whole number or a finite decimal, refusing trailing junk.
+double parse_number(const std::string& option, const std::string& text) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::out_of_range&) {
+    throw Error(option + " got '" + text + "', too large or too small a number");
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || used == 0) throw Error(option + " needs a number, got '" + text + "'");
+  return value;
+}
+
+int parse_int(const std::string& option, const std::string& text) {
+  const double value = parse_number(option, text);
+  // The range first: converting a double beyond an integer's range is undefined.
+  if (!(value >= -1e9 && value <= 1e9) || value != std::trunc(value)) {
+    throw Error(option + " needs a whole number from -1000000000 to 1000000000, got '" + text +
+                "'");
+  }
+  return static_cast<int>(value);
+}
+
+// True when paths a and b name one file: the same existing file, or the same path to be made.
+bool same_file(const std::string& a, const std::string& b) {
+  if (a.empty() || b.empty()) return false;
+  std::error_code ec;
+  if (std::filesystem::equivalent(a, b, ec)) return true;
+  const auto full_a = std::filesystem::weakly_canonical(a, ec);
+  if (ec) return false;
+  const auto full_b = std::filesystem::weakly_canonical(b, ec);
+  return !ec && full_a == full_b;
+}
+
+// Every output replaces its file whole, so an output named as an input would destroy it (a DEM
+// in a GeoPackage written over by its own strokes) and two outputs of one name would lose one.
+// Each output's folder must exist and be writable.
+void refuse_clashing_paths(const Options& o) {
+  const std::pair<const char*, const std::string*> outputs[] = {
+      {"OUTPUT", &o.output}, {"--stats-json", &o.stats_json}, {"--preview", &o.preview}};
+  const std::pair<const char*, const std::string*> inputs[] = {{"INPUT", &o.input},
+                                                               {"--source", &o.source}};
+  for (std::size_t k = 0; k < std::size(outputs); ++k) {
+    const auto& [name, path] = outputs[k];
+    // All the outputs can be written, or none is: the strokes are not left for a preview that
+    // then fails.
+    if (!path->empty()) io::check_output_path(*path);
+    for (const auto& [input_name, input] : inputs) {
+      if (same_file(*path, *input)) {
+        throw Error(std::string(name) + " '" + *path + "' names the " + input_name +
+                    " raster, which writing it would replace; choose another path");
+      }
+    }
+    for (std::size_t j = 0; j < k; ++j) {
+      if (same_file(*path, *outputs[j].second)) {
+        throw Error(std::string(name) + " '" + *path + "' names " + outputs[j].first +
+                    " too; choose another path");
+      }
+    }
+  }
+}
+
+}  // namespace
+
+Options parse(const std::vector<std::string>& args) {
+  Options o;
+  std::vector<std::string> positional;
+  using Setter = std::function<void(const std::string&, const std::string&)>;
+  const std::map<std::string, Setter> with_value = {
+      {"--azimuth", [&](auto& n, auto& v) { o.params.view.azimuth_deg = parse_number(n, v); }},
+      {"--ve", [&](auto& n, auto& v) { o.params.view.ve = parse_number(n, v); }},
+      {"--base-slope",
+       [&](auto& n, auto& v) { o.params.view.base_slope_pct = parse_number(n, v); }},
+      {"--row-cut", [&](auto& n, auto& v) { o.params.filter.row_cut_pct = parse_number(n, v); }},
+      {"--col-cut", [&](auto& n, auto& v) { o.params.filter.col_cut_pct = parse_number(n, v); }},
+      {"--ctrl", [&](auto& n, auto& v) { o.params.filter.ctrl_col_pct = parse_number(n, v); }},
+      {"--window", [&](auto& n, auto& v) { o.params.chain.window = parse_int(n, v); }},
+      {"--min-cells", [&](auto& n, auto& v) { o.params.chain.min_cells = parse_int(n, v); }},
+      {"--placement", [&](auto&, auto& v) { o.params.placement = parse_placement(v); }},
+      {"--geometry", [&](auto&, auto& v) { o.params.geometry = parse_geometry(v); }},
+      {"--band", [&](auto& n, auto& v) { o.dem.band = parse_int(n, v); }},
+      {"--cell-size", [&](auto& n, auto& v) { o.dem.cell_size = parse_number(n, v); }},
+      {"--threads",
+       [&](auto& n, auto& v) {
+         const int t = parse_int(n, v);
+         if (t < 0) throw Error("--threads must be 0 or more");
+         o.params.threads = static_cast<unsigned>(t);
+       }},
+      {"--format", [&](auto&, auto& v) { o.format = v; }},
+      {"--strips",
+       [&](auto& n, auto& v) {
+         o.strips = parse_int(n, v);
+         if (o.strips < 1) throw Error("--strips needs at least 1 profile per strip");
+       }},
+      {"--source", [&](auto&, auto& v) { o.source = v; }},
+      {"--convex-column",
+       [&](auto& n, auto& v) { o.pstrokes.convex_column_m2 = parse_number(n, v); }},
+      {"--concave-column",
+       [&](auto& n, auto& v) { o.pstrokes.concave_column_m2 = parse_number(n, v); }},
+      {"--convex-row", [&](auto& n, auto& v) { o.pstrokes.convex_row_m2 = parse_number(n, v); }},
+      {"--concave-row", [&](auto& n, auto& v) { o.pstrokes.concave_row_m2 = parse_number(n, v); }},
+      {"--half-length", [&](auto& n, auto& v) { o.pstrokes.half_length = parse_int(n, v); }},
+      {"--every",
+       [&](auto& n, auto& v) {
+         o.every = parse_int(n, v);
+         if (o.every < 1) throw Error("--every must be at least 1");
+       }},
+      {"--stats-json", [&](auto&, auto& v) { o.stats_json = v; }},
+      {"--preview", [&](auto&, auto& v) { o.preview = v; }},
+  };
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    const std::string& a = args[k];
+    if (a == "--no-diagonals") {
+      o.params.filter.diagonals = false;
+    } else if (a == "--subcell") {
+      o.params.subcell = true;
+    } else if (a == "--timings") {
+      o.timings = true;
+    } else if (auto it = with_value.find(a); it != with_value.end()) {
+      if (k + 1 >= args.size()) throw Error(a + " needs a value");
+      it->second(a, args[++k]);
+    } else if (a.size() > 1 && a[0] == '-' && !std::isdigit(static_cast<unsigned char>(a[1]))) {
+      throw Error("unknown option '" + a + "'");
+    } else {
+      positional.push_back(a);
+    }
+  }
+  if (positional.size() != 2) throw Error("expected INPUT and OUTPUT");
+  o.input = positional[0];
+  o.output = positional[1];
+  o.dem.azimuth_deg = o.params.view.azimuth_deg;
+  o.params.validate();
+  refuse_clashing_paths(o);
+  return o;
+}
+
+}  // namespace tsk::cli

@@ -1,0 +1,28 @@
+// The command line's options: parsed, range-checked, and the paths checked before any work.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dem_reader.h"
+#include "params.h"
+#include "pstrokes.h"
+
+namespace tsk::cli {
+
+struct Options {
+  std::string input, output, format, stats_json, preview, source;
+  bool timings = false;
+  int every = 10;
+  int strips = 0;
+  io::DemOptions dem;
+  SilhouetteParams params;
+  PStrokeParams pstrokes;
+};
+
+// Parses a command's arguments (without the command's name). Throws Error naming the option on
+// anything it cannot take, and when an output would replace an input or another output, or
+// could not be written.
+Options parse(const std::vector<std::string>& args);
+
+}  // namespace tsk::cli

@@ -1,0 +1,28 @@
+// terrain-sketch profiles: the profile plot as lines.
+#include <ostream>
+
+#include "command_support.h"
+#include "commands.h"
+#include "interrupt.h"
+#include "profile_plot.h"
+#include "vector_writer.h"
+#include "visibility.h"
+
+namespace tsk::cli {
+
+int profiles(const Args& args, std::ostream& out, std::ostream& err,
+             const ProgressFn& /* their steps report no progress */) {
+  const Options o = parse(args);
+  io::check_vector_output(o.output, o.format);
+  const io::Dem dem = load_dem(o, err);
+  CellFlags flags;
+  classify_visibility(dem.oriented, dem.frame.d, o.params.view, flags, o.params.threads);
+  const auto lines = profile_plot(dem.oriented, flags, dem.frame, o.params.view, dem.geotransform,
+                                  static_cast<std::size_t>(o.every), dem.lowest_height);
+  stop_if_interrupted();
+  io::write_profile_lines(o.output, o.format, lines, dem.srs_wkt);
+  out << o.output << ": " << lines.size() << " visible cross-section pieces\n";
+  return 0;
+}
+
+}  // namespace tsk::cli

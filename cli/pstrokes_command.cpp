@@ -1,0 +1,28 @@
+// terrain-sketch pstrokes: the P-stroke sketch.
+#include <ostream>
+
+#include "command_support.h"
+#include "commands.h"
+#include "interrupt.h"
+#include "pstrokes.h"
+#include "vector_writer.h"
+
+namespace tsk::cli {
+
+int pstrokes(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress) {
+  const Options o = parse(args);
+  o.pstrokes.validate();
+  io::check_vector_output(o.output, o.format);
+  const io::Dem dem = load_dem(o, err);
+  const SilhouetteResult result =
+      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params, progress);
+  stop_if_interrupted();
+  const auto strokes =
+      pstroke_sketch(dem.oriented, result.flags, dem.frame, o.params.view, dem.geotransform,
+                     o.params.geometry, o.pstrokes, dem.lowest_height, o.params.threads);
+  io::write_pstrokes(o.output, o.format, strokes, dem.srs_wkt);
+  out << o.output << ": " << strokes.size() << " P-strokes\n";
+  return 0;
+}
+
+}  // namespace tsk::cli

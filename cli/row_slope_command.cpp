@@ -1,0 +1,24 @@
+// terrain-sketch row-slope: |slope across the line of sight| as a GeoTIFF.
+#include <ostream>
+
+#include "command_support.h"
+#include "commands.h"
+#include "diagnostics.h"
+#include "interrupt.h"
+#include "raster_writer.h"
+
+namespace tsk::cli {
+
+int row_slope(const Args& args, std::ostream& out, std::ostream& err,
+              const ProgressFn& /* their steps report no progress */) {
+  const Options o = parse(args);
+  require_geotiff(o.output);
+  const io::Dem dem = load_dem(o, err);
+  const HeightGrid slope = row_slope_map(dem.oriented, dem.frame);
+  stop_if_interrupted();
+  io::write_float_raster(o.output, {slope}, dem.geotransform, dem.srs_wkt);
+  out << o.output << ": row slope in percent across azimuth " << dem.frame.azimuth_deg << "\n";
+  return 0;
+}
+
+}  // namespace tsk::cli
