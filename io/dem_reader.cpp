@@ -200,12 +200,7 @@ Dem read_dem(const std::string& path, const DemOptions& options) {
   GdalErrorCapture capture;
   auto dataset = open_raster(path);
   Dem dem = describe_dem(*dataset, path, options);
-  if (too_large_to_turn_whole(dem.frame)) {
-    throw Error("'" + path + "' (" + std::to_string(dem.cols) + " x " + std::to_string(dem.rows) +
-                " cells) is too large for this command, which holds the whole DEM turned to the "
-                "view: that would take more than half of this machine's memory. `silhouettes` "
-                "without `--preview` reads large DEMs strip by strip; or clip or resample the DEM");
-  }
+  refuse_too_large_to_turn(path, dem);
   try {
     read_band(path, *dataset->GetRasterBand(options.band), dem);
   } catch (const std::bad_alloc&) {
@@ -213,6 +208,14 @@ Dem read_dem(const std::string& path, const DemOptions& options) {
                 std::to_string(dem.cols) + " DEM");
   }
   return dem;
+}
+
+void refuse_too_large_to_turn(const std::string& path, const Dem& dem) {
+  if (!too_large_to_turn_whole(dem.frame)) return;
+  throw Error("'" + path + "' (" + std::to_string(dem.cols) + " x " + std::to_string(dem.rows) +
+              " cells) is too large for this command, which holds the whole DEM turned to the "
+              "view: that would take more than half of this machine's memory. `silhouettes` "
+              "without `--preview` reads large DEMs strip by strip; or clip or resample the DEM");
 }
 
 std::vector<HeightGrid> read_bands(const std::string& path) {
@@ -281,32 +284,18 @@ void BandWindows::drop_block_rows_above(std::size_t keep) const {
   }
 }
 
-struct DemStripReader::Source {
-  std::unique_ptr<BandWindows> file;
-  WindowReader read;
-  std::unique_ptr<StripLoader> loader;
-};
-
-DemStripReader::DemStripReader(const std::string& path, const DemOptions& options, unsigned threads)
-    : source_(std::make_unique<Source>()) {
+DemFile::DemFile(const std::string& path, const DemOptions& options) {
   GdalErrorCapture capture;
   DatasetPtr dataset = open_raster(path);
   dem_ = describe_dem(*dataset, path, options);
-  source_->file = std::make_unique<BandWindows>(std::move(dataset), path, options.band);
-  source_->read = [&file = *source_->file](const DemWindow& w, float* heights) {
-    file.read(w, heights);
-  };
-  source_->loader = std::make_unique<StripLoader>(dem_.frame, source_->read, threads);
+  file_ = std::make_unique<BandWindows>(std::move(dataset), path, options.band);
 }
 
-DemStripReader::~DemStripReader() = default;
+DemFile::~DemFile() = default;
 
-void DemStripReader::read_profiles(std::size_t first, std::size_t count, HeightGrid& strip) {
-  source_->loader->load(first, count, strip);
-}
-
-double DemStripReader::lowest_height() {
-  return dem_lowest_height(dem_.rows, dem_.cols, source_->read);
+DemSource DemFile::source() const {
+  return {dem_.frame, dem_.geotransform,
+          [&file = *file_](const DemWindow& w, float* heights) { file.read(w, heights); }};
 }
 
 }  // namespace tsk::io

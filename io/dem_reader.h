@@ -7,6 +7,7 @@
 
 #include "gdal_util.h"
 #include "orient.h"
+#include "silhouettes.h"
 #include "strokes.h"
 
 namespace tsk::io {
@@ -31,25 +32,6 @@ struct Dem {
 // Throws tsk::Error with a message for the user on anything it cannot read faithfully:
 // not a raster, bad band, rotated or south-up georeferencing, a geographic CRS.
 Dem read_dem(const std::string& path, const DemOptions& options);
-
-// Reads a DEM strip by strip for DEMs too large for memory: profiles [first, first + count) are
-// read window by window (rows or columns of the DEM for a cardinal view, the band of cells their
-// samples need for any other) and turned into oriented rows, through BandWindows, so GDAL's cache
-// holds about two rows of blocks.
-class DemStripReader {
- public:
-  DemStripReader(const std::string& path, const DemOptions& options, unsigned threads = 0);
-  ~DemStripReader();
-  const Dem& info() const { return dem_; }  // georeferencing and frame; `oriented` stays empty
-  // Oriented profiles [first, first + count) into `strip`, whose memory may be reused.
-  void read_profiles(std::size_t first, std::size_t count, HeightGrid& strip);
-  double lowest_height();  // the DEM's lowest height, a full pass over the band
-
- private:
-  Dem dem_;
-  struct Source;
-  std::unique_ptr<Source> source_;
-};
 
 // Windows of one band of a raster file read as Float32, nodata as NaN, through a dataset of its
 // own. The QGIS plugin reads a GDAL layer's file through it rather than through the layer's
@@ -84,6 +66,26 @@ class BandWindows {
   std::size_t run_rows_ = 1;  // windows are read in runs of rows ending on these multiples
   mutable std::size_t cached_from_ = static_cast<std::size_t>(-1);  // highest block row read
 };
+
+// A DEM file open for a view, read window by window through BandWindows (so GDAL's cache holds
+// about two rows of blocks): the source that sketch_silhouettes reads strip by strip, for DEMs of
+// any size. Throws Error as read_dem does on anything it cannot read faithfully.
+class DemFile {
+ public:
+  DemFile(const std::string& path, const DemOptions& options);
+  ~DemFile();
+  const Dem& info() const { return dem_; }  // georeferencing, frame and notes; `oriented` empty
+  // The DEM for the core; it reads through this object, which must outlive it.
+  DemSource source() const;
+
+ private:
+  Dem dem_;
+  std::unique_ptr<BandWindows> file_;
+};
+
+// Throws Error when the DEM of `path` described by `dem` could not be turned whole for its view
+// (too_large_to_turn_whole): what every command but `silhouettes` needs.
+void refuse_too_large_to_turn(const std::string& path, const Dem& dem);
 
 // Every band of a raster as grids on its own pixel grid (row 0 north), nodata as NaN: the
 // rasters to drape.

@@ -207,12 +207,12 @@ void RasterGrid::setView(double azimuthDeg) {
     return make_frame(static_cast<std::size_t>(mRows), static_cast<std::size_t>(mCols),
                       dx * mGroundScale, dy * mGroundScale, azimuthDeg);
   });
-  mStrips = std::make_unique<StripLoader>(
-      mFrame, [this](const DemWindow& w, float* heights) { readWindow(w, heights); });
 }
 
-void RasterGrid::readProfiles(std::size_t first, std::size_t count, HeightGrid& strip) {
-  withCoreErrors([&] { mStrips->load(first, count, strip); });
+DemSource RasterGrid::source(double azimuthDeg) {
+  setView(azimuthDeg);
+  return {mFrame, mGeoTransform,
+          [this](const DemWindow& w, float* heights) { readWindow(w, heights); }};
 }
 
 void RasterGrid::readWindow(const DemWindow& w, float* heights) const {
@@ -250,12 +250,7 @@ void RasterGrid::readWindow(const DemWindow& w, float* heights) const {
 }
 
 double RasterGrid::lowestHeight() const {
-  if (mLowest) return *mLowest;
-  return withCoreErrors([&] {
-    return dem_lowest_height(
-        static_cast<std::size_t>(mRows), static_cast<std::size_t>(mCols),
-        [this](const DemWindow& w, float* heights) { readWindow(w, heights); });
-  });
+  return mLowest;
 }
 
 void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "orient.h"
+#include "silhouettes.h"
 #include "strokes.h"
 
 class QgsRasterBlock;
@@ -47,13 +48,10 @@ class RasterGrid {
             double progressTo);
 
   // Worker thread, for DEMs read strip by strip (any view): sets the frame for `azimuthDeg`
-  // without reading, then reads oriented profiles [first, first + count) into `strip` window by
-  // window (see StripLoader).
-  void setView(double azimuthDeg);
-  void readProfiles(std::size_t first, std::size_t count, HeightGrid& strip);
-  // The DEM's lowest height, the plan-oblique reference (SPEC 1.9): from the heights read, or
-  // before a strip-by-strip run, a pass over the band through the provider (infinite heights
-  // count as nodata, as in the core).
+  // without reading and returns the DEM for sketch_silhouettes, read window by window through
+  // this object, which must outlive it.
+  DemSource source(double azimuthDeg);
+  // The DEM's lowest height, the plan-oblique reference (SPEC 1.9), once read() has read it.
   double lowestHeight() const;
 
   const HeightGrid& oriented() const { return mOriented; }
@@ -66,6 +64,8 @@ class RasterGrid {
   bool readsFileDirectly() const { return mFile != nullptr; }
 
  private:
+  // Sets the frame and the geotransform for a view.
+  void setView(double azimuthDeg);
   // Reads the band in blocks of rows into mOriented.
   void readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo);
   // The layer's file read straight through GDAL when that gives what its provider would: a GDAL
@@ -98,8 +98,7 @@ class RasterGrid {
   HeightGrid mOriented;
   OrientedFrame mFrame;
   GeoTransform mGeoTransform;
-  std::unique_ptr<StripLoader> mStrips;  // set with the view
-  std::optional<double> mLowest;         // known once the heights are read
+  double mLowest = 0;  // known once the heights are read
 };
 
 }  // namespace tsk::plugin

@@ -143,19 +143,22 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
                                                    QgsProcessingContext& context,
                                                    QgsProcessingFeedback* feedback) {
   RasterGrid& raster = preparedRaster();
-  raster.setView(mParams.view.azimuth_deg);
-  // Strips bound the memory and are faster than the whole DEM: the next strip is read while
-  // this one is processed, into memory reused from strip to strip.
+  const DemSource dem = raster.source(mParams.view.azimuth_deg);
   const std::size_t strip =
-      mStrips > 0 ? static_cast<std::size_t>(mStrips) : strip_profiles(raster.frame());
+      mStrips > 0 ? static_cast<std::size_t>(mStrips) : strip_profiles(dem.frame);
   if (feedback) feedback->pushInfo(tr("Processing the DEM in strips of %1 profiles.").arg(strip));
   const QgsFields fields = strokeFields();
   LineOutput factual(*this, parameters, kFactual, context, fields, raster.crs());
   LineOutput formulated(*this, parameters, kFormulated, context, fields, raster.crs());
   // Each stroke goes to its output as it completes, from the thread that links the chains, while
   // the other threads work on the next profiles. A failure or cancel discards both outputs.
+  const ProgressFn progress = [feedback](double f) {
+    if (!feedback) return true;
+    feedback->setProgress(kCoreEnd * f);
+    return !feedback->isCanceled();
+  };
   const SilhouetteResult result = withCoreErrors([&] {
-    return runInStrips(strip, feedback, [&](Stroke&& stroke) {
+    return sketch_silhouettes(dem, mParams, strip, progress, [&](Stroke&& stroke) {
       (stroke.cls == StrokeClass::factual ? factual : formulated).add(stroke);
     });
   });
@@ -174,25 +177,6 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
   }
   releaseRaster();  // release the grid before QGIS loads the outputs
   return outputs;
-}
-
-SilhouetteResult SilhouettesAlgorithm::runInStrips(std::size_t strip,
-                                                   QgsProcessingFeedback* feedback,
-                                                   StrokeSink sink) {
-  RasterGrid& raster = preparedRaster();
-  const OrientedFrame& frame = raster.frame();
-  const double zRef = mParams.geometry == Geometry::oblique ? raster.lowestHeight() : 0.0;
-  return run_in_strips(
-      frame, raster.geotransform(), mParams, zRef, strip,
-      [&raster](std::size_t first, std::size_t count, HeightGrid& heights) {
-        raster.readProfiles(first, count, heights);
-      },
-      [feedback](double f) {
-        if (!feedback) return true;
-        feedback->setProgress(kCoreEnd * f);
-        return !feedback->isCanceled();
-      },
-      std::move(sink));
 }
 
 QVariantMap SilhouettesAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,

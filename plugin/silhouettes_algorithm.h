@@ -29,10 +29,6 @@ class SilhouettesAlgorithm : public DemViewAlgorithm {
                                    QgsProcessingFeedback* feedback) override;
 
  private:
-  // Silhouettes of a DEM read and processed `strip` profiles at a time, each stroke handed to
-  // `sink` as it completes.
-  SilhouetteResult runInStrips(std::size_t strip, QgsProcessingFeedback* feedback, StrokeSink sink);
-
   SilhouetteParams mParams;
   int mStrips = 0;
   QString mFactualId;
