@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "diagnostics.h"
 #include "interrupt.h"
+#include "output_files.h"
 #include "raster_writer.h"
 
 namespace tsk::cli {
@@ -18,7 +19,7 @@ int classify(const Args& args, std::ostream& out, std::ostream& err, const Progr
   stop_if_interrupted();
   io::write_classification(o.output, classification_map(result.flags, dem.frame), dem.geotransform,
                            dem.srs_wkt);
-  if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
+  if (!o.stats_json.empty()) io::write_text_file(o.stats_json, stats_json(result.stats));
   const StageStats& s = result.stats;
   out << o.output << ": hidden " << s.pct(s.hidden) << " %, occluding " << s.pct(s.occluding)
       << " %, c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered) << " %, t-set "

@@ -16,15 +16,6 @@ io::Dem load_dem(const Options& o, std::ostream& err) {
   return dem;
 }
 
-void write_text(const std::string& path, const std::string& text) {
-  io::write_atomically(path, [&](const std::filesystem::path& staged) {
-    std::ofstream f(staged);
-    f << text;
-    f.close();
-    if (!f) throw Error("cannot write '" + path + "'");
-  });
-}
-
 std::string stats_json(const StageStats& s) {
   std::ostringstream j;
   j.precision(6);

@@ -13,9 +13,6 @@ namespace tsk::cli {
 // Reads the DEM for the view and tells the user, on `err`, what they should know about it.
 io::Dem load_dem(const Options& o, std::ostream& err);
 
-// Writes `text` to `path`, whole or not at all.
-void write_text(const std::string& path, const std::string& text);
-
 // The stage statistics as a JSON object (--stats-json).
 std::string stats_json(const StageStats& s);
 

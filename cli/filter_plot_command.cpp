@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "filter_diagram.h"
 #include "interrupt.h"
+#include "output_files.h"
 
 namespace tsk::cli {
 
@@ -19,9 +20,10 @@ int filter_plot(const Args& args, std::ostream& out, std::ostream& err,
   const double range = diagram_range_pct(o.params.filter);
   const SlopeScatter scatter =
       slope_scatter(dem.oriented, result.flags, dem.frame.d, dem.frame.w, range);
-  write_text(o.output, filter_diagram_html(
-                           scatter, o.params.filter,
-                           "Slope filter: " + std::filesystem::path(o.input).filename().string()));
+  io::write_text_file(
+      o.output,
+      filter_diagram_html(scatter, o.params.filter,
+                          "Slope filter: " + std::filesystem::path(o.input).filename().string()));
   out << o.output << ": c-set " << result.stats.pct(result.stats.candidate) << " %, f-set "
       << result.stats.pct(result.stats.filtered) << " %\n";
   return 0;

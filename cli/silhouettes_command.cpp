@@ -7,6 +7,7 @@
 #include "command_support.h"
 #include "commands.h"
 #include "interrupt.h"
+#include "output_files.h"
 #include "preview.h"
 #include "vector_writer.h"
 
@@ -59,7 +60,7 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
     stop_if_interrupted();  // the last chance to stop with nothing written
     // The statistics and the preview go out before the strokes are committed, so that a failure
     // to write them discards the strokes too.
-    if (!o.stats_json.empty()) write_text(o.stats_json, stats_json(result.stats));
+    if (!o.stats_json.empty()) io::write_text_file(o.stats_json, stats_json(result.stats));
     if (preview) write_preview(o, result, std::move(drawn));
     produced = Clock::now();
   });

@@ -4,9 +4,26 @@
 
 namespace tsk::io {
 
+namespace {
+
+// Some messages quote whole SQL scripts; their start and the reason at their end are enough.
+std::string shortened(const std::string& text) {
+  constexpr std::size_t kEnd = 150;
+  if (text.size() <= 3 * kEnd) return text;
+  return text.substr(0, kEnd) + " [...] " + text.substr(text.size() - kEnd);
+}
+
+}  // namespace
+
 GdalErrorCapture::GdalErrorCapture() {
-  CPLPushErrorHandler(CPLQuietErrorHandler);
+  CPLPushErrorHandlerEx(&GdalErrorCapture::record, this);
   CPLErrorReset();
+}
+
+void CPL_STDCALL GdalErrorCapture::record(CPLErr type, CPLErrorNum, const char* message) {
+  auto* self = static_cast<GdalErrorCapture*>(CPLGetErrorHandlerUserData());
+  if (type >= CE_Failure && self->first_failure_.empty())
+    self->first_failure_ = shortened(message && *message ? message : "unknown GDAL error");
 }
 
 GdalErrorCapture::~GdalErrorCapture() {
@@ -16,11 +33,7 @@ GdalErrorCapture::~GdalErrorCapture() {
 std::string GdalErrorCapture::message() const {
   const char* msg = CPLGetLastErrorMsg();
   if (!msg || !*msg) return "unknown GDAL error";
-  // Some messages quote whole SQL scripts; their start and the reason at their end are enough.
-  constexpr std::size_t kEnd = 150;
-  const std::string text = msg;
-  if (text.size() <= 3 * kEnd) return text;
-  return text.substr(0, kEnd) + " [...] " + text.substr(text.size() - kEnd);
+  return shortened(msg);
 }
 
 DatasetPtr open_raster(const std::string& path) {

@@ -10,15 +10,24 @@
 
 namespace tsk::io {
 
-// While alive, GDAL errors on this thread are kept quiet and the last one is available for our
-// own message.
+// While alive, GDAL errors on this thread are kept quiet (from stderr and from QGIS's log) and
+// kept for our own messages: the last one, and the first failure, which on a full disk is the
+// cause ("File too large") where the last is libtiff's consequence of it. The one way both front
+// ends catch GDAL's errors.
 class GdalErrorCapture {
  public:
   GdalErrorCapture();
   ~GdalErrorCapture();
   GdalErrorCapture(const GdalErrorCapture&) = delete;
   GdalErrorCapture& operator=(const GdalErrorCapture&) = delete;
+  // The last error GDAL reported ("unknown GDAL error" if none), shortened.
   std::string message() const;
+  // The first failure (CE_Failure or worse) since the capture began, shortened; "" if none.
+  const std::string& first_failure() const { return first_failure_; }
+
+ private:
+  static void CPL_STDCALL record(CPLErr type, CPLErrorNum number, const char* message);
+  std::string first_failure_;
 };
 
 struct GdalCloser {

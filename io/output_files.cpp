@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <system_error>
 #include <vector>
 
@@ -93,6 +95,20 @@ void write_atomically(const fs::path& destination,
     fs::remove_all(staging, ec);
     throw;
   }
+}
+
+void write_text_file(const fs::path& destination, const std::string& text) {
+  write_atomically(destination, [&](const fs::path& staged) {
+    FILE* file = std::fopen(staged.c_str(), "wb");
+    if (!file) throw Error("cannot write '" + destination.string() + "': " + std::strerror(errno));
+    const bool all = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+    int reason = all ? 0 : errno;
+    if (std::fclose(file) != 0 && reason == 0) reason = errno;
+    if (!all || reason != 0) {
+      throw Error("cannot write '" + destination.string() +
+                  "': " + std::strerror(reason != 0 ? reason : EIO));
+    }
+  });
 }
 
 }  // namespace tsk::io

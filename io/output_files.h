@@ -19,4 +19,7 @@ void check_output_path(const std::filesystem::path& destination);
 void write_atomically(const std::filesystem::path& destination,
                       const std::function<void(const std::filesystem::path&)>& write);
 
+// Writes `text` to `destination`, whole or not at all; throws Error with the system's reason.
+void write_text_file(const std::filesystem::path& destination, const std::string& text);
+
 }  // namespace tsk::io

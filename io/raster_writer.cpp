@@ -2,6 +2,7 @@
 
 #include <gdal_priv.h>
 
+#include <cctype>
 #include <limits>
 
 #include "gdal_util.h"
@@ -10,19 +11,20 @@
 namespace tsk::io {
 namespace {
 
-// Creates a GeoTIFF of pixels.size() bands at `staged`, lets `fill` set up each band, writes
-// the pixels.
+// Creates a raster of pixels.size() bands at `staged` in the format of `path`'s extension, lets
+// `fill` set up each band, writes the pixels. Every failure GDAL reports fails the write: a full
+// disk shows only as an error when GDAL writes its cached blocks while it closes the file.
 template <typename Fill>
-void write_tiff(const std::string& path, const std::filesystem::path& staged, std::size_t rows,
-                std::size_t cols, GDALDataType type, const std::vector<const void*>& pixels,
-                const GeoTransform& gt, const std::string& srs_wkt, Fill fill) {
-  GDALAllRegister();
+void write_bands(const std::string& path, const std::filesystem::path& staged, std::size_t rows,
+                 std::size_t cols, GDALDataType type, const std::vector<const void*>& pixels,
+                 const GeoTransform& gt, const std::string& srs_wkt, Fill fill) {
   GdalErrorCapture capture;
-  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
-  if (!driver) throw Error("GDAL has no GTiff driver");
-  const char* options[] = {"COMPRESS=DEFLATE", "TILED=YES", "BIGTIFF=IF_SAFER", nullptr};
+  GDALDriver* driver = raster_driver_for(path);
+  const bool tiff = std::string(driver->GetDescription()) == "GTiff";
+  const char* tiff_options[] = {"COMPRESS=DEFLATE", "TILED=YES", "BIGTIFF=IF_SAFER", nullptr};
   DatasetPtr ds(driver->Create(staged.c_str(), static_cast<int>(cols), static_cast<int>(rows),
-                               static_cast<int>(pixels.size()), type, const_cast<char**>(options)));
+                               static_cast<int>(pixels.size()), type,
+                               tiff ? const_cast<char**>(tiff_options) : nullptr));
   if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
   double transform[6];
   std::copy(gt.a.begin(), gt.a.end(), transform);
@@ -37,14 +39,34 @@ void write_tiff(const std::string& path, const std::filesystem::path& staged, st
       throw Error("writing '" + path + "' failed: " + capture.message());
     }
   }
-  CPLErrorReset();
   ds.reset();
-  if (CPLGetLastErrorType() >= CE_Failure) {
-    throw Error("closing '" + path + "' failed: " + capture.message());
+  if (!capture.first_failure().empty()) {
+    throw Error("writing '" + path + "' failed: " + capture.first_failure());
   }
 }
 
 }  // namespace
+
+GDALDriver* raster_driver_for(const std::string& path) {
+  GDALAllRegister();
+  std::string ext = std::filesystem::path(path).extension().string();
+  if (!ext.empty()) ext.erase(0, 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext.empty() || ext == "tif" || ext == "tiff") ext = "tif";
+  GDALDriverManager& drivers = *GetGDALDriverManager();
+  for (int k = 0; k < drivers.GetDriverCount(); ++k) {
+    GDALDriver* driver = drivers.GetDriver(k);
+    const char* raster = driver->GetMetadataItem(GDAL_DCAP_RASTER);
+    const char* create = driver->GetMetadataItem(GDAL_DCAP_CREATE);
+    const char* extensions = driver->GetMetadataItem(GDAL_DMD_EXTENSIONS);
+    if (!raster || !create || !extensions) continue;
+    const CPLStringList list(CSLTokenizeString(extensions));
+    for (int e = 0; e < list.size(); ++e)
+      if (EQUAL(list[e], ext.c_str())) return driver;
+  }
+  throw Error("no raster format that GDAL can create has the extension of '" + path +
+              "'; use .tif");
+}
 
 void write_float_raster(const std::string& path, const std::vector<HeightGrid>& bands,
                         const GeoTransform& gt, const std::string& srs_wkt) {
@@ -52,10 +74,10 @@ void write_float_raster(const std::string& path, const std::vector<HeightGrid>& 
   std::vector<const void*> pixels;
   for (const HeightGrid& b : bands) pixels.push_back(b.data());
   write_atomically(path, [&](const std::filesystem::path& staged) {
-    write_tiff(path, staged, bands[0].rows(), bands[0].cols(), GDT_Float32, pixels, gt, srs_wkt,
-               [](GDALRasterBand& band) {
-                 band.SetNoDataValue(std::numeric_limits<double>::quiet_NaN());
-               });
+    write_bands(path, staged, bands[0].rows(), bands[0].cols(), GDT_Float32, pixels, gt, srs_wkt,
+                [](GDALRasterBand& band) {
+                  band.SetNoDataValue(std::numeric_limits<double>::quiet_NaN());
+                });
   });
 }
 
@@ -66,18 +88,18 @@ void write_classification(const std::string& path, const Grid<std::uint8_t>& cla
       {0, 0, 0, 0},         {255, 255, 255, 255}, {190, 210, 235, 255}, {220, 30, 30, 255},
       {215, 215, 215, 255}, {120, 120, 120, 255}, {20, 20, 20, 255}};
   write_atomically(path, [&](const std::filesystem::path& staged) {
-    write_tiff(path, staged, classes.rows(), classes.cols(), GDT_Byte, {classes.data()}, gt,
-               srs_wkt, [](GDALRasterBand& band) {
-                 band.SetNoDataValue(0);
-                 GDALColorTable table;
-                 CPLStringList names;
-                 for (int k = 0; k < kCellClassCount; ++k) {
-                   table.SetColorEntry(k, &colours[k]);
-                   names.AddString(cell_class_name(static_cast<CellClass>(k)));
-                 }
-                 band.SetColorTable(&table);
-                 band.SetCategoryNames(names.List());
-               });
+    write_bands(path, staged, classes.rows(), classes.cols(), GDT_Byte, {classes.data()}, gt,
+                srs_wkt, [](GDALRasterBand& band) {
+                  band.SetNoDataValue(0);
+                  GDALColorTable table;
+                  CPLStringList names;
+                  for (int k = 0; k < kCellClassCount; ++k) {
+                    table.SetColorEntry(k, &colours[k]);
+                    names.AddString(cell_class_name(static_cast<CellClass>(k)));
+                  }
+                  band.SetColorTable(&table);
+                  band.SetCategoryNames(names.List());
+                });
   });
 }
 

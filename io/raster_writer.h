@@ -1,14 +1,22 @@
-// Grids on the DEM's grid to GeoTIFF, whole or not at all.
+// Grids on the DEM's grid to rasters (GeoTIFF, or the GDAL format of the file's extension), whole
+// or not at all.
 #pragma once
+
+#include <gdal_priv.h>
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "diagnostics.h"
+#include "geotransform.h"
 #include "strokes.h"
 
 namespace tsk::io {
+
+// The GDAL driver that creates rasters with `path`'s extension (GTiff for .tif, .tiff or none);
+// throws Error when no driver does.
+GDALDriver* raster_driver_for(const std::string& path);
 
 // Float32, nodata NaN, one band per grid (all of one size).
 void write_float_raster(const std::string& path, const std::vector<HeightGrid>& bands,

@@ -89,8 +89,6 @@ QVariantMap DrapeAlgorithm::processAlgorithm(const QVariantMap& parameters,
     const PlanObliqueDrape drape(raster.oriented(), flags, raster.frame(), mView,
                                  raster.lowestHeight());
     const GeoTransform gt = drape.geotransform(raster.geotransform());
-    const QgsRectangle extent(gt.a[0], gt.a[3] + gt.a[5] * static_cast<double>(drape.rows()),
-                              gt.a[0] + gt.a[1] * static_cast<double>(drape.cols()), gt.a[3]);
     std::vector<HeightGrid> bands;
     for (int band = 1; band <= mSourceBands; ++band) {
       if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
@@ -101,7 +99,7 @@ QVariantMap DrapeAlgorithm::processAlgorithm(const QVariantMap& parameters,
       bands.push_back(drape.drape(values));
       if (feedback) feedback->setProgress(30 + 60.0 * band / mSourceBands);
     }
-    writeFloatRaster(path, bands, extent, raster.crs());
+    writeFloatRaster(path, bands, gt, raster.crs());
   });
   releaseRaster();
   mSource.reset();

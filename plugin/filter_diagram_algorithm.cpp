@@ -4,11 +4,10 @@
 
 #include <QFile>
 #include <algorithm>
-#include <cerrno>
-#include <system_error>
 
 #include "errors.h"
 #include "filter_diagram.h"
+#include "output_files.h"
 #include "raster_grid.h"
 #include "silhouettes.h"
 
@@ -62,23 +61,8 @@ QVariantMap FilterDiagramAlgorithm::processAlgorithm(const QVariantMap& paramete
         mParams.filter, tr("Slope filter").toStdString());
   });
   const QString path = parameterAsFileOutput(parameters, QStringLiteral("OUTPUT"), context);
-  QFile file(path);
-  // Whole or not at all: what QFile buffers reaches the disk only as it flushes.
-  errno = 0;
-  bool written = file.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
-                 file.write(html.data(), static_cast<qint64>(html.size())) ==
-                     static_cast<qint64>(html.size()) &&
-                 file.flush();
-  file.close();
-  written = written && file.error() == QFileDevice::NoError;
-  if (!written) {
-    // QFile says "Unknown error" for a write cut short; the system's reason says more.
-    const QString why =
-        errno ? QString::fromStdString(std::error_code(errno, std::generic_category()).message())
-              : file.errorString();
-    file.remove();
-    throw QgsProcessingException(tr("Could not write %1: %2").arg(path, why));
-  }
+  // Whole or not at all, as every file output (io/output_files.h).
+  withCoreErrors([&] { io::write_text_file(QFile::encodeName(path).toStdString(), html); });
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), path}};
 }

@@ -1,13 +1,14 @@
-// Writes grids as rasters with a given extent and CRS (the DEM's, or the drape's).
+// Writes grids as rasters on the DEM's grid or another (the drape's) in the DEM's CRS, through
+// io/'s raster writer: whole or not at all, in the GDAL format of the file's extension.
 #pragma once
 
 #include <qgscoordinatereferencesystem.h>
-#include <qgsrectangle.h>
 
 #include <QString>
 #include <cstdint>
 #include <vector>
 
+#include "geotransform.h"
 #include "grid.h"
 
 namespace tsk::plugin {
@@ -18,6 +19,6 @@ class RasterGrid;
 void writeByteRaster(const QString& path, const Grid<std::uint8_t>& grid, const RasterGrid& dem);
 // Float32 bands (all of one size), nodata NaN.
 void writeFloatRaster(const QString& path, const std::vector<HeightGrid>& bands,
-                      const QgsRectangle& extent, const QgsCoordinateReferenceSystem& crs);
+                      const GeoTransform& geotransform, const QgsCoordinateReferenceSystem& crs);
 
 }  // namespace tsk::plugin

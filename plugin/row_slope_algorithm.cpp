@@ -47,8 +47,8 @@ QVariantMap RowSlopeAlgorithm::processAlgorithm(const QVariantMap& parameters,
                                                 QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 70);
   mOutput = parameterAsOutputLayer(parameters, QStringLiteral("OUTPUT"), context);
-  writeFloatRaster(mOutput, {row_slope_map(raster.oriented(), raster.frame())}, raster.extent(),
-                   raster.crs());
+  writeFloatRaster(mOutput, {row_slope_map(raster.oriented(), raster.frame())},
+                   raster.geotransform(), raster.crs());
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), mOutput}};
 }

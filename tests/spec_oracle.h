@@ -13,7 +13,9 @@
 
 namespace tsk::oracle {
 
-inline bool has_height(float z) { return std::isfinite(z); }
+inline bool has_height(float z) {
+  return std::isfinite(z);
+}
 
 // SPEC 1.3, the row slope as a fraction: central difference, one-sided at the grid's first and
 // last profile and next to a nodata neighbour. Where neither neighbour has data the core takes

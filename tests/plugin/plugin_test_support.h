@@ -1,0 +1,187 @@
+// What the plugin's headless tests share: running an algorithm of the provider on a raster with
+// its outputs in a folder, feedback that keeps what it was told, a file size limit standing in for
+// a full disk, and the core's result to compare with.
+#pragma once
+
+#include <gdal.h>
+#include <ogr_api.h>
+#include <ogr_srs_api.h>
+#include <qgsapplication.h>
+#include <qgsfeatureiterator.h>
+#include <qgsprocessingcontext.h>
+#include <qgsprocessingfeedback.h>
+#include <qgsprocessingparameters.h>
+#include <qgsprocessingprovider.h>
+#include <qgsprocessingregistry.h>
+#include <qgsprocessingutils.h>
+#include <qgsrasterblock.h>
+#include <qgsrasterdataprovider.h>
+#include <qgsrasterlayer.h>
+#include <qgsrasterrange.h>
+#include <qgsvectorlayer.h>
+#include <sys/resource.h>
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QTemporaryDir>
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <csignal>
+#include <functional>
+#include <memory>
+
+#include "dem_reader.h"
+#include "diagnostics.h"
+#include "drape.h"
+#include "gdal_test_support.h"
+#include "gpkg_index_check.h"
+#include "plan_oblique.h"
+#include "profile_plot.h"
+#include "provider.h"
+#include "pstrokes.h"
+#include "qgis_compat.h"
+#include "raster_grid.h"
+#include "silhouettes.h"
+#include "translation.h"
+#include "visibility.h"
+
+namespace tsk::plugin_test {
+
+using namespace tsk;
+
+// Oriented profiles of a raster for a view, read window by window as a run reads them.
+struct ViewStrips {
+  DemSource source;
+  StripLoader loader;
+  ViewStrips(plugin::RasterGrid& grid, double azimuth)
+      : source(grid.source(azimuth)), loader(source.frame, source.read) {}
+};
+
+// The lowest height of a raster read window by window, as a plan-oblique run reads it first.
+inline double lowestOf(plugin::RasterGrid& grid) {
+  const DemSource dem = grid.source(90);
+  return dem_lowest_height(dem.frame.dem_rows, dem.frame.dem_cols, dem.read);
+}
+
+inline const QString kData = QStringLiteral(TSK_TEST_DATA);
+
+inline QgsProcessingAlgorithm* algorithm() {
+  static bool registered = false;
+  if (!registered) {
+    QgsApplication::processingRegistry()->addProvider(new plugin::TerrainSketchProvider());
+    registered = true;
+  }
+  const QgsProcessingAlgorithm* alg = QgsApplication::processingRegistry()->algorithmById(
+      QStringLiteral("terrainsketch:silhouettes"));
+  REQUIRE(alg != nullptr);
+  return alg->create();
+}
+
+// Keeps what the algorithm writes to the log.
+class RecordingFeedback : public QgsProcessingFeedback {
+ public:
+  void reportError(const QString& error, bool fatal) override {
+    errors << error;
+    QgsProcessingFeedback::reportError(error, fatal);
+  }
+  void pushWarning(const QString& warning) override { warnings << warning; }
+  QStringList errors;
+  QStringList warnings;
+};
+
+struct Run {
+  bool ok = false;
+  QVariantMap results;
+  QString error;
+};
+
+// Runs algorithm `id` with `extra` parameters on top of INPUT/BAND and outputs in `dir`.
+// A memory output's layer stays in `context`, if given.
+inline Run runAlgorithm(const QString& input, const QVariantMap& extra, const QTemporaryDir& dir,
+                        RecordingFeedback* feedback = nullptr,
+                        const QString& id = QStringLiteral("silhouettes"),
+                        QgsProcessingContext* context = nullptr) {
+  algorithm();  // registers the provider
+  std::unique_ptr<QgsProcessingAlgorithm> alg(
+      QgsApplication::processingRegistry()->algorithmById("terrainsketch:" + id)->create());
+  QVariantMap params{{"INPUT", input},
+                     {"BAND", 1},
+                     {"FACTUAL", dir.filePath("factual.gpkg")},
+                     {"FORMULATED", dir.filePath("formulated.gpkg")},
+                     {"OUTPUT", dir.filePath(id == "profileplot" ? "out.gpkg" : "out.tif")}};
+  for (auto it = extra.begin(); it != extra.end(); ++it) params.insert(it.key(), it.value());
+  QgsProcessingContext ownContext;
+  RecordingFeedback defaultFeedback;
+  RecordingFeedback* log = feedback ? feedback : &defaultFeedback;
+  Run run;
+  run.results = alg->run(params, context ? *context : ownContext, log, &run.ok);
+  run.error = log->errors.join('\n');
+  return run;
+}
+
+// While alive, this process's files are limited to `bytes`: writes past it fail (EFBIG) as they
+// would on a full disk, SIGXFSZ ignored meanwhile.
+class FileSizeLimit {
+ public:
+  explicit FileSizeLimit(rlim_t bytes) {
+    REQUIRE(getrlimit(RLIMIT_FSIZE, &mBefore) == 0);
+    mHandler = std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{bytes, mBefore.rlim_max};
+    REQUIRE(setrlimit(RLIMIT_FSIZE, &limit) == 0);
+  }
+  ~FileSizeLimit() {
+    setrlimit(RLIMIT_FSIZE, &mBefore);
+    std::signal(SIGXFSZ, mHandler);
+  }
+  FileSizeLimit(const FileSizeLimit&) = delete;
+  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
+
+ private:
+  rlimit mBefore{};
+  void (*mHandler)(int) = SIG_DFL;
+};
+
+// Both line outputs in `dir`, as files of `format` ("gpkg", "shp", ...).
+inline QVariantMap outputsAs(const QTemporaryDir& dir, const char* format) {
+  return {{"FACTUAL", dir.filePath(QStringLiteral("factual.%1").arg(format))},
+          {"FORMULATED", dir.filePath(QStringLiteral("formulated.%1").arg(format))}};
+}
+
+// Runs the core directly on the same file through the CLI's GDAL reader, as the CLI does.
+inline SilhouetteResult coreResult(const QString& file, double azimuth, Geometry geometry) {
+  io::DemOptions options;
+  options.azimuth_deg = azimuth;
+  const io::Dem dem = io::read_dem(file.toStdString(), options);
+  SilhouetteParams params;
+  params.view.azimuth_deg = azimuth;
+  params.geometry = geometry;
+  return run_silhouettes(dem.oriented, dem.frame, dem.geotransform, params, {}, dem.lowest_height);
+}
+
+// Cancels the run once progress reaches `at` percent.
+class CancelAt : public RecordingFeedback {
+ public:
+  explicit CancelAt(double at, std::function<void()> onCancel = {}) {
+    connect(this, &QgsFeedback::progressChanged, this, [this, at, onCancel](double progress) {
+      if (progress < at || isCanceled()) return;
+      if (onCancel) onCancel();
+      cancel();
+    });
+  }
+};
+
+// The layer names of a vector file.
+inline QStringList layerNames(const QString& path) {
+  QStringList names;
+  GDALDatasetH ds =
+      GDALOpenEx(path.toUtf8().constData(), GDAL_OF_VECTOR, nullptr, nullptr, nullptr);
+  if (!ds) return names;
+  for (int k = 0; k < GDALDatasetGetLayerCount(ds); ++k)
+    names << QString::fromUtf8(OGR_L_GetName(GDALDatasetGetLayer(ds, k)));
+  GDALClose(ds);
+  return names;
+}
+
+}  // namespace tsk::plugin_test

@@ -1,0 +1,46 @@
+// The drape algorithm against the core.
+#include "plugin_test_support.h"
+
+using namespace tsk;
+using namespace tsk::plugin_test;
+
+TEST_CASE("the drape algorithm equals the core's drape", "[plugin][drape]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/volcano.tif";
+  // Drape the DEM onto itself: draped values are heights of visible cells.
+  const Run run =
+      runAlgorithm(dem, {{"SOURCE", dem}, {"AZIMUTH", 180}}, dir, nullptr, QStringLiteral("drape"));
+  INFO(run.error.toStdString());
+  REQUIRE(run.ok);
+  io::DemOptions options;
+  options.azimuth_deg = 180;
+  const io::Dem core = io::read_dem(dem.toStdString(), options);
+  ViewParams view;
+  view.azimuth_deg = 180;
+  CellFlags flags;
+  classify_visibility(core.oriented, core.frame.d, view, flags);
+  const PlanObliqueDrape drape(core.oriented, flags, core.frame, view,
+                               lowest_height(core.oriented));
+  const HeightGrid expected = drape.drape(io::read_bands(dem.toStdString()).at(0));
+  QgsRasterLayer layer(run.results.value("OUTPUT").toString(), "d", "gdal");
+  REQUIRE(layer.isValid());
+  REQUIRE(static_cast<std::size_t>(layer.width()) == drape.cols());
+  REQUIRE(static_cast<std::size_t>(layer.height()) == drape.rows());
+  std::unique_ptr<QgsRasterBlock> block(
+      layer.dataProvider()->block(1, layer.extent(), layer.width(), layer.height()));
+  for (int r = 0; r < layer.height(); ++r)
+    for (int c = 0; c < layer.width(); ++c) {
+      const float e = expected(static_cast<std::size_t>(r), static_cast<std::size_t>(c));
+      bool noData = false;
+      const double v = block->valueAndNoData(r, c, noData);
+      if (is_data(e)) {
+        REQUIRE(v == Approx(e));
+      } else {
+        REQUIRE((noData || std::isnan(v)));
+      }
+    }
+  const Run mismatch = runAlgorithm(dem, {{"SOURCE", kData + "/bei_5m_local.tif"}}, dir, nullptr,
+                                    QStringLiteral("drape"));
+  CHECK_FALSE(mismatch.ok);
+  CHECK(mismatch.error.contains("resample it to the DEM's grid"));
+}

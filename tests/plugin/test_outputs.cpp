@@ -1,0 +1,252 @@
+// Outputs whole or not at all: cancels, full disks, clashing outputs, layers added to existing
+// files, streaming into every format.
+#include "plugin_test_support.h"
+
+using namespace tsk;
+using namespace tsk::plugin_test;
+
+TEST_CASE("cancelling stops the run with an error and no result", "[plugin]") {
+  CancelAt feedback(0);
+  QTemporaryDir dir;
+  const Run run = runAlgorithm(kData + "/jacksboro_utm16n.tif", {}, dir, &feedback);
+  CHECK_FALSE(run.ok);
+  CHECK(run.error.contains("Cancelled"));
+  CHECK(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+}
+
+TEST_CASE("an output that cannot be written fails the run and leaves no other output",
+          "[plugin][outputs]") {
+  QTemporaryDir dir;
+  for (const char* format : {"gpkg", "shp"}) {
+    CAPTURE(format);
+    const QString missing = dir.filePath(QStringLiteral("missing/formulated.%1").arg(format));
+    const Run run =
+        runAlgorithm(kData + "/jacksboro_utm16n.tif",
+                     {{"FACTUAL", dir.filePath(QStringLiteral("factual.%1").arg(format))},
+                      {"FORMULATED", missing}},
+                     dir);
+    CHECK_FALSE(run.ok);
+    INFO(run.error.toStdString());
+    CHECK(run.error.contains(missing));
+    CHECK(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+  }
+}
+
+TEST_CASE("a disk that fills up fails the run in every format and leaves no file",
+          "[plugin][outputs]") {
+  // A file size limit on this process stands in for a full disk (writes past it fail, EFBIG).
+  // The GeoJSON, KML, GML and CSV drivers ignore failed writes: QGIS reported such cut-off
+  // files as written.
+  QTemporaryDir dir;
+  for (const char* format : {"geojson", "kml", "gml", "csv", "gpkg", "shp", "fgb"}) {
+    CAPTURE(format);
+    const Run run = [&] {
+      const FileSizeLimit full(64 * 1024);
+      return runAlgorithm(kData + "/jacksboro_utm16n.tif", outputsAs(dir, format), dir);
+    }();
+    INFO(run.error.toStdString());
+    CHECK_FALSE(run.ok);
+    const QStringList left = QDir(dir.path()).entryList(QDir::Files | QDir::Hidden);
+    INFO(left.join(' ').toStdString());
+    CHECK(left.isEmpty());
+    for (const QString& file : left) QFile::remove(dir.filePath(file));
+  }
+  // Without the limit each of them is written whole.
+  for (const char* format : {"geojson", "kml", "gml", "csv"}) {
+    CAPTURE(format);
+    const Run run = runAlgorithm(kData + "/jacksboro_utm16n.tif", outputsAs(dir, format), dir);
+    INFO(run.error.toStdString());
+    CHECK(run.ok);
+  }
+}
+
+TEST_CASE("a disk that fills up fails a raster or page output and leaves no file",
+          "[plugin][outputs]") {
+  // As above. GDAL writes a GeoTIFF's cached blocks as it closes it, where QGIS only logs the
+  // failure: the runs succeeded with the first 64 kB of their raster.
+  QTemporaryDir dir;
+  for (const char* id : {"classification", "rowslope", "filterdiagram"}) {
+    CAPTURE(id);
+    const QVariantMap output = id == std::string("filterdiagram")
+                                   ? QVariantMap{{"OUTPUT", dir.filePath("out.html")}}
+                                   : QVariantMap();
+    const Run run = [&] {
+      const FileSizeLimit full(16 * 1024);
+      return runAlgorithm(kData + "/jacksboro_utm16n.tif", output, dir, nullptr, id);
+    }();
+    INFO(run.error.toStdString());
+    CHECK_FALSE(run.ok);
+    CHECK(run.error.contains("File too large"));
+    CHECK(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
+    CHECK(runAlgorithm(kData + "/jacksboro_utm16n.tif", output, dir, nullptr, id).ok);
+    QFile::remove(dir.filePath("out.tif"));
+    QFile::remove(dir.filePath("out.html"));
+  }
+}
+
+TEST_CASE("strokes written before a cancel are removed with their files", "[plugin][outputs]") {
+  QTemporaryDir dir;
+  // Strokes go to the outputs as they complete: halfway, the shapefile holds some.
+  qint64 shapefileBytes = 0;
+  CancelAt feedback(50, [&] { shapefileBytes = QFileInfo(dir.filePath("factual.shp")).size(); });
+  const Run run =
+      runAlgorithm(kData + "/gorillas_utm32n.tif",
+                   {{"STRIPS", 17}, {"FACTUAL", dir.filePath("factual.shp")}}, dir, &feedback);
+  CHECK_FALSE(run.ok);
+  CHECK(run.error.contains("Cancelled"));
+  CHECK(shapefileBytes > 1000);
+  CHECK(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+}
+
+TEST_CASE("a cancelled run drops the layer it added to an existing GeoPackage",
+          "[plugin][outputs]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/gorillas_utm32n.tif";
+  const QString base = dir.filePath("base.gpkg");
+  REQUIRE(runAlgorithm(dem, {{"FACTUAL", base}}, dir).ok);
+  const QStringList before = layerNames(base);
+  REQUIRE(before.size() == 1);
+  const QString added = QStringLiteral("ogr:dbname='%1' table=\"added\" (geom)").arg(base);
+
+  CancelAt feedback(50);
+  const Run cancelled = runAlgorithm(dem, {{"STRIPS", 17}, {"FACTUAL", added}}, dir, &feedback);
+  CHECK_FALSE(cancelled.ok);
+  CHECK(layerNames(base) == before);
+  QgsVectorLayer kept(base, "kept", "ogr");
+  CHECK(kept.featureCount() > 0);
+
+  const Run run = runAlgorithm(dem, {{"FACTUAL", added}}, dir);
+  REQUIRE(run.ok);
+  CHECK(layerNames(base) == (before + QStringList{"added"}));
+  QgsVectorLayer layer(run.results.value("FACTUAL").toString(), "added", "ogr");
+  CHECK(layer.featureCount() == kept.featureCount());
+}
+
+TEST_CASE("an output into the file of a raster being read is refused, the raster kept",
+          "[plugin][outputs][robustness]") {
+  QTemporaryDir dir;
+  // A DEM in a GeoPackage, where the strokes could go too, and one in a GeoTIFF.
+  const QString gpkg = dir.filePath("dem.gpkg");
+  const QString tiff = dir.filePath("dem.tif");
+  REQUIRE(QFile::copy(kData + "/jacksboro_utm16n.tif", tiff));
+  REQUIRE(QFile::copy(kData + "/jacksboro_utm16n.tif.aux.xml", tiff + ".aux.xml"));
+  test::copy_raster_to_gpkg(QFile::encodeName(tiff).toStdString(),
+                            QFile::encodeName(gpkg).toStdString());
+  const auto bytes = [](const QString& path) {
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+  };
+  const QByteArray gpkgBytes = bytes(gpkg), tiffBytes = bytes(tiff);
+  REQUIRE(!gpkgBytes.isEmpty());
+  struct Case {
+    QString id, input;
+    QVariantMap extra;
+  };
+  const QString addedLayer = QStringLiteral("ogr:dbname='%1' table=\"added\" (geom)").arg(gpkg);
+  const Case cases[] = {
+      {"silhouettes", gpkg, {{"FACTUAL", gpkg}}},
+      {"silhouettes", gpkg, {{"FORMULATED", addedLayer}}},
+      {"profileplot", gpkg, {{"OUTPUT", dir.filePath("./dem.gpkg")}}},
+      {"classification", tiff, {{"OUTPUT", tiff}}},
+      {"drape", gpkg, {{"SOURCE", tiff}, {"OUTPUT", tiff}}},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.id.toStdString(), c.extra.keys().join(' ').toStdString());
+    const Run run = runAlgorithm(c.input, c.extra, dir, nullptr, c.id);
+    CHECK_FALSE(run.ok);
+    CHECK(run.error.contains("which this algorithm reads"));
+    CHECK(bytes(gpkg) == gpkgBytes);
+    CHECK(bytes(tiff) == tiffBytes);
+    CHECK(QDir(dir.path()).entryList(QDir::Files).join(' ').toStdString() ==
+          "dem.gpkg dem.tif dem.tif.aux.xml");
+  }
+  // Beside the raster, in a file of their own, the outputs are written.
+  const Run run = runAlgorithm(gpkg, {}, dir);
+  INFO(run.error.toStdString());
+  CHECK(run.ok);
+}
+
+TEST_CASE("two outputs into one file are refused unless both add a layer",
+          "[plugin][outputs][robustness]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/volcano.tif";
+  const auto layer = [&dir](const char* name) {
+    return QStringLiteral("ogr:dbname='%1' table=\"%2\" (geom)")
+        .arg(dir.filePath("both.gpkg"), name);
+  };
+  // The second output made would write over the first: the factual strokes were lost.
+  const QVariantMap clashes[] = {
+      {{"FACTUAL", dir.filePath("both.shp")}, {"FORMULATED", dir.filePath("./both.shp")}},
+      {{"FACTUAL", dir.filePath("both.gpkg")}, {"FORMULATED", dir.filePath("both.gpkg")}},
+      {{"FACTUAL", dir.filePath("both.gpkg")}, {"FORMULATED", layer("formulated")}},
+  };
+  std::unique_ptr<QgsProcessingAlgorithm> alg(algorithm());
+  for (const QVariantMap& outputs : clashes) {
+    CAPTURE(outputs.value("FORMULATED").toString().toStdString());
+    const Run run = runAlgorithm(dem, outputs, dir);
+    CHECK_FALSE(run.ok);
+    CHECK(run.error.contains("would both be written"));
+    CHECK(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+    // The dialog and batch mode ask before they run.
+    QVariantMap parameters = outputs;
+    parameters.insert("INPUT", dem);
+    parameters.insert("BAND", 1);
+    QgsProcessingContext context;
+    QString message;
+    CHECK_FALSE(alg->checkParameterValues(parameters, context, &message));
+    CHECK(message.contains("would both be written"));
+  }
+  // So are parameters that are each in range but not together.
+  QgsProcessingContext context;
+  QString message;
+  const QVariantMap good{{"INPUT", dem},
+                         {"BAND", 1},
+                         {"FACTUAL", "TEMPORARY_OUTPUT"},
+                         {"FORMULATED", "TEMPORARY_OUTPUT"}};
+  CHECK(alg->checkParameterValues(good, context, &message));
+  QVariantMap crossed = good;
+  crossed.insert("CTRL_COL", 13);
+  CHECK_FALSE(alg->checkParameterValues(crossed, context, &message));
+  CHECK(message.contains("control point"));
+  const Run run =
+      runAlgorithm(dem, {{"FACTUAL", layer("factual")}, {"FORMULATED", layer("formulated")}}, dir);
+  INFO(run.error.toStdString());
+  CHECK(run.ok);
+}
+
+TEST_CASE("strokes stream into shapefiles and memory layers too", "[plugin][outputs]") {
+  const QString dem = kData + "/jacksboro_utm16n.tif";
+  QTemporaryDir dir;
+  QgsProcessingContext context;
+  const Run run = runAlgorithm(
+      dem, {{"FACTUAL", dir.filePath("factual.shp")}, {"FORMULATED", "TEMPORARY_OUTPUT"}}, dir,
+      nullptr, QStringLiteral("silhouettes"), &context);
+  INFO(run.error.toStdString());
+  REQUIRE(run.ok);
+  const SilhouetteResult core = coreResult(dem, 90, Geometry::map);
+  QgsVectorLayer shapefile(run.results.value("FACTUAL").toString(), "f", "ogr");
+  auto* memory = qobject_cast<QgsVectorLayer*>(
+      QgsProcessingUtils::mapLayerFromString(run.results.value("FORMULATED").toString(), context));
+  REQUIRE(shapefile.isValid());
+  REQUIRE(memory != nullptr);
+  CHECK(memory->providerType() == "memory");
+  std::size_t k = 0;
+  for (QgsVectorLayer* layer : {&shapefile, memory}) {
+    QgsFeatureIterator it = layer->getFeatures();
+    QgsFeature feature;
+    while (it.nextFeature(feature)) {
+      REQUIRE(k < core.strokes.size());
+      const Stroke& s = core.strokes[k++];
+      REQUIRE(feature.attribute("class").toString() == stroke_class_name(s.cls));
+      REQUIRE(feature.attribute("cells").toInt() == s.cells);
+      REQUIRE(feature.attribute("mean_depth").isNull() == std::isnan(s.mean_depth_m));
+      // A shapefile reads back its lines as multi-lines of one part.
+      const QgsGeometry geometry = feature.geometry();
+      const QgsPolylineXY line =
+          geometry.isMultipart() ? geometry.asMultiPolyline().value(0) : geometry.asPolyline();
+      REQUIRE(static_cast<std::size_t>(line.size()) == s.points.size());
+      REQUIRE(line.back().x() == Approx(s.points.back().x));
+    }
+  }
+  CHECK(k == core.strokes.size());
+}

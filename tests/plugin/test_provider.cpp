@@ -1,0 +1,48 @@
+// The provider: help for every algorithm and parameter, the German translation.
+#include "plugin_test_support.h"
+
+using namespace tsk;
+using namespace tsk::plugin_test;
+
+TEST_CASE("every algorithm and parameter has help, and numbers show what they can take",
+          "[plugin]") {
+  algorithm();  // registers the provider
+  const QgsProcessingProvider* provider =
+      QgsApplication::processingRegistry()->providerById(QStringLiteral("terrainsketch"));
+  REQUIRE(provider != nullptr);
+  REQUIRE(provider->algorithms().size() == 7);
+  for (const QgsProcessingAlgorithm* alg : provider->algorithms()) {
+    CAPTURE(alg->id().toStdString());
+    CHECK(alg->shortHelpString().size() > 100);
+    for (const QgsProcessingParameterDefinition* parameter : alg->parameterDefinitions()) {
+      CAPTURE(parameter->name().toStdString());
+      CHECK(parameter->help().size() > 10);
+      const auto* number = dynamic_cast<const QgsProcessingParameterNumber*>(parameter);
+      if (!number || number->dataType() != plugin::kDoubleNumber) continue;
+      // The widget rounds to its decimals: both the default and the minimum must survive.
+      const int decimals = number->metadata()
+                               .value(QStringLiteral("widget_wrapper"))
+                               .toMap()
+                               .value(QStringLiteral("decimals"), 6)
+                               .toInt();
+      CHECK(decimals <= 3);
+      const double scale = std::pow(10.0, decimals);
+      for (const double value : {number->defaultValue().toDouble(), number->minimum()})
+        CHECK(std::round(value * scale) / scale == Approx(value).margin(1e-12));
+    }
+  }
+}
+
+TEST_CASE("the German translation loads for the de locale", "[plugin][i18n]") {
+  // The code under test is linked into this binary, so name the built plugin's i18n folder.
+  const QString folder = QStringLiteral(TSK_PLUGIN_DIR "/i18n");
+  REQUIRE(plugin::installTranslation(QStringLiteral("de"), folder));
+  const plugin::TerrainSketchProvider provider;
+  CHECK(provider.name() == QStringLiteral("Geländeskizze"));
+  std::unique_ptr<QgsProcessingAlgorithm> alg(algorithm());
+  CHECK(alg->displayName() == QStringLiteral("Silhouetten (faktisch und formuliert)"));
+  CHECK(alg->parameterDefinition("VE")->description() == QStringLiteral("Überhöhung"));
+  plugin::removeTranslation();
+  CHECK(provider.name() == QStringLiteral("Terrain sketch"));
+  CHECK_FALSE(plugin::installTranslation(QStringLiteral("xx"), folder));
+}

@@ -1,0 +1,252 @@
+// Reading a QGIS raster layer (RasterGrid): bad input ends in a clear message, notes become
+// warnings, files are read straight through GDAL with the provider's heights, rotated rasters.
+#include "plugin_test_support.h"
+
+using namespace tsk;
+using namespace tsk::plugin_test;
+
+TEST_CASE("bad input ends in a clear message, never a crash", "[plugin][robustness]") {
+  QTemporaryDir dir;
+  const QString sample = kData + "/jacksboro_utm16n.tif";
+  struct Bad {
+    QString input;
+    QVariantMap extra;
+    const char* message;
+  };
+  const Bad cases[] = {
+      {kData + "/jacksboro_geo.tif", {}, "geographic CRS"},
+      {sample, {{"BAND", 2}}, "Band 2 does not exist"},
+      {sample, {{"CTRL_COL", 12.5}}, "control point"},
+      {dir.filePath("missing.tif"), {}, ""},
+  };
+  for (const Bad& b : cases) {
+    CAPTURE(b.input.toStdString(), b.message);
+    const Run run = runAlgorithm(b.input, b.extra, dir);
+    CHECK_FALSE(run.ok);
+    CHECK_THAT(run.error.toStdString(), Catch::Contains(b.message));
+  }
+}
+
+TEST_CASE("a raster without CRS runs with a warning in the log", "[plugin]") {
+  RecordingFeedback log;
+  QTemporaryDir dir;
+  const Run run = runAlgorithm(kData + "/bei_5m_local.tif", {}, dir, &log);
+  CHECK(run.ok);
+  CHECK(log.warnings.join(' ').contains("no CRS"));
+}
+
+TEST_CASE("an undeclared fill value among the heights gets a warning", "[plugin]") {
+  QTemporaryDir dir;
+  const auto filled = [](int band, int r, int c) {
+    return c < 6 ? -32768.0f : test::hill(band, r, c);
+  };
+  const QString undeclared = dir.filePath("filled.tif"), declared = dir.filePath("declared.tif");
+  test::write_tiff(undeclared.toStdString(), 40, 40, 1, filled, test::kNorthUp, 32616);
+  test::write_tiff(declared.toStdString(), 40, 40, 1, filled, test::kNorthUp, 32616, -32768.0);
+  RecordingFeedback log;
+  REQUIRE(runAlgorithm(undeclared, {}, dir, &log).ok);
+  CHECK(log.warnings.join(' ').contains("-32768, a common fill value"));
+  RecordingFeedback quiet;
+  REQUIRE(runAlgorithm(declared, {}, dir, &quiet).ok);
+  CHECK_FALSE(quiet.warnings.join(' ').contains("fill value"));
+}
+
+TEST_CASE("heights that rise more than any terrain get a warning", "[plugin]") {
+  // The hill in millimetres: 300 000 over a raster 400 m across.
+  QTemporaryDir dir;
+  const QString millimetres = dir.filePath("mm.tif"), metres = dir.filePath("m.tif");
+  test::write_tiff(
+      millimetres.toStdString(), 40, 40, 1,
+      [](int band, int r, int c) { return 1000 * test::hill(band, r, c); }, test::kNorthUp, 32616);
+  test::write_tiff(metres.toStdString(), 40, 40, 1, test::hill, test::kNorthUp, 32616);
+  RecordingFeedback log, quiet;
+  REQUIRE(runAlgorithm(millimetres, {}, dir, &log).ok);
+  CHECK(log.warnings.join(' ').contains("more than any terrain"));
+  REQUIRE(runAlgorithm(metres, {}, dir, &quiet).ok);
+  CHECK_FALSE(quiet.warnings.join(' ').contains("more than any terrain"));
+}
+
+TEST_CASE("a CRS in feet runs with a warning that heights must be in feet too", "[plugin]") {
+  QTemporaryDir dir;
+  const QString feet = dir.filePath("feet.tif");
+  const double geotransform[6] = {2000000, 30, 0, 700000, 0, -30};
+  test::write_tiff(feet.toStdString(), 40, 40, 1, test::hill, geotransform, 2264);
+  RecordingFeedback log;
+  const Run run = runAlgorithm(feet, {}, dir, &log);
+  CHECK(run.ok);
+  CHECK(log.warnings.join(' ').contains("not the metre"));
+  RecordingFeedback metres;
+  REQUIRE(runAlgorithm(kData + "/gorillas_utm32n.tif", {}, dir, &metres).ok);
+  CHECK_FALSE(metres.warnings.join(' ').contains("not the metre"));
+}
+
+TEST_CASE("a GDAL layer's file is read straight through GDAL, with the provider's heights",
+          "[plugin][strips]") {
+  const QString dem = kData + "/gorillas_utm32n.tif";  // with a nodata border
+  QgsRasterLayer plain(dem, "plain", "gdal");
+  QgsRasterLayer masked(dem, "masked", "gdal");
+  // A nodata range set in QGIS, holding no height: the provider must read it, same heights.
+  masked.dataProvider()->setUserNoDataValue(1, {QgsRasterRange(-1e30, -1e29)});
+  QTemporaryDir dir;
+  const QString scaledPath = dir.filePath("scaled.tif");
+  {
+    GDALDatasetH source = GDALOpen(dem.toUtf8().constData(), GA_ReadOnly);
+    GDALDatasetH copy =
+        GDALCreateCopy(GDALGetDriverByName("GTiff"), scaledPath.toUtf8().constData(), source, 0,
+                       nullptr, nullptr, nullptr);
+    GDALSetRasterScale(GDALGetRasterBand(copy, 1), 2.0);
+    GDALSetRasterOffset(GDALGetRasterBand(copy, 1), 100.0);
+    GDALClose(copy);
+    GDALClose(source);
+  }
+  // Its values x 2 + 100: read straight, the scale and offset are applied as the provider does.
+  QgsRasterLayer scaled(scaledPath, "scaled", "gdal");
+  QgsRasterLayer scaledMasked(scaledPath, "scaled, masked", "gdal");
+  scaledMasked.dataProvider()->setUserNoDataValue(1, {QgsRasterRange(-1e30, -1e29)});
+  const QgsCoordinateTransformContext transforms;
+  plugin::RasterGrid direct(&plain, 1, transforms), provider(&masked, 1, transforms);
+  plugin::RasterGrid scaledDirect(&scaled, 1, transforms);
+  plugin::RasterGrid scaledProvider(&scaledMasked, 1, transforms);
+  CHECK(direct.readsFileDirectly());
+  CHECK_FALSE(provider.readsFileDirectly());
+  CHECK(scaledDirect.readsFileDirectly());
+  CHECK_FALSE(scaledProvider.readsFileDirectly());
+  const auto same = [](const HeightGrid& a, const HeightGrid& b) {
+    if (a.rows() != b.rows() || a.cols() != b.cols()) return false;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      const float x = a.data()[k], y = b.data()[k];
+      if (!(x == y || (std::isnan(x) && std::isnan(y)))) return false;
+    }
+    return true;
+  };
+  CHECK(lowestOf(direct) == lowestOf(provider));
+  CHECK(lowestOf(scaledDirect) == lowestOf(scaledProvider));
+  CHECK(lowestOf(scaledDirect) == Approx(2 * lowestOf(direct) + 100));
+  for (auto [straight, through] :
+       {std::pair{&direct, &provider}, std::pair{&scaledDirect, &scaledProvider}}) {
+    for (double az : {90.0, 0.0, 45.0}) {
+      CAPTURE(straight == &scaledDirect, az);
+      ViewStrips straightStrips(*straight, az), throughStrips(*through, az);
+      const std::size_t profiles = straightStrips.source.frame.profiles;
+      HeightGrid a, b;
+      std::size_t nodata = 0;
+      for (std::size_t first = 0; first < profiles; first += 17) {
+        const std::size_t count = std::min<std::size_t>(19, profiles - first);
+        straightStrips.loader.load(first, count, a);
+        throughStrips.loader.load(first, count, b);
+        REQUIRE(same(a, b));
+        nodata += static_cast<std::size_t>(
+            std::count_if(a.data(), a.data() + a.size(), [](float z) { return std::isnan(z); }));
+      }
+      CHECK(nodata > 0);
+    }
+  }
+  ViewStrips directRows(direct, 90), scaledRows(scaledDirect, 90);  // profiles are the rows
+  HeightGrid metres, values;
+  directRows.loader.load(0, directRows.source.frame.profiles, metres);
+  scaledRows.loader.load(0, scaledRows.source.frame.profiles, values);
+  REQUIRE(metres.size() == values.size());
+  for (std::size_t k = 0; k < metres.size(); ++k) {
+    const float z = metres.data()[k];
+    if (is_data(z)) REQUIRE(values.data()[k] == static_cast<float>(2.0 * z + 100.0));
+  }
+}
+
+TEST_CASE("a raster that fails to read partway fails the run and leaves no output",
+          "[plugin][outputs][robustness]") {
+  QTemporaryDir dir;
+  const std::string folder = dir.path().toStdString();
+  test::write_tiff(folder + "/top.tif", 40, 40, 1, test::hill, test::kNorthUp, 32616);
+  test::write_half_missing_vrt(folder + "/dem.vrt", "top.tif");
+  const QStringList before = QDir(dir.path()).entryList(QDir::Files);
+  for (const char* format : {"gpkg", "shp"}) {
+    CAPTURE(format);
+    const Run run =
+        runAlgorithm(dir.filePath("dem.vrt"),
+                     {{"STRIPS", 5},
+                      {"FACTUAL", dir.filePath(QStringLiteral("factual.%1").arg(format))},
+                      {"FORMULATED", dir.filePath(QStringLiteral("formulated.%1").arg(format))}},
+                     dir);
+    CHECK_FALSE(run.ok);
+    CHECK(run.error.contains("gone.tif"));
+    CHECK(QDir(dir.path()).entryList(QDir::Files) == before);
+  }
+}
+
+TEST_CASE("a DEM too large to hold whole is refused by the algorithms that need it whole",
+          "[plugin][robustness]") {
+  QTemporaryDir dir;
+  test::write_huge_vrt(dir.filePath("huge.vrt").toStdString());
+  for (const char* id : {"classification", "rowslope", "profileplot"}) {
+    CAPTURE(id);
+    const Run run = runAlgorithm(dir.filePath("huge.vrt"), {}, dir, nullptr, id);
+    CHECK_FALSE(run.ok);
+    CHECK(run.error.contains("too large"));
+    CHECK(QDir(dir.path()).entryList(QDir::Files) == QStringList{"huge.vrt"});
+  }
+}
+
+TEST_CASE("a rotated or south-up raster is read as QGIS warps it, through its provider",
+          "[plugin][robustness]") {
+  QTemporaryDir dir;
+  const double rotated[6] = {500000, 10, 2, 4000000, 2, -10};
+  const double southUp[6] = {500000, 10, 0, 3999600, 0, 10};
+  for (const double* transform : {rotated, southUp}) {
+    const QString path = dir.filePath(transform == rotated ? "rotated.tif" : "south_up.tif");
+    CAPTURE(path.toStdString());
+    test::write_tiff(path.toStdString(), 40, 40, 1, test::hill, transform, 32616);
+    QgsRasterLayer layer(path, "warped", "gdal");
+    REQUIRE(layer.isValid());
+    CHECK_FALSE(plugin::RasterGrid(&layer, 1, QgsCoordinateTransformContext()).readsFileDirectly());
+    const Run run = runAlgorithm(path, {}, dir);
+    INFO(run.error.toStdString());
+    REQUIRE(run.ok);
+    CHECK(run.results.value("FACTUAL_STROKES").toDouble() > 0);
+  }
+  // A plain turned by QGIS: the cells it adds around it (0, as the file has no nodata value) are
+  // no data, not a 500 m drop along the plain's edges.
+  const QString plain = dir.filePath("rotated_plain.tif");
+  test::write_tiff(
+      plain.toStdString(), 40, 40, 1, [](int, int, int) { return 500.0f; }, rotated, 32616);
+  QgsRasterLayer layer(plain, "rotated plain", "gdal");
+  plugin::RasterGrid grid(&layer, 1, QgsCoordinateTransformContext());
+  CHECK(grid.notes().join(' ').contains("rotated"));
+  ViewStrips rows(grid, 90);
+  HeightGrid heights;
+  rows.loader.load(0, rows.source.frame.profiles, heights);
+  const auto nodata = std::count_if(heights.data(), heights.data() + heights.size(),
+                                    [](float z) { return std::isnan(z); });
+  CHECK(nodata > 0);
+  CHECK(std::all_of(heights.data(), heights.data() + heights.size(),
+                    [](float z) { return std::isnan(z) || z == 500.0f; }));
+  const Run run = runAlgorithm(plain, {}, dir);
+  REQUIRE(run.ok);
+  CHECK(run.results.value("FACTUAL_STROKES").toDouble() == 0);
+  CHECK(run.results.value("FORMULATED_STROKES").toDouble() == 0);
+}
+
+TEST_CASE("the band asked for is the band read from the file", "[plugin][strips]") {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("two_bands.tif");
+  test::write_tiff(
+      path.toStdString(), 40, 40, 2, [](int b, int r, int c) { return test::hill(b, r, c) * b; },
+      test::kNorthUp, 32616);
+  QgsRasterLayer layer(path, "two", "gdal");
+  REQUIRE(layer.isValid());
+  plugin::RasterGrid first(&layer, 1, QgsCoordinateTransformContext());
+  plugin::RasterGrid second(&layer, 2, QgsCoordinateTransformContext());
+  REQUIRE(second.readsFileDirectly());
+  HeightGrid a, b;
+  ViewStrips firstRows(first, 90), secondRows(second, 90);
+  firstRows.loader.load(0, 40, a);
+  secondRows.loader.load(0, 40, b);
+  REQUIRE(a.size() == b.size());
+  std::size_t compared = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (a.data()[k] > 1) {
+      REQUIRE(b.data()[k] == 2 * a.data()[k]);
+      ++compared;
+    }
+  }
+  CHECK(compared > 100);
+}

@@ -1,0 +1,35 @@
+// The row slope algorithm against the core.
+#include "plugin_test_support.h"
+
+using namespace tsk;
+using namespace tsk::plugin_test;
+
+TEST_CASE("the row slope map equals the core's", "[plugin][diagnostics]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/volcano.tif";
+  const Run run = runAlgorithm(dem, {{"AZIMUTH", 30}}, dir, nullptr, QStringLiteral("rowslope"));
+  INFO(run.error.toStdString());
+  REQUIRE(run.ok);
+  io::DemOptions options;
+  options.azimuth_deg = 30;
+  const io::Dem core = io::read_dem(dem.toStdString(), options);
+  const HeightGrid expected = row_slope_map(core.oriented, core.frame);
+  QgsRasterLayer layer(run.results.value("OUTPUT").toString(), "r", "gdal");
+  REQUIRE(layer.isValid());
+  std::unique_ptr<QgsRasterBlock> block(
+      layer.dataProvider()->block(1, layer.extent(), layer.width(), layer.height()));
+  int compared = 0;
+  for (int r = 0; r < layer.height(); ++r)
+    for (int c = 0; c < layer.width(); ++c) {
+      const float e = expected(static_cast<std::size_t>(r), static_cast<std::size_t>(c));
+      bool noData = false;
+      const double v = block->valueAndNoData(r, c, noData);
+      if (!is_data(e)) {
+        REQUIRE((noData || std::isnan(v)));
+      } else {
+        REQUIRE(v == Approx(e).margin(1e-4));
+        ++compared;
+      }
+    }
+  CHECK(compared > 3000);
+}

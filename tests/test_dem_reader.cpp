@@ -1,0 +1,73 @@
+// The io/ layer's DEM reading: band windows down a tiled file, with GDAL's cache kept to the
+// rows in use.
+#include <gdal_priv.h>
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <vector>
+
+#include "dem_reader.h"
+#include "gdal_test_support.h"
+
+using namespace tsk;
+using test::ScratchDir;
+
+TEST_CASE("band windows read a file's heights and let GDAL keep only the rows in use",
+          "[io][strips]") {
+  ScratchDir dir("windows");
+  const std::string path = dir / "tiled.tif";
+  constexpr int kRows = 2048, kCols = 512, kTile = 64;
+  {
+    GDALAllRegister();
+    const char* options[] = {"TILED=YES", "BLOCKXSIZE=64", "BLOCKYSIZE=64", nullptr};
+    GDALDataset* ds = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
+        path.c_str(), kCols, kRows, 1, GDT_Float32, const_cast<char**>(options));
+    REQUIRE(ds != nullptr);
+    std::vector<float> values(static_cast<std::size_t>(kRows) * kCols);
+    for (int r = 0; r < kRows; ++r)
+      for (int c = 0; c < kCols; ++c)
+        values[static_cast<std::size_t>(r) * kCols + c] = r * 1000.0f + c;
+    values[5 * kCols + 7] = -9999;  // nodata
+    ds->GetRasterBand(1)->SetNoDataValue(-9999);
+    REQUIRE(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, kCols, kRows, values.data(), kCols,
+                                           kRows, GDT_Float32, 0, 0) == CE_None);
+    GDALClose(ds);
+  }
+  const io::BandWindows windows(path, 1);
+  CHECK(windows.rows() == kRows);
+  CHECK(windows.cols() == kCols);
+  const auto check_window = [&](const DemWindow& w) {
+    std::vector<float> heights(w.rows * w.cols);
+    windows.read(w, heights.data());
+    for (std::size_t r = 0; r < w.rows; ++r) {
+      for (std::size_t c = 0; c < w.cols; ++c) {
+        const std::size_t row = w.row0 + r, col = w.col0 + c;
+        const float z = heights[r * w.cols + c];
+        if (row == 5 && col == 7) {
+          REQUIRE(std::isnan(z));
+        } else {
+          REQUIRE(z == static_cast<float>(row) * 1000.0f + static_cast<float>(col));
+        }
+      }
+    }
+  };
+  // Strips down the file, each starting on the row before the last one's end, as a cardinal
+  // view reads them: GDAL keeps no more than the block rows of the last rows read.
+  const GIntBig before = GDALGetCacheUsed64();
+  const GIntBig block_row = static_cast<GIntBig>(kTile) * kCols * 4;
+  GIntBig most = 0;
+  for (std::size_t top = 0; top + 2 < kRows; top += 98) {
+    check_window({top, 0, std::min<std::size_t>(100, kRows - top), kCols});
+    most = std::max(most, GDALGetCacheUsed64() - before);
+  }
+  CHECK(most > 0);
+  CHECK(most <= 2 * block_row);
+  // Bands jump back up at each new strip, a few columns further on.
+  for (std::size_t band = 0; band < 3; ++band) {
+    for (std::size_t top = band * 100; top < kRows - 200; top += 300)
+      check_window({top, band * 50, 60, 120});
+  }
+  CHECK_THROWS_AS(io::BandWindows(path, 2), Error);
+  CHECK_THROWS_AS(io::BandWindows(dir / "missing.tif", 1), Error);
+}
