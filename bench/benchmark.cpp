@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "terrain_sketch.h"
+#include "whole_grid_stages.h"
 
 #ifdef TSK_BENCH_WITH_GDAL
 #include <gdal_priv.h>

@@ -7,6 +7,7 @@
 #include <new>
 
 #include "commands.h"
+#include "dem_note_text.h"
 #include "errors.h"
 #include "interrupt.h"
 #include "progress_line.h"
@@ -115,6 +116,8 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   } catch (const Cancelled&) {
     err << (line.started() ? "\n" : "") << "terrain-sketch: interrupted; no output written\n";
     return 130;
+  } catch (const io::DemRefused& e) {
+    err << "terrain-sketch: " << refusal_text(e) << "\n";
   } catch (const Error& e) {
     err << "terrain-sketch: " << e.what() << "\n";
   } catch (const std::bad_alloc&) {

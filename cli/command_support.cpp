@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "dem_note_text.h"
 #include "errors.h"
 #include "output_files.h"
 
@@ -12,7 +13,7 @@ namespace tsk::cli {
 
 io::Dem load_dem(const Options& o, std::ostream& err) {
   io::Dem dem = io::read_dem(o.input, o.dem);
-  if (!dem.notes.empty()) err << "note: " << dem.notes;
+  print_notes(dem.notes, err);
   return dem;
 }
 

@@ -6,6 +6,7 @@
 
 #include "command_support.h"
 #include "commands.h"
+#include "dem_note_text.h"
 #include "interrupt.h"
 #include "output_files.h"
 #include "preview.h"
@@ -41,7 +42,7 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
   const Options o = parse(args);
   io::check_vector_output(o.output, o.format);  // before any work
   const io::DemFile dem(o.input, o.dem);
-  if (!dem.info().notes.empty()) err << "note: " << dem.info().notes;
+  print_notes(dem.info().notes, err);
   const bool preview = !o.preview.empty();
   if (preview) io::refuse_too_large_to_turn(o.input, dem.info());  // before any work too
   // Strokes are written as they complete, so they are never all held (but for the preview).

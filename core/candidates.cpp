@@ -18,16 +18,4 @@ void select_profile_candidates(const float* z, std::uint8_t* flags, std::size_t 
   }
 }
 
-void select_candidates(const HeightGrid& z, double d, const ViewParams& view, CellFlags& flags,
-                       unsigned threads, const ProgressFn& progress) {
-  const std::size_t length = z.cols();
-  parallel_for(
-      z.rows(), threads,
-      [&](std::size_t begin, std::size_t end) {
-        for (std::size_t p = begin; p < end; ++p)
-          select_profile_candidates(z.row(p), flags.row(p), length, d, view);
-      },
-      progress);
-}
-
 }  // namespace tsk

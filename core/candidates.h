@@ -31,8 +31,4 @@ inline bool is_candidate_slope(double gc, const ViewParams& view) {
 void select_profile_candidates(const float* z, std::uint8_t* flags, std::size_t length, double d,
                                const ViewParams& view);
 
-// The same on every profile.
-void select_candidates(const HeightGrid& z, double d, const ViewParams& view, CellFlags& flags,
-                       unsigned threads = 0, const ProgressFn& progress = {});
-
 }  // namespace tsk

@@ -28,25 +28,6 @@ std::ptrdiff_t nearest_overlapping(const ProfileCandidates& next,
   return best;
 }
 
-// Runs the linker over a whole classified grid and gathers the chains of two cells or more.
-std::vector<Chain> link_grid(const CellFlags& flags, bool factual, int window) {
-  ChainLinker linker(factual, window);
-  std::vector<Chain> chains;
-  ProfileCandidates candidates;
-  for (std::size_t p = 0; p < flags.rows(); ++p) {
-    profile_candidates(flags.row(p), flags.cols(), factual, candidates);
-    const auto& joined = linker.add_profile(candidates);
-    for (std::size_t k = 0; k < joined.size(); ++k) {
-      if (joined[k].id >= chains.size()) chains.resize(joined[k].id + 1);
-      chains[joined[k].id].push_back({static_cast<std::int32_t>(p), candidates.cell[k]});
-    }
-  }
-  chains.erase(
-      std::remove_if(chains.begin(), chains.end(), [](const Chain& c) { return c.size() < 2; }),
-      chains.end());
-  return chains;
-}
-
 }  // namespace
 
 void profile_candidates(const std::uint8_t* f, std::size_t length, bool factual,
@@ -127,14 +108,6 @@ const std::vector<ChainRef>& ChainLinker::close_all() {
   for (const Open& o : open_) closed_.push_back(o.chain);
   open_.clear();
   return closed_;
-}
-
-std::vector<Chain> chain_factual(const CellFlags& flags) {
-  return link_grid(flags, true, 0);
-}
-
-std::vector<Chain> chain_formulated(const CellFlags& flags, int window) {
-  return link_grid(flags, false, window);
 }
 
 }  // namespace tsk

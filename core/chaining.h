@@ -78,12 +78,4 @@ class ChainLinker {
   std::uint32_t slot_count_ = 0;
 };
 
-// Factual Silhouettes: an occluding cell links to the unused occluding cell on the next profile
-// whose [cell, end of hidden zone] interval overlaps its own, nearest first, ties to the front.
-std::vector<Chain> chain_factual(const CellFlags& flags);
-
-// Formulated Silhouettes: a t-set cell links to the unused t-set cell on the next profile within
-// `window` cells, nearest first, ties to the front. Chains of one cell are never returned.
-std::vector<Chain> chain_formulated(const CellFlags& flags, int window);
-
 }  // namespace tsk

@@ -94,20 +94,6 @@ inline bool is_data(float z) {
   return std::isfinite(z);
 }
 
-// True for the heights DEM producers write where they have none (-9999, -32767, -32768,
-// -99999, and float's lowest values): read as heights, in a raster that does not declare them
-// nodata, they make cliffs at its holes and edges that the silhouettes outline.
-inline bool is_common_fill_value(double z) {
-  return z == -9999.0 || z == -32767.0 || z == -32768.0 || z == -99999.0 || z <= -1e30;
-}
-
-// True when heights spanning `relief` rise more than five times the width `across` of their DEM
-// (in the same unit): no terrain does, heights in millimetres or centimetres over cells in
-// metres do, and every bump of them then occludes.
-inline bool implausible_relief(double relief, double across) {
-  return relief > 5.0 * across;
-}
-
 // The lowest height with data among those added: the plan-oblique reference (SPEC 1.9), 0 when
 // none had data.
 class LowestHeight {

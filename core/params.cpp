@@ -63,8 +63,4 @@ Placement parse_placement(const std::string& name) {
   throw Error("placement must be 'far' or 'near_and_far', got '" + name + "'");
 }
 
-const char* geometry_name(Geometry geometry) {
-  return geometry == Geometry::map ? "map" : "oblique";
-}
-
 }  // namespace tsk

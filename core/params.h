@@ -49,6 +49,5 @@ struct SilhouetteParams {
 
 Geometry parse_geometry(const std::string& name);
 Placement parse_placement(const std::string& name);
-const char* geometry_name(Geometry geometry);
 
 }  // namespace tsk

@@ -42,16 +42,4 @@ void filter_profile(const ProfileRows& profile, std::uint8_t* flags, std::size_t
   }
 }
 
-void apply_slope_filter(const HeightGrid& z, double d, double w, const FilterParams& filter,
-                        CellFlags& flags, unsigned threads, const ProgressFn& progress) {
-  const std::size_t length = z.cols();
-  parallel_for(
-      z.rows(), threads,
-      [&](std::size_t begin, std::size_t end) {
-        for (std::size_t p = begin; p < end; ++p)
-          filter_profile(profile_rows(z, p), flags.row(p), length, d, w, filter);
-      },
-      progress);
-}
-
 }  // namespace tsk

@@ -63,17 +63,8 @@ class FilterRule {
   double col_cut_, row_cut_, ctrl_row_, eq3_rate_, eq4_run_;
 };
 
-// The filter's decision for magnitudes of column and row slope in percent (FilterRule::accepts).
-inline bool filter_accepts(const FilterParams& filter, double col_pct, double row_pct) {
-  return FilterRule(filter).accepts(col_pct, row_pct);
-}
-
 // Sets `filtered` on the visible c-set cells of one profile that the filter accepts.
 void filter_profile(const ProfileRows& rows, std::uint8_t* flags, std::size_t length, double d,
                     double w, const FilterParams& filter);
-
-// The same on every profile.
-void apply_slope_filter(const HeightGrid& z, double d, double w, const FilterParams& filter,
-                        CellFlags& flags, unsigned threads = 0, const ProgressFn& progress = {});
 
 }  // namespace tsk

@@ -21,11 +21,9 @@
 //   filter_diagram.h  column against row slope scatter with the filter's removal region (HTML)
 //
 // Support: grid.h (the grid type, NaN nodata), flags.h (per-cell classification bits),
-// params.h (every parameter with its default), parallel.h (threads, progress, cancellation),
-// analytic_terrain.h (plane, step, bump, cone, ridge).
+// params.h (every parameter with its default), parallel.h (threads, progress, cancellation).
 #pragma once
 
-#include "analytic_terrain.h"
 #include "candidates.h"
 #include "chaining.h"
 #include "diagnostics.h"

@@ -17,14 +17,4 @@ void thin_profile(std::uint8_t* flags, std::size_t length, Placement placement) 
   }
 }
 
-void thin(CellFlags& flags, Placement placement, unsigned threads, const ProgressFn& progress) {
-  parallel_for(
-      flags.rows(), threads,
-      [&](std::size_t begin, std::size_t end) {
-        for (std::size_t p = begin; p < end; ++p)
-          thin_profile(flags.row(p), flags.cols(), placement);
-      },
-      progress);
-}
-
 }  // namespace tsk

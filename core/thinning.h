@@ -14,7 +14,4 @@ namespace tsk {
 // its first) as `thinned`.
 void thin_profile(std::uint8_t* flags, std::size_t length, Placement placement);
 
-void thin(CellFlags& flags, Placement placement, unsigned threads = 0,
-          const ProgressFn& progress = {});
-
 }  // namespace tsk

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "dem_notes.h"
 #include "gdal_util.h"
 #include "orient.h"
 #include "silhouettes.h"
@@ -22,11 +23,28 @@ struct Dem {
   HeightGrid oriented;
   OrientedFrame frame;
   GeoTransform geotransform;
-  std::string srs_wkt;        // empty when the raster has no CRS
-  double ground_scale = 1.0;  // ground metres per map unit used for the cell sizes
-  std::string notes;          // things the user should know (no CRS, assumed units), one per line
+  std::string srs_wkt;         // empty when the raster has no CRS
+  double ground_scale = 1.0;   // ground metres per map unit used for the cell sizes
+  std::vector<DemNote> notes;  // what the user should know (no CRS, assumed units, ...)
   std::size_t rows = 0, cols = 0;
   double lowest_height = 0;  // the DEM's lowest height, the plan-oblique reference (SPEC 1.9)
+};
+
+// Warped, a DEM gains cells around its own; without a nodata value they would be 0, and their
+// edge a cliff in every view: the gdalwarp hints pass this.
+inline constexpr char kWarpNoData[] = "-dstnodata -9999";
+
+// A DEM the method cannot take as it is (a geographic CRS, whose cell sizes are degrees): the
+// note says why, for the front end to word.
+class DemRefused : public Error {
+ public:
+  DemRefused(const std::string& path, DemNote note);
+  const std::string& path() const { return path_; }
+  const DemNote& note() const { return note_; }
+
+ private:
+  std::string path_;
+  DemNote note_;
 };
 
 // Throws tsk::Error with a message for the user on anything it cannot read faithfully:

@@ -50,7 +50,6 @@ class Connection {
     // reset, its bindings kept, to run again).
     bool step();
     std::int64_t integer(int column) const { return sqlite3_column_int64(statement_, column); }
-    double real(int column) const { return sqlite3_column_double(statement_, column); }
     std::string text(int column) const {
       const unsigned char* t = sqlite3_column_text(statement_, column);
       return t ? reinterpret_cast<const char*>(t) : "";

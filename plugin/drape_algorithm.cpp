@@ -7,7 +7,6 @@
 
 #include "drape.h"
 #include "errors.h"
-#include "profile_plot.h"
 #include "raster_grid.h"
 #include "raster_output.h"
 #include "visibility.h"

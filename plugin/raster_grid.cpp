@@ -24,19 +24,52 @@
 namespace tsk::plugin {
 namespace {
 
-// Ground metres per map unit at the raster's centre for Mercator projections, whose map units
-// grow away from the equator; 1 otherwise.
-double mercatorGroundScale(const QgsCoordinateReferenceSystem& crs, const QgsRectangle& extent,
-                           const QgsCoordinateTransformContext& transforms) {
-  if (!crs.toProj().contains(QStringLiteral("+proj=merc"))) return 1.0;
+// The raster's centre in degrees of longitude and latitude; false when it cannot be transformed.
+bool centreInDegrees(const QgsCoordinateReferenceSystem& crs, const QgsRectangle& extent,
+                     const QgsCoordinateTransformContext& transforms, io::DemFacts& facts) {
   try {
     const QgsCoordinateTransform toLonLat(
         crs, QgsCoordinateReferenceSystem(QStringLiteral("EPSG:4326")), transforms);
     const QgsPointXY centre = toLonLat.transform(extent.center());
-    return std::cos(centre.y() * M_PI / 180.0);
+    facts.centre_lon = centre.x();
+    facts.centre_lat = centre.y();
+    return true;
   } catch (const QgsCsException&) {
-    return 1.0;
+    return false;
   }
+}
+
+// What is known of the layer before reading it, for io::assess_dem. Its range is GDAL's over a
+// sample of the cells (fill values cover holes and edges), with the band's scale and offset
+// applied as the provider applies them; other providers (web services) would fetch data for it
+// on the main thread.
+io::DemFacts layerFacts(QgsRasterLayer& layer, int band,
+                        const QgsCoordinateTransformContext& transforms) {
+  io::DemFacts f;
+  f.rows = static_cast<std::size_t>(layer.height());
+  f.cols = static_cast<std::size_t>(layer.width());
+  f.cell_x = layer.extent().width() / layer.width();
+  f.cell_y = layer.extent().height() / layer.height();
+  f.bands = layer.bandCount();
+  f.band = band;
+  const QgsCoordinateReferenceSystem crs = layer.crs();
+  f.has_crs = crs.isValid();
+  if (f.has_crs) {
+    f.geographic = crs.isGeographic();
+    f.crs_id = crs.authid().toStdString();
+    f.unit_is_metre = crs.mapUnits() == kMetres;
+    f.unit = QgsUnitTypes::toString(crs.mapUnits()).toStdString();
+    f.proj = crs.toProj().toStdString();
+    f.has_centre = centreInDegrees(crs, layer.extent(), transforms, f);
+  }
+  if (layer.providerType() == QLatin1String("gdal")) {
+    const QgsRasterBandStats range =
+        layer.dataProvider()->bandStatistics(band, kRangeStatistics, QgsRectangle(), 250000);
+    f.has_range = true;
+    f.lowest_value = range.minimumValue;
+    f.highest_value = range.maximumValue;
+  }
+  return f;
 }
 
 // The file of a GDAL layer that is one plain file (not a layer or subdataset of one, nor opened
@@ -92,51 +125,11 @@ RasterGrid::RasterGrid(QgsRasterLayer* layer, int band,
   mExtent = layer->extent();
   mCrs = layer->crs();
   if (mCols < 1 || mRows < 1) throw QgsProcessingException(tr("The raster has no cells."));
-  if (mCrs.isValid() && mCrs.isGeographic()) {
-    throw QgsProcessingException(
-        tr("The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres like "
-           "its heights. Reproject it to a metric CRS first, for example with Raster > "
-           "Projections > Warp (Reproject) to the UTM zone of the area.")
-            .arg(mCrs.authid()));
-  }
-  if (!mCrs.isValid()) {
-    mNotes << tr(
-        "The raster has no CRS: cell sizes are taken as metres and the outputs have no "
-        "CRS.");
-  } else {
-    mGroundScale = mercatorGroundScale(mCrs, mExtent, transforms);
-    if (mGroundScale != 1.0) {
-      mNotes << tr("Mercator projection: map units are not ground metres here; cell sizes are "
-                   "scaled by cos(latitude of the centre) = %1.")
-                    .arg(mGroundScale, 0, 'f', 4);
-    }
-    if (mCrs.mapUnits() != kMetres) {
-      mNotes << tr("The CRS's unit is %1, not the metre: the heights must be in %1 too, and "
-                   "depths and lengths come out in %1.")
-                    .arg(QgsUnitTypes::toString(mCrs.mapUnits()));
-    }
-  }
-  if (bands > 1) mNotes << tr("The raster has %1 bands; band %2 is used.").arg(bands).arg(band);
-  // GDAL's range over a sample of the cells (fill values cover holes and edges); other
-  // providers (web services) would fetch data for it on the main thread.
-  if (layer->providerType() == QLatin1String("gdal")) {
-    const QgsRasterBandStats range =
-        layer->dataProvider()->bandStatistics(band, kRangeStatistics, QgsRectangle(), 250000);
-    const double across = std::max(mExtent.width(), mExtent.height()) * mGroundScale;
-    const double relief = range.maximumValue - range.minimumValue;
-    if (is_common_fill_value(range.minimumValue)) {
-      mNotes << tr("Heights go down to %1, a common fill value: if those cells have no data, set "
-                   "it as the layer's no data value (Layer Properties > Transparency) or in the "
-                   "file.")
-                    .arg(range.minimumValue);
-    } else if (implausible_relief(relief, across)) {
-      mNotes << tr("Heights span %1 over a raster %2 across, more than any terrain: if they are "
-                   "millimetres or centimetres, give the band a scale in the file (gdal_edit.py "
-                   "-scale 0.001).")
-                    .arg(relief)
-                    .arg(across);
-    }
-  }
+  const io::DemAssessment assessment = io::assess_dem(layerFacts(*layer, band, transforms));
+  if (assessment.refused) throw QgsProcessingException(noteText(assessment.notes.front()));
+  mGroundScale = assessment.ground_scale;
+  for (const io::DemNote& note : assessment.notes)
+    if (const QString text = noteText(note); !text.isEmpty()) mNotes << text;
   mFile = openFile(*layer, band);
   if (mFile) return;
   const QString file = plainGdalFile(*layer);
@@ -148,6 +141,47 @@ RasterGrid::RasterGrid(QgsRasterLayer* layer, int band,
   }
   mProvider.reset(layer->dataProvider()->clone());
   if (!mProvider) throw QgsProcessingException(tr("Could not open the raster's data provider."));
+}
+
+QString RasterGrid::noteText(const io::DemNote& note) {
+  const auto number = [&note](std::size_t k) { return note.numbers.at(k); };
+  const QString text = QString::fromStdString(note.text);
+  switch (note.code) {
+    case io::DemNoteCode::geographic_crs:
+      return tr("The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres "
+                "like its heights. Reproject it to a metric CRS first, for example with Raster > "
+                "Projections > Warp (Reproject) to the UTM zone of the area.")
+          .arg(text);
+    case io::DemNoteCode::no_crs:
+      return tr(
+          "The raster has no CRS: cell sizes are taken as metres and the outputs have no "
+          "CRS.");
+    case io::DemNoteCode::mercator_scaled:
+      return tr("Mercator projection: map units are not ground metres here; cell sizes are "
+                "scaled by cos(latitude of the centre) = %1.")
+          .arg(number(0), 0, 'f', 4);
+    case io::DemNoteCode::unit_not_metre:
+      return tr("The CRS's unit is %1, not the metre: the heights must be in %1 too, and "
+                "depths and lengths come out in %1.")
+          .arg(text);
+    case io::DemNoteCode::several_bands:
+      return tr("The raster has %1 bands; band %2 is used.").arg(number(0)).arg(number(1));
+    case io::DemNoteCode::fill_value:
+      return tr("Heights go down to %1, a common fill value: if those cells have no data, set "
+                "it as the layer's no data value (Layer Properties > Transparency) or in the "
+                "file.")
+          .arg(number(0));
+    case io::DemNoteCode::implausible_relief:
+      return tr("Heights span %1 over a raster %2 across, more than any terrain: if they are "
+                "millimetres or centimetres, give the band a scale in the file (gdal_edit.py "
+                "-scale 0.001).")
+          .arg(number(0))
+          .arg(number(1));
+    case io::DemNoteCode::scaled_values:      // the provider applies the band's scale: heights
+    case io::DemNoteCode::assumed_cell_size:  // a layer always has its extent
+      break;
+  }
+  return {};
 }
 
 std::unique_ptr<io::BandWindows> RasterGrid::openFile(QgsRasterLayer& layer, int band) const {

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 
+#include "dem_notes.h"
 #include "orient.h"
 #include "silhouettes.h"
 #include "strokes.h"
@@ -72,6 +73,8 @@ class RasterGrid {
   // layer of one file whose grid is the layer's, without nodata set in QGIS (a band's scale and
   // offset are applied as the provider applies them). Null otherwise (the provider reads it).
   std::unique_ptr<io::BandWindows> openFile(QgsRasterLayer& layer, int band) const;
+  // The user's words for a note on the DEM (io/dem_notes.h); empty for notes a layer never gets.
+  static QString noteText(const io::DemNote& note);
   // Reads a window of the band, NaN for nodata.
   void readWindow(const DemWindow& window, float* heights) const;
 

@@ -405,15 +405,6 @@ TEST_CASE("edge-case rasters give valid, possibly empty, outputs", "[cli][robust
   CHECK_THAT(nogeo.err, Catch::Contains("no georeferencing"));
 }
 
-TEST_CASE("Web Mercator cells are scaled to ground metres with a note", "[cli]") {
-  io::DemOptions options;
-  const io::Dem dem = io::read_dem(kData + "/topobathy_3857.tif", options);
-  // Strait of Georgia, about 49.5 N: cos = 0.65.
-  CHECK(dem.ground_scale == Approx(0.65).margin(0.02));
-  CHECK(dem.frame.d == Approx(3710.65 * dem.ground_scale).epsilon(1e-6));
-  CHECK_THAT(dem.notes, Catch::Contains("Mercator"));
-}
-
 TEST_CASE("an undeclared fill value among the heights gets a note", "[cli]") {
   ScratchDir dir("fill");
   const auto filled = [](int band, int r, int c) { return c < 6 ? -9999.0f : hill(band, r, c); };
@@ -492,7 +483,7 @@ TEST_CASE("a CRS in feet runs with a note that heights must be in feet too", "[c
   test::write_tiff(dir / "feet.tif", 40, 40, 1, hill, geotransform, 2264);
   const CliRun run = run_cli({"silhouettes", dir / "feet.tif", dir / "out.gpkg"});
   CHECK(run.code == 0);
-  CHECK_THAT(run.err, Catch::Contains("linear unit is not the metre"));
+  CHECK_THAT(run.err, Catch::Contains("linear unit is US survey foot, not the metre"));
   const CliRun metres = run_cli({"silhouettes", kSample, dir / "metres.gpkg"});
   CHECK(metres.code == 0);
   CHECK_THAT(metres.err, !Catch::Contains("linear unit"));

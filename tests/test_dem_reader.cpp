@@ -13,6 +13,10 @@
 using namespace tsk;
 using test::ScratchDir;
 
+namespace {
+const std::string kData = TSK_TEST_DATA;
+}  // namespace
+
 TEST_CASE("band windows read a file's heights and let GDAL keep only the rows in use",
           "[io][strips]") {
   ScratchDir dir("windows");
@@ -70,4 +74,15 @@ TEST_CASE("band windows read a file's heights and let GDAL keep only the rows in
   }
   CHECK_THROWS_AS(io::BandWindows(path, 2), Error);
   CHECK_THROWS_AS(io::BandWindows(dir / "missing.tif", 1), Error);
+}
+
+TEST_CASE("Web Mercator cells are scaled to ground metres with a note", "[io]") {
+  io::DemOptions options;
+  const io::Dem dem = io::read_dem(kData + "/topobathy_3857.tif", options);
+  // Strait of Georgia, about 49.5 N: cos = 0.65.
+  CHECK(dem.ground_scale == Approx(0.65).margin(0.02));
+  CHECK(dem.frame.d == Approx(3710.65 * dem.ground_scale).epsilon(1e-6));
+  REQUIRE(dem.notes.size() == 1);
+  CHECK(dem.notes[0].code == io::DemNoteCode::mercator_scaled);
+  CHECK(dem.notes[0].numbers.at(0) == dem.ground_scale);
 }

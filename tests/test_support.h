@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <random>
 
+#include "analytic_terrain.h"
 #include "terrain_sketch.h"
+#include "whole_grid_stages.h"
 
 namespace tsk::test {
 

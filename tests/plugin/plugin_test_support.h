@@ -150,10 +150,24 @@ inline QVariantMap outputsAs(const QTemporaryDir& dir, const char* format) {
 }
 
 // Runs the core directly on the same file through the CLI's GDAL reader, as the CLI does.
-inline SilhouetteResult coreResult(const QString& file, double azimuth, Geometry geometry) {
+// Runs algorithm `id` as runAlgorithm does and requires it to succeed.
+inline Run runOk(const QString& input, const QVariantMap& extra, const QTemporaryDir& dir,
+                 const QString& id) {
+  Run run = runAlgorithm(input, extra, dir, nullptr, id);
+  INFO(run.error.toStdString());
+  REQUIRE(run.ok);
+  return run;
+}
+
+// The DEM as the core reads it for the view from `azimuth`.
+inline io::Dem coreDem(const QString& file, double azimuth = 90) {
   io::DemOptions options;
   options.azimuth_deg = azimuth;
-  const io::Dem dem = io::read_dem(file.toStdString(), options);
+  return io::read_dem(file.toStdString(), options);
+}
+
+inline SilhouetteResult coreResult(const QString& file, double azimuth, Geometry geometry) {
+  const io::Dem dem = coreDem(file, azimuth);
   SilhouetteParams params;
   params.view.azimuth_deg = azimuth;
   params.geometry = geometry;

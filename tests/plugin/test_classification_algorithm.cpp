@@ -1,15 +1,12 @@
 // The classification algorithm against the core.
 #include "plugin_test_support.h"
 
-using namespace tsk;
 using namespace tsk::plugin_test;
 
 TEST_CASE("the classification raster holds the core's stage counts", "[plugin][diagnostics]") {
   QTemporaryDir dir;
   const QString dem = kData + "/jacksboro_utm16n.tif";
-  const Run run = runAlgorithm(dem, {}, dir, nullptr, QStringLiteral("classification"));
-  INFO(run.error.toStdString());
-  REQUIRE(run.ok);
+  const Run run = runOk(dem, {}, dir, QStringLiteral("classification"));
   const SilhouetteResult core = coreResult(dem, 90, Geometry::map);
   QgsRasterLayer layer(run.results.value("OUTPUT").toString(), "c", "gdal");
   REQUIRE(layer.isValid());

@@ -1,20 +1,14 @@
 // The drape algorithm against the core.
 #include "plugin_test_support.h"
 
-using namespace tsk;
 using namespace tsk::plugin_test;
 
 TEST_CASE("the drape algorithm equals the core's drape", "[plugin][drape]") {
   QTemporaryDir dir;
   const QString dem = kData + "/volcano.tif";
   // Drape the DEM onto itself: draped values are heights of visible cells.
-  const Run run =
-      runAlgorithm(dem, {{"SOURCE", dem}, {"AZIMUTH", 180}}, dir, nullptr, QStringLiteral("drape"));
-  INFO(run.error.toStdString());
-  REQUIRE(run.ok);
-  io::DemOptions options;
-  options.azimuth_deg = 180;
-  const io::Dem core = io::read_dem(dem.toStdString(), options);
+  const Run run = runOk(dem, {{"SOURCE", dem}, {"AZIMUTH", 180}}, dir, QStringLiteral("drape"));
+  const io::Dem core = coreDem(dem, 180);
   ViewParams view;
   view.azimuth_deg = 180;
   CellFlags flags;

@@ -1,17 +1,13 @@
 // The profile plot algorithm against the core.
 #include "plugin_test_support.h"
 
-using namespace tsk;
 using namespace tsk::plugin_test;
 
 TEST_CASE("the profile plot algorithm draws the core's lines", "[plugin][profile plot]") {
   QTemporaryDir dir;
   const QString dem = kData + "/jacksboro_utm16n.tif";
-  const Run run = runAlgorithm(dem, {{"EVERY", 12}}, dir, nullptr, QStringLiteral("profileplot"));
-  INFO(run.error.toStdString());
-  REQUIRE(run.ok);
-  io::DemOptions options;
-  const io::Dem core = io::read_dem(dem.toStdString(), options);
+  const Run run = runOk(dem, {{"EVERY", 12}}, dir, QStringLiteral("profileplot"));
+  const io::Dem core = coreDem(dem);
   CellFlags flags;
   classify_visibility(core.oriented, core.frame.d, ViewParams{}, flags);
   const auto lines = profile_plot(core.oriented, flags, core.frame, ViewParams{}, core.geotransform,

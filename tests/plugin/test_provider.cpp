@@ -1,7 +1,6 @@
 // The provider: help for every algorithm and parameter, the German translation.
 #include "plugin_test_support.h"
 
-using namespace tsk;
 using namespace tsk::plugin_test;
 
 TEST_CASE("every algorithm and parameter has help, and numbers show what they can take",

@@ -1,18 +1,14 @@
 // The P-stroke algorithm against the core.
 #include "plugin_test_support.h"
 
-using namespace tsk;
 using namespace tsk::plugin_test;
 
 TEST_CASE("the P-stroke algorithm draws the core's P-strokes", "[plugin][pstrokes]") {
   QTemporaryDir dir;
   const QString dem = kData + "/jacksboro_utm16n.tif";
-  const Run run = runAlgorithm(dem, {{"GEOMETRY", 0}, {"OUTPUT", dir.filePath("p.gpkg")}}, dir,
-                               nullptr, QStringLiteral("pstrokes"));
-  INFO(run.error.toStdString());
-  REQUIRE(run.ok);
-  io::DemOptions options;
-  const io::Dem core = io::read_dem(dem.toStdString(), options);
+  const Run run = runOk(dem, {{"GEOMETRY", 0}, {"OUTPUT", dir.filePath("p.gpkg")}}, dir,
+                        QStringLiteral("pstrokes"));
+  const io::Dem core = coreDem(dem);
   const SilhouetteResult result = run_silhouettes(core.oriented, core.frame, core.geotransform, {});
   const auto expected =
       pstroke_sketch(core.oriented, result.flags, core.frame, ViewParams{}, core.geotransform,

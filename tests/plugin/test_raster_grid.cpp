@@ -2,7 +2,6 @@
 // warnings, files are read straight through GDAL with the provider's heights, rotated rasters.
 #include "plugin_test_support.h"
 
-using namespace tsk;
 using namespace tsk::plugin_test;
 
 TEST_CASE("bad input ends in a clear message, never a crash", "[plugin][robustness]") {

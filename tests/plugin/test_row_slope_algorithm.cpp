@@ -1,18 +1,13 @@
 // The row slope algorithm against the core.
 #include "plugin_test_support.h"
 
-using namespace tsk;
 using namespace tsk::plugin_test;
 
 TEST_CASE("the row slope map equals the core's", "[plugin][diagnostics]") {
-  QTemporaryDir dir;
   const QString dem = kData + "/volcano.tif";
-  const Run run = runAlgorithm(dem, {{"AZIMUTH", 30}}, dir, nullptr, QStringLiteral("rowslope"));
-  INFO(run.error.toStdString());
-  REQUIRE(run.ok);
-  io::DemOptions options;
-  options.azimuth_deg = 30;
-  const io::Dem core = io::read_dem(dem.toStdString(), options);
+  const io::Dem core = coreDem(dem, 30);
+  QTemporaryDir dir;
+  const Run run = runOk(dem, {{"AZIMUTH", 30}}, dir, QStringLiteral("rowslope"));
   const HeightGrid expected = row_slope_map(core.oriented, core.frame);
   QgsRasterLayer layer(run.results.value("OUTPUT").toString(), "r", "gdal");
   REQUIRE(layer.isValid());

@@ -2,7 +2,6 @@
 // the core's, strip by strip through the provider too.
 #include "plugin_test_support.h"
 
-using namespace tsk;
 using namespace tsk::plugin_test;
 
 TEST_CASE("the algorithm's strokes equal the core's on real DEMs", "[plugin]") {

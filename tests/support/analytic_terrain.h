@@ -1,4 +1,4 @@
-// Analytic test terrains with known silhouettes, shipped with the library for tests and demos.
+// Analytic test terrains with known silhouettes, for the tests and the benchmark.
 // All return rows x cols grids with row 0 north, heights in metres, cell size `cell` metres.
 #pragma once
 

@@ -1,0 +1,55 @@
+#include "dem_note_text.h"
+
+#include "errors.h"
+
+namespace tsk::cli {
+
+std::string note_text(const io::DemNote& note) {
+  const auto number = [&note](std::size_t k) { return number_text(note.numbers.at(k)); };
+  switch (note.code) {
+    case io::DemNoteCode::geographic_crs:
+      return "the CRS is geographic";
+    case io::DemNoteCode::no_crs:
+      return "no CRS: coordinates are written without one, cell sizes taken as metres";
+    case io::DemNoteCode::mercator_scaled:
+      return "Mercator projection: map units are not ground metres here; cell sizes scaled by "
+             "cos(latitude of the centre) = " +
+             number(0);
+    case io::DemNoteCode::unit_not_metre:
+      return "the CRS's linear unit is " + (note.text.empty() ? "not the metre" : note.text) +
+             ", not the metre; heights must be in that same unit";
+    case io::DemNoteCode::several_bands:
+      return "the raster has " + number(0) + " bands; band " + number(1) + " is used (--band)";
+    case io::DemNoteCode::fill_value:
+      return "heights go down to " + number(0) +
+             ", a common fill value: if those cells have no data, declare it as nodata "
+             "(gdal_edit.py -a_nodata " +
+             number(0) + " INPUT)";
+    case io::DemNoteCode::implausible_relief:
+      return "heights span " + number(0) + " over a DEM " + number(1) +
+             " across, more than any terrain: if they are millimetres or centimetres, give the "
+             "band a scale (gdal_edit.py -scale 0.001 INPUT)";
+    case io::DemNoteCode::scaled_values:
+      return "heights are the band's values x " + number(0) + " + " + number(1) +
+             ", its scale and offset";
+    case io::DemNoteCode::assumed_cell_size:
+      return "no georeferencing: cells taken as " + number(0) + " m squares";
+  }
+  return "";
+}
+
+std::string refusal_text(const io::DemRefused& refused) {
+  const io::DemNote& note = refused.note();
+  if (note.code != io::DemNoteCode::geographic_crs) return refused.what();
+  return "'" + refused.path() +
+         "' is in a geographic CRS: its cell sizes are degrees, not metres like its heights. "
+         "Reproject it to a metric CRS first, e.g. gdalwarp -t_srs EPSG:" +
+         number_text(note.numbers.at(0)) + " -r bilinear " + io::kWarpNoData +
+         " INPUT OUTPUT_utm.tif";
+}
+
+void print_notes(const std::vector<io::DemNote>& notes, std::ostream& err) {
+  for (const io::DemNote& note : notes) err << "note: " << note_text(note) << "\n";
+}
+
+}  // namespace tsk::cli

@@ -1,0 +1,21 @@
+// The command line's words for the notes on a DEM (io/dem_notes.h), with the GDAL commands that
+// correct what they point out.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "dem_reader.h"
+
+namespace tsk::cli {
+
+std::string note_text(const io::DemNote& note);
+
+// Why a DEM was refused, and the command that makes it fit.
+std::string refusal_text(const io::DemRefused& refused);
+
+// Each note on a line of its own, after "note: ".
+void print_notes(const std::vector<io::DemNote>& notes, std::ostream& err);
+
+}  // namespace tsk::cli

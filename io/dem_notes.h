@@ -1,0 +1,68 @@
+// What a front end should tell the user about a DEM before reading it, decided once for both: the
+// front end gathers the facts (from GDAL, or from QGIS's layer), assess_dem turns them into notes
+// with codes and numbers, and each front end words the notes its own way (tr() in QGIS).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace tsk::io {
+
+struct DemFacts {
+  std::size_t rows = 0, cols = 0;
+  double cell_x = 0, cell_y = 0;  // cell width and height in map units
+  int bands = 1, band = 1;
+  bool has_crs = false;
+  bool geographic = false;
+  std::string crs_id;         // the CRS's authority id or name, for messages
+  bool unit_is_metre = true;  // the CRS's linear unit (a projected CRS)
+  std::string unit;           // its name, when it is not the metre
+  std::string proj;           // the CRS as a PROJ string ("+proj=merc ...")
+  bool has_centre = false;    // the DEM's centre in degrees is known (geographic, Mercator)
+  double centre_lon = 0, centre_lat = 0;
+  bool has_range = false;  // the band's (approximate) least and greatest values
+  double lowest_value = 0, highest_value = 0;
+  double scale = 1, offset = 0;  // heights = values x scale + offset
+};
+
+enum class DemNoteCode {
+  geographic_crs,      // refused; numbers: the EPSG code of the centre's UTM zone
+  no_crs,              // cell sizes taken as metres, outputs without a CRS
+  mercator_scaled,     // numbers: ground metres per map unit at the centre
+  unit_not_metre,      // text: the unit's name
+  several_bands,       // numbers: the band count, the band used
+  fill_value,          // numbers: the lowest value, a common fill value
+  implausible_relief,  // numbers: the relief, the DEM's width (same unit)
+  scaled_values,       // numbers: scale, offset
+  assumed_cell_size,   // no georeferencing; numbers: the cell size given
+};
+
+struct DemNote {
+  DemNoteCode code;
+  std::vector<double> numbers;
+  std::string text;
+};
+
+struct DemAssessment {
+  bool refused = false;       // the first note says why (a geographic CRS)
+  double ground_scale = 1.0;  // ground metres per map unit, for the cell sizes
+  std::vector<DemNote> notes;
+};
+
+DemAssessment assess_dem(const DemFacts& facts);
+
+// True for the heights DEM producers write where they have none (-9999, -32767, -32768,
+// -99999, and float's lowest values): read as heights, in a raster that does not declare them
+// nodata, they make cliffs at its holes and edges that the silhouettes outline.
+bool is_common_fill_value(double z);
+
+// True when heights spanning `relief` rise more than five times the width `across` of their DEM
+// (in the same unit): no terrain does, heights in millimetres or centimetres over cells in
+// metres do, and every bump of them then occludes.
+bool implausible_relief(double relief, double across);
+
+// The EPSG code of the WGS 84 UTM zone of a point (degrees).
+int utm_epsg(double lon, double lat);
+
+}  // namespace tsk::io

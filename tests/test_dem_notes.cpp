@@ -1,0 +1,96 @@
+// The notes on a DEM that both front ends word (io/dem_notes.h), on facts with known answers.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "dem_notes.h"
+
+using namespace tsk::io;
+
+namespace {
+
+// A 100 x 200 DEM of 30 m cells in UTM 16N, heights 200 to 600 m.
+DemFacts utm_facts() {
+  DemFacts f;
+  f.rows = 100, f.cols = 200, f.cell_x = 30, f.cell_y = 30;
+  f.has_crs = true, f.crs_id = "EPSG:32616";
+  f.proj = "+proj=utm +zone=16 +datum=WGS84 +units=m +no_defs";
+  f.has_centre = true, f.centre_lon = -84.1, f.centre_lat = 36.3;
+  f.has_range = true, f.lowest_value = 200, f.highest_value = 600;
+  return f;
+}
+
+bool has(const DemAssessment& a, DemNoteCode code) {
+  return std::any_of(a.notes.begin(), a.notes.end(),
+                     [code](const DemNote& n) { return n.code == code; });
+}
+
+}  // namespace
+
+TEST_CASE("a projected metric DEM gets no notes and its cells stay as they are", "[io][notes]") {
+  const DemAssessment a = assess_dem(utm_facts());
+  CHECK_FALSE(a.refused);
+  CHECK(a.notes.empty());
+  CHECK(a.ground_scale == 1.0);
+}
+
+TEST_CASE("a geographic DEM is refused with the UTM zone of its centre", "[io][notes]") {
+  DemFacts f = utm_facts();
+  f.geographic = true, f.crs_id = "EPSG:4326", f.proj = "+proj=longlat +datum=WGS84";
+  const DemAssessment a = assess_dem(f);
+  REQUIRE(a.refused);
+  REQUIRE(a.notes.front().code == DemNoteCode::geographic_crs);
+  CHECK(a.notes.front().numbers.at(0) == 32616);  // 84.1 W: zone 16, north
+  CHECK(a.notes.front().text == "EPSG:4326");
+  CHECK(utm_epsg(151.2, -33.9) == 32756);  // Sydney: zone 56, south
+  CHECK(utm_epsg(-180, 0) == 32601);
+  CHECK(utm_epsg(180, 0) == 32660);
+}
+
+TEST_CASE("a Mercator DEM's cells are scaled by the cosine of its centre's latitude",
+          "[io][notes]") {
+  DemFacts f = utm_facts();
+  f.proj = "+proj=merc +a=6378137 +b=6378137 +lat_ts=0 +lon_0=0 +units=m +nadgrids=@null";
+  f.centre_lat = 60;
+  const DemAssessment a = assess_dem(f);
+  CHECK(a.ground_scale == Approx(0.5));
+  CHECK(has(a, DemNoteCode::mercator_scaled));
+  // Transverse Mercator (UTM) keeps its metres; an unknown centre leaves the cells unscaled.
+  f.proj = "+proj=tmerc +lat_0=0 +lon_0=9 +k=0.9996 +x_0=500000 +units=m";
+  CHECK(assess_dem(f).ground_scale == 1.0);
+  f.proj = "+proj=merc +lon_0=0";
+  f.has_centre = false;
+  CHECK(assess_dem(f).ground_scale == 1.0);
+}
+
+TEST_CASE("units, bands, fill values, relief and scales each get their note", "[io][notes]") {
+  DemFacts f = utm_facts();
+  f.has_crs = false;
+  CHECK(has(assess_dem(f), DemNoteCode::no_crs));
+  f = utm_facts();
+  f.unit_is_metre = false, f.unit = "US survey foot";
+  CHECK(has(assess_dem(f), DemNoteCode::unit_not_metre));
+  f = utm_facts();
+  f.bands = 3, f.band = 2;
+  const DemAssessment bands = assess_dem(f);
+  REQUIRE(has(bands, DemNoteCode::several_bands));
+  CHECK(bands.notes.front().numbers == std::vector<double>{3, 2});
+  for (double fill : {-9999.0, -32767.0, -32768.0, -99999.0, -3.4e38}) {
+    f = utm_facts();
+    f.lowest_value = fill;
+    CAPTURE(fill);
+    CHECK(has(assess_dem(f), DemNoteCode::fill_value));
+    CHECK_FALSE(has(assess_dem(f), DemNoteCode::implausible_relief));
+  }
+  // 200 x 30 m = 6 km across: a relief over 30 km is no terrain's.
+  f = utm_facts();
+  f.highest_value = 200 + 30001;
+  CHECK(has(assess_dem(f), DemNoteCode::implausible_relief));
+  f.scale = 0.001;  // millimetres: 30 m of relief
+  const DemAssessment scaled = assess_dem(f);
+  CHECK_FALSE(has(scaled, DemNoteCode::implausible_relief));
+  CHECK(has(scaled, DemNoteCode::scaled_values));
+  f = utm_facts();
+  f.highest_value = 200 + 29999;
+  CHECK_FALSE(has(assess_dem(f), DemNoteCode::implausible_relief));
+}
