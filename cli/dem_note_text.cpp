@@ -34,6 +34,9 @@ std::string note_text(const io::DemNote& note) {
              ", its scale and offset";
     case io::DemNoteCode::assumed_cell_size:
       return "no georeferencing: cells taken as " + number(0) + " m squares";
+    case io::DemNoteCode::cell_size_ignored:
+      return "--cell-size " + number(0) +
+             " is ignored: the raster's georeferencing gives its cells";
   }
   return "";
 }

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "errors.h"
+#include "gdal_util.h"
 #include "output_files.h"
 
 namespace tsk::cli {
@@ -17,6 +18,9 @@ namespace {
 
 // Parses a whole number or a finite decimal, refusing trailing junk.
 double parse_number(const std::string& option, const std::string& text) {
+  // Decimal numbers only: std::stod also reads hexadecimal (0x5A is 90), "inf" and "nan".
+  if (text.find_first_not_of("0123456789+-.eE") != std::string::npos)
+    throw Error(option + " needs a number, got '" + text + "' (decimal digits only)");
   std::size_t used = 0;
   double value = 0;
   try {
@@ -31,6 +35,11 @@ double parse_number(const std::string& option, const std::string& text) {
 }
 
 int parse_int(const std::string& option, const std::string& text) {
+  const std::size_t digits = text.find_first_not_of("+-") == 1 ? 1 : 0;
+  if (text.empty() || text.find_first_not_of("0123456789", digits) != std::string::npos) {
+    throw Error(option + " needs a whole number from -1000000000 to 1000000000, got '" + text +
+                "'");
+  }
   const double value = parse_number(option, text);
   // The range first: converting a double beyond an integer's range is undefined.
   if (!(value >= -1e9 && value <= 1e9) || value != std::trunc(value)) {
@@ -57,17 +66,26 @@ bool same_file(const std::string& a, const std::string& b) {
 void refuse_clashing_paths(const Options& o) {
   const std::pair<const char*, const std::string*> outputs[] = {
       {"OUTPUT", &o.output}, {"--stats-json", &o.stats_json}, {"--preview", &o.preview}};
-  const std::pair<const char*, const std::string*> inputs[] = {{"INPUT", &o.input},
-                                                               {"--source", &o.source}};
+  // Every file GDAL reads for each input: a VRT's sources too.
+  std::vector<std::pair<const char*, std::vector<std::string>>> inputs;
+  for (const auto& [name, path] :
+       {std::pair{"INPUT", &o.input}, std::pair{"--source", &o.source}}) {
+    if (path->empty()) continue;
+    io::check_input_path(*path);
+    std::vector<std::string> files = io::dataset_files(*path);
+    files.push_back(*path);
+    inputs.emplace_back(name, std::move(files));
+  }
   for (std::size_t k = 0; k < std::size(outputs); ++k) {
     const auto& [name, path] = outputs[k];
     // All the outputs can be written, or none is: the strokes are not left for a preview that
     // then fails.
     if (!path->empty()) io::check_output_path(*path);
-    for (const auto& [input_name, input] : inputs) {
-      if (same_file(*path, *input)) {
-        throw Error(std::string(name) + " '" + *path + "' names the " + input_name +
-                    " raster, which writing it would replace; choose another path");
+    for (const auto& [input_name, files] : inputs) {
+      for (const std::string& file : files) {
+        if (!same_file(*path, file)) continue;
+        throw Error(std::string(name) + " '" + *path + "' names a file the " + input_name +
+                    " raster reads, which writing it would replace; choose another path");
       }
     }
     for (std::size_t j = 0; j < k; ++j) {
@@ -98,7 +116,12 @@ Options parse(const std::vector<std::string>& args) {
       {"--placement", [&](auto&, auto& v) { o.params.placement = parse_placement(v); }},
       {"--geometry", [&](auto&, auto& v) { o.params.geometry = parse_geometry(v); }},
       {"--band", [&](auto& n, auto& v) { o.dem.band = parse_int(n, v); }},
-      {"--cell-size", [&](auto& n, auto& v) { o.dem.cell_size = parse_number(n, v); }},
+      {"--cell-size",
+       [&](auto& n, auto& v) {
+         o.dem.cell_size = parse_number(n, v);
+         if (!(o.dem.cell_size > 0 && std::isfinite(o.dem.cell_size)))
+           throw Error("--cell-size must be positive, a number of metres; got '" + v + "'");
+       }},
       {"--threads",
        [&](auto& n, auto& v) {
          const int t = parse_int(n, v);
@@ -125,7 +148,13 @@ Options parse(const std::vector<std::string>& args) {
          if (o.every < 1) throw Error("--every must be at least 1");
        }},
       {"--stats-json", [&](auto&, auto& v) { o.stats_json = v; }},
-      {"--preview", [&](auto&, auto& v) { o.preview = v; }},
+      {"--preview",
+       [&](auto& n, auto& v) {
+         std::string ext = std::filesystem::path(v).extension().string();
+         for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+         if (ext != ".png") throw Error(n + " draws a PNG picture: give it a .png name");
+         o.preview = v;
+       }},
   };
   for (std::size_t k = 0; k < args.size(); ++k) {
     const std::string& a = args[k];

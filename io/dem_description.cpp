@@ -19,6 +19,11 @@ void check_band(GDALDataset& dataset, const std::string& path, int band) {
     throw Error("band " + std::to_string(band) + " does not exist: '" + path + "' has " +
                 std::to_string(bands) + " band(s)");
   }
+  const GDALDataType type = dataset.GetRasterBand(band)->GetRasterDataType();
+  if (GDALDataTypeIsComplex(type)) {
+    throw Error("band " + std::to_string(band) + " of '" + path + "' holds complex numbers (" +
+                GDALGetDataTypeName(type) + "); heights are real numbers");
+  }
 }
 
 // The geotransform of a north-up DEM, or of square cells of the given size for a raster without
@@ -41,6 +46,8 @@ void read_georeferencing(GDALDataset& dataset, const std::string& path, const De
                   warp);
     }
     std::copy(gt, gt + 6, dem.geotransform.a.begin());
+    if (options.cell_size > 0.0)
+      dem.notes.push_back({DemNoteCode::cell_size_ignored, {options.cell_size}, {}});
   } else if (options.cell_size > 0.0) {
     dem.geotransform.a = {0.0, options.cell_size, 0.0, 0.0, 0.0, -options.cell_size};
     dem.notes.push_back({DemNoteCode::assumed_cell_size, {options.cell_size}, {}});

@@ -36,6 +36,7 @@ enum class DemNoteCode {
   implausible_relief,  // numbers: the relief, the DEM's width (same unit)
   scaled_values,       // numbers: scale, offset
   assumed_cell_size,   // no georeferencing; numbers: the cell size given
+  cell_size_ignored,   // a cell size given for a georeferenced raster; numbers: it
 };
 
 struct DemNote {

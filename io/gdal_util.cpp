@@ -1,6 +1,10 @@
 #include "gdal_util.h"
 
 #include <cpl_error.h>
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
 
 namespace tsk::io {
 
@@ -36,7 +40,22 @@ std::string GdalErrorCapture::message() const {
   return shortened(msg);
 }
 
+void check_input_path(const std::string& path) {
+  // GDAL's virtual file systems, and subdatasets named DRIVER:..., are not plain paths.
+  if (path.rfind("/vsi", 0) == 0) return;
+  const std::size_t colon = path.find(':');
+  if (colon != std::string::npos && colon > 1 && path.find('/') > colon) return;
+  struct stat info {};
+  if (stat(path.c_str(), &info) != 0) {
+    throw Error("cannot open '" + path + "': " + std::strerror(errno));
+  }
+  if (!S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode)) {
+    throw Error("'" + path + "' is not a file (a pipe, a socket or a device); give a raster file");
+  }
+}
+
 DatasetPtr open_raster(const std::string& path) {
+  check_input_path(path);
   GDALAllRegister();
   GdalErrorCapture capture;
   DatasetPtr dataset(static_cast<GDALDataset*>(
@@ -46,6 +65,21 @@ DatasetPtr open_raster(const std::string& path) {
     throw Error("'" + path + "' has no cells");
   }
   return dataset;
+}
+
+std::vector<std::string> dataset_files(const std::string& path) {
+  GDALAllRegister();
+  GdalErrorCapture quiet;
+  DatasetPtr dataset(static_cast<GDALDataset*>(
+      GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr,
+                 nullptr)));
+  if (!dataset) return {path};
+  std::vector<std::string> files;
+  char** list = dataset->GetFileList();
+  for (char** f = list; f && *f; ++f) files.emplace_back(*f);
+  CSLDestroy(list);
+  if (files.empty()) files.push_back(path);
+  return files;
 }
 
 }  // namespace tsk::io

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "errors.h"
 
@@ -35,7 +36,16 @@ struct GdalCloser {
 };
 using DatasetPtr = std::unique_ptr<GDALDataset, GdalCloser>;
 
+// Throws Error, before GDAL opens it, when `path` names no file or one GDAL's open would hang on
+// or misread: a named pipe, a socket or a device. Folders (an Arc/Info grid) and GDAL's virtual
+// paths (/vsizip/..., NETCDF:"file":var) pass.
+void check_input_path(const std::string& path);
+
 // Opens `path` read-only as a raster or throws tsk::Error saying why not.
 DatasetPtr open_raster(const std::string& path);
+
+// Every file GDAL reads for the raster or vector dataset at `path` (a VRT's sources included);
+// just `path` when GDAL cannot open it.
+std::vector<std::string> dataset_files(const std::string& path);
 
 }  // namespace tsk::io

@@ -3,13 +3,16 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <system_error>
 #include <vector>
 
+#include "destination_lock.h"
 #include "errors.h"
+#include "gdal_util.h"
 
 namespace tsk::io {
 
@@ -42,15 +45,19 @@ fs::path output_folder(const fs::path& destination) {
   return folder;
 }
 
-// Removes the staging folders `prefix` + PID in `folder` of runs that no longer live: a run
-// killed outright (kill -9, a power cut) leaves its partial output there, as big as it had got.
-void remove_stale_staging(const fs::path& folder, const std::string& prefix) {
+// Removes the staging folders (".NAME.partial-PID") in `folder` of runs that no longer live,
+// whatever output they were for: a run killed outright (kill -9, a power cut) leaves its partial
+// output there, as big as it had got.
+void remove_stale_staging(const fs::path& folder) {
+  static const std::string kMark = ".partial-";
   std::error_code ec;
   std::vector<fs::path> stale;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
-    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
-    const std::string pid = name.substr(prefix.size());
+    const std::size_t mark = name.rfind(kMark);
+    if (name.empty() || name[0] != '.' || mark == std::string::npos || !entry.is_directory(ec))
+      continue;
+    const std::string pid = name.substr(mark + kMark.size());
     if (pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
     // Gone, not merely another user's (EPERM).
     if (kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH) {
@@ -58,6 +65,33 @@ void remove_stale_staging(const fs::path& folder, const std::string& prefix) {
     }
   }
   for (const fs::path& path : stale) fs::remove_all(path, ec);
+}
+
+// Removes the files of the earlier output at `destination` that the new set `made` does not
+// replace: those GDAL lists for it and, for a shapefile, the side files GDAL, QGIS and ArcGIS
+// keep beside it (a stale spatial index .qix hides every feature from a filtered read). Only
+// files in the destination's folder named after it go: never a VRT's sources elsewhere.
+void remove_earlier_output(const fs::path& destination, const std::vector<fs::path>& made) {
+  std::error_code ec;
+  if (!fs::is_regular_file(destination, ec)) return;
+  const fs::path folder = destination.has_parent_path() ? destination.parent_path() : ".";
+  const std::string stem = destination.stem().string(), name = destination.filename().string();
+  std::vector<fs::path> files;
+  for (const std::string& file : dataset_files(destination.string())) files.emplace_back(file);
+  files.push_back(folder / (name + ".aux.xml"));
+  if (destination.extension() == ".shp") {
+    for (const char* ext : {".shx", ".dbf", ".prj", ".cpg", ".qix", ".sbn", ".sbx", ".qmd"})
+      files.push_back(folder / (stem + ext));
+    files.push_back(folder / (name + ".xml"));
+  }
+  for (const fs::path& file : files) {
+    const fs::path parent = file.has_parent_path() ? file.parent_path() : ".";
+    const std::string file_name = file.filename().string();
+    const bool ours = fs::equivalent(parent, folder, ec) && file_name.rfind(stem, 0) == 0;
+    const bool replaced = std::any_of(made.begin(), made.end(),
+                                      [&](const fs::path& m) { return m.filename() == file_name; });
+    if (ours && !replaced) fs::remove(file, ec);
+  }
 }
 
 }  // namespace
@@ -74,7 +108,7 @@ void write_atomically(const fs::path& destination,
   constexpr std::size_t kNameBytes = 200;
   const std::string prefix =
       "." + destination.filename().string().substr(0, kNameBytes) + ".partial-";
-  remove_stale_staging(folder, prefix);
+  remove_stale_staging(folder);
   const fs::path staging = folder / (prefix + std::to_string(getpid()));
   fs::remove_all(staging, ec);
   if (!fs::create_directory(staging, ec)) {
@@ -84,8 +118,11 @@ void write_atomically(const fs::path& destination,
     write(staging / destination.filename());
     std::vector<fs::path> made;
     for (const auto& entry : fs::directory_iterator(staging)) made.push_back(entry.path());
-    for (const auto& file : made) {
-      fs::rename(file, folder / file.filename());
+    {
+      // One run at a time puts its set in place, the earlier output's files all gone.
+      const DestinationLock lock(destination);
+      remove_earlier_output(destination, made);
+      for (const auto& file : made) fs::rename(file, folder / file.filename());
     }
     fs::remove(staging);
   } catch (const fs::filesystem_error& e) {

@@ -25,7 +25,6 @@ void check(OGRErr err, const std::string& what, const GdalErrorCapture& capture)
 }  // namespace
 
 std::string vector_driver_for(const std::string& path, const std::string& format) {
-  if (!format.empty()) return format;
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -34,6 +33,17 @@ std::string vector_driver_for(const std::string& path, const std::string& format
       {".json", "GeoJSON"}, {".fgb", "FlatGeobuf"},     {".gml", "GML"},
       {".kml", "KML"},      {".sqlite", "SQLite"},      {".csv", "CSV"}};
   const auto it = drivers.find(ext);
+  if (!format.empty()) {
+    // A name of another format's extension would mislead (CSV into x.gpkg makes a folder). An
+    // unknown driver is refused as such when the output is made.
+    GDALAllRegister();
+    const bool known = GetGDALDriverManager()->GetDriverByName(format.c_str()) != nullptr;
+    if (known && it != drivers.end() && !EQUAL(it->second.c_str(), format.c_str())) {
+      throw Error("--format " + format + " does not write '" + path + "': a " + ext + " name is " +
+                  it->second + "'s; name the output so, or leave --format out");
+    }
+    return format;
+  }
   if (it == drivers.end()) {
     throw Error("cannot tell the vector format of '" + path +
                 "' from its extension; use .gpkg, .shp, .geojson, .fgb, .gml, .kml, .sqlite or "

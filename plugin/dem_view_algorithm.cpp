@@ -5,6 +5,7 @@
 #include <qgsrasterlayer.h>
 
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QIcon>
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "errors.h"
+#include "gdal_util.h"
 #include "line_output.h"
 #include "plugin_paths.h"
 #include "qgis_compat.h"
@@ -51,9 +53,11 @@ void DemViewAlgorithm::addDemAndViewParameters(bool exaggeration) {
   const ViewParams defaults;
   addWithHelp(new QgsProcessingParameterRasterLayer(QStringLiteral("INPUT"), tr("Elevation (DEM)")),
               tr("Digital elevation model with heights in metres, in a projected CRS in metres."));
+  // Optional, so that qgis_process and models need not give it: QGIS 3.22 asks for a band
+  // parameter's value even when it has a default.
   addWithHelp(new QgsProcessingParameterBand(QStringLiteral("BAND"), tr("Band"), 1,
-                                             QStringLiteral("INPUT")),
-              tr("The band holding the heights."));
+                                             QStringLiteral("INPUT"), true),
+              tr("The band holding the heights (the first when none is chosen)."));
   addWithHelp(
       number(QStringLiteral("AZIMUTH"), tr("View azimuth (degrees)"), defaults.azimuth_deg, 0, 360),
       tr("Compass bearing the viewer faces, clockwise from grid north: 0 (from the "
@@ -151,12 +155,20 @@ void DemViewAlgorithm::refuseClashingOutputs(const QVariantMap& parameters,
     if (input->type() != QgsProcessingParameterRasterLayer::typeName()) continue;
     const QgsRasterLayer* layer = parameterAsRasterLayer(parameters, input->name(), context);
     if (!layer) continue;
-    const QString inputFile = fileIdentity(QgsProviderRegistry::instance()
-                                               ->decodeUri(layer->providerType(), layer->source())
-                                               .value(QStringLiteral("path"))
-                                               .toString());
+    const QString path = QgsProviderRegistry::instance()
+                             ->decodeUri(layer->providerType(), layer->source())
+                             .value(QStringLiteral("path"))
+                             .toString();
+    // The layer's file and every file GDAL reads for it: a VRT's sources too.
+    QStringList inputFiles{fileIdentity(path)};
+    if (!path.isEmpty() && layer->providerType() == QLatin1String("gdal")) {
+      for (const std::string& file : io::dataset_files(QFile::encodeName(path).toStdString()))
+        inputFiles << fileIdentity(QFile::decodeName(file.c_str()));
+    }
     for (const Written& output : written) {
-      if (output.file != inputFile) continue;
+      const auto read = std::find(inputFiles.begin(), inputFiles.end(), output.file);
+      if (read == inputFiles.end() || read->isEmpty()) continue;
+      const QString inputFile = *read;
       throw QgsProcessingException(
           tr("%1 would be written into %2, the file of %3, which this algorithm reads; choose "
              "another file.")

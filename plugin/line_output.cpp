@@ -90,6 +90,20 @@ void dropLayer(const QString& path, const QString& layer) {
 
 }  // namespace
 
+std::unique_ptr<io::DestinationLock> LineOutput::lockDestination(const QString& path,
+                                                                 QgsProcessingFeedback* feedback) {
+  return withCoreErrors([&] {
+    return std::make_unique<io::DestinationLock>(
+        QFile::encodeName(path).toStdString(),
+        [&] {
+          if (feedback) feedback->pushInfo(tr("Waiting for another run writing %1.").arg(path));
+        },
+        [&] {
+          if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
+        });
+  });
+}
+
 void deleteDataset(const QString& path) {
   const QByteArray file = QFile::encodeName(path);
   if (GDALDeleteDataset(nullptr, file.constData()) != CE_None) QFile::remove(path);
@@ -104,7 +118,7 @@ QString destinationFile(const QString& target) {
 
 LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
                        const QString& key, QgsProcessingContext& context, const QgsFields& fields,
-                       const QgsCoordinateReferenceSystem& crs)
+                       const QgsCoordinateReferenceSystem& crs, QgsProcessingFeedback* feedback)
     : mParameters(parameters),
       mKey(key),
       mFields(fields),
@@ -113,6 +127,8 @@ LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMa
   const QString target =
       QgsProcessingParameters::parameterAsOutputLayer(definition, parameters, context);
   const FileTarget file = fileTarget(target);
+  // One run at a time writes a file, so that a run that fails removes only what it made.
+  if (!file.path.isEmpty()) mLock = lockDestination(file.path, feedback);
   if (!file.path.isEmpty() && !file.addsLayer) mFilesBefore = filesNamedAfter(file.path);
   const bool gpkg = !file.addsLayer && target.endsWith(QLatin1String(".gpkg"), Qt::CaseInsensitive);
   mSink.reset(QgsProcessingParameters::parameterAsSink(

@@ -12,6 +12,7 @@
 #include <qgsfields.h>
 #include <qgsprocessingalgorithm.h>
 #include <qgsprocessingcontext.h>
+#include <qgsprocessingfeedback.h>
 
 #include <QCoreApplication>
 #include <QString>
@@ -19,6 +20,7 @@
 #include <QVariantMap>
 #include <memory>
 
+#include "destination_lock.h"
 #include "strokes.h"
 
 namespace tsk::plugin {
@@ -38,10 +40,12 @@ class LineOutput {
 
  public:
   // Line output `key` of `algorithm` with `fields`, in `crs`. Throws QgsProcessingException with
-  // QGIS's message when the destination cannot be created.
+  // QGIS's message when the destination cannot be created. A file output is locked for as long
+  // as the output lives (io/destination_lock.h): another run writing it, from QGIS or the
+  // command line, is waited for (said on `feedback`, which can cancel the wait).
   LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
              const QString& key, QgsProcessingContext& context, const QgsFields& fields,
-             const QgsCoordinateReferenceSystem& crs);
+             const QgsCoordinateReferenceSystem& crs, QgsProcessingFeedback* feedback);
   ~LineOutput();
   LineOutput(const LineOutput&) = delete;
   LineOutput& operator=(const LineOutput&) = delete;
@@ -57,10 +61,13 @@ class LineOutput {
   void finish();
 
  private:
+  static std::unique_ptr<io::DestinationLock> lockDestination(const QString& path,
+                                                              QgsProcessingFeedback* feedback);
   [[noreturn]] void failWriting() const;
   void discard() noexcept;
 
-  QVariantMap mParameters;  // for QGIS's message on a failed write
+  std::unique_ptr<io::DestinationLock> mLock;  // first made, last gone: after the sink closes
+  QVariantMap mParameters;                     // for QGIS's message on a failed write
   QString mKey;
   QgsFields mFields;
   std::unique_ptr<QgsFeatureSink> mSink;

@@ -67,7 +67,8 @@ QVariantMap ProfilePlotAlgorithm::processAlgorithm(const QVariantMap& parameters
   QgsFields fields;
   fields.append(makeField(QStringLiteral("section"), FieldKind::Integer));
   fields.append(makeField(QStringLiteral("distance"), FieldKind::Real));
-  LineOutput output(*this, parameters, QStringLiteral("OUTPUT"), context, fields, raster.crs());
+  LineOutput output(*this, parameters, QStringLiteral("OUTPUT"), context, fields, raster.crs(),
+                    feedback);
   for (const ProfileLine& line : lines) {
     QgsFeature feature(fields);
     feature.setAttributes({static_cast<int>(line.cross_section), line.distance});

@@ -97,7 +97,8 @@ QVariantMap PStrokeAlgorithm::processAlgorithm(const QVariantMap& parameters,
   QgsFields fields;
   fields.append(makeField(QStringLiteral("class"), FieldKind::Text));
   fields.append(makeField(QStringLiteral("score_m2"), FieldKind::Real));
-  LineOutput output(*this, parameters, QStringLiteral("OUTPUT"), context, fields, raster.crs());
+  LineOutput output(*this, parameters, QStringLiteral("OUTPUT"), context, fields, raster.crs(),
+                    feedback);
   for (const PStroke& s : strokes) {
     QgsFeature feature(fields);
     QgsAttributes attributes;

@@ -179,6 +179,7 @@ QString RasterGrid::noteText(const io::DemNote& note) {
           .arg(number(1));
     case io::DemNoteCode::scaled_values:      // the provider applies the band's scale: heights
     case io::DemNoteCode::assumed_cell_size:  // a layer always has its extent
+    case io::DemNoteCode::cell_size_ignored:
       break;
   }
   return {};

@@ -146,10 +146,15 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
   const DemSource dem = raster.source(mParams.view.azimuth_deg);
   const std::size_t strip =
       mStrips > 0 ? static_cast<std::size_t>(mStrips) : strip_profiles(dem.frame);
-  if (feedback) feedback->pushInfo(tr("Processing the DEM in strips of %1 profiles.").arg(strip));
+  // Worth saying only when the DEM does not fit one strip.
+  const std::size_t strips = (dem.frame.profiles + strip - 1) / strip;
+  if (feedback && strips > 1) {
+    feedback->pushInfo(
+        tr("Processing the DEM in %1 strips of %2 profiles.").arg(strips).arg(strip));
+  }
   const QgsFields fields = strokeFields();
-  LineOutput factual(*this, parameters, kFactual, context, fields, raster.crs());
-  LineOutput formulated(*this, parameters, kFormulated, context, fields, raster.crs());
+  LineOutput factual(*this, parameters, kFactual, context, fields, raster.crs(), feedback);
+  LineOutput formulated(*this, parameters, kFormulated, context, fields, raster.crs(), feedback);
   // Each stroke goes to its output as it completes, from the thread that links the chains, while
   // the other threads work on the next profiles. A failure or cancel discards both outputs.
   const ProgressFn progress = [feedback](double f) {

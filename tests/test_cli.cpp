@@ -152,6 +152,10 @@ TEST_CASE("output formats follow the extension", "[cli]") {
   CHECK_THAT(bad.err, Catch::Contains("--format"));
   const CliRun forced = run_cli({"silhouettes", kSample, dir / "out.xyz", "--format", "GeoJSON"});
   CHECK(forced.code == 0);
+  // A name of another format's extension is refused (CSV into x.gpkg made a folder of CSV files).
+  const CliRun mismatched = run_cli({"silhouettes", kSample, dir / "x.gpkg", "--format", "CSV"});
+  CHECK(mismatched.code == 1);
+  CHECK_FALSE(std::filesystem::exists(dir / "x.gpkg"));
 }
 
 TEST_CASE("plan-oblique output and view options are passed through", "[cli]") {
@@ -209,6 +213,13 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
   std::filesystem::create_directory(dir / "folder.gpkg");
   std::filesystem::create_directory(dir / "folder.tif");
   REQUIRE(mkfifo((dir / "pipe.geojson").c_str(), 0644) == 0);
+  {
+    GDALDataset* complex = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
+        (dir / "complex.tif").c_str(), 20, 20, 1, GDT_CFloat32, nullptr);
+    REQUIRE(complex != nullptr);
+    complex->SetGeoTransform(const_cast<double*>(kNorthUp));
+    GDALClose(complex);
+  }
   const std::size_t inputs = dir.file_count();
 
   struct Bad {
@@ -233,6 +244,17 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"silhouettes", kSample, out, "--base-slope", "-5"}, "base slope"},
       {{"silhouettes", kSample, out, "--min-cells", "1"}, "at least 2"},
       {{"silhouettes", kSample, out, "--window", "2.5"}, "whole number"},
+      // Read as something else before: hexadecimal, exponents in whole numbers, a JPEG name
+      // for a PNG, a folder of CSV files named .gpkg, a complex band's real part.
+      {{"silhouettes", kSample, out, "--azimuth", "0x5A"}, "needs a number"},
+      {{"silhouettes", kSample, out, "--band", "1e0"}, "whole number"},
+      {{"silhouettes", kSample, out, "--preview", dir / "x.jpg"}, ".png name"},
+      {{"silhouettes", kSample, dir / "x.gpkg", "--format", "CSV"}, "a .gpkg name is GPKG's"},
+      {{"silhouettes", dir / "complex.tif", out}, "complex numbers (CFloat32)"},
+      {{"silhouettes", dir / "nogeo.tif", out, "--cell-size", "0"}, "--cell-size must be positive"},
+      {{"silhouettes", dir / "nogeo.tif", out, "--cell-size", "-1"},
+       "--cell-size must be positive"},
+      {{"silhouettes", dir / "nogeo.tif", out, "--cell-size", "nan"}, "--cell-size needs a number"},
       {{"silhouettes", kSample, out, "--min-cells", "1e20"}, "whole number from"},
       {{"silhouettes", kSample, out, "--window", "nan"}, "whole number from"},
       {{"silhouettes", kSample, out, "--ctrl", "1e-400"}, "too large or too small"},
@@ -242,10 +264,10 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"silhouettes", kSample, out, "--ve"}, "needs a value"},
       {{"silhouettes", kSample}, "expected INPUT and OUTPUT"},
       {{"silhouettes", kSample, out, "--format", "NoSuchDriver"}, "not an OGR vector driver"},
-      {{"silhouettes", dir / "dem.gpkg", dir / "dem.gpkg"}, "names the INPUT raster"},
-      {{"classify", dir / "multi.tif", dir / "./multi.tif"}, "names the INPUT raster"},
-      {{"drape", dir / "multi.tif", dir / "drape.tif", "--source", dir / "drape.tif"},
-       "names the --source raster"},
+      {{"silhouettes", dir / "dem.gpkg", dir / "dem.gpkg"}, "names a file the INPUT raster reads"},
+      {{"classify", dir / "multi.tif", dir / "./multi.tif"}, "names a file the INPUT raster reads"},
+      {{"drape", kSample, dir / "multi.tif", "--source", dir / "multi.tif"},
+       "names a file the --source raster reads"},
       {{"silhouettes", kSample, out, "--stats-json", out}, "names OUTPUT too"},
       {{"silhouettes", kSample, dir / "folder.gpkg"}, "is not a file"},
       {{"silhouettes", kSample, dir / "pipe.geojson"}, "is not a file"},
@@ -403,6 +425,10 @@ TEST_CASE("edge-case rasters give valid, possibly empty, outputs", "[cli][robust
       run_cli({"silhouettes", dir / "nogeo.tif", dir / "ng.gpkg", "--cell-size", "10"});
   CHECK(nogeo.code == 0);
   CHECK_THAT(nogeo.err, Catch::Contains("no georeferencing"));
+  const CliRun ignored =
+      run_cli({"silhouettes", kSample, dir / "ignored.gpkg", "--cell-size", "10"});
+  CHECK(ignored.code == 0);
+  CHECK_THAT(ignored.err, Catch::Contains("--cell-size 10 is ignored"));
 }
 
 TEST_CASE("an undeclared fill value among the heights gets a note", "[cli]") {
@@ -773,7 +799,7 @@ TEST_CASE("a disk that fills up fails the run in every format and leaves nothing
   CHECK(summarise(dir / "strokes.kml").features > 100);
 }
 
-TEST_CASE("what a run killed outright left for an output is removed by the next run", "[cli]") {
+TEST_CASE("what runs killed outright left in a folder is removed by the next run there", "[cli]") {
   ScratchDir dir("stale");
   // The staging folder of a process that has ended, and one of a process that lives (ours).
   const pid_t child = fork();
@@ -790,7 +816,7 @@ TEST_CASE("what a run killed outright left for an output is removed by the next 
   const CliRun run = run_cli({"silhouettes", kSample, dir / "strokes.gpkg"});
   REQUIRE(run.code == 0);
   CHECK_FALSE(std::filesystem::exists(stale));
-  CHECK(std::filesystem::exists(live));   // a run still going
-  CHECK(std::filesystem::exists(other));  // another output's
+  CHECK(std::filesystem::exists(live));         // a run still going
+  CHECK_FALSE(std::filesystem::exists(other));  // another output's, of a run gone too
   CHECK(summarise(dir / "strokes.gpkg").features > 100);
 }

@@ -40,6 +40,26 @@ check "model exit code" $?
 gdalinfo "$out/hs.tif" > /dev/null 2>&1; check "model hillshade raster" $?
 [ "$(features "$out/mf.gpkg")" -gt 100 ] 2>/dev/null; check "model factual features" $?
 
+# Two runs writing the same outputs at once, one on a larger DEM: each waits for the other's
+# outputs to be complete (a lock per output file), both succeed, and the outputs are whole (one
+# run's failure used to delete the other's files).
+gdal_translate -q -outsize 5000 5000 -r bilinear "$repo/resources/sample/jacksboro_utm16n.tif" \
+  "$out/large.tif"
+for round in 1 2; do
+  rm -f "$out"/cc_*.gpkg
+  # Without --BAND: the band is optional, the first by default.
+  qp run terrainsketch:silhouettes --INPUT="$out/large.tif" \
+    --FACTUAL="$out/cc_f.gpkg" --FORMULATED="$out/cc_m.gpkg" > "$out/cc_large$round.txt" &
+  large=$!
+  qp run terrainsketch:silhouettes --INPUT="$repo/resources/sample/jacksboro_utm16n.tif" \
+    --FACTUAL="$out/cc_f.gpkg" --FORMULATED="$out/cc_m.gpkg" > "$out/cc_sample$round.txt"
+  sample_rc=$?
+  wait $large; large_rc=$?
+  [ $sample_rc -eq 0 ] && [ $large_rc -eq 0 ]; check "concurrent runs $round both succeed" $?
+  [ "$(features "$out/cc_f.gpkg")" -gt 100 ] 2>/dev/null && \
+    [ "$(features "$out/cc_m.gpkg")" -gt 100 ] 2>/dev/null; check "concurrent runs $round outputs" $?
+done
+
 # The German translation loads when the profile's locale is German.
 printf '\n[locale]\noverrideFlag=true\nuserLocale=de\n' \
   >> "$HOME/.local/share/QGIS/QGIS3/profiles/default/QGIS/QGIS3.ini"

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <gdal.h>
+#include <gdal_utils.h>
 #include <ogr_api.h>
 #include <ogr_srs_api.h>
 #include <qgsapplication.h>
@@ -24,7 +25,9 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QProcess>
 #include <QTemporaryDir>
+#include <QThread>
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -87,8 +90,10 @@ class RecordingFeedback : public QgsProcessingFeedback {
     QgsProcessingFeedback::reportError(error, fatal);
   }
   void pushWarning(const QString& warning) override { warnings << warning; }
+  void pushInfo(const QString& info) override { infos << info; }
   QStringList errors;
   QStringList warnings;
+  QStringList infos;
 };
 
 struct Run {

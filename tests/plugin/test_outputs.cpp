@@ -143,8 +143,20 @@ TEST_CASE("an output into the file of a raster being read is refused, the raster
     QVariantMap extra;
   };
   const QString addedLayer = QStringLiteral("ogr:dbname='%1' table=\"added\" (geom)").arg(gpkg);
+  // A VRT reading the GeoTIFF: the GeoTIFF is read too.
+  const QString vrt = dir.filePath("v_dem.vrt");
+  {
+    const QByteArray source = QFile::encodeName(tiff);
+    const char* sources[] = {source.constData()};
+    GDALDatasetH built =
+        GDALBuildVRT(QFile::encodeName(vrt).constData(), 1, nullptr, sources, nullptr, nullptr);
+    REQUIRE(built != nullptr);
+    GDALClose(built);
+  }
   const Case cases[] = {
       {"silhouettes", gpkg, {{"FACTUAL", gpkg}}},
+      {"classification", vrt, {{"OUTPUT", tiff}}},
+      {"rowslope", vrt, {{"OUTPUT", tiff}}},
       {"silhouettes", gpkg, {{"FORMULATED", addedLayer}}},
       {"profileplot", gpkg, {{"OUTPUT", dir.filePath("./dem.gpkg")}}},
       {"classification", tiff, {{"OUTPUT", tiff}}},
@@ -158,7 +170,7 @@ TEST_CASE("an output into the file of a raster being read is refused, the raster
     CHECK(bytes(gpkg) == gpkgBytes);
     CHECK(bytes(tiff) == tiffBytes);
     CHECK(QDir(dir.path()).entryList(QDir::Files).join(' ').toStdString() ==
-          "dem.gpkg dem.tif dem.tif.aux.xml");
+          "dem.gpkg dem.tif dem.tif.aux.xml v_dem.vrt");
   }
   // Beside the raster, in a file of their own, the outputs are written.
   const Run run = runAlgorithm(gpkg, {}, dir);
@@ -249,4 +261,48 @@ TEST_CASE("strokes stream into shapefiles and memory layers too", "[plugin][outp
     }
   }
   CHECK(k == core.strokes.size());
+}
+
+TEST_CASE("a run waits while another writes its output, and a wait cancelled removes nothing",
+          "[plugin][outputs][concurrency]") {
+  // Two runs writing one GeoPackage at once: the second, failing, deleted the first one's file.
+  // Now the second waits for the first (here, another process holding the output's lock) and,
+  // cancelled while it waits, leaves the first one's output as it was.
+  QTemporaryDir dir;
+  const QString dem = kData + "/jacksboro_utm16n.tif";
+  REQUIRE(runAlgorithm(dem, {}, dir).ok);
+  const QString factual = dir.filePath("factual.gpkg");
+  QFile before(factual);
+  REQUIRE(before.open(QIODevice::ReadOnly));
+  const QByteArray bytes = before.readAll();
+  before.close();
+  class CancelWhenWaiting : public RecordingFeedback {
+   public:
+    void pushInfo(const QString& info) override {
+      RecordingFeedback::pushInfo(info);
+      if (info.contains(QStringLiteral("Waiting for another run"))) waited = true, cancel();
+    }
+    bool waited = false;
+  } feedback;
+  {
+    // The other run: a process holding the output's lock (flock(1) locks as the tool does).
+    const QString lock = dir.filePath(QStringLiteral(".factual.gpkg.lock"));
+    QProcess otherRun;
+    otherRun.start(QStringLiteral("flock"),
+                   {QStringLiteral("-o"), lock, QStringLiteral("sleep"), QStringLiteral("60")});
+    REQUIRE(otherRun.waitForStarted());
+    for (int k = 0; k < 100 && !QFileInfo::exists(lock); ++k) QThread::msleep(20);
+    QThread::msleep(200);
+    const Run second = runAlgorithm(dem, {{"AZIMUTH", 0}}, dir, &feedback);
+    CHECK(feedback.waited);
+    CHECK_FALSE(second.ok);
+    otherRun.kill();
+    otherRun.waitForFinished();
+  }
+  QFile after(factual);
+  REQUIRE(after.open(QIODevice::ReadOnly));
+  CHECK(after.readAll() == bytes);
+  // Free again, the next run writes it.
+  REQUIRE(runAlgorithm(dem, {{"AZIMUTH", 0}}, dir).ok);
+  CHECK_FALSE(QFileInfo::exists(dir.filePath(".factual.gpkg.lock")));
 }

@@ -129,3 +129,13 @@ TEST_CASE("both outputs can go into one new GeoPackage", "[plugin][outputs]") {
   CHECK(factual.featureCount() == static_cast<long long>(core.stats.factual_strokes));
   CHECK(formulated.featureCount() == static_cast<long long>(core.stats.formulated_strokes));
 }
+
+TEST_CASE("the strips are mentioned only when the DEM takes more than one", "[plugin][strips]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/jacksboro_utm16n.tif";  // 436 x 414: one strip
+  RecordingFeedback whole, strips;
+  REQUIRE(runAlgorithm(dem, {}, dir, &whole).ok);
+  CHECK_FALSE(whole.infos.join(' ').contains(QStringLiteral("strips")));
+  REQUIRE(runAlgorithm(dem, {{"STRIPS", 100}}, dir, &strips).ok);
+  CHECK(strips.infos.join(' ').contains(QStringLiteral("in 5 strips of 100 profiles")));
+}

@@ -1,0 +1,184 @@
+// Outputs put in place whole (io/output_files.h): the files of an earlier output all replaced,
+// and concurrent runs of the command line for one output never leaving a mixed set.
+#include <fcntl.h>
+#include <gdal_utils.h>
+#include <ogrsf_frmts.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cli_run.h"
+#include "destination_lock.h"
+#include "gdal_test_support.h"
+#include "gdal_util.h"
+
+using namespace tsk;
+using test::CliRun;
+using test::run_cli;
+using test::ScratchDir;
+
+namespace {
+
+const std::string kSample = TSK_SAMPLE_DEM;
+
+// The features of a line layer read whole, or -1 when GDAL fails anywhere while reading it (a
+// shapefile whose .shp, .shx and .dbf come from different runs).
+long long features_read(const std::string& path, const OGREnvelope* filter = nullptr) {
+  GDALAllRegister();
+  const io::GdalErrorCapture errors;
+  io::DatasetPtr ds(static_cast<GDALDataset*>(
+      GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+  if (!ds || ds->GetLayerCount() != 1) return -1;
+  OGRLayer* layer = ds->GetLayer(0);
+  if (filter) layer->SetSpatialFilterRect(filter->MinX, filter->MinY, filter->MaxX, filter->MaxY);
+  long long count = 0;
+  for (auto& feature : *layer) count += feature->GetGeometryRef() != nullptr;
+  const long long declared = layer->GetFeatureCount(TRUE);
+  return errors.first_failure().empty() && (filter || declared == count) ? count : -1;
+}
+
+// Starts the command line on `args`, its output to /dev/null.
+pid_t start_cli(const std::vector<std::string>& args) {
+  std::vector<char*> argv = {const_cast<char*>("terrain-sketch")};
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t quiet;
+  posix_spawn_file_actions_init(&quiet);
+  posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
+  pid_t child = 0;
+  const int started = posix_spawn(&child, TSK_CLI_BINARY, &quiet, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&quiet);
+  REQUIRE(started == 0);
+  return child;
+}
+
+int exit_code(pid_t child) {
+  int status = 0;
+  waitpid(child, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace
+
+TEST_CASE("concurrent runs into one shapefile leave one run's whole set", "[io][concurrency]") {
+  ScratchDir dir("concurrent");
+  const std::vector<std::string> azimuths = {"90", "0", "200"};
+  // What each view alone writes.
+  std::set<long long> whole_sets;
+  for (const std::string& az : azimuths) {
+    const std::string alone = dir / ("alone" + az + ".shp");
+    REQUIRE(run_cli({"silhouettes", kSample, alone, "--azimuth", az}).code == 0);
+    whole_sets.insert(features_read(alone));
+  }
+  REQUIRE(whole_sets.size() == 3);  // the views give different sets
+  const std::string shared = dir / "c.shp";
+  for (int round = 0; round < 20; ++round) {
+    CAPTURE(round);
+    std::vector<pid_t> runs;
+    for (const std::string& az : azimuths)
+      runs.push_back(start_cli({"silhouettes", kSample, shared, "--azimuth", az}));
+    for (pid_t run : runs) REQUIRE(exit_code(run) == 0);
+    REQUIRE(whole_sets.count(features_read(shared)) == 1);
+  }
+}
+
+TEST_CASE("a run waits to put its output in place while another run holds it",
+          "[io][concurrency]") {
+  // The other run is this test, holding the destination's lock: the command line's run must
+  // finish its work and wait, leaving the destination alone, until the lock is released.
+  ScratchDir dir("held");
+  const std::string out = dir / "held.shp";
+  pid_t run = 0;
+  {
+    const io::DestinationLock held(out);
+    run = start_cli({"silhouettes", kSample, out});
+    const std::string staged = dir / (".held.shp.partial-" + std::to_string(run) + "/held.dbf");
+    for (int k = 0; k < 300 && !std::filesystem::exists(staged); ++k) usleep(20000);
+    REQUIRE(std::filesystem::exists(staged));  // its strokes are written, in its staging folder
+    usleep(300000);
+    CHECK(waitpid(run, nullptr, WNOHANG) == 0);  // still waiting
+    CHECK_FALSE(std::filesystem::exists(out));
+  }
+  CHECK(exit_code(run) == 0);
+  CHECK(features_read(out) > 100);
+  CHECK_FALSE(std::filesystem::exists(dir / ".held.shp.lock"));
+}
+
+TEST_CASE("an output replaces every file of the earlier one, side files included", "[io]") {
+  ScratchDir dir("replace");
+  const std::string shp = dir / "a.shp";
+  REQUIRE(run_cli({"silhouettes", kSample, shp, "--azimuth", "0"}).code == 0);
+  // A spatial index built on the earlier strokes, and side files other programs keep.
+  {
+    GDALAllRegister();
+    io::DatasetPtr ds(static_cast<GDALDataset*>(
+        GDALOpenEx(shp.c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE, nullptr, nullptr, nullptr)));
+    REQUIRE(ds);
+    ds->ExecuteSQL("CREATE SPATIAL INDEX ON a", nullptr, nullptr);
+  }
+  REQUIRE(std::filesystem::exists(dir / "a.qix"));
+  for (const char* side : {"a.sbn", "a.sbx", "a.shp.xml", "a.qmd"})
+    std::ofstream(dir / side) << "x";
+  std::ofstream(dir / "another.qmd") << "not ours";
+  REQUIRE(run_cli({"silhouettes", kSample, shp, "--azimuth", "90"}).code == 0);
+  for (const char* side : {"a.qix", "a.sbn", "a.sbx", "a.shp.xml", "a.qmd"}) {
+    CAPTURE(side);
+    CHECK_FALSE(std::filesystem::exists(dir / side));
+  }
+  CHECK(std::filesystem::exists(dir / "another.qmd"));
+  // A spatially filtered read finds every stroke.
+  OGREnvelope everything;
+  everything.MinX = everything.MinY = -1e12;
+  everything.MaxX = everything.MaxY = 1e12;
+  const long long all = features_read(shp);
+  CHECK(all > 100);
+  CHECK(features_read(shp, &everything) == all);
+}
+
+TEST_CASE("an output that names a file a VRT input reads is refused, the file kept", "[io]") {
+  ScratchDir dir("vrt");
+  const std::string src = dir / "src.tif", vrt = dir / "v_src.vrt";
+  std::filesystem::copy_file(kSample, src);
+  {
+    GDALAllRegister();
+    const char* sources[] = {src.c_str()};
+    int failed = 0;
+    GDALDatasetH built = GDALBuildVRT(vrt.c_str(), 1, nullptr, sources, nullptr, &failed);
+    REQUIRE(built != nullptr);
+    GDALClose(built);
+  }
+  const auto before = std::filesystem::file_size(src);
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"classify", vrt, src},
+        std::vector<std::string>{"row-slope", vrt, src},
+        std::vector<std::string>{"drape", kSample, src, "--source", vrt}}) {
+    CAPTURE(args[0]);
+    const CliRun run = run_cli(args);
+    CHECK(run.code == 1);
+    CHECK_THAT(run.err, Catch::Contains("names a file the"));
+  }
+  CHECK(std::filesystem::file_size(src) == before);
+  CHECK(io::dataset_files(vrt).size() == 2);
+}
+
+TEST_CASE("an input that is a pipe or no file is refused before GDAL opens it", "[io]") {
+  ScratchDir dir("pipe");
+  const std::string pipe = dir / "dem.tif";
+  REQUIRE(mkfifo(pipe.c_str(), 0600) == 0);
+  const CliRun piped = run_cli({"silhouettes", pipe, dir / "o.gpkg"});
+  CHECK(piped.code == 1);
+  CHECK_THAT(piped.err, Catch::Contains("is not a file"));
+  const CliRun missing = run_cli({"silhouettes", dir / "missing.tif", dir / "o.gpkg"});
+  CHECK(missing.code == 1);
+  CHECK_THAT(missing.err, Catch::Contains("No such file"));
+  CHECK_NOTHROW(io::check_input_path("/vsizip/archive.zip/dem.tif"));
+  CHECK_NOTHROW(io::check_input_path(dir.path.string()));  // a folder: an Arc/Info grid
+}
