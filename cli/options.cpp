@@ -49,6 +49,21 @@ int parse_int(const std::string& option, const std::string& text) {
   return static_cast<int>(value);
 }
 
+double parse_cell_size(const std::string& option, const std::string& text) {
+  const double size = parse_number(option, text);
+  if (!(size > 0 && std::isfinite(size)))
+    throw Error(option + " must be positive, a number of metres; got '" + text + "'");
+  return size;
+}
+
+// The preview is a PNG picture: another extension would name another format.
+std::string parse_png_name(const std::string& option, const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".png") throw Error(option + " draws a PNG picture: give it a .png name");
+  return path;
+}
+
 // True when paths a and b name one file: the same existing file, or the same path to be made.
 bool same_file(const std::string& a, const std::string& b) {
   if (a.empty() || b.empty()) return false;
@@ -116,12 +131,7 @@ Options parse(const std::vector<std::string>& args) {
       {"--placement", [&](auto&, auto& v) { o.params.placement = parse_placement(v); }},
       {"--geometry", [&](auto&, auto& v) { o.params.geometry = parse_geometry(v); }},
       {"--band", [&](auto& n, auto& v) { o.dem.band = parse_int(n, v); }},
-      {"--cell-size",
-       [&](auto& n, auto& v) {
-         o.dem.cell_size = parse_number(n, v);
-         if (!(o.dem.cell_size > 0 && std::isfinite(o.dem.cell_size)))
-           throw Error("--cell-size must be positive, a number of metres; got '" + v + "'");
-       }},
+      {"--cell-size", [&](auto& n, auto& v) { o.dem.cell_size = parse_cell_size(n, v); }},
       {"--threads",
        [&](auto& n, auto& v) {
          const int t = parse_int(n, v);
@@ -148,13 +158,7 @@ Options parse(const std::vector<std::string>& args) {
          if (o.every < 1) throw Error("--every must be at least 1");
        }},
       {"--stats-json", [&](auto&, auto& v) { o.stats_json = v; }},
-      {"--preview",
-       [&](auto& n, auto& v) {
-         std::string ext = std::filesystem::path(v).extension().string();
-         for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-         if (ext != ".png") throw Error(n + " draws a PNG picture: give it a .png name");
-         o.preview = v;
-       }},
+      {"--preview", [&](auto& n, auto& v) { o.preview = parse_png_name(n, v); }},
   };
   for (std::size_t k = 0; k < args.size(); ++k) {
     const std::string& a = args[k];

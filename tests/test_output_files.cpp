@@ -20,9 +20,7 @@
 #include "gdal_util.h"
 
 using namespace tsk;
-using test::CliRun;
-using test::run_cli;
-using test::ScratchDir;
+using namespace tsk::test;
 
 namespace {
 
