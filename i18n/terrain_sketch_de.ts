@@ -39,107 +39,107 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="52" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="54" />
         <source>Elevation (DEM)</source>
         <translation>Höhenmodell (DGM)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="53" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="55" />
         <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
         <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="54" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
         <source>Band</source>
         <translation>Kanal</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="56" />
-        <source>The band holding the heights.</source>
-        <translation>Der Kanal mit den Höhen.</translation>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="60" />
+        <source>The band holding the heights (the first when none is chosen).</source>
+        <translation>Der Kanal mit den Höhen (der erste, wenn keiner gewählt ist).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="62" />
         <source>View azimuth (degrees)</source>
         <translation>Blickrichtung (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="59" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="63" />
         <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
         <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="65" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="69" />
         <source>Vertical exaggeration</source>
         <translation>Überhöhung</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="66" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="70" />
         <source>Factor applied to heights before occlusion is computed.</source>
         <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="67" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="71" />
         <source>Base slope (%)</source>
         <translation>Grundneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="69" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="73" />
         <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
         <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="75" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="79" />
         <source>Row slope cut-off (%)</source>
         <translation>Grenzwert Zeilenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="77" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="81" />
         <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
         <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="79" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="83" />
         <source>Column slope cut-off (%)</source>
         <translation>Grenzwert Spaltenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="81" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="85" />
         <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
         <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="83" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="87" />
         <source>Control point column slope (%)</source>
         <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="85" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="89" />
         <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
         <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="89" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="93" />
         <source>Allow for diagonals</source>
         <translation>Diagonalen berücksichtigen</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="90" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="94" />
         <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
         <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="143" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="147" />
         <source>%1 and %2 would both be written to %3, one over the other; choose different files, or save both to one GeoPackage with a layer name each.</source>
         <translation>%1 und %2 würden beide nach %3 geschrieben, eines über das andere; wählen Sie verschiedene Dateien, oder speichern Sie beide in ein GeoPackage mit je einem Layernamen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="161" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="173" />
         <source>%1 would be written into %2, the file of %3, which this algorithm reads; choose another file.</source>
         <translation>%1 würde in %2 geschrieben, die Datei von %3, die dieser Algorithmus liest; wählen Sie eine andere Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="207" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="219" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -147,42 +147,42 @@
 <context>
     <name>DrapeAlgorithm</name>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="24" />
+        <location filename="../plugin/drape_algorithm.cpp" line="23" />
         <source>Drape raster (plan oblique)</source>
         <translation>Raster drapieren (Plan oblique)</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="28" />
+        <location filename="../plugin/drape_algorithm.cpp" line="27" />
         <source>Projects a raster on the DEM's grid (a hillshade, a slope or row slope map, an image; every band) into plan-oblique space: each visible cell moves along the view azimuth by exaggeration / base slope x (height - lowest height), terrain hidden behind nearer terrain is removed and slopes facing the viewer are stretched. The result lies exactly under the plan-oblique silhouettes and the profile plot made with the same view. The raster to drape must have the DEM's size (resample it to the DEM's grid first).</source>
         <translation>Projiziert ein Raster auf dem Gitter des DGM (eine Schummerung, eine Neigungs- oder Zeilenneigungskarte, ein Bild; alle Kanäle) in den Plan-oblique-Raum: jede sichtbare Zelle wird entlang der Blickrichtung um Überhöhung / Grundneigung x (Höhe - niedrigste Höhe) verschoben, hinter näherem Gelände verdecktes Gelände wird entfernt und dem Betrachter zugewandte Hänge werden gedehnt. Das Ergebnis liegt genau unter den Plan-oblique-Silhouetten und der Profildarstellung derselben Ansicht. Das Raster muss die Größe des DGM haben (zuerst auf das Gitter des DGM umtasten).</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="45" />
+        <location filename="../plugin/drape_algorithm.cpp" line="44" />
         <source>Raster to drape</source>
         <translation>Zu drapierendes Raster</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="46" />
+        <location filename="../plugin/drape_algorithm.cpp" line="45" />
         <source>A raster with the DEM's number of rows and columns; all its bands are draped.</source>
         <translation>Ein Raster mit der Zeilen- und Spaltenzahl des DGM; alle seine Kanäle werden drapiert.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="48" />
+        <location filename="../plugin/drape_algorithm.cpp" line="47" />
         <source>Draped raster</source>
         <translation>Drapiertes Raster</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="49" />
+        <location filename="../plugin/drape_algorithm.cpp" line="48" />
         <source>Float32 raster in plan-oblique space, one band per source band.</source>
         <translation>Float32-Raster im Plan-oblique-Raum, ein Kanal je Quellkanal.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="68" />
+        <location filename="../plugin/drape_algorithm.cpp" line="67" />
         <source>The raster to drape has %1 x %2 cells, the DEM %3 x %4: resample it to the DEM's grid first (Raster &gt; Projections &gt; Warp with the DEM's extent and resolution).</source>
         <translation>Das zu drapierende Raster hat %1 x %2 Zellen, das DGM %3 x %4: tasten Sie es zuerst auf das Gitter des DGM um (Raster &gt; Projektionen &gt; Transformieren mit Ausdehnung und Auflösung des DGM).</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="96" />
+        <location filename="../plugin/drape_algorithm.cpp" line="93" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -190,41 +190,46 @@
 <context>
     <name>FilterDiagramAlgorithm</name>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="21" />
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="41" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="20" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="40" />
         <source>Slope filter diagram</source>
         <translation>Diagramm des Neigungsfilters</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="25" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="24" />
         <source>Plots, for every cell, the magnitude of its column slope (along the view) against its row slope (across the view): all cells grey, the candidate set red, the cells the slope filter keeps black, over the filter's removal region in grey with the control point circled. Run it with different filter parameters to see what they keep before drawing the silhouettes. The page opens in the Results Viewer.</source>
         <translation>Trägt für jede Zelle den Betrag ihrer Spaltenneigung (entlang der Blickrichtung) gegen ihre Zeilenneigung (quer dazu) auf: alle Zellen grau, die Kandidatenmenge rot, die vom Neigungsfilter behaltenen Zellen schwarz, über dem grauen Entfernungsbereich des Filters mit eingekreistem Kontrollpunkt. Mit verschiedenen Filterparametern ausführen, um vor dem Zeichnen der Silhouetten zu sehen, was sie behalten. Die Seite öffnet sich im Ergebnisanzeiger.</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="41" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="40" />
         <source>HTML files (*.html)</source>
         <translation>HTML-Dateien (*.html)</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="42" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="41" />
         <source>HTML page with the diagram as SVG.</source>
         <translation>HTML-Seite mit dem Diagramm als SVG.</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="62" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="61" />
         <source>Slope filter</source>
         <translation>Neigungsfilter</translation>
-    </message>
-    <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="80" />
-        <source>Could not write %1: %2</source>
-        <translation>%1 konnte nicht geschrieben werden: %2</translation>
     </message>
 </context>
 <context>
     <name>LineOutput</name>
     <message>
-        <location filename="../plugin/line_output.cpp" line="156" />
+        <location filename="../plugin/line_output.cpp" line="99" />
+        <source>Waiting for another run writing %1.</source>
+        <translation>Warte auf einen anderen Lauf, der %1 schreibt.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/line_output.cpp" line="102" />
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/line_output.cpp" line="184" />
         <source>Could not write %1 whole: the file ends cut short. Is the disk full?</source>
         <translation>%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der Datenträger voll?</translation>
     </message>
@@ -366,102 +371,84 @@
 <context>
     <name>RasterGrid</name>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="82" />
+        <location filename="../plugin/raster_grid.cpp" line="115" />
         <source>The input raster layer is not valid.</source>
         <translation>Der Eingaberasterlayer ist ungültig.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="87" />
+        <location filename="../plugin/raster_grid.cpp" line="120" />
         <source>Band %1 does not exist: the raster has %2 band(s).</source>
         <translation>Kanal %1 existiert nicht: das Raster hat %2 Kanal/Kanäle.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="94" />
+        <location filename="../plugin/raster_grid.cpp" line="127" />
         <source>The raster has no cells.</source>
         <translation>Das Raster hat keine Zellen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="97" />
+        <location filename="../plugin/raster_grid.cpp" line="151" />
         <source>The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres like its heights. Reproject it to a metric CRS first, for example with Raster &gt; Projections &gt; Warp (Reproject) to the UTM zone of the area.</source>
         <translation>Das Raster liegt in einem geographischen KBS (%1): seine Zellgrößen sind Grad, nicht Meter wie seine Höhen. Projizieren Sie es zuerst in ein metrisches KBS, zum Beispiel mit Raster &gt; Projektionen &gt; Transformieren (Reprojizieren) in die UTM-Zone des Gebiets.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="103" />
+        <location filename="../plugin/raster_grid.cpp" line="156" />
         <source>The raster has no CRS: cell sizes are taken as metres and the outputs have no CRS.</source>
         <translation>Das Raster hat kein KBS: Zellgrößen werden als Meter angenommen, die Ausgaben haben kein KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="109" />
+        <location filename="../plugin/raster_grid.cpp" line="160" />
         <source>Mercator projection: map units are not ground metres here; cell sizes are scaled by cos(latitude of the centre) = %1.</source>
         <translation>Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen werden mit cos(Breite der Mitte) = %1 skaliert.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="114" />
+        <location filename="../plugin/raster_grid.cpp" line="164" />
         <source>The CRS's unit is %1, not the metre: the heights must be in %1 too, and depths and lengths come out in %1.</source>
         <translation>Die Einheit des KBS ist %1, nicht der Meter: die Höhen müssen ebenfalls in %1 sein, und Tiefen und Längen werden in %1 ausgegeben.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="119" />
+        <location filename="../plugin/raster_grid.cpp" line="168" />
         <source>The raster has %1 bands; band %2 is used.</source>
         <translation>Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="128" />
+        <location filename="../plugin/raster_grid.cpp" line="170" />
         <source>Heights go down to %1, a common fill value: if those cells have no data, set it as the layer's no data value (Layer Properties &gt; Transparency) or in the file.</source>
         <translation>Die Höhen reichen bis %1 hinab, ein üblicher Füllwert: wenn diese Zellen keine Daten haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften &gt; Transparenz) oder in der Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="133" />
+        <location filename="../plugin/raster_grid.cpp" line="175" />
         <source>Heights span %1 over a raster %2 across, more than any terrain: if they are millimetres or centimetres, give the band a scale in the file (gdal_edit.py -scale 0.001).</source>
         <translation>Die Höhen umfassen %1 auf einem Raster von %2 Breite, mehr als jedes Gelände: wenn es Millimeter oder Zentimeter sind, geben Sie dem Kanal in der Datei einen Maßstab (gdal_edit.py -scale 0.001).</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="145" />
+        <location filename="../plugin/raster_grid.cpp" line="138" />
         <source>The raster is rotated: QGIS turns it north-up, and the cells it adds around it are left out as no data.</source>
         <translation>Das Raster ist gedreht: QGIS richtet es nach Norden aus, und die Zellen, die es dabei rundum hinzufügt, bleiben als NoData außen vor.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="150" />
+        <location filename="../plugin/raster_grid.cpp" line="143" />
         <source>Could not open the raster's data provider.</source>
         <translation>Der Datenanbieter des Rasters konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="266" />
+        <location filename="../plugin/raster_grid.cpp" line="296" />
         <source>The raster (%1 x %2 cells) is too large for this algorithm, which holds the whole DEM turned to the view: that would take more than half of this machine's memory. The Silhouettes algorithm reads large DEMs strip by strip; or clip or resample the DEM.</source>
         <translation>Das Raster (%1 x %2 Zellen) ist zu groß für diesen Algorithmus, der das ganze DGM zur Blickrichtung gedreht im Speicher hält: das würde mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen. Der Algorithmus Silhouetten liest große DGM Streifen für Streifen; oder schneiden Sie das DGM zu oder verringern Sie seine Auflösung.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="278" />
+        <location filename="../plugin/raster_grid.cpp" line="308" />
         <source>Not enough memory for a %1 x %2 raster.</source>
         <translation>Nicht genug Speicher für ein Raster von %1 x %2.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="289" />
+        <location filename="../plugin/raster_grid.cpp" line="319" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="237" />
+        <location filename="../plugin/raster_grid.cpp" line="272" />
         <source>Could not read rows %1 to %2 of the raster.</source>
         <translation>Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
-    </message>
-</context>
-<context>
-    <name>RasterOutput</name>
-    <message>
-        <location filename="../plugin/raster_output.cpp" line="65" />
-        <source>Could not write the raster %1: %2</source>
-        <translation>Das Raster %1 konnte nicht geschrieben werden: %2</translation>
-    </message>
-    <message>
-        <location filename="../plugin/raster_output.cpp" line="81" />
-        <source>Could not create the raster %1.</source>
-        <translation>Das Raster %1 konnte nicht angelegt werden.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/raster_output.cpp" line="91" />
-        <source>Could not write the raster %1.</source>
-        <translation>Das Raster %1 konnte nicht geschrieben werden.</translation>
     </message>
 </context>
 <context>
@@ -512,7 +499,9 @@ Factual Silhouettes are occluding contours: cells beyond which the terrain hides
 
 The DEM's heights must be in metres and its CRS projected in metres; a geographic DEM is refused. Any view azimuth works; the four cardinal ones are exact.
 
-Two line outputs: Factual silhouettes (styled bold black, width by hidden depth) and Formulated silhouettes (thinner grey, width by slope). Separate layers so each can be styled, filtered or switched off on its own, and routed separately in models. Each stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth and max_depth (m, factual only), mean_dist (distance from the front of the view) and mean_z.
+Two line outputs: Factual silhouettes (styled bold black, width by hidden depth) and Formulated silhouettes (thinner grey, width by slope). Separate layers so each can be styled, filtered or switched off on its own, and routed separately in models. Each stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth and max_depth (m, factual only), mean_dist (ground distance from the front edge of the view, in the CRS's unit) and mean_z (m).
+
+The stage figures (log and outputs), in percent of the cells with data: HIDDEN_PCT (cells hidden behind nearer terrain), OCCLUDING_PCT (occluding cells), CSET_PCT (the candidate set: back-facing cells the raised view brings into sight), FSET_PCT (the filtered set: visible candidates the slope filter keeps), TSET_PCT (the thinned set: one cell per filtered zone) and GSET_PCT (the generalised set: cells of the strokes kept, those with at least the minimum number of cells); FACTUAL_STROKES and FORMULATED_STROKES count the strokes.
 
 Reference: Beyond Factual to Formulated Silhouettes, PhD thesis, Department of Computer Science, University of Hull (chapters 4 and 5), extending the occluding contours of Visvalingam and Whelan (1998).</source>
         <translation>Findet die Linien, die ein Kartograph zuerst skizziert, wenn er Gelände schräg von oben zeichnet.
@@ -521,114 +510,116 @@ Faktische Silhouetten sind Verdeckungskonturen: Zellen, hinter denen das Geländ
 
 Die Höhen des DGM müssen in Metern vorliegen und sein KBS in Metern projiziert sein; ein geographisches DGM wird abgelehnt. Jede Blickrichtung ist möglich; die vier Haupthimmelsrichtungen sind exakt.
 
-Zwei Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter Tiefe) und Formulierte Silhouetten (dünner grau, Breite nach Neigung). Getrennte Layer, damit jeder für sich gestaltet, gefiltert oder ausgeblendet und in Modellen getrennt weitergeleitet werden kann. Jeder Strich trägt: class, cells, length, mean_slope und mean_row_slope (%), mean_depth und max_depth (m, nur faktisch), mean_dist (Abstand vom vorderen Bildrand) und mean_z.
+Zwei Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter Tiefe) und Formulierte Silhouetten (dünner grau, Breite nach Neigung). Getrennte Layer, damit jeder für sich gestaltet, gefiltert oder ausgeblendet und in Modellen getrennt weitergeleitet werden kann. Jeder Strich trägt: class, cells, length, mean_slope und mean_row_slope (%), mean_depth und max_depth (m, nur faktisch), mean_dist (Abstand im Gelände vom vorderen Bildrand, in der Einheit des KBS) und mean_z (m).
+
+Die Stufenkennzahlen (Protokoll und Ausgaben), in Prozent der Zellen mit Daten: HIDDEN_PCT (hinter näherem Gelände verdeckte Zellen), OCCLUDING_PCT (verdeckende Zellen), CSET_PCT (die Kandidatenmenge: abgewandte Zellen, die der erhöhte Blick sichtbar macht), FSET_PCT (die gefilterte Menge: sichtbare Kandidaten, die der Neigungsfilter behält), TSET_PCT (die ausgedünnte Menge: eine Zelle je gefilterter Zone) und GSET_PCT (die generalisierte Menge: Zellen der behaltenen Striche, die mindestens die Mindestzahl an Zellen haben); FACTUAL_STROKES und FORMULATED_STROKES zählen die Striche.
 
 Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="90" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="97" />
         <source>Chaining window (cells)</source>
         <translation>Verkettungsfenster (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="91" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="98" />
         <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
         <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="92" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="99" />
         <source>Minimum stroke cells</source>
         <translation>Mindestzahl Zellen je Strich</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="93" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="100" />
         <source>Strokes with fewer cells are dropped (generalisation).</source>
         <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="94" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="101" />
         <source>Geometry</source>
         <translation>Geometrie</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="95" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
         <source>Map (cell centres)</source>
         <translation>Karte (Zellmittelpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="95" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
         <source>Plan oblique (the sketch)</source>
         <translation>Plan oblique (die Skizze)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="97" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="104" />
         <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
         <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="100" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="107" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="101" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="108" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="101" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="108" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="103" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="110" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="104" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="105" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="112" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="108" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
         <source>Profiles per strip (0: automatic)</source>
         <translation>Profile je Streifen (0: automatisch)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="109" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
         <source>The DEM is read and processed this many profiles at a time, the next strip read while this one is processed, so DEMs larger than memory run too. 0 chooses 1024, more for profiles under 1024 cells (a million cells a strip), or fewer when profiles are so long that the strips would take more than 512 MB. Strips that would take more than half of this machine's memory are refused.</source>
         <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, mehr für Profile unter 1024 Zellen (eine Million Zellen je Streifen), oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="124" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="118" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="125" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="151" />
-        <source>Processing the DEM in strips of %1 profiles.</source>
-        <translation>Das DGM wird in Streifen zu %1 Profilen verarbeitet.</translation>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="160" />
+        <source>Processing the DEM in %1 strips of %2 profiles.</source>
+        <translation>Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.</translation>
     </message>
 </context>
 <context>

@@ -36,7 +36,6 @@ GERMAN = {
         "haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften > Transparenz) "
         "oder in der Datei.",
     "The raster has %1 bands; band %2 is used.": "Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.",
-    "Could not write the raster %1: %2": "Das Raster %1 konnte nicht geschrieben werden: %2",
     "Could not write %1 whole: the file ends cut short. Is the disk full?":
         "%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der "
         "Datenträger voll?",
@@ -75,7 +74,14 @@ GERMAN = {
     "by hidden depth) and Formulated silhouettes (thinner grey, width by slope). Separate layers "
     "so each can be styled, filtered or switched off on its own, and routed separately in models. "
     "Each stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth and "
-    "max_depth (m, factual only), mean_dist (distance from the front of the view) and mean_z.\n\n"
+    "max_depth (m, factual only), mean_dist (ground distance from the front edge of the view, in "
+    "the CRS's unit) and mean_z (m).\n\nThe stage figures (log and outputs), in percent of the "
+    "cells with data: HIDDEN_PCT (cells hidden behind nearer terrain), OCCLUDING_PCT (occluding "
+    "cells), CSET_PCT (the candidate set: back-facing cells the raised view brings into sight), "
+    "FSET_PCT (the filtered set: visible candidates the slope filter keeps), TSET_PCT (the thinned "
+    "set: one cell per filtered zone) and GSET_PCT (the generalised set: cells of the strokes "
+    "kept, those with at least the minimum number of cells); FACTUAL_STROKES and "
+    "FORMULATED_STROKES count the strokes.\n\n"
     "Reference: Beyond Factual to Formulated Silhouettes, PhD thesis, Department of Computer "
     "Science, University of Hull (chapters 4 and 5), extending the occluding contours of "
     "Visvalingam and Whelan (1998).":
@@ -94,15 +100,26 @@ GERMAN = {
         "Formulierte Silhouetten (dünner grau, Breite nach Neigung). Getrennte Layer, damit jeder "
         "für sich gestaltet, gefiltert oder ausgeblendet und in Modellen getrennt weitergeleitet "
         "werden kann. Jeder Strich trägt: class, cells, length, mean_slope und mean_row_slope (%), "
-        "mean_depth und max_depth (m, nur faktisch), mean_dist (Abstand vom vorderen Bildrand) "
-        "und mean_z.\n\nQuelle: Beyond Factual to Formulated Silhouettes, Dissertation, "
+        "mean_depth und max_depth (m, nur faktisch), mean_dist (Abstand im Gelände vom vorderen "
+        "Bildrand, in der Einheit des KBS) und mean_z (m).\n\nDie Stufenkennzahlen (Protokoll und "
+        "Ausgaben), in Prozent der Zellen mit Daten: HIDDEN_PCT (hinter näherem Gelände "
+        "verdeckte Zellen), OCCLUDING_PCT (verdeckende Zellen), CSET_PCT (die Kandidatenmenge: "
+        "abgewandte Zellen, die der erhöhte Blick sichtbar macht), FSET_PCT (die gefilterte "
+        "Menge: sichtbare Kandidaten, die der Neigungsfilter behält), TSET_PCT (die ausgedünnte "
+        "Menge: eine Zelle je gefilterter Zone) und GSET_PCT (die generalisierte Menge: Zellen der "
+        "behaltenen Striche, die mindestens die Mindestzahl an Zellen haben); FACTUAL_STROKES und "
+        "FORMULATED_STROKES zählen die Striche.\n\nQuelle: Beyond Factual to Formulated Silhouettes, Dissertation, "
         "Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der "
         "Verdeckungskonturen von Visvalingam und Whelan (1998).",
     "Elevation (DEM)": "Höhenmodell (DGM)",
     "Digital elevation model with heights in metres, in a projected CRS in metres.":
         "Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.",
     "Band": "Kanal",
-    "The band holding the heights.": "Der Kanal mit den Höhen.",
+    "The band holding the heights (the first when none is chosen).":
+        "Der Kanal mit den Höhen (der erste, wenn keiner gewählt ist).",
+    "Waiting for another run writing %1.": "Warte auf einen anderen Lauf, der %1 schreibt.",
+    "Processing the DEM in %1 strips of %2 profiles.":
+        "Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.",
     "View azimuth (degrees)": "Blickrichtung (Grad)",
     "Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from "
     "the west, the default), 180 (from the north), 270 (from the east). These four are exact; "
@@ -205,8 +222,6 @@ GERMAN = {
         "Abstand der gezeichneten Querschnitte in Zellen entlang der Blickrichtung.",
     "Profile plot": "Profildarstellung",
     "Visible pieces of the cross-sections as lines.": "Sichtbare Teile der Querschnitte als Linien.",
-    "Could not create the raster %1.": "Das Raster %1 konnte nicht angelegt werden.",
-    "Could not write the raster %1.": "Das Raster %1 konnte nicht geschrieben werden.",
     "Row slope map": "Karte der Zeilenneigung",
     "The magnitude of the slope across the line of sight, in percent, on the DEM's grid (central "
     "differences across the view). Styled light where the terrain is flat across the view and "
@@ -309,7 +324,6 @@ GERMAN = {
         "%1 und %2 würden beide nach %3 geschrieben, eines über das andere; wählen Sie "
         "verschiedene Dateien, oder speichern Sie beide in ein GeoPackage mit je einem "
         "Layernamen.",
-    "Processing the DEM in strips of %1 profiles.": "Das DGM wird in Streifen zu %1 Profilen verarbeitet.",
     "P-strokes as lines with their class and score.":
         "P-Striche als Linien mit ihrer Klasse und Bewertung.",
     "A raster with the DEM's number of rows and columns; all its bands are draped.":
@@ -322,7 +336,6 @@ GERMAN = {
         "Das zu drapierende Raster hat %1 x %2 Zellen, das DGM %3 x %4: tasten Sie es zuerst auf "
         "das Gitter des DGM um (Raster > Projektionen > Transformieren mit Ausdehnung und "
         "Auflösung des DGM).",
-    "Could not write %1: %2": "%1 konnte nicht geschrieben werden: %2",
     "Float32 raster of |row slope| in percent.": "Float32-Raster der |Zeilenneigung| in Prozent.",
     "Terrain sketch: factual and formulated silhouettes":
         "Geländeskizze: faktische und formulierte Silhouetten",

@@ -17,7 +17,7 @@ tsk::plugin::TerrainSketchProvider* gProvider = nullptr;
 
 extern "C" __attribute__((visibility("default"))) int terrain_sketch_register_provider() {
   if (gProvider) return 1;
-  tsk::plugin::installTranslation(QgsApplication::locale());
+  tsk::plugin::installTranslation(tsk::plugin::qgisLanguage());
   auto provider = std::make_unique<tsk::plugin::TerrainSketchProvider>();
   if (!QgsApplication::processingRegistry()->addProvider(provider.get())) return 0;
   gProvider = provider.release();

@@ -1,5 +1,7 @@
 #include "translation.h"
 
+#include <qgsapplication.h>
+
 #include <QCoreApplication>
 #include <QTranslator>
 #include <memory>
@@ -27,6 +29,14 @@ bool installTranslation(const QString& locale, const QString& folder) {
   QCoreApplication::installTranslator(translator.get());
   installed() = std::move(translator);
   return true;
+}
+
+QString qgisLanguage() {
+  // QGIS sets its translation from --lang, or from the profile's locale when it overrides the
+  // system's; QgsApplication::locale() reads the profile alone.
+  const QString translation =
+      QgsApplication::instance() ? QgsApplication::instance()->translation() : QString();
+  return translation.isEmpty() ? QgsApplication::locale() : translation;
 }
 
 void removeTranslation() {

@@ -11,4 +11,7 @@ namespace tsk::plugin {
 bool installTranslation(const QString& locale, const QString& folder = QString());
 void removeTranslation();
 
+// The language QGIS shows its own strings in: `qgis --lang de`, else the profile's locale.
+QString qgisLanguage();
+
 }  // namespace tsk::plugin

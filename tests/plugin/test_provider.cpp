@@ -45,3 +45,12 @@ TEST_CASE("the German translation loads for the de locale", "[plugin][i18n]") {
   CHECK(provider.name() == QStringLiteral("Terrain sketch"));
   CHECK_FALSE(plugin::installTranslation(QStringLiteral("xx"), folder));
 }
+
+TEST_CASE("the plugin speaks the language QGIS was started in", "[plugin][i18n]") {
+  // `qgis --lang de` sets QGIS's translation, which the profile's locale does not show.
+  const QString before = QgsApplication::instance()->translation();
+  QgsApplication::setTranslation(QStringLiteral("de"));
+  CHECK(plugin::qgisLanguage() == QStringLiteral("de"));
+  QgsApplication::setTranslation(before);
+  if (before.isEmpty()) CHECK(plugin::qgisLanguage() == QgsApplication::locale());
+}
