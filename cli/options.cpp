@@ -11,6 +11,7 @@
 
 #include "errors.h"
 #include "gdal_util.h"
+#include "interrupt.h"
 #include "output_files.h"
 
 namespace tsk::cli {
@@ -181,6 +182,7 @@ Options parse(const std::vector<std::string>& args) {
   o.input = positional[0];
   o.output = positional[1];
   o.dem.azimuth_deg = o.params.view.azimuth_deg;
+  o.dem.stop = stop_if_interrupted;  // Ctrl-C and SIGTERM stop the reading too
   o.params.validate();
   refuse_clashing_paths(o);
   return o;

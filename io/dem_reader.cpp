@@ -50,9 +50,9 @@ WindowReader band_reader(GDALRasterBand& band, const std::string& path) {
 }
 
 // Reads the band in blocks of rows into dem.oriented.
-void read_band(const std::string& path, GDALRasterBand& band, Dem& dem) {
+void read_band(const std::string& path, GDALRasterBand& band, const DemOptions& options, Dem& dem) {
   OrientedGridBuilder builder(dem.frame);
-  read_row_blocks(dem.rows, dem.cols, band_reader(band, path),
+  read_row_blocks(dem.rows, dem.cols, stopping(band_reader(band, path), options.stop),
                   [&builder](std::size_t first_row, std::size_t count, const float* heights) {
                     builder.add_rows(first_row, count, heights);
                   });
@@ -62,13 +62,21 @@ void read_band(const std::string& path, GDALRasterBand& band, Dem& dem) {
 
 }  // namespace
 
+WindowReader stopping(WindowReader read, std::function<void()> stop) {
+  if (!stop) return read;
+  return [read = std::move(read), stop = std::move(stop)](const DemWindow& w, float* heights) {
+    stop();
+    read(w, heights);
+  };
+}
+
 Dem read_dem(const std::string& path, const DemOptions& options) {
   GdalErrorCapture capture;
   auto dataset = open_raster(path);
   Dem dem = describe_dem(*dataset, path, options);
   refuse_too_large_to_turn(path, dem);
   try {
-    read_band(path, *dataset->GetRasterBand(options.band), dem);
+    read_band(path, *dataset->GetRasterBand(options.band), options, dem);
   } catch (const std::bad_alloc&) {
     throw Error("not enough memory for a " + std::to_string(dem.rows) + " x " +
                 std::to_string(dem.cols) + " DEM");
@@ -158,13 +166,15 @@ DemFile::DemFile(const std::string& path, const DemOptions& options) {
   DatasetPtr dataset = open_raster(path);
   dem_ = describe_dem(*dataset, path, options);
   file_ = std::make_unique<BandWindows>(std::move(dataset), path, options.band);
+  stop_ = options.stop;
 }
 
 DemFile::~DemFile() = default;
 
 DemSource DemFile::source() const {
   return {dem_.frame, dem_.geotransform,
-          [&file = *file_](const DemWindow& w, float* heights) { file.read(w, heights); }};
+          stopping([&file = *file_](const DemWindow& w, float* heights) { file.read(w, heights); },
+                   stop_)};
 }
 
 }  // namespace tsk::io

@@ -1,6 +1,7 @@
 // Reads a DEM through GDAL straight into the core's oriented grid, with its georeferencing.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +18,9 @@ struct DemOptions {
   int band = 1;
   double azimuth_deg = 90.0;
   double cell_size = 0.0;  // > 0: use this cell size when the raster has no georeferencing
+  // Called before every read of the DEM's cells (a few rows at a time); throws to stop a read
+  // in any phase (the command line's Ctrl-C and SIGTERM).
+  std::function<void()> stop;
 };
 
 struct Dem {
@@ -99,11 +103,15 @@ class DemFile {
  private:
   Dem dem_;
   std::unique_ptr<BandWindows> file_;
+  std::function<void()> stop_;
 };
 
 // Throws Error when the DEM of `path` described by `dem` could not be turned whole for its view
 // (too_large_to_turn_whole): what every command but `silhouettes` needs.
 void refuse_too_large_to_turn(const std::string& path, const Dem& dem);
+
+// `read` calling `stop` before each window it reads (`read` itself without one).
+WindowReader stopping(WindowReader read, std::function<void()> stop);
 
 // Every band of a raster as grids on its own pixel grid (row 0 north), nodata as NaN: the
 // rasters to drape.

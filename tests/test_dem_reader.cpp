@@ -86,3 +86,26 @@ TEST_CASE("Web Mercator cells are scaled to ground metres with a note", "[io]") 
   CHECK(dem.notes[0].code == io::DemNoteCode::mercator_scaled);
   CHECK(dem.notes[0].numbers.at(0) == dem.ground_scale);
 }
+
+TEST_CASE("a stop asked for ends every read of a DEM, whole or window by window", "[io]") {
+  // The command line's Ctrl-C and SIGTERM: the lowest-height pass of a plan-oblique run and the
+  // whole-DEM reads used to run to their end before the first check.
+  const std::string sample = TSK_SAMPLE_DEM;
+  int reads = 0, allowed = 0;
+  io::DemOptions options;
+  options.stop = [&reads, &allowed] {
+    if (++reads > allowed) throw Cancelled();
+  };
+  CHECK_THROWS_AS(io::read_dem(sample, options), Cancelled);  // read in one block of rows
+  reads = 0, allowed = 1;
+  const io::DemFile file(sample, options);
+  const DemSource dem = file.source();
+  std::vector<float> heights(10);
+  dem.read({0, 0, 1, 10}, heights.data());  // the first read passes
+  CHECK_THROWS_AS(dem.read({1, 0, 1, 10}, heights.data()), Cancelled);
+  CHECK(reads == 2);
+  options.stop = {};
+  const io::DemFile unstopped(sample, options);
+  const DemSource whole = unstopped.source();
+  CHECK(dem_lowest_height(whole.frame.dem_rows, whole.frame.dem_cols, whole.read) > 0);
+}
