@@ -9,8 +9,22 @@
 
 namespace tsk {
 
+namespace {
+
+// Every 256 steps of `count`, tells `progress` of the share `from` + `span` * step / count done;
+// throws Cancelled when it says stop.
+void every_256(const ProgressFn& progress, std::size_t step, std::size_t count, double from,
+               double span) {
+  if (!progress || step % 256 != 0) return;
+  if (!progress(from + span * static_cast<double>(step) / static_cast<double>(count)))
+    throw Cancelled();
+}
+
+}  // namespace
+
 PlanObliqueDrape::PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& flags,
-                                   const OrientedFrame& frame, const ViewParams& view, double z_ref)
+                                   const OrientedFrame& frame, const ViewParams& view, double z_ref,
+                                   const ProgressFn& progress)
     : frame_(frame) {
   const PlanObliqueShift shift(view, frame.d, z_ref);
   // Plan-oblique positions along each profile. Visible cells have non-decreasing transformed
@@ -19,6 +33,7 @@ PlanObliqueDrape::PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& 
   std::vector<std::vector<std::int64_t>> cell(frame.profiles);
   double col_min = 1e300, col_max = -1e300, row_min = 1e300, row_max = -1e300;
   for (std::size_t p = 0; p < frame.profiles; ++p) {
+    every_256(progress, p, frame.profiles, 0.0, 0.5);
     for (std::size_t i = 0; i < frame.length; ++i) {
       const std::uint8_t f = flags(p, i);
       if (!(f & cell::valid) || (f & cell::hidden)) continue;
@@ -45,6 +60,7 @@ PlanObliqueDrape::PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& 
   }
   source_cell_.assign(checked_cell_count(rows_, cols_), -1);
   for (std::size_t r = 0; r < rows_; ++r) {
+    every_256(progress, r, rows_, 0.5, 0.5);
     for (std::size_t col = 0; col < cols_; ++col) {
       double pf = 0, s = 0;
       frame.from_pixel({static_cast<double>(col0_ + static_cast<std::int64_t>(col)) + 0.5,

@@ -8,6 +8,7 @@
 
 #include "flags.h"
 #include "orient.h"
+#include "parallel.h"
 #include "params.h"
 #include "strokes.h"
 
@@ -16,8 +17,10 @@ namespace tsk {
 class PlanObliqueDrape {
  public:
   // Needs the visibility flags of `oriented`; z_ref is the height that stays in place.
+  // `progress` hears of the work done (0 to 1) every few hundred profiles and rows; Cancelled is
+  // thrown when it returns false.
   PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& flags, const OrientedFrame& frame,
-                   const ViewParams& view, double z_ref);
+                   const ViewParams& view, double z_ref, const ProgressFn& progress = {});
 
   // The output lattice: north-up, the DEM's cell size, covering every visible cell's
   // plan-oblique position; output cell (r, c) is DEM pixel cell (row0 + r, col0 + c).

@@ -218,3 +218,26 @@ TEST_CASE("any azimuth drapes, and a raster off the DEM grid is refused", "[drap
   CHECK(shown > 1000);
   CHECK_THROWS_AS(drape.drape(HeightGrid(40, 49)), Error);
 }
+
+TEST_CASE("laying out a drape reports its progress and stops when cancelled", "[drape]") {
+  // A DEM of 1000 profiles: the progress is heard every 256 of them and every 256 output rows.
+  const HeightGrid dem = test::random_terrain(1000, 60, 4);
+  const Oriented o = run_view(dem, 90);
+  const ViewParams view{90, 2.5, 40};
+  std::vector<double> heard;
+  const PlanObliqueDrape drape(o.z, o.result.flags, o.frame, view, lowest_height(o.z),
+                               [&heard](double done) {
+                                 heard.push_back(done);
+                                 return true;
+                               });
+  REQUIRE(heard.size() >= 5);
+  CHECK(std::is_sorted(heard.begin(), heard.end()));
+  CHECK(heard.front() == 0.0);
+  CHECK(heard.back() < 1.0);
+  CHECK(heard.back() > 0.5);  // into the output rows
+  int calls = 0;
+  CHECK_THROWS_AS(PlanObliqueDrape(o.z, o.result.flags, o.frame, view, lowest_height(o.z),
+                                   [&calls](double) { return ++calls < 3; }),
+                  Cancelled);
+  CHECK(calls == 3);
+}
