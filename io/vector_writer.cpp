@@ -2,6 +2,7 @@
 
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -23,6 +24,22 @@ void check(OGRErr err, const std::string& what, const GdalErrorCapture& capture)
 }
 
 }  // namespace
+
+// SQLite keeps a journal beside a database, named after it with "-journal": a name that leaves no
+// room for it fails deep in GDAL with a message quoting SQL.
+void check_journal_fits(const std::string& path) {
+  const std::filesystem::path file(path);
+  const std::string folder = file.has_parent_path() ? file.parent_path().string() : ".";
+  const long most = pathconf(folder.c_str(), _PC_NAME_MAX);
+  const std::size_t name = file.filename().string().size(), journal = name + 8;
+  if (most > 0 && journal > static_cast<std::size_t>(most)) {
+    throw Error("the name of '" + path + "' is " + std::to_string(name) +
+                " bytes long: SQLite keeps a journal beside a GeoPackage named NAME-journal, "
+                "which must fit the file system's " +
+                std::to_string(most) + " bytes; shorten the name by " +
+                std::to_string(journal - static_cast<std::size_t>(most)) + " byte(s)");
+  }
+}
 
 std::string vector_driver_for(const std::string& path, const std::string& format) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -58,6 +75,7 @@ std::string check_vector_output(const std::string& path, const std::string& form
   GDALAllRegister();
   std::string driver = vector_driver_for(path, format);
   if (driver != "GPKG" && driver != "SQLite") return driver;
+  check_journal_fits(path);
   GdalErrorCapture quiet;  // a path that is no dataset (or none yet) is free to write
   const char* const drivers[] = {driver.c_str(), nullptr};
   DatasetPtr existing(

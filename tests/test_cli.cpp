@@ -749,6 +749,14 @@ TEST_CASE("an output name up to the file system's 255 bytes can be written", "[c
   CHECK(run.code == 0);
   CHECK(summarise(dir / name).features > 100);
   CHECK(dir.file_count() == 1);
+  // A GeoPackage's name must leave room for SQLite's journal beside it: said before any work,
+  // in a line (GDAL's message quoted hundreds of characters of SQL).
+  const std::string journal_fits = std::string(255 - 8 - 5, 'g') + ".gpkg";
+  CHECK(run_cli({"silhouettes", kSample, dir / journal_fits}).code == 0);
+  const CliRun too_long = run_cli({"silhouettes", kSample, dir / ("g" + journal_fits)});
+  CHECK(too_long.code == 1);
+  CHECK_THAT(too_long.err, Catch::Contains("shorten the name by 1 byte(s)"));
+  CHECK(too_long.err.size() < 600);
 }
 
 TEST_CASE("a disk that fills up fails the run in every format and leaves nothing behind",
