@@ -2,6 +2,7 @@
 
 #include <qgsmaplayer.h>
 #include <qgsprocessingfeedback.h>
+#include <qgsrasterlayer.h>
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -15,7 +16,7 @@ class QmlStyler : public QgsProcessingLayerPostProcessorInterface {
   Q_DECLARE_TR_FUNCTIONS(QmlStyler)
 
  public:
-  explicit QmlStyler(const QString& qmlPath) : mQmlPath(qmlPath) {}
+  QmlStyler(const QString& qmlPath, RampRange range) : mQmlPath(qmlPath), mRange(range) {}
 
   void postProcessLayer(QgsMapLayer* layer, QgsProcessingContext&,
                         QgsProcessingFeedback* feedback) override {
@@ -25,21 +26,28 @@ class QmlStyler : public QgsProcessingLayerPostProcessorInterface {
     if (!ok && feedback) {
       feedback->reportError(tr("Could not apply style %1: %2").arg(mQmlPath, message), false);
     }
-    if (ok) layer->triggerRepaint();
+    if (!ok) return;
+    auto* raster = qobject_cast<QgsRasterLayer*>(layer);
+    if (raster && mRange == RampRange::data) {
+      raster->setContrastEnhancement(QgsContrastEnhancement::StretchToMinimumMaximum,
+                                     QgsRasterMinMaxOrigin::CumulativeCut, QgsRectangle(), 250000);
+    }
+    layer->triggerRepaint();
   }
 
  private:
   QString mQmlPath;
+  RampRange mRange;
 };
 
 }  // namespace
 
 void styleOnCompletion(QgsProcessingContext& context, const QString& destinationId,
-                       const QString& style) {
+                       const QString& style, RampRange range) {
   if (destinationId.isEmpty() || !context.willLoadLayerOnCompletion(destinationId)) return;
   const QString qml = stylePath(style);
   if (!QFileInfo::exists(qml)) return;
-  context.layerToLoadOnCompletionDetails(destinationId).setPostProcessor(new QmlStyler(qml));
+  context.layerToLoadOnCompletionDetails(destinationId).setPostProcessor(new QmlStyler(qml, range));
 }
 
 }  // namespace tsk::plugin

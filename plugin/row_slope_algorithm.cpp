@@ -55,7 +55,7 @@ QVariantMap RowSlopeAlgorithm::processAlgorithm(const QVariantMap& parameters,
 
 QVariantMap RowSlopeAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
                                                     QgsProcessingFeedback*) {
-  styleOnCompletion(context, mOutput, QStringLiteral("row_slope"));
+  styleOnCompletion(context, mOutput, QStringLiteral("row_slope"), RampRange::data);
   return {};
 }
 

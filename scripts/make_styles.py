@@ -21,11 +21,17 @@ FIELDS = ("field=class:string&field=cells:integer&field=length:double&field=mean
           "&field=mean_dist:double&field=mean_z:double")
 
 # (file, colour, width expression): widths in millimetres, data-defined so designers can restyle.
+# The widths follow each layer's own spread (its mean and standard deviation), not fixed depths
+# and slopes: a 1 m lidar DEM's hidden zones are centimetres deep, a 90 m DEM's hundreds of
+# metres. Formulated strokes are a dark sepia, so they stay visible over a grey hillshade while
+# the black factual strokes lead.
 STYLES = [
     ("factual", "17,17,17",
-     'coalesce(scale_linear("mean_depth", 0, 150, 0.45, 1.4), 0.6)'),
-    ("formulated", "120,120,120",
-     'coalesce(scale_linear("mean_slope", 0, 40, 0.2, 0.55), 0.3)'),
+     'coalesce(scale_linear("mean_depth", 0, mean("mean_depth") + 2 * stdev("mean_depth"), '
+     '0.45, 1.4), 0.6)'),
+    ("formulated", "110,62,28",
+     'coalesce(scale_linear("mean_slope", minimum("mean_slope"), '
+     'mean("mean_slope") + 2 * stdev("mean_slope"), 0.3, 0.65), 0.4)'),
     ("profiles", "60,60,60", "0.25"),
     ("pstrokes", "150,70,20", "0.3"),
 ]

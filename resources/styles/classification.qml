@@ -1,12 +1,12 @@
 <!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>
-<qgis minScale="1e+08" maxScale="0" styleCategories="AllStyleCategories" version="3.22.16-Białowieża" hasScaleBasedVisibilityFlag="0">
+<qgis hasScaleBasedVisibilityFlag="0" maxScale="0" version="3.22.16-Białowieża" styleCategories="AllStyleCategories" minScale="1e+08">
   <flags>
     <Identifiable>1</Identifiable>
     <Removable>1</Removable>
     <Searchable>1</Searchable>
     <Private>0</Private>
   </flags>
-  <temporal enabled="0" fetchMode="0" mode="0">
+  <temporal mode="0" enabled="0" fetchMode="0">
     <fixedRange>
       <start></start>
       <end></end>
@@ -26,9 +26,9 @@
   </pipe-data-defined-properties>
   <pipe>
     <provider>
-      <resampling maxOversampling="2" zoomedOutResamplingMethod="nearestNeighbour" enabled="false" zoomedInResamplingMethod="nearestNeighbour"/>
+      <resampling maxOversampling="2" zoomedInResamplingMethod="nearestNeighbour" enabled="false" zoomedOutResamplingMethod="nearestNeighbour"/>
     </provider>
-    <rasterrenderer alphaBand="-1" nodataColor="" band="1" opacity="1" type="paletted">
+    <rasterrenderer opacity="1" alphaBand="-1" band="1" type="paletted" nodataColor="">
       <minMaxOrigin>
         <limits>None</limits>
         <extent>WholeRaster</extent>
@@ -38,16 +38,16 @@
         <stdDevFactor>2</stdDevFactor>
       </minMaxOrigin>
       <colorPalette>
-        <paletteEntry color="#ffffff" value="1" alpha="255" label="visible"/>
-        <paletteEntry color="#bed2eb" value="2" alpha="255" label="hidden"/>
-        <paletteEntry color="#dc1e1e" value="3" alpha="255" label="occluding"/>
-        <paletteEntry color="#d7d7d7" value="4" alpha="255" label="c-set"/>
-        <paletteEntry color="#787878" value="5" alpha="255" label="f-set"/>
-        <paletteEntry color="#141414" value="6" alpha="255" label="t-set"/>
+        <paletteEntry value="1" color="#ffffff" alpha="255" label="visible"/>
+        <paletteEntry value="2" color="#bed2eb" alpha="255" label="hidden"/>
+        <paletteEntry value="3" color="#dc1e1e" alpha="255" label="occluding"/>
+        <paletteEntry value="4" color="#d7d7d7" alpha="255" label="c-set"/>
+        <paletteEntry value="5" color="#787878" alpha="255" label="f-set"/>
+        <paletteEntry value="6" color="#141414" alpha="255" label="t-set"/>
       </colorPalette>
     </rasterrenderer>
-    <brightnesscontrast gamma="1" brightness="0" contrast="0"/>
-    <huesaturation saturation="0" grayscaleMode="0" colorizeRed="255" colorizeGreen="128" colorizeStrength="100" colorizeBlue="128" colorizeOn="0" invertColors="0"/>
+    <brightnesscontrast gamma="1" contrast="0" brightness="0"/>
+    <huesaturation colorizeOn="0" invertColors="0" colorizeGreen="128" grayscaleMode="0" saturation="0" colorizeStrength="100" colorizeRed="255" colorizeBlue="128"/>
     <rasterresampler maxOversampling="2"/>
     <resamplingStage>resamplingFilter</resamplingStage>
   </pipe>

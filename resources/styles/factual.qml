@@ -1,20 +1,20 @@
 <!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>
-<qgis simplifyDrawingHints="1" symbologyReferenceScale="-1" minScale="100000000" simplifyDrawingTol="1" maxScale="0" styleCategories="AllStyleCategories" version="3.22.16-Białowieża" simplifyMaxScale="1" hasScaleBasedVisibilityFlag="0" labelsEnabled="0" readOnly="0" simplifyAlgorithm="0" simplifyLocal="1">
+<qgis labelsEnabled="0" simplifyAlgorithm="0" simplifyLocal="1" simplifyMaxScale="1" symbologyReferenceScale="-1" readOnly="0" hasScaleBasedVisibilityFlag="0" maxScale="0" version="3.22.16-Białowieża" styleCategories="AllStyleCategories" minScale="100000000" simplifyDrawingTol="1" simplifyDrawingHints="1">
   <flags>
     <Identifiable>1</Identifiable>
     <Removable>1</Removable>
     <Searchable>1</Searchable>
     <Private>0</Private>
   </flags>
-  <temporal limitMode="0" durationField="" enabled="0" startField="" durationUnit="min" startExpression="" fixedDuration="0" endExpression="" mode="0" endField="" accumulate="0">
+  <temporal endExpression="" fixedDuration="0" endField="" durationField="" accumulate="0" startField="" startExpression="" mode="0" limitMode="0" durationUnit="min" enabled="0">
     <fixedRange>
       <start></start>
       <end></end>
     </fixedRange>
   </temporal>
-  <renderer-v2 forceraster="0" symbollevels="0" referencescale="-1" type="singleSymbol" enableorderby="0">
+  <renderer-v2 referencescale="-1" symbollevels="0" enableorderby="0" type="singleSymbol" forceraster="0">
     <symbols>
-      <symbol name="0" clip_to_extent="1" type="line" alpha="1" force_rhr="0">
+      <symbol name="0" force_rhr="0" type="line" alpha="1" clip_to_extent="1">
         <data_defined_properties>
           <Option type="Map">
             <Option value="" name="name" type="QString"/>
@@ -22,7 +22,7 @@
             <Option value="collection" name="type" type="QString"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" pass="0" class="SimpleLine" locked="0">
+        <layer locked="0" enabled="1" pass="0" class="SimpleLine">
           <Option type="Map">
             <Option value="0" name="align_dash_pattern" type="QString"/>
             <Option value="round" name="capstyle" type="QString"/>
@@ -52,40 +52,40 @@
             <Option value="0" name="use_custom_dash" type="QString"/>
             <Option value="3x:0,0,0,0,0,0" name="width_map_unit_scale" type="QString"/>
           </Option>
-          <prop k="align_dash_pattern" v="0"/>
-          <prop k="capstyle" v="round"/>
-          <prop k="customdash" v="5;2"/>
-          <prop k="customdash_map_unit_scale" v="3x:0,0,0,0,0,0"/>
-          <prop k="customdash_unit" v="MM"/>
-          <prop k="dash_pattern_offset" v="0"/>
-          <prop k="dash_pattern_offset_map_unit_scale" v="3x:0,0,0,0,0,0"/>
-          <prop k="dash_pattern_offset_unit" v="MM"/>
-          <prop k="draw_inside_polygon" v="0"/>
-          <prop k="joinstyle" v="round"/>
-          <prop k="line_color" v="17,17,17,255"/>
-          <prop k="line_style" v="solid"/>
-          <prop k="line_width" v="0.5"/>
-          <prop k="line_width_unit" v="MM"/>
-          <prop k="offset" v="0"/>
-          <prop k="offset_map_unit_scale" v="3x:0,0,0,0,0,0"/>
-          <prop k="offset_unit" v="MM"/>
-          <prop k="ring_filter" v="0"/>
-          <prop k="trim_distance_end" v="0"/>
-          <prop k="trim_distance_end_map_unit_scale" v="3x:0,0,0,0,0,0"/>
-          <prop k="trim_distance_end_unit" v="MM"/>
-          <prop k="trim_distance_start" v="0"/>
-          <prop k="trim_distance_start_map_unit_scale" v="3x:0,0,0,0,0,0"/>
-          <prop k="trim_distance_start_unit" v="MM"/>
-          <prop k="tweak_dash_pattern_on_corners" v="0"/>
-          <prop k="use_custom_dash" v="0"/>
-          <prop k="width_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop v="0" k="align_dash_pattern"/>
+          <prop v="round" k="capstyle"/>
+          <prop v="5;2" k="customdash"/>
+          <prop v="3x:0,0,0,0,0,0" k="customdash_map_unit_scale"/>
+          <prop v="MM" k="customdash_unit"/>
+          <prop v="0" k="dash_pattern_offset"/>
+          <prop v="3x:0,0,0,0,0,0" k="dash_pattern_offset_map_unit_scale"/>
+          <prop v="MM" k="dash_pattern_offset_unit"/>
+          <prop v="0" k="draw_inside_polygon"/>
+          <prop v="round" k="joinstyle"/>
+          <prop v="17,17,17,255" k="line_color"/>
+          <prop v="solid" k="line_style"/>
+          <prop v="0.5" k="line_width"/>
+          <prop v="MM" k="line_width_unit"/>
+          <prop v="0" k="offset"/>
+          <prop v="3x:0,0,0,0,0,0" k="offset_map_unit_scale"/>
+          <prop v="MM" k="offset_unit"/>
+          <prop v="0" k="ring_filter"/>
+          <prop v="0" k="trim_distance_end"/>
+          <prop v="3x:0,0,0,0,0,0" k="trim_distance_end_map_unit_scale"/>
+          <prop v="MM" k="trim_distance_end_unit"/>
+          <prop v="0" k="trim_distance_start"/>
+          <prop v="3x:0,0,0,0,0,0" k="trim_distance_start_map_unit_scale"/>
+          <prop v="MM" k="trim_distance_start_unit"/>
+          <prop v="0" k="tweak_dash_pattern_on_corners"/>
+          <prop v="0" k="use_custom_dash"/>
+          <prop v="3x:0,0,0,0,0,0" k="width_map_unit_scale"/>
           <data_defined_properties>
             <Option type="Map">
               <Option value="" name="name" type="QString"/>
               <Option name="properties" type="Map">
                 <Option name="outlineWidth" type="Map">
                   <Option value="true" name="active" type="bool"/>
-                  <Option value="coalesce(scale_linear(&quot;mean_depth&quot;, 0, 150, 0.45, 1.4), 0.6)" name="expression" type="QString"/>
+                  <Option value="coalesce(scale_linear(&quot;mean_depth&quot;, 0, mean(&quot;mean_depth&quot;) + 2 * stdev(&quot;mean_depth&quot;), 0.45, 1.4), 0.6)" name="expression" type="QString"/>
                   <Option value="3" name="type" type="int"/>
                 </Option>
               </Option>
@@ -104,13 +104,13 @@
   <blendMode>0</blendMode>
   <featureBlendMode>0</featureBlendMode>
   <layerOpacity>1</layerOpacity>
-  <geometryOptions removeDuplicateNodes="0" geometryPrecision="0">
+  <geometryOptions geometryPrecision="0" removeDuplicateNodes="0">
     <activeChecks type="StringList">
       <Option value="" type="QString"/>
     </activeChecks>
     <checkConfiguration/>
   </geometryOptions>
-  <legend type="default-vector" showLabelLegend="0"/>
+  <legend showLabelLegend="0" type="default-vector"/>
   <referencedLayers/>
   <fieldConfiguration>
     <field name="class" configurationFlags="None">
@@ -178,52 +178,52 @@
     </field>
   </fieldConfiguration>
   <aliases>
-    <alias field="class" name="" index="0"/>
-    <alias field="cells" name="" index="1"/>
-    <alias field="length" name="" index="2"/>
-    <alias field="mean_slope" name="" index="3"/>
-    <alias field="mean_row_slope" name="" index="4"/>
-    <alias field="mean_depth" name="" index="5"/>
-    <alias field="max_depth" name="" index="6"/>
-    <alias field="mean_dist" name="" index="7"/>
-    <alias field="mean_z" name="" index="8"/>
+    <alias name="" index="0" field="class"/>
+    <alias name="" index="1" field="cells"/>
+    <alias name="" index="2" field="length"/>
+    <alias name="" index="3" field="mean_slope"/>
+    <alias name="" index="4" field="mean_row_slope"/>
+    <alias name="" index="5" field="mean_depth"/>
+    <alias name="" index="6" field="max_depth"/>
+    <alias name="" index="7" field="mean_dist"/>
+    <alias name="" index="8" field="mean_z"/>
   </aliases>
   <defaults>
-    <default applyOnUpdate="0" expression="" field="class"/>
-    <default applyOnUpdate="0" expression="" field="cells"/>
-    <default applyOnUpdate="0" expression="" field="length"/>
-    <default applyOnUpdate="0" expression="" field="mean_slope"/>
-    <default applyOnUpdate="0" expression="" field="mean_row_slope"/>
-    <default applyOnUpdate="0" expression="" field="mean_depth"/>
-    <default applyOnUpdate="0" expression="" field="max_depth"/>
-    <default applyOnUpdate="0" expression="" field="mean_dist"/>
-    <default applyOnUpdate="0" expression="" field="mean_z"/>
+    <default expression="" applyOnUpdate="0" field="class"/>
+    <default expression="" applyOnUpdate="0" field="cells"/>
+    <default expression="" applyOnUpdate="0" field="length"/>
+    <default expression="" applyOnUpdate="0" field="mean_slope"/>
+    <default expression="" applyOnUpdate="0" field="mean_row_slope"/>
+    <default expression="" applyOnUpdate="0" field="mean_depth"/>
+    <default expression="" applyOnUpdate="0" field="max_depth"/>
+    <default expression="" applyOnUpdate="0" field="mean_dist"/>
+    <default expression="" applyOnUpdate="0" field="mean_z"/>
   </defaults>
   <constraints>
-    <constraint constraints="0" field="class" exp_strength="0" unique_strength="0" notnull_strength="0"/>
-    <constraint constraints="0" field="cells" exp_strength="0" unique_strength="0" notnull_strength="0"/>
-    <constraint constraints="0" field="length" exp_strength="0" unique_strength="0" notnull_strength="0"/>
-    <constraint constraints="0" field="mean_slope" exp_strength="0" unique_strength="0" notnull_strength="0"/>
-    <constraint constraints="0" field="mean_row_slope" exp_strength="0" unique_strength="0" notnull_strength="0"/>
-    <constraint constraints="0" field="mean_depth" exp_strength="0" unique_strength="0" notnull_strength="0"/>
-    <constraint constraints="0" field="max_depth" exp_strength="0" unique_strength="0" notnull_strength="0"/>
-    <constraint constraints="0" field="mean_dist" exp_strength="0" unique_strength="0" notnull_strength="0"/>
-    <constraint constraints="0" field="mean_z" exp_strength="0" unique_strength="0" notnull_strength="0"/>
+    <constraint exp_strength="0" constraints="0" unique_strength="0" notnull_strength="0" field="class"/>
+    <constraint exp_strength="0" constraints="0" unique_strength="0" notnull_strength="0" field="cells"/>
+    <constraint exp_strength="0" constraints="0" unique_strength="0" notnull_strength="0" field="length"/>
+    <constraint exp_strength="0" constraints="0" unique_strength="0" notnull_strength="0" field="mean_slope"/>
+    <constraint exp_strength="0" constraints="0" unique_strength="0" notnull_strength="0" field="mean_row_slope"/>
+    <constraint exp_strength="0" constraints="0" unique_strength="0" notnull_strength="0" field="mean_depth"/>
+    <constraint exp_strength="0" constraints="0" unique_strength="0" notnull_strength="0" field="max_depth"/>
+    <constraint exp_strength="0" constraints="0" unique_strength="0" notnull_strength="0" field="mean_dist"/>
+    <constraint exp_strength="0" constraints="0" unique_strength="0" notnull_strength="0" field="mean_z"/>
   </constraints>
   <constraintExpressions>
-    <constraint exp="" field="class" desc=""/>
-    <constraint exp="" field="cells" desc=""/>
-    <constraint exp="" field="length" desc=""/>
-    <constraint exp="" field="mean_slope" desc=""/>
-    <constraint exp="" field="mean_row_slope" desc=""/>
-    <constraint exp="" field="mean_depth" desc=""/>
-    <constraint exp="" field="max_depth" desc=""/>
-    <constraint exp="" field="mean_dist" desc=""/>
-    <constraint exp="" field="mean_z" desc=""/>
+    <constraint desc="" exp="" field="class"/>
+    <constraint desc="" exp="" field="cells"/>
+    <constraint desc="" exp="" field="length"/>
+    <constraint desc="" exp="" field="mean_slope"/>
+    <constraint desc="" exp="" field="mean_row_slope"/>
+    <constraint desc="" exp="" field="mean_depth"/>
+    <constraint desc="" exp="" field="max_depth"/>
+    <constraint desc="" exp="" field="mean_dist"/>
+    <constraint desc="" exp="" field="mean_z"/>
   </constraintExpressions>
   <expressionfields/>
   <attributeactions/>
-  <attributetableconfig actionWidgetStyle="dropDown" sortExpression="" sortOrder="0">
+  <attributetableconfig sortOrder="0" actionWidgetStyle="dropDown" sortExpression="">
     <columns/>
   </attributetableconfig>
   <conditionalstyles>

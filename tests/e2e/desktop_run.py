@@ -51,6 +51,8 @@ def describe(layer):
             prop = sl.dataDefinedProperties().property(sl.PropertyStrokeWidth)
             info["colour"] = symbol.color().name()
             info["width_expression"] = prop.expressionString() if prop.isActive() else None
+    elif hasattr(renderer, "contrastEnhancement") and renderer.contrastEnhancement():
+        info["ramp_max"] = renderer.contrastEnhancement().maximumValue()
     return info
 
 

@@ -37,16 +37,21 @@ check(not r.get("not_loaded"), "outputs not loaded: %s" % r.get("not_loaded"))
 layers = {l["file"]: l for l in r.get("layers", [])}
 check(len(layers) == 7, "seven layers loaded, got %s" % list(layers))
 for path, colour, field in (("factual.gpkg", "#111111", "mean_depth"),
-                            ("formulated.gpkg", "#787878", "mean_slope")):
+                            ("formulated.gpkg", "#6e3e1c", "mean_slope")):
     l = layers.get(path, {})
     check(l.get("features", 0) > 100, path + " has features")
     check(l.get("crs") == "EPSG:32616", path + " CRS")
     check(l.get("renderer") == "singleSymbol", path + " styled")
     check(l.get("colour") == colour, path + " colour %s" % l.get("colour"))
     check(field in (l.get("width_expression") or ""), path + " width by " + field)
+    # Widths follow the layer's own spread, not depths and slopes fixed for one DEM.
+    check("stdev(" in (l.get("width_expression") or ""), path + " width from the data")
 check(layers.get("profiles.gpkg", {}).get("features", 0) > 20, "profile plot lines")
 check(layers.get("classes.tif", {}).get("renderer") == "paletted", "classes paletted")
 check(layers.get("rowslope.tif", {}).get("renderer") == "singlebandgray", "row slope grey")
+# The ramp meets the raster's own values (it was fixed at 0-60 %: low relief showed blank).
+ramp = layers.get("rowslope.tif", {}).get("ramp_max", 60)
+check(0 < ramp != 60, "row slope ramp from the data, up to %s" % ramp)
 check(layers.get("pstrokes.gpkg", {}).get("features", 0) > 100, "P-strokes drawn")
 check("draped.tif" in layers, "draped raster loaded")
 shots = r.get("screenshots", [])
