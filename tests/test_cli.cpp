@@ -774,6 +774,7 @@ TEST_CASE("a disk that fills up fails the run in every format and leaves nothing
   cases.push_back({"classify", "classes.tif"});
   cases.push_back({"row-slope", "slope.tif"});
   cases.push_back({"profiles", "profiles.geojson"});
+  cases.push_back({"filter-plot", "filter.html"});
   for (const Case& c : cases) {
     CAPTURE(c.command, c.output);
     const std::string output = dir / c.output;
@@ -799,6 +800,8 @@ TEST_CASE("a disk that fills up fails the run in every format and leaves nothing
     REQUIRE(WIFEXITED(status));
     CHECK(WEXITSTATUS(status) == 1);
     CHECK(dir.file_count() == 0);
+    // A text output says why it could not be written (it said "cannot write" alone).
+    if (c.command == "filter-plot") CHECK_THAT(message, Catch::Contains("File too large"));
     std::filesystem::remove(errors);
   }
   // Without the limit every format is written.
