@@ -32,12 +32,21 @@ class PlanObliqueDrape {
   // visible cell of its profile nearest in plan-oblique position (the nearer one on a tie);
   // NaN where no visible terrain lands.
   HeightGrid drape(const HeightGrid& source_on_dem) const;
+  // The same, letting go of the band's memory once it is turned to the view.
+  HeightGrid drape(HeightGrid&& source_on_dem) const;
 
  private:
-  const OrientedFrame& frame_;
+  static constexpr std::uint32_t kNone = 0xffffffffu;  // an output cell no visible cell reaches
+
+  void check_on_dem_grid(const HeightGrid& source_on_dem) const;
+  HeightGrid from_oriented(const HeightGrid& oriented) const;
+
+  OrientedFrame frame_;  // a copy: the DEM may go once the drape is laid out
   std::int64_t row0_ = 0, col0_ = 0;
   std::size_t rows_ = 0, cols_ = 0;
-  std::vector<std::int64_t> source_cell_;  // per output cell: oriented cell index, -1 for none
+  // Per output cell: the oriented cell index (4 bytes: a DEM turned whole has fewer cells), kNone
+  // for none.
+  std::vector<std::uint32_t> source_cell_;
 };
 
 }  // namespace tsk

@@ -147,42 +147,47 @@
 <context>
     <name>DrapeAlgorithm</name>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="23" />
+        <location filename="../plugin/drape_algorithm.cpp" line="26" />
         <source>Drape raster (plan oblique)</source>
         <translation>Raster drapieren (Plan oblique)</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="27" />
+        <location filename="../plugin/drape_algorithm.cpp" line="30" />
         <source>Projects a raster on the DEM's grid (a hillshade, a slope or row slope map, an image; every band) into plan-oblique space: each visible cell moves along the view azimuth by exaggeration / base slope x (height - lowest height), terrain hidden behind nearer terrain is removed and slopes facing the viewer are stretched. The result lies exactly under the plan-oblique silhouettes and the profile plot made with the same view. The raster to drape must have the DEM's size (resample it to the DEM's grid first).</source>
         <translation>Projiziert ein Raster auf dem Gitter des DGM (eine Schummerung, eine Neigungs- oder Zeilenneigungskarte, ein Bild; alle Kanäle) in den Plan-oblique-Raum: jede sichtbare Zelle wird entlang der Blickrichtung um Überhöhung / Grundneigung x (Höhe - niedrigste Höhe) verschoben, hinter näherem Gelände verdecktes Gelände wird entfernt und dem Betrachter zugewandte Hänge werden gedehnt. Das Ergebnis liegt genau unter den Plan-oblique-Silhouetten und der Profildarstellung derselben Ansicht. Das Raster muss die Größe des DGM haben (zuerst auf das Gitter des DGM umtasten).</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="44" />
+        <location filename="../plugin/drape_algorithm.cpp" line="47" />
         <source>Raster to drape</source>
         <translation>Zu drapierendes Raster</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="45" />
+        <location filename="../plugin/drape_algorithm.cpp" line="48" />
         <source>A raster with the DEM's number of rows and columns; all its bands are draped.</source>
         <translation>Ein Raster mit der Zeilen- und Spaltenzahl des DGM; alle seine Kanäle werden drapiert.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="47" />
+        <location filename="../plugin/drape_algorithm.cpp" line="50" />
         <source>Draped raster</source>
         <translation>Drapiertes Raster</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="48" />
+        <location filename="../plugin/drape_algorithm.cpp" line="51" />
         <source>Float32 raster in plan-oblique space, one band per source band.</source>
         <translation>Float32-Raster im Plan-oblique-Raum, ein Kanal je Quellkanal.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="67" />
+        <location filename="../plugin/drape_algorithm.cpp" line="70" />
         <source>The raster to drape has %1 x %2 cells, the DEM %3 x %4: resample it to the DEM's grid first (Raster &gt; Projections &gt; Warp with the DEM's extent and resolution).</source>
         <translation>Das zu drapierende Raster hat %1 x %2 Zellen, das DGM %3 x %4: tasten Sie es zuerst auf das Gitter des DGM um (Raster &gt; Projektionen &gt; Transformieren mit Ausdehnung und Auflösung des DGM).</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="93" />
+        <location filename="../plugin/drape_algorithm.cpp" line="109" />
+        <source>Could not read band %1 of the raster to drape.</source>
+        <translation>Kanal %1 des zu drapierenden Rasters konnte nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/drape_algorithm.cpp" line="128" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -363,7 +368,7 @@
 <context>
     <name>QmlStyler</name>
     <message>
-        <location filename="../plugin/layer_style.cpp" line="26" />
+        <location filename="../plugin/layer_style.cpp" line="27" />
         <source>Could not apply style %1: %2</source>
         <translation>Stil %1 konnte nicht angewendet werden: %2</translation>
     </message>

@@ -118,6 +118,8 @@ GERMAN = {
     "The band holding the heights (the first when none is chosen).":
         "Der Kanal mit den Höhen (der erste, wenn keiner gewählt ist).",
     "Waiting for another run writing %1.": "Warte auf einen anderen Lauf, der %1 schreibt.",
+    "Could not read band %1 of the raster to drape.":
+        "Kanal %1 des zu drapierenden Rasters konnte nicht gelesen werden.",
     "Processing the DEM in %1 strips of %2 profiles.":
         "Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.",
     "View azimuth (degrees)": "Blickrichtung (Grad)",

@@ -3,7 +3,10 @@
 #include <qgsprocessingfeedback.h>
 #include <qgsrasterblock.h>
 #include <qgsrasterdataprovider.h>
+#include <qgsrasterinterface.h>
 #include <qgsrasterlayer.h>
+
+#include <utility>
 
 #include "drape.h"
 #include "errors.h"
@@ -76,35 +79,57 @@ bool DrapeAlgorithm::prepareAlgorithm(const QVariantMap& parameters, QgsProcessi
   return true;
 }
 
+PlanObliqueDrape DrapeAlgorithm::layOut(const RasterGrid& raster,
+                                        QgsProcessingFeedback* feedback) const {
+  CellFlags flags;
+  classify_visibility(raster.oriented(), raster.frame().d, mView, flags);
+  // Laying out the drape takes as long as reading the DEM: progress from 30 to 60 %, and Cancel
+  // heard within a few hundred profiles.
+  return PlanObliqueDrape(raster.oriented(), flags, raster.frame(), mView, raster.lowestHeight(),
+                          [feedback](double done) {
+                            if (!feedback) return true;
+                            feedback->setProgress(30 + 30 * done);
+                            return !feedback->isCanceled();
+                          });
+}
+
+HeightGrid DrapeAlgorithm::readSourceBand(int band, std::size_t rows, std::size_t cols,
+                                          QgsProcessingFeedback* feedback) const {
+  // QGIS reads the whole band in one call, which hears Cancel through a feedback of its own.
+  QgsRasterBlockFeedback reading;
+  if (feedback) {
+    QObject::connect(feedback, &QgsFeedback::canceled, &reading, &QgsFeedback::cancel,
+                     Qt::DirectConnection);
+  }
+  HeightGrid values(rows, cols);
+  const std::unique_ptr<QgsRasterBlock> block(mSource->block(
+      band, mSource->extent(), static_cast<int>(cols), static_cast<int>(rows), &reading));
+  if (reading.isCanceled() || (feedback && feedback->isCanceled())) throw Cancelled();
+  if (!block || !block->isValid()) {
+    throw QgsProcessingException(tr("Could not read band %1 of the raster to drape.").arg(band));
+  }
+  copyHeights(*block, static_cast<int>(rows), values.data());
+  return values;
+}
+
 QVariantMap DrapeAlgorithm::processAlgorithm(const QVariantMap& parameters,
                                              QgsProcessingContext& context,
                                              QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 30);
   const std::size_t rows = raster.frame().dem_rows, cols = raster.frame().dem_cols;
+  const QgsCoordinateReferenceSystem crs = raster.crs();
   const QString path = parameterAsOutputLayer(parameters, QStringLiteral("OUTPUT"), context);
   withCoreErrors([&] {
-    CellFlags flags;
-    classify_visibility(raster.oriented(), raster.frame().d, mView, flags);
-    // Laying out the drape takes as long as reading the DEM: progress from 30 to 60 %, and
-    // Cancel heard within a few hundred profiles.
-    const PlanObliqueDrape drape(raster.oriented(), flags, raster.frame(), mView,
-                                 raster.lowestHeight(), [feedback](double done) {
-                                   if (!feedback) return true;
-                                   feedback->setProgress(30 + 30 * done);
-                                   return !feedback->isCanceled();
-                                 });
+    const PlanObliqueDrape drape = layOut(raster, feedback);
     const GeoTransform gt = drape.geotransform(raster.geotransform());
+    releaseRaster();  // the DEM goes before the bands are draped
     std::vector<HeightGrid> bands;
     for (int band = 1; band <= mSourceBands; ++band) {
       if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
-      std::unique_ptr<QgsRasterBlock> block(
-          mSource->block(band, mSource->extent(), static_cast<int>(cols), static_cast<int>(rows)));
-      HeightGrid values(rows, cols);
-      copyHeights(*block, static_cast<int>(rows), values.data());
-      bands.push_back(drape.drape(values));
+      bands.push_back(drape.drape(readSourceBand(band, rows, cols, feedback)));
       if (feedback) feedback->setProgress(60 + 30.0 * band / mSourceBands);
     }
-    writeFloatRaster(path, bands, gt, raster.crs());
+    writeFloatRaster(path, bands, gt, crs);
   });
   releaseRaster();
   mSource.reset();

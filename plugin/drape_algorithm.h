@@ -5,10 +5,13 @@
 #include <memory>
 
 #include "dem_view_algorithm.h"
+#include "drape.h"
 
 class QgsRasterDataProvider;
 
 namespace tsk::plugin {
+
+class RasterGrid;
 
 class DrapeAlgorithm : public DemViewAlgorithm {
   Q_DECLARE_TR_FUNCTIONS(DrapeAlgorithm)
@@ -30,6 +33,12 @@ class DrapeAlgorithm : public DemViewAlgorithm {
                                QgsProcessingFeedback* feedback) override;
 
  private:
+  // The drape's layout over the DEM read (its flags let go once it is laid out).
+  PlanObliqueDrape layOut(const RasterGrid& raster, QgsProcessingFeedback* feedback) const;
+  // Band `band` of the raster to drape, read through QGIS (rows x cols, NaN for nodata).
+  HeightGrid readSourceBand(int band, std::size_t rows, std::size_t cols,
+                            QgsProcessingFeedback* feedback) const;
+
   ViewParams mView;
   std::unique_ptr<QgsRasterDataProvider> mSource;
   int mSourceBands = 0;

@@ -38,3 +38,15 @@ TEST_CASE("the drape algorithm equals the core's drape", "[plugin][drape]") {
   CHECK_FALSE(mismatch.ok);
   CHECK(mismatch.error.contains("resample it to the DEM's grid"));
 }
+
+TEST_CASE("the drape hears Cancel while it lays out, and its progress moves", "[plugin][drape]") {
+  // Laying out the drape (30 to 60 %) used to run to its end without a word: a Cancel there was
+  // heard only after the first band was draped.
+  QTemporaryDir dir;
+  const QString dem = kData + "/jacksboro_utm16n.tif";
+  CancelAt feedback(31);
+  const Run run = runAlgorithm(dem, {{"SOURCE", dem}}, dir, &feedback, QStringLiteral("drape"));
+  CHECK_FALSE(run.ok);
+  CHECK(run.error.contains(QStringLiteral("Cancel")));
+  CHECK_FALSE(QFileInfo::exists(dir.filePath("out.tif")));
+}
