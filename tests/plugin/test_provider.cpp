@@ -54,3 +54,16 @@ TEST_CASE("the plugin speaks the language QGIS was started in", "[plugin][i18n]"
   QgsApplication::setTranslation(before);
   if (before.isEmpty()) CHECK(plugin::qgisLanguage() == QgsApplication::locale());
 }
+
+TEST_CASE("the Silhouettes help names every stage figure and the units of every field",
+          "[plugin]") {
+  const std::unique_ptr<QgsProcessingAlgorithm> alg(algorithm()->create());
+  const QString help = alg->shortHelpString();
+  for (const char* figure :
+       {"HIDDEN_PCT", "OCCLUDING_PCT", "CSET_PCT", "FSET_PCT", "TSET_PCT", "GSET_PCT",
+        "FACTUAL_STROKES", "FORMULATED_STROKES", "candidate set", "filtered set", "thinned set",
+        "generalised set", "mean_dist (ground distance", "mean_z (m)"}) {
+    CAPTURE(figure);
+    CHECK(help.contains(QString::fromLatin1(figure)));
+  }
+}
