@@ -154,7 +154,6 @@ inline QVariantMap outputsAs(const QTemporaryDir& dir, const char* format) {
           {"FORMULATED", dir.filePath(QStringLiteral("formulated.%1").arg(format))}};
 }
 
-// Runs the core directly on the same file through the CLI's GDAL reader, as the CLI does.
 // Runs algorithm `id` as runAlgorithm does and requires it to succeed.
 inline Run runOk(const QString& input, const QVariantMap& extra, const QTemporaryDir& dir,
                  const QString& id) {
@@ -171,6 +170,7 @@ inline io::Dem coreDem(const QString& file, double azimuth = 90) {
   return io::read_dem(file.toStdString(), options);
 }
 
+// Runs the core directly on the same file through io's GDAL reader, as the command line does.
 inline SilhouetteResult coreResult(const QString& file, double azimuth, Geometry geometry) {
   const io::Dem dem = coreDem(file, azimuth);
   SilhouetteParams params;
