@@ -1,8 +1,6 @@
 #include "command_support.h"
 
-#include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "dem_note_text.h"
@@ -34,8 +32,7 @@ std::string stats_json(const StageStats& s) {
 }
 
 void require_geotiff(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = io::lowercase_extension(path);
   if (ext != ".tif" && ext != ".tiff") throw Error("the output raster must be a GeoTIFF (.tif)");
 }
 

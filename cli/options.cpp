@@ -36,14 +36,13 @@ double parse_number(const std::string& option, const std::string& text) {
 }
 
 int parse_int(const std::string& option, const std::string& text) {
+  // Digits after an optional sign (not 1e0, 0x5A or 2.5), then within range: converting a double
+  // beyond an integer's range is undefined.
   const std::size_t digits = text.find_first_not_of("+-") == 1 ? 1 : 0;
-  if (text.empty() || text.find_first_not_of("0123456789", digits) != std::string::npos) {
-    throw Error(option + " needs a whole number from -1000000000 to 1000000000, got '" + text +
-                "'");
-  }
-  const double value = parse_number(option, text);
-  // The range first: converting a double beyond an integer's range is undefined.
-  if (!(value >= -1e9 && value <= 1e9) || value != std::trunc(value)) {
+  const bool whole =
+      !text.empty() && text.find_first_not_of("0123456789", digits) == std::string::npos;
+  const double value = whole ? parse_number(option, text) : 0.0;
+  if (!whole || !(value >= -1e9 && value <= 1e9)) {
     throw Error(option + " needs a whole number from -1000000000 to 1000000000, got '" + text +
                 "'");
   }
@@ -59,9 +58,8 @@ double parse_cell_size(const std::string& option, const std::string& text) {
 
 // The preview is a PNG picture: another extension would name another format.
 std::string parse_png_name(const std::string& option, const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".png") throw Error(option + " draws a PNG picture: give it a .png name");
+  if (io::lowercase_extension(path) != ".png")
+    throw Error(option + " draws a PNG picture: give it a .png name");
   return path;
 }
 

@@ -5,20 +5,27 @@
 
 namespace tsk::io {
 
+namespace {
+
+// True for the heights DEM producers write where they have none (-9999, -32767, -32768,
+// -99999, and float's lowest values): read as heights, in a raster that does not declare them
+// nodata, they make cliffs at its holes and edges that the silhouettes outline.
 bool is_common_fill_value(double z) {
   return z == -9999.0 || z == -32767.0 || z == -32768.0 || z == -99999.0 || z <= -1e30;
 }
 
+// True when heights spanning `relief` rise more than five times the width `across` of their DEM
+// (in the same unit): no terrain does, heights in millimetres or centimetres over cells in
+// metres do, and every bump of them then occludes.
 bool implausible_relief(double relief, double across) {
   return relief > 5.0 * across;
 }
 
+// The EPSG code of the WGS 84 UTM zone of a point (degrees).
 int utm_epsg(double lon, double lat) {
   const int zone = std::clamp(static_cast<int>(std::floor((lon + 180.0) / 6.0)) + 1, 1, 60);
   return (lat >= 0 ? 32600 : 32700) + zone;
 }
-
-namespace {
 
 // Mercator projections (Web Mercator among them) have map units that grow away from the equator;
 // transverse Mercator ("+proj=tmerc", UTM) does not.

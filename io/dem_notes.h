@@ -53,17 +53,4 @@ struct DemAssessment {
 
 DemAssessment assess_dem(const DemFacts& facts);
 
-// True for the heights DEM producers write where they have none (-9999, -32767, -32768,
-// -99999, and float's lowest values): read as heights, in a raster that does not declare them
-// nodata, they make cliffs at its holes and edges that the silhouettes outline.
-bool is_common_fill_value(double z);
-
-// True when heights spanning `relief` rise more than five times the width `across` of their DEM
-// (in the same unit): no terrain does, heights in millimetres or centimetres over cells in
-// metres do, and every bump of them then occludes.
-bool implausible_relief(double relief, double across);
-
-// The EPSG code of the WGS 84 UTM zone of a point (degrees).
-int utm_epsg(double lon, double lat);
-
 }  // namespace tsk::io

@@ -49,6 +49,15 @@ WindowReader band_reader(GDALRasterBand& band, const std::string& path) {
   };
 }
 
+// `read` calling `stop` before each window it reads (`read` itself without one).
+WindowReader stopping(WindowReader read, std::function<void()> stop) {
+  if (!stop) return read;
+  return [read = std::move(read), stop = std::move(stop)](const DemWindow& w, float* heights) {
+    stop();
+    read(w, heights);
+  };
+}
+
 // Reads the band in blocks of rows into dem.oriented.
 void read_band(const std::string& path, GDALRasterBand& band, const DemOptions& options, Dem& dem) {
   OrientedGridBuilder builder(dem.frame);
@@ -61,14 +70,6 @@ void read_band(const std::string& path, GDALRasterBand& band, const DemOptions& 
 }
 
 }  // namespace
-
-WindowReader stopping(WindowReader read, std::function<void()> stop) {
-  if (!stop) return read;
-  return [read = std::move(read), stop = std::move(stop)](const DemWindow& w, float* heights) {
-    stop();
-    read(w, heights);
-  };
-}
 
 Dem read_dem(const std::string& path, const DemOptions& options) {
   GdalErrorCapture capture;

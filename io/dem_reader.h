@@ -110,9 +110,6 @@ class DemFile {
 // (too_large_to_turn_whole): what every command but `silhouettes` needs.
 void refuse_too_large_to_turn(const std::string& path, const Dem& dem);
 
-// `read` calling `stop` before each window it reads (`read` itself without one).
-WindowReader stopping(WindowReader read, std::function<void()> stop);
-
 // Every band of a raster as grids on its own pixel grid (row 0 north), nodata as NaN: the
 // rasters to drape.
 std::vector<HeightGrid> read_bands(const std::string& path);

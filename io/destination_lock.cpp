@@ -14,18 +14,10 @@
 #include <thread>
 
 #include "errors.h"
+#include "output_files.h"
 
 namespace tsk::io {
 namespace {
-
-// The lock file of a destination: hidden beside it, named after it (shortened so that a name
-// near the 255-byte limit still fits).
-std::filesystem::path lock_path(const std::filesystem::path& destination) {
-  const std::string name = destination.filename().string().substr(0, 200);
-  const std::filesystem::path folder =
-      destination.has_parent_path() ? destination.parent_path() : std::filesystem::path(".");
-  return folder / ("." + name + ".lock");
-}
 
 // True while `fd` is the file at `path`: its holder removes the lock file before releasing it,
 // so a run that got the lock of a removed file must take the new one.
@@ -75,7 +67,7 @@ std::map<std::string, HeldLock> held;
 DestinationLock::DestinationLock(const std::filesystem::path& destination,
                                  const std::function<void()>& waiting,
                                  const std::function<void()>& stop)
-    : path_(lock_path(destination)) {
+    : path_(hidden_beside(destination, ".lock")) {
   const std::string key = std::filesystem::absolute(path_).lexically_normal().string();
   std::lock_guard<std::mutex> guard(held_mutex);
   if (auto it = held.find(key); it != held.end()) {

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -20,12 +21,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A staging folder is named ".NAME.partial-PID".
+constexpr char kStagingMark[] = ".partial-";
+
 // The folder `destination` goes in, after checking that it names a file in a folder that exists
 // and can be written.
 fs::path output_folder(const fs::path& destination) {
   if (destination.filename().empty())
     throw Error("output path '" + destination.string() + "' names no file");
-  const fs::path folder = destination.has_parent_path() ? destination.parent_path() : fs::path(".");
+  const fs::path folder = folder_of(destination);
   std::error_code ec;
   if (!fs::is_directory(folder, ec)) {
     throw Error("cannot write '" + destination.string() + "': folder '" + folder.string() +
@@ -49,15 +53,14 @@ fs::path output_folder(const fs::path& destination) {
 // whatever output they were for: a run killed outright (kill -9, a power cut) leaves its partial
 // output there, as big as it had got.
 void remove_stale_staging(const fs::path& folder) {
-  static const std::string kMark = ".partial-";
   std::error_code ec;
   std::vector<fs::path> stale;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
-    const std::size_t mark = name.rfind(kMark);
+    const std::size_t mark = name.rfind(kStagingMark);
     if (name.empty() || name[0] != '.' || mark == std::string::npos || !entry.is_directory(ec))
       continue;
-    const std::string pid = name.substr(mark + kMark.size());
+    const std::string pid = name.substr(mark + std::strlen(kStagingMark));
     if (pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
     // Gone, not merely another user's (EPERM).
     if (kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH) {
@@ -74,7 +77,7 @@ void remove_stale_staging(const fs::path& folder) {
 void remove_earlier_output(const fs::path& destination, const std::vector<fs::path>& made) {
   std::error_code ec;
   if (!fs::is_regular_file(destination, ec)) return;
-  const fs::path folder = destination.has_parent_path() ? destination.parent_path() : ".";
+  const fs::path folder = folder_of(destination);
   const std::string stem = destination.stem().string(), name = destination.filename().string();
   std::vector<fs::path> files;
   for (const std::string& file : dataset_files(destination.string())) files.emplace_back(file);
@@ -85,9 +88,8 @@ void remove_earlier_output(const fs::path& destination, const std::vector<fs::pa
     files.push_back(folder / (name + ".xml"));
   }
   for (const fs::path& file : files) {
-    const fs::path parent = file.has_parent_path() ? file.parent_path() : ".";
     const std::string file_name = file.filename().string();
-    const bool ours = fs::equivalent(parent, folder, ec) && file_name.rfind(stem, 0) == 0;
+    const bool ours = fs::equivalent(folder_of(file), folder, ec) && file_name.rfind(stem, 0) == 0;
     const bool replaced = std::any_of(made.begin(), made.end(),
                                       [&](const fs::path& m) { return m.filename() == file_name; });
     if (ours && !replaced) fs::remove(file, ec);
@@ -104,12 +106,8 @@ void write_atomically(const fs::path& destination,
                       const std::function<void(const fs::path&)>& write) {
   const fs::path folder = output_folder(destination);
   std::error_code ec;
-  // Named after the output, shortened so that a name near the 255-byte limit still fits.
-  constexpr std::size_t kNameBytes = 200;
-  const std::string prefix =
-      "." + destination.filename().string().substr(0, kNameBytes) + ".partial-";
   remove_stale_staging(folder);
-  const fs::path staging = folder / (prefix + std::to_string(getpid()));
+  const fs::path staging = hidden_beside(destination, kStagingMark + std::to_string(getpid()));
   fs::remove_all(staging, ec);
   if (!fs::create_directory(staging, ec)) {
     throw Error("cannot write in folder '" + folder.string() + "': " + ec.message());
@@ -132,6 +130,22 @@ void write_atomically(const fs::path& destination,
     fs::remove_all(staging, ec);
     throw;
   }
+}
+
+fs::path folder_of(const fs::path& path) {
+  return path.has_parent_path() ? path.parent_path() : fs::path(".");
+}
+
+std::string lowercase_extension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+fs::path hidden_beside(const fs::path& destination, const std::string& ending) {
+  constexpr std::size_t kNameBytes = 200;
+  return folder_of(destination) /
+         ("." + destination.filename().string().substr(0, kNameBytes) + ending);
 }
 
 void write_text_file(const fs::path& destination, const std::string& text) {

@@ -2,7 +2,6 @@
 
 #include <gdal_priv.h>
 
-#include <cctype>
 #include <limits>
 
 #include "gdal_util.h"
@@ -49,10 +48,9 @@ void write_bands(const std::string& path, const std::filesystem::path& staged, s
 
 GDALDriver* raster_driver_for(const std::string& path) {
   GDALAllRegister();
-  std::string ext = std::filesystem::path(path).extension().string();
+  std::string ext = lowercase_extension(path);
   if (!ext.empty()) ext.erase(0, 1);
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext.empty() || ext == "tif" || ext == "tiff") ext = "tif";
+  if (ext.empty() || ext == "tiff") ext = "tif";
   GDALDriverManager& drivers = *GetGDALDriverManager();
   for (int k = 0; k < drivers.GetDriverCount(); ++k) {
     GDALDriver* driver = drivers.GetDriver(k);

@@ -5,7 +5,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -29,8 +28,7 @@ void check(OGRErr err, const std::string& what, const GdalErrorCapture& capture)
 // room for it fails deep in GDAL with a message quoting SQL.
 void check_journal_fits(const std::string& path) {
   const std::filesystem::path file(path);
-  const std::string folder = file.has_parent_path() ? file.parent_path().string() : ".";
-  const long most = pathconf(folder.c_str(), _PC_NAME_MAX);
+  const long most = pathconf(folder_of(file).c_str(), _PC_NAME_MAX);
   const std::size_t name = file.filename().string().size(), journal = name + 8;
   if (most > 0 && journal > static_cast<std::size_t>(most)) {
     throw Error("the name of '" + path + "' is " + std::to_string(name) +
@@ -42,9 +40,7 @@ void check_journal_fits(const std::string& path) {
 }
 
 std::string vector_driver_for(const std::string& path, const std::string& format) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string ext = lowercase_extension(path);
   static const std::map<std::string, std::string> drivers = {
       {".gpkg", "GPKG"},    {".shp", "ESRI Shapefile"}, {".geojson", "GeoJSON"},
       {".json", "GeoJSON"}, {".fgb", "FlatGeobuf"},     {".gml", "GML"},

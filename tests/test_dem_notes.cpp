@@ -42,9 +42,13 @@ TEST_CASE("a geographic DEM is refused with the UTM zone of its centre", "[io][n
   REQUIRE(a.notes.front().code == DemNoteCode::geographic_crs);
   CHECK(a.notes.front().numbers.at(0) == 32616);  // 84.1 W: zone 16, north
   CHECK(a.notes.front().text == "EPSG:4326");
-  CHECK(utm_epsg(151.2, -33.9) == 32756);  // Sydney: zone 56, south
-  CHECK(utm_epsg(-180, 0) == 32601);
-  CHECK(utm_epsg(180, 0) == 32660);
+  const auto zone_of = [&f](double lon, double lat) {
+    f.centre_lon = lon, f.centre_lat = lat;
+    return assess_dem(f).notes.front().numbers.at(0);
+  };
+  CHECK(zone_of(151.2, -33.9) == 32756);  // Sydney: zone 56, south
+  CHECK(zone_of(-180, 0) == 32601);
+  CHECK(zone_of(180, 0) == 32660);
 }
 
 TEST_CASE("a Mercator DEM's cells are scaled by the cosine of its centre's latitude",
