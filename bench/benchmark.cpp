@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "resampled_silhouettes.h"
 #include "terrain_sketch.h"
 #include "whole_grid_stages.h"
 

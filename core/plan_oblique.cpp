@@ -8,4 +8,8 @@ double lowest_height(const HeightGrid& z) {
   return lowest.value();
 }
 
+double plan_oblique_reference(const HeightGrid& z, const SilhouetteParams& params) {
+  return params.geometry == Geometry::oblique ? lowest_height(z) : 0.0;
+}
+
 }  // namespace tsk

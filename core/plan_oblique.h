@@ -28,4 +28,8 @@ class PlanObliqueShift {
 // held whole.
 double lowest_height(const HeightGrid& z);
 
+// The plan-oblique reference of a DEM held whole for a run with `params`: its lowest height in
+// plan-oblique geometry; map geometry needs none, which spares a pass over the grid.
+double plan_oblique_reference(const HeightGrid& z, const SilhouetteParams& params);
+
 }  // namespace tsk

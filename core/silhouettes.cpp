@@ -1,5 +1,5 @@
 // The entry points of the method: a DEM read window by window (what the front ends call), a
-// grid held whole, a DEM resampled strip by strip, and strips delivered by a reader.
+// grid held whole, and strips delivered by a reader.
 #include "silhouettes.h"
 
 #include <utility>
@@ -8,16 +8,6 @@
 #include "stage_timing.h"
 
 namespace tsk {
-namespace {
-
-// The plan-oblique reference: the lowest height of `z`. Map geometry needs none, which spares a
-// pass over the grid.
-double plan_oblique_reference(const HeightGrid& z, const SilhouetteParams& params) {
-  return params.geometry == Geometry::oblique ? lowest_height(z) : 0.0;
-}
-
-}  // namespace
-
 std::vector<StageFigure> stage_figures(const StageStats& s) {
   return {{"hidden_pct", s.pct(s.hidden), false},
           {"occluding_pct", s.pct(s.occluding), false},
@@ -81,28 +71,6 @@ SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams
       },
       progress, std::move(sink));
   result.timings.reading = reading;
-  return result;
-}
-
-SilhouetteResult run_resampled_silhouettes(const HeightGrid& dem, const OrientedFrame& frame,
-                                           const GeoTransform& geotransform,
-                                           const SilhouetteParams& params,
-                                           const ProgressFn& progress) {
-  params.validate();
-  if (!frame.resampled) throw Error("run_resampled_silhouettes needs a resampled frame");
-  // Big enough for the linking of one batch to overlap the collection of the next (add_strip),
-  // small enough to stay a few tens of megabytes on any DEM.
-  constexpr std::size_t kStrip = 1024;
-  double resampling = 0;
-  SilhouetteResult result = run_in_strips(
-      frame, geotransform, params, plan_oblique_reference(dem, params), kStrip,
-      [&](std::size_t first, std::size_t count, HeightGrid& strip) {
-        const auto start = Clock::now();
-        resample_profiles(dem, frame, first, count, strip, params.threads);
-        resampling += seconds_since(start);
-      },
-      progress);
-  result.timings.resampling = resampling;
   return result;
 }
 

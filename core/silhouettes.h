@@ -96,13 +96,4 @@ SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame
                                  const ProgressFn& progress = {},
                                  std::optional<double> z_ref = std::nullopt);
 
-// Runs every stage at a resampled (non-cardinal) view straight from the DEM (row 0 north),
-// resampling a strip of profiles at a time into memory reused from strip to strip, so the
-// line-of-sight grid is never held whole. Gives the strokes of run_silhouettes on
-// orient(dem, frame), with the DEM's lowest height as the plan-oblique reference (SPEC 1.9).
-SilhouetteResult run_resampled_silhouettes(const HeightGrid& dem, const OrientedFrame& frame,
-                                           const GeoTransform& geotransform,
-                                           const SilhouetteParams& params,
-                                           const ProgressFn& progress = {});
-
 }  // namespace tsk

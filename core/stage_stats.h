@@ -33,7 +33,7 @@ std::vector<StageFigure> stage_figures(const StageStats& stats);
 // wall time of the whole is split between them by their shares of the threads' time.
 struct StageTimings {
   double visibility = 0, candidates = 0, filter = 0, thinning = 0, chaining = 0, strokes = 0;
-  // Reading the DEM (sketch_silhouettes) and turning it strip by strip (run_resampled_silhouettes),
+  // Reading the DEM (sketch_silhouettes) and resampling it strip by strip (tests, benchmark),
   // each strip while the stages work on the one before: time alongside the stages, not added to
   // them.
   double reading = 0, resampling = 0;

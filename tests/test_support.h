@@ -7,6 +7,7 @@
 #include <random>
 
 #include "analytic_terrain.h"
+#include "resampled_silhouettes.h"
 #include "terrain_sketch.h"
 #include "whole_grid_stages.h"
 
