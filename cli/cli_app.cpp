@@ -43,6 +43,14 @@ view:
   --ve X               vertical exaggeration, > 0 (default 2.5)
   --base-slope PCT     base slope added along the line of sight, percent (default 40)
 slope filter:
+  --filter F           adaptive (default): the cut-offs below are scaled by the DEM's median
+                       slope over 24 %, the thesis's terrain's at 75 m (x1/16 to x4), and
+                       height steps within half the DEM's height quantum count as flat;
+                       fixed: the cut-offs as given, the thesis's filter (SPEC 1.5)
+  --adapt A            whole (default): one scale for the DEM; local: each neighbourhood of
+                       --adapt-window cells has its own, so a plain beside mountains keeps its
+                       subtle breaks of slope (reads the DEM once more)
+  --adapt-window N     local adaptivity's neighbourhood, DEM cells, 8-100000 (default 100)
   --row-cut PCT        row slope cut-off, percent (default 20)
   --col-cut PCT        column slope cut-off, percent (default 12)
   --ctrl PCT           column slope of the control point, percent (default 8.75)

@@ -1,5 +1,6 @@
 #include "command_support.h"
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -15,18 +16,77 @@ io::Dem load_dem(const Options& o, std::ostream& err) {
   return dem;
 }
 
-std::string stats_json(const StageStats& s) {
+SilhouetteParams adapt_filter_to(const Options& o, const io::Dem& dem, FilterReport& report,
+                                 std::ostream& err) {
+  const io::DemFile file(o.input, o.dem);
+  const SilhouetteParams params = adapt_filter(o.params, dem.frame, file.source().read, report);
+  print_filter(report, err);
+  return params;
+}
+
+void print_filter(const FilterReport& r, std::ostream& err) {
+  if (r.choice.mode == FilterMode::fixed) return;
+  const FilterParams& c = r.cutoffs;
+  const auto old_precision = err.precision(3);
+  err << "note: adaptive slope filter: median slope " << r.median_slope_pct << " % against "
+      << kReferenceSlopePct << " % on the thesis's terrain, so the cut-offs are scaled by "
+      << r.scale << ": row " << c.row_cut_pct << " %, column " << c.col_cut_pct
+      << " %, control point " << c.ctrl_col_pct << " % (--filter fixed keeps 20, 12, 8.75)\n";
+  if (r.choice.adapt == Adaptivity::local) {
+    err << "note: local adaptivity over " << r.choice.window << " cells scales them from "
+        << r.local_lowest << " to " << r.local_highest << " times the thesis's\n";
+  }
+  err.precision(old_precision);
+}
+
+namespace {
+
+// The figures of a JSON object, one a line, each line but the last ending with a comma.
+void json_number(std::ostream& j, const char* key, double value, const char* indent = "  ") {
+  j << ",\n" << indent << "\"" << key << "\": ";
+  if (std::isfinite(value)) {
+    j << value;
+  } else {
+    j << "null";
+  }
+}
+
+void filter_json(std::ostream& j, const FilterReport& r) {
+  j << ",\n  \"filter\": {\n    \"mode\": \""
+    << (r.choice.mode == FilterMode::adaptive ? "adaptive" : "fixed") << "\",\n    \"adapt\": \""
+    << (r.choice.adapt == Adaptivity::local ? "local" : "whole") << "\"";
+  const char* in = "    ";
+  json_number(j, "row_cut_pct", r.cutoffs.row_cut_pct, in);
+  json_number(j, "col_cut_pct", r.cutoffs.col_cut_pct, in);
+  json_number(j, "ctrl_col_pct", r.cutoffs.ctrl_col_pct, in);
+  json_number(j, "ctrl_row_pct", r.cutoffs.ctrl_row_pct(), in);
+  json_number(j, "scale", r.scale, in);
+  json_number(j, "median_slope_pct", r.median_slope_pct, in);
+  json_number(j, "reference_slope_pct", kReferenceSlopePct, in);
+  json_number(j, "height_quantum", r.heights.quantum, in);
+  json_number(j, "height_tolerance", r.heights.tolerance, in);
+  if (r.choice.adapt == Adaptivity::local) {
+    json_number(j, "window_cells", r.choice.window, in);
+    json_number(j, "local_scale_lowest", r.local_lowest, in);
+    json_number(j, "local_scale_highest", r.local_highest, in);
+  }
+  j << "\n  }";
+}
+
+}  // namespace
+
+std::string stats_json(const StageStats& s, const FilterReport& filter) {
   std::ostringstream j;
   j.precision(6);
   j << std::fixed << "{\n  \"valid_cells\": " << s.valid;
   for (const StageFigure& f : stage_figures(s)) {
-    j << ",\n  \"" << f.key << "\": ";
     if (f.is_count) {
-      j << static_cast<long long>(f.value);
+      j << ",\n  \"" << f.key << "\": " << static_cast<long long>(f.value);
     } else {
-      j << f.value;
+      json_number(j, f.key, f.value);
     }
   }
+  filter_json(j, filter);
   j << "\n}\n";
   return j.str();
 }

@@ -14,15 +14,17 @@ int filter_plot(const Args& args, std::ostream& out, std::ostream& err,
                 const ProgressFn& progress) {
   const Options o = parse(args);
   const io::Dem dem = load_dem(o, err);
+  FilterReport filter;
+  const SilhouetteParams params = adapt_filter_to(o, dem, filter, err);
   const SilhouetteResult result =
-      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params, progress);
+      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, params, progress);
   stop_if_interrupted();
-  const double range = diagram_range_pct(o.params.filter);
+  const double range = diagram_range_pct(filter.cutoffs);
   const SlopeScatter scatter =
       slope_scatter(dem.oriented, result.flags, dem.frame.d, dem.frame.w, range);
   io::write_text_file(
       o.output,
-      filter_diagram_html(scatter, o.params.filter,
+      filter_diagram_html(scatter, filter.cutoffs,
                           "Slope filter: " + std::filesystem::path(o.input).filename().string()));
   out << o.output << ": c-set " << result.stats.pct(result.stats.candidate) << " %, f-set "
       << result.stats.pct(result.stats.filtered) << " %\n";

@@ -115,6 +115,7 @@ void refuse_clashing_paths(const Options& o) {
 
 Options parse(const std::vector<std::string>& args) {
   Options o;
+  o.params.adaptive.mode = FilterMode::adaptive;  // the command line's default; SPEC's is fixed
   std::vector<std::string> positional;
   using Setter = std::function<void(const std::string&, const std::string&)>;
   const std::map<std::string, Setter> with_value = {
@@ -125,6 +126,9 @@ Options parse(const std::vector<std::string>& args) {
       {"--row-cut", [&](auto& n, auto& v) { o.params.filter.row_cut_pct = parse_number(n, v); }},
       {"--col-cut", [&](auto& n, auto& v) { o.params.filter.col_cut_pct = parse_number(n, v); }},
       {"--ctrl", [&](auto& n, auto& v) { o.params.filter.ctrl_col_pct = parse_number(n, v); }},
+      {"--filter", [&](auto&, auto& v) { o.params.adaptive.mode = parse_filter_mode(v); }},
+      {"--adapt", [&](auto&, auto& v) { o.params.adaptive.adapt = parse_adaptivity(v); }},
+      {"--adapt-window", [&](auto& n, auto& v) { o.params.adaptive.window = parse_int(n, v); }},
       {"--window", [&](auto& n, auto& v) { o.params.chain.window = parse_int(n, v); }},
       {"--min-cells", [&](auto& n, auto& v) { o.params.chain.min_cells = parse_int(n, v); }},
       {"--placement", [&](auto&, auto& v) { o.params.placement = parse_placement(v); }},

@@ -14,8 +14,10 @@ int pstrokes(const Args& args, std::ostream& out, std::ostream& err, const Progr
   o.pstrokes.validate();
   io::check_vector_output(o.output, o.format);
   const io::Dem dem = load_dem(o, err);
+  FilterReport filter;
+  const SilhouetteParams params = adapt_filter_to(o, dem, filter, err);
   const SilhouetteResult result =
-      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, o.params, progress);
+      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, params, progress);
   stop_if_interrupted();
   const auto strokes =
       pstroke_sketch(dem.oriented, result.flags, dem.frame, o.params.view, dem.geotransform,

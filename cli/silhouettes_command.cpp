@@ -61,10 +61,12 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
     stop_if_interrupted();  // the last chance to stop with nothing written
     // The statistics and the preview go out before the strokes are committed, so that a failure
     // to write them discards the strokes too.
-    if (!o.stats_json.empty()) io::write_text_file(o.stats_json, stats_json(result.stats));
+    if (!o.stats_json.empty())
+      io::write_text_file(o.stats_json, stats_json(result.stats, result.filter));
     if (preview) write_preview(o, result, std::move(drawn));
     produced = Clock::now();
   });
+  print_filter(result.filter, err);
   if (o.timings) print_timings(result.timings, write_s, since(produced), err);
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes

@@ -44,6 +44,7 @@ OrientedFrame cardinal_frame(std::size_t rows, std::size_t cols, double dx, doub
   OrientedFrame f;
   f.azimuth_deg = azimuth;
   f.dem_rows = rows, f.dem_cols = cols;
+  f.dem_dx = dx, f.dem_dy = dy;
   switch (azimuth) {
     case 90:  // viewed from the west: profile = row (north first), cell = column (west first)
       f.profiles = rows, f.length = cols, f.d = dx, f.w = dy;
@@ -107,6 +108,7 @@ OrientedFrame make_resampled_frame(std::size_t rows, std::size_t cols, double dx
   f.azimuth_deg = azimuth;
   f.resampled = true;
   f.dem_rows = rows, f.dem_cols = cols;
+  f.dem_dx = dx, f.dem_dy = dy;
   f.profiles = static_cast<std::size_t>(profiles);
   f.length = static_cast<std::size_t>(length);
   checked_cell_count(f.profiles, f.length);

@@ -25,6 +25,7 @@ struct OrientedFrame {
   double azimuth_deg = 90;   // normalised to [0, 360)
   bool resampled = false;    // false: cardinal view, exact flip of the DEM
   std::size_t dem_rows = 0, dem_cols = 0;
+  double dem_dx = 1.0, dem_dy = 1.0;  // the DEM's own cell sizes, ground units
 
   // Exact integer map, cardinal views only.
   std::int64_t row0 = 0, row_per_p = 0, row_per_i = 0;

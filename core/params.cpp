@@ -38,6 +38,12 @@ void FilterParams::validate() const {
               number_text(col_cut_pct) + " %), got " + number_text(ctrl_col_pct));
 }
 
+void AdaptiveParams::validate() const {
+  require(window >= 8 && window <= 100000,
+          "the local adaptivity window must be between 8 and 100000 cells, got " +
+              std::to_string(window));
+}
+
 void ChainParams::validate() const {
   require(window >= 0 && window <= 1000, "chaining window must be between 0 and 1000 cells");
   require(min_cells >= 2 && min_cells <= 1000000,
@@ -47,7 +53,10 @@ void ChainParams::validate() const {
 void SilhouetteParams::validate() const {
   view.validate();
   filter.validate();
+  adaptive.validate();
   chain.validate();
+  require(std::isfinite(height_tolerance) && height_tolerance >= 0.0,
+          "the height tolerance must be a finite number >= 0");
   require(threads <= 1024, "thread count must be at most 1024");
 }
 
@@ -61,6 +70,18 @@ Placement parse_placement(const std::string& name) {
   if (name == "far") return Placement::far;
   if (name == "near_and_far") return Placement::near_and_far;
   throw Error("placement must be 'far' or 'near_and_far', got '" + name + "'");
+}
+
+FilterMode parse_filter_mode(const std::string& name) {
+  if (name == "adaptive") return FilterMode::adaptive;
+  if (name == "fixed") return FilterMode::fixed;
+  throw Error("filter must be 'adaptive' or 'fixed', got '" + name + "'");
+}
+
+Adaptivity parse_adaptivity(const std::string& name) {
+  if (name == "whole") return Adaptivity::whole;
+  if (name == "local") return Adaptivity::local;
+  throw Error("adaptivity must be 'whole' or 'local', got '" + name + "'");
 }
 
 }  // namespace tsk

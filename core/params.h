@@ -1,6 +1,7 @@
 // Every parameter of the method (SPEC sections 1, 1.5, 1.6, 1.7, 1.8, 1.9) with its default.
 #pragma once
 
+#include <memory>
 #include <string>
 
 namespace tsk {
@@ -25,6 +26,22 @@ struct FilterParams {
   void validate() const;
 };
 
+// The filter's cut-offs: `fixed` takes FilterParams as they are (SPEC 1.5, the thesis's filter);
+// `adaptive` scales them to the DEM's own slopes and tests slopes with a tolerance of its height
+// quantum (docs/ADAPTIVE_FILTER.md). adapt_filter() turns an adaptive choice into fixed cut-offs
+// for one run; the stages only ever see fixed ones.
+enum class FilterMode { fixed, adaptive };
+// Whether the scale is the whole DEM's or each neighbourhood's of `window` cells.
+enum class Adaptivity { whole, local };
+
+struct AdaptiveParams {
+  FilterMode mode = FilterMode::fixed;  // the core keeps SPEC's filter; the front ends default to
+                                        // adaptive
+  Adaptivity adapt = Adaptivity::whole;
+  int window = 100;  // local adaptivity: side of the neighbourhood, DEM cells
+  void validate() const;
+};
+
 // Which cells of an f-set zone the thinning keeps (SPEC 1.6).
 enum class Placement { far, near_and_far };
 
@@ -36,9 +53,17 @@ struct ChainParams {
 
 enum class Geometry { map, oblique };
 
+class SlopeScaleMap;
+
 struct SilhouetteParams {
   ViewParams view;
   FilterParams filter;
+  AdaptiveParams adaptive;
+  // Set by adapt_filter for one run. height_tolerance: slopes whose height step is within it count
+  // as flat in the c-set's tests (0: SPEC's strict tests). local_scale: each cell's slopes are
+  // divided by its neighbourhood's scale before the filter (null: no local adaptivity).
+  double height_tolerance = 0.0;
+  std::shared_ptr<const SlopeScaleMap> local_scale;
   ChainParams chain;
   Placement placement = Placement::far;
   Geometry geometry = Geometry::map;
@@ -49,5 +74,7 @@ struct SilhouetteParams {
 
 Geometry parse_geometry(const std::string& name);
 Placement parse_placement(const std::string& name);
+FilterMode parse_filter_mode(const std::string& name);
+Adaptivity parse_adaptivity(const std::string& name);
 
 }  // namespace tsk

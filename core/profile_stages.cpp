@@ -3,6 +3,7 @@
 #include <cstring>
 #include <iterator>
 #include <limits>
+#include <optional>
 
 #include "candidates.h"
 #include "slope_filter.h"
@@ -85,7 +86,7 @@ void add_counts(const StageStats& counts, StageStats& stats) {
   stats.filtered += counts.filtered, stats.thinned += counts.thinned;
 }
 
-CellRange classify_profile(const HeightGrid& z, std::size_t row, std::uint8_t* f,
+CellRange classify_profile(const HeightGrid& z, std::size_t row, std::size_t p, std::uint8_t* f,
                            const OrientedFrame& frame, const SilhouetteParams& params,
                            StageClock& clock) {
   const float* zp = z.row(row);
@@ -98,10 +99,14 @@ CellRange classify_profile(const HeightGrid& z, std::size_t row, std::uint8_t* f
     std::memset(f, 0, length);
     classify_profile_visibility(zp, f, e, frame.d, params.view, b);
   });
-  clock.time(&StageTimings::candidates,
-             [&] { select_profile_candidates(zp + b, f + b, e - b, frame.d, params.view); });
+  clock.time(&StageTimings::candidates, [&] {
+    select_profile_candidates(zp + b, f + b, e - b, frame.d, params.view, params.height_tolerance);
+  });
   clock.time(&StageTimings::filter, [&] {
-    filter_profile(rows_from(z, row, b), f + b, e - b, frame.d, frame.w, params.filter);
+    std::optional<ProfileScales> scales;
+    if (params.local_scale) scales.emplace(ProfileScales{*params.local_scale, frame, p, b});
+    filter_profile(rows_from(z, row, b), f + b, e - b, frame.d, frame.w, params.filter,
+                   scales ? &*scales : nullptr);
   });
   clock.time(&StageTimings::thinning, [&] { thin_profile(f + b, e - b, params.placement); });
   return cells;

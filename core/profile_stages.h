@@ -23,10 +23,10 @@ struct CellRange {
   std::size_t size() const { return end - begin; }
 };
 
-// SPEC 1.2-1.6 on profile `row` of strip `z` (its neighbours' rows beside it for the row slope):
-// sets its flags `f` (frame.length of them) and returns the cells with data, which the stages
-// keep to. Each stage is timed on `clock`.
-CellRange classify_profile(const HeightGrid& z, std::size_t row, std::uint8_t* f,
+// SPEC 1.2-1.6 on profile p, row `row` of strip `z` (its neighbours' rows beside it for the row
+// slope): sets its flags `f` (frame.length of them) and returns the cells with data, which the
+// stages keep to. Each stage is timed on `clock`.
+CellRange classify_profile(const HeightGrid& z, std::size_t row, std::size_t p, std::uint8_t* f,
                            const OrientedFrame& frame, const SilhouetteParams& params,
                            StageClock& clock);
 

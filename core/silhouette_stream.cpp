@@ -169,7 +169,7 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
         const std::size_t row = before + b0 + k, p = first + b0 + k;
         StageClock clock{p % kTimedEvery == 0, sampled};
         std::uint8_t* f = st.flags.row(row);
-        const CellRange range = classify_profile(z, row, f, st.frame, st.params, clock);
+        const CellRange range = classify_profile(z, row, p, f, st.frame, st.params, clock);
         clock.time(&StageTimings::chaining, [&] {
           count_profile(f + range.begin, range.size(), counts);
           cells[k].collect(context, f, p, range);
@@ -211,6 +211,10 @@ SilhouetteResult SilhouetteStream::finish() {
   stats.generalised = st.factual.cells + st.formulated.cells;
   stats.factual_strokes = st.factual.count;
   stats.formulated_strokes = st.formulated.count;
+  // The filter as the stages took it; sketch_silhouettes replaces it with what it adapted.
+  result.filter.choice = st.params.adaptive;
+  result.filter.cutoffs = st.params.filter;
+  result.filter.heights.tolerance = st.params.height_tolerance;
   // Without a sink: factual strokes first, then formulated, each in the order of the scan.
   result.strokes = std::move(st.factual.handed_on);
   result.strokes.reserve(result.strokes.size() + st.formulated.handed_on.size());

@@ -53,17 +53,19 @@ SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams
                                     StrokeSink sink) {
   params.validate();
   const OrientedFrame& frame = dem.frame;
+  FilterReport filter;
+  const SilhouetteParams run = adapt_filter(params, frame, dem.read, filter);
   // Plan-oblique geometry needs the DEM's lowest height before the first stroke: a pass of its
   // own over the DEM.
-  const double z_ref = params.geometry == Geometry::oblique
+  const double z_ref = run.geometry == Geometry::oblique
                            ? dem_lowest_height(frame.dem_rows, frame.dem_cols, dem.read)
                            : 0.0;
   // Strips bound the memory, and they are faster than the whole DEM: the next strip is read while
   // the stages work on this one, into memory reused from strip to strip.
-  StripLoader loader(frame, dem.read, params.threads);
+  StripLoader loader(frame, dem.read, run.threads);
   double reading = 0;
   SilhouetteResult result = run_in_strips(
-      frame, dem.geotransform, params, z_ref, strip > 0 ? strip : strip_profiles(frame),
+      frame, dem.geotransform, run, z_ref, strip > 0 ? strip : strip_profiles(frame),
       [&](std::size_t first, std::size_t count, HeightGrid& heights) {
         const auto start = Clock::now();
         loader.load(first, count, heights);
@@ -71,6 +73,7 @@ SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams
       },
       progress, std::move(sink));
   result.timings.reading = reading;
+  result.filter = filter;
   return result;
 }
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "adaptive_filter.h"
 #include "dem_windows.h"
 #include "flags.h"
 #include "geotransform.h"
@@ -23,7 +24,8 @@ struct SilhouetteResult {
   std::vector<Stroke> strokes;  // factual first, then formulated
   StageStats stats;
   StageTimings timings;
-  CellFlags flags;  // the per-cell classification, for diagnostics and tests
+  CellFlags flags;      // the per-cell classification, for diagnostics and tests
+  FilterReport filter;  // the slope filter used
 };
 
 // Takes each stroke as soon as it is complete and every stroke of its class started before it has
@@ -79,10 +81,11 @@ struct DemSource {
 
 // The whole method on a DEM read window by window: what the front ends call. It decides the
 // memory a run takes (strips of `strip` profiles, 0: strip_profiles()), reads the next strip while
-// the stages work on this one, and for plan-oblique geometry first reads the DEM once for its
-// lowest height. Strokes go to `sink` as they complete (the result holds none) or, without one,
-// into the result. Throws Error on bad parameters or what `read` throws, Cancelled when
-// `progress` returns false.
+// the stages work on this one, first reads a sample of the DEM (the whole DEM for local
+// adaptivity) for an adaptive filter (adapt_filter), and for plan-oblique geometry reads the DEM
+// once for its lowest height. Strokes go to `sink` as they complete (the result holds none) or,
+// without one, into the result. Throws Error on bad parameters or what `read` throws, Cancelled
+// when `progress` returns false.
 SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams& params,
                                     std::size_t strip = 0, const ProgressFn& progress = {},
                                     StrokeSink sink = {});

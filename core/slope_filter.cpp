@@ -17,7 +17,7 @@ double row_slope(const HeightGrid& z, std::size_t p, std::size_t i, double w) {
 }
 
 void filter_profile(const ProfileRows& profile, std::uint8_t* flags, std::size_t length, double d,
-                    double w, const FilterParams& filter) {
+                    double w, const FilterParams& filter, const ProfileScales* scales) {
   // Local copies: the compiler cannot tell that writing flags leaves the arguments unchanged.
   const ProfileRows rows = profile;
   const FilterRule rule(filter);
@@ -35,8 +35,10 @@ void filter_profile(const ProfileRows& profile, std::uint8_t* flags, std::size_t
     }
     for (std::size_t k = 0; k < count; ++k) {
       const std::size_t i = begin + sifted[k];
-      const double col_pct = std::fabs(column_slope(rows.centre, length, i, d)) * 100.0;
-      const double row_pct = std::fabs(row_slope(rows, i, w)) * 100.0;
+      // Multiplying by exactly 1 without local scales leaves the slopes as they are.
+      const double unscale = scales ? 1.0 / scales->at(i) : 1.0;
+      const double col_pct = std::fabs(column_slope(rows.centre, length, i, d)) * 100.0 * unscale;
+      const double row_pct = std::fabs(row_slope(rows, i, w)) * 100.0 * unscale;
       flags[i] |= static_cast<std::uint8_t>(rule.accepts(col_pct, row_pct) * cell::filtered);
     }
   }

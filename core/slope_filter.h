@@ -7,6 +7,7 @@
 #include "flags.h"
 #include "parallel.h"
 #include "params.h"
+#include "slope_scale_map.h"
 
 namespace tsk {
 
@@ -63,8 +64,21 @@ class FilterRule {
   double col_cut_, row_cut_, ctrl_row_, eq3_rate_, eq4_run_;
 };
 
-// Sets `filtered` on the visible c-set cells of one profile that the filter accepts.
+// Local adaptivity along one profile: the scale of its cells' neighbourhoods.
+struct ProfileScales {
+  const SlopeScaleMap& map;
+  const OrientedFrame& frame;
+  std::size_t profile;     // p
+  std::size_t first_cell;  // the cell of the profile that index 0 of filter_profile stands for
+  double at(std::size_t i) const {
+    return map.scale_at(
+        frame.to_pixel(static_cast<double>(profile), static_cast<double>(first_cell + i)));
+  }
+};
+
+// Sets `filtered` on the visible c-set cells of one profile that the filter accepts. With
+// `scales`, each cell's slopes are divided by its neighbourhood's scale first.
 void filter_profile(const ProfileRows& rows, std::uint8_t* flags, std::size_t length, double d,
-                    double w, const FilterParams& filter);
+                    double w, const FilterParams& filter, const ProfileScales* scales = nullptr);
 
 }  // namespace tsk

@@ -24,20 +24,26 @@ void nodata_to_nan(GDALRasterBand& band, float* values, std::size_t count) {
 
 // Reads windows of the band as Float32, nodata to NaN, the band's scale and offset applied (a DEM
 // stored in decimetres as integers has scale 0.1), as QGIS applies them.
-WindowReader band_reader(GDALRasterBand& band, const std::string& path) {
+// `earlier_failure`, when given, is a failure GDAL reported on an earlier read of the band: GDAL
+// tells a missing file behind a VRT once per thread, so a later read fails without a reason.
+WindowReader band_reader(GDALRasterBand& band, const std::string& path,
+                         std::shared_ptr<const std::string> earlier_failure = nullptr) {
   const double scale = band.GetScale(), offset = band.GetOffset();
   if (!std::isfinite(scale) || scale == 0.0 || !std::isfinite(offset)) {
     throw Error("'" + path + "' gives its band a scale of " + number_text(scale) +
                 " and an offset of " + number_text(offset) +
                 ", which make no heights; correct them (gdal_edit.py -scale 1 -offset 0 INPUT)");
   }
-  return [&band, path, scale, offset](const DemWindow& w, float* heights) {
+  return [&band, path, scale, offset, earlier_failure](const DemWindow& w, float* heights) {
     GdalErrorCapture errors;
     if (band.RasterIO(GF_Read, static_cast<int>(w.col0), static_cast<int>(w.row0),
                       static_cast<int>(w.cols), static_cast<int>(w.rows), heights,
                       static_cast<int>(w.cols), static_cast<int>(w.rows), GDT_Float32, 0,
                       0) != CE_None) {
-      throw Error("reading '" + path + "' failed: " + errors.message());
+      const bool unexplained =
+          errors.first_failure().empty() && earlier_failure && !earlier_failure->empty();
+      throw Error("reading '" + path +
+                  "' failed: " + (unexplained ? *earlier_failure : errors.message()));
     }
     const std::size_t count = w.rows * w.cols;
     nodata_to_nan(band, heights, count);
@@ -121,7 +127,7 @@ BandWindows::BandWindows(DatasetPtr dataset, const std::string& path, int band)
     throw Error("band " + std::to_string(band) + " does not exist in '" + path + "'");
   }
   band_ = dataset_->GetRasterBand(band);
-  read_ = band_reader(*band_, path);
+  read_ = band_reader(*band_, path, earlier_failure_);
   rows_ = static_cast<std::size_t>(dataset_->GetRasterYSize());
   cols_ = static_cast<std::size_t>(dataset_->GetRasterXSize());
   int block_width = 0, block_height = 0;
@@ -167,6 +173,8 @@ DemFile::DemFile(const std::string& path, const DemOptions& options) {
   DatasetPtr dataset = open_raster(path);
   dem_ = describe_dem(*dataset, path, options);
   file_ = std::make_unique<BandWindows>(std::move(dataset), path, options.band);
+  // Describing it reads a sample of the DEM; a failure there is the reason for later ones.
+  file_->remember_failure(capture.first_failure());
   stop_ = options.stop;
 }
 

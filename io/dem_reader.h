@@ -75,12 +75,16 @@ class BandWindows {
   bool geotransform(GeoTransform& gt) const;
   // Throws Error with GDAL's message when the read fails.
   void read(const DemWindow& window, float* heights) const;
+  // A failure GDAL reported on an earlier read of the band, given as the reason of a read that
+  // fails without one.
+  void remember_failure(const std::string& message) { *earlier_failure_ = message; }
 
  private:
   // Lets GDAL drop the blocks of the block rows above block row `keep`.
   void drop_block_rows_above(std::size_t keep) const;
 
   DatasetPtr dataset_;
+  std::shared_ptr<std::string> earlier_failure_ = std::make_shared<std::string>();
   GDALRasterBand* band_;
   WindowReader read_;
   std::size_t rows_, cols_;

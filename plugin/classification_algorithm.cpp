@@ -48,7 +48,7 @@ void ClassificationAlgorithm::initAlgorithm(const QVariantMap&) {
 double ClassificationAlgorithm::readParameters(const QVariantMap& parameters,
                                                QgsProcessingContext& context) {
   mParams.view = readView(parameters, context);
-  mParams.filter = readFilter(parameters, context);
+  readFilter(parameters, context, mParams);
   mParams.validate();
   return mParams.view.azimuth_deg;
 }

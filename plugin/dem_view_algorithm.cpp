@@ -76,6 +76,29 @@ void DemViewAlgorithm::addDemAndViewParameters(bool exaggeration) {
 
 void DemViewAlgorithm::addFilterParameters() {
   const FilterParams defaults;
+  addWithHelp(new QgsProcessingParameterEnum(
+                  QStringLiteral("FILTER"), tr("Slope filter"),
+                  {tr("Adapted to the DEM"), tr("Fixed (the thesis's cut-offs)")}, false, 0),
+              tr("Adapted to the DEM (the default): the cut-offs below are scaled by the DEM's "
+                 "median slope over 24 %, that of the terrain the thesis tuned them on at 75 m "
+                 "cells (from 1/16 to 4 times), so that coarse, fine, flat and steep DEMs all "
+                 "give a balanced sketch; height steps within half the DEM's height unit count "
+                 "as flat, so the sketch holds still as the view turns. Fixed: the cut-offs as "
+                 "given, the thesis's filter."));
+  addWithHelp(
+      new QgsProcessingParameterEnum(QStringLiteral("ADAPT"), tr("Adapt the filter to"),
+                                     {tr("The whole DEM"), tr("Each neighbourhood")}, false, 0),
+      tr("With the adapted filter: one scale for the whole DEM, or a scale for each "
+         "neighbourhood, so that a plain beside mountains keeps its subtle breaks of "
+         "slope (this reads the DEM once more)."),
+      true);
+  auto* window =
+      new QgsProcessingParameterNumber(QStringLiteral("ADAPT_WINDOW"), tr("Neighbourhood (cells)"),
+                                       kIntegerNumber, AdaptiveParams().window, false, 8, 100000);
+  addWithHelp(window,
+              tr("With a scale for each neighbourhood: the side of a neighbourhood, in DEM "
+                 "cells. Scales are blended between neighbourhoods, so the filter has no seams."),
+              true);
   addWithHelp(number(QStringLiteral("ROW_CUT"), tr("Row slope cut-off (%)"), defaults.row_cut_pct,
                      0.01, 10000),
               tr("Slope filter: row (across the view) slope below which weak candidates are "
@@ -106,14 +129,41 @@ ViewParams DemViewAlgorithm::readView(const QVariantMap& parameters,
   return view;
 }
 
-FilterParams DemViewAlgorithm::readFilter(const QVariantMap& parameters,
-                                          QgsProcessingContext& context) const {
-  FilterParams filter;
+void DemViewAlgorithm::readFilter(const QVariantMap& parameters, QgsProcessingContext& context,
+                                  SilhouetteParams& params) const {
+  AdaptiveParams& adaptive = params.adaptive;
+  adaptive.mode = parameterAsEnum(parameters, QStringLiteral("FILTER"), context) == 1
+                      ? FilterMode::fixed
+                      : FilterMode::adaptive;
+  adaptive.adapt = parameterAsEnum(parameters, QStringLiteral("ADAPT"), context) == 1
+                       ? Adaptivity::local
+                       : Adaptivity::whole;
+  adaptive.window = parameterAsInt(parameters, QStringLiteral("ADAPT_WINDOW"), context);
+  FilterParams& filter = params.filter;
   filter.row_cut_pct = parameterAsDouble(parameters, QStringLiteral("ROW_CUT"), context);
   filter.col_cut_pct = parameterAsDouble(parameters, QStringLiteral("COL_CUT"), context);
   filter.ctrl_col_pct = parameterAsDouble(parameters, QStringLiteral("CTRL_COL"), context);
   filter.diagonals = parameterAsBool(parameters, QStringLiteral("DIAGONALS"), context);
-  return filter;
+}
+
+void DemViewAlgorithm::logFilter(const FilterReport& r, QgsProcessingFeedback* feedback) {
+  if (!feedback || r.choice.mode == FilterMode::fixed) return;
+  feedback->pushInfo(tr("Slope filter adapted to the DEM: its median slope is %1 % against %2 % "
+                        "on the thesis's terrain, so the cut-offs are scaled by %3: row %4 %, "
+                        "column %5 %, control point %6 %.")
+                         .arg(r.median_slope_pct, 0, 'g', 3)
+                         .arg(kReferenceSlopePct, 0, 'g', 3)
+                         .arg(r.scale, 0, 'g', 3)
+                         .arg(r.cutoffs.row_cut_pct, 0, 'g', 3)
+                         .arg(r.cutoffs.col_cut_pct, 0, 'g', 3)
+                         .arg(r.cutoffs.ctrl_col_pct, 0, 'g', 3));
+  if (r.choice.adapt == Adaptivity::local) {
+    feedback->pushInfo(tr("Each neighbourhood of %1 cells scales them from %2 to %3 times the "
+                          "thesis's.")
+                           .arg(r.choice.window)
+                           .arg(r.local_lowest, 0, 'g', 3)
+                           .arg(r.local_highest, 0, 'g', 3));
+  }
 }
 
 namespace {
@@ -237,8 +287,15 @@ SilhouetteResult DemViewAlgorithm::runSilhouettes(const SilhouetteParams& params
     return !feedback->isCanceled();
   };
   return withCoreErrors([&] {
-    return run_silhouettes(mRaster->oriented(), mRaster->frame(), mRaster->geotransform(), params,
-                           progress, mRaster->lowestHeight());
+    FilterReport filter;
+    const SilhouetteParams run =
+        adapt_filter(params, mRaster->frame(), mRaster->source(mAzimuth).read, filter);
+    logFilter(filter, feedback);
+    SilhouetteResult result =
+        run_silhouettes(mRaster->oriented(), mRaster->frame(), mRaster->geotransform(), run,
+                        progress, mRaster->lowestHeight());
+    result.filter = filter;
+    return result;
   });
 }
 

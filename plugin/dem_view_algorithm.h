@@ -34,10 +34,14 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
                                               double value, double min, double max);
   // INPUT, BAND and AZIMUTH; with `exaggeration` also VE and BASE_SLOPE.
   void addDemAndViewParameters(bool exaggeration);
-  // ROW_CUT, COL_CUT, CTRL_COL, DIAGONALS.
+  // FILTER, ADAPT, ADAPT_WINDOW, ROW_CUT, COL_CUT, CTRL_COL, DIAGONALS.
   void addFilterParameters();
   ViewParams readView(const QVariantMap& parameters, QgsProcessingContext& context) const;
-  FilterParams readFilter(const QVariantMap& parameters, QgsProcessingContext& context) const;
+  // The filter's parameters into `params`: its cut-offs and whether they adapt to the DEM.
+  void readFilter(const QVariantMap& parameters, QgsProcessingContext& context,
+                  SilhouetteParams& params) const;
+  // Logs which cut-offs an adaptive filter chose, and why.
+  static void logFilter(const FilterReport& report, QgsProcessingFeedback* feedback);
 
   // Subclasses read and validate their own parameters here (throw tsk::Error when invalid) and
   // return the azimuth the raster is read for.
@@ -60,8 +64,9 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   RasterGrid& readRaster(QgsProcessingFeedback* feedback, double progressTo);
   void releaseRaster();
 
-  // Runs the silhouette method on the raster read by readRaster(), moving progress from `from`
-  // to `to` percent and stopping on cancel; the core's errors become QgsProcessingException.
+  // Runs the silhouette method on the raster read by readRaster(), its filter adapted to the DEM
+  // (and logged), moving progress from `from` to `to` percent and stopping on cancel; the core's
+  // errors become QgsProcessingException.
   SilhouetteResult runSilhouettes(const SilhouetteParams& params, QgsProcessingFeedback* feedback,
                                   double from, double to);
   // The prepared raster, not read yet (for reading strip by strip).

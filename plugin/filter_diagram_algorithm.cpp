@@ -44,7 +44,7 @@ void FilterDiagramAlgorithm::initAlgorithm(const QVariantMap&) {
 double FilterDiagramAlgorithm::readParameters(const QVariantMap& parameters,
                                               QgsProcessingContext& context) {
   mParams.view = readView(parameters, context);
-  mParams.filter = readFilter(parameters, context);
+  readFilter(parameters, context, mParams);
   mParams.validate();
   return mParams.view.azimuth_deg;
 }
@@ -55,10 +55,10 @@ QVariantMap FilterDiagramAlgorithm::processAlgorithm(const QVariantMap& paramete
   const RasterGrid& raster = readRaster(feedback, 40);
   const SilhouetteResult result = runSilhouettes(mParams, feedback, 40, 90);
   const std::string html = withCoreErrors([&] {
-    const double range = diagram_range_pct(mParams.filter);
+    const double range = diagram_range_pct(result.filter.cutoffs);
     return filter_diagram_html(
         slope_scatter(raster.oriented(), result.flags, raster.frame().d, raster.frame().w, range),
-        mParams.filter, tr("Slope filter").toStdString());
+        result.filter.cutoffs, tr("Slope filter").toStdString());
   });
   const QString path = parameterAsFileOutput(parameters, QStringLiteral("OUTPUT"), context);
   // Whole or not at all, as every file output (io/output_files.h).

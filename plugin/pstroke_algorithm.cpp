@@ -68,7 +68,7 @@ void PStrokeAlgorithm::initAlgorithm(const QVariantMap&) {
 double PStrokeAlgorithm::readParameters(const QVariantMap& parameters,
                                         QgsProcessingContext& context) {
   mParams.view = readView(parameters, context);
-  mParams.filter = readFilter(parameters, context);
+  readFilter(parameters, context, mParams);
   mParams.validate();
   mPStrokes.convex_column_m2 =
       parameterAsDouble(parameters, QStringLiteral("CONVEX_COLUMN"), context);

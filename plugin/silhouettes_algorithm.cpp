@@ -133,7 +133,7 @@ double SilhouettesAlgorithm::readParameters(const QVariantMap& parameters,
                                             QgsProcessingContext& context) {
   SilhouetteParams& p = mParams;
   p.view = readView(parameters, context);
-  p.filter = readFilter(parameters, context);
+  readFilter(parameters, context, p);
   p.chain.window = parameterAsInt(parameters, kWindow, context);
   p.chain.min_cells = parameterAsInt(parameters, kMinCells, context);
   p.geometry =
@@ -174,6 +174,7 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
       (stroke.cls == StrokeClass::factual ? factual : formulated).add(stroke);
     });
   });
+  logFilter(result.filter, feedback);
   factual.finish();
   formulated.finish();
   mFactualId = factual.destination();

@@ -170,13 +170,20 @@ inline io::Dem coreDem(const QString& file, double azimuth = 90) {
   return io::read_dem(file.toStdString(), options);
 }
 
-// Runs the core directly on the same file through io's GDAL reader, as the command line does.
+// Runs the core directly on the same file through io's GDAL reader, as the command line does,
+// with the algorithms' default filter: adapted to the DEM, read window by window for it.
 inline SilhouetteResult coreResult(const QString& file, double azimuth, Geometry geometry) {
   const io::Dem dem = coreDem(file, azimuth);
   SilhouetteParams params;
   params.view.azimuth_deg = azimuth;
   params.geometry = geometry;
-  return run_silhouettes(dem.oriented, dem.frame, dem.geotransform, params, {}, dem.lowest_height);
+  params.adaptive.mode = FilterMode::adaptive;
+  io::DemOptions options;
+  options.azimuth_deg = azimuth;
+  FilterReport filter;
+  const SilhouetteParams run = adapt_filter(
+      params, dem.frame, io::DemFile(file.toStdString(), options).source().read, filter);
+  return run_silhouettes(dem.oriented, dem.frame, dem.geotransform, run, {}, dem.lowest_height);
 }
 
 // Cancels the run once progress reaches `at` percent.

@@ -1,0 +1,58 @@
+#include "adaptive_filter.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "slope_scale_map.h"
+
+namespace tsk {
+
+double filter_scale(double median_slope_pct) {
+  if (!std::isfinite(median_slope_pct)) return kLowestScale;  // every cell flat
+  return std::clamp(median_slope_pct / kReferenceSlopePct, kLowestScale, kHighestScale);
+}
+
+namespace {
+
+FilterParams scaled(const FilterParams& filter, double scale) {
+  FilterParams out = filter;
+  out.row_cut_pct *= scale;
+  out.col_cut_pct *= scale;
+  out.ctrl_col_pct *= scale;
+  return out;
+}
+
+}  // namespace
+
+SilhouetteParams adapt_filter(const SilhouetteParams& params, const OrientedFrame& frame,
+                              const WindowReader& read, FilterReport& report) {
+  report = FilterReport();
+  report.choice = params.adaptive;
+  report.cutoffs = params.filter;
+  if (params.adaptive.mode == FilterMode::fixed) return params;
+  const SlopeSurvey survey =
+      survey_slopes(frame.dem_rows, frame.dem_cols, frame.dem_dx, frame.dem_dy, read);
+  report.median_slope_pct = survey.median_slope_pct;
+  report.heights = survey.heights;
+  report.scale = filter_scale(survey.median_slope_pct);
+  report.cutoffs = scaled(params.filter, report.scale);
+  SilhouetteParams out = params;
+  out.adaptive.mode = FilterMode::fixed;  // resolved: the stages take the cut-offs as they are
+  out.height_tolerance = survey.heights.tolerance;
+  if (params.adaptive.adapt == Adaptivity::whole) {
+    out.filter = report.cutoffs;
+    return out;
+  }
+  // Local: the stages divide each cell's slopes by its neighbourhood's scale and keep the
+  // cut-offs asked for.
+  auto map = std::make_shared<SlopeScaleMap>(
+      map_slope_scales(frame.dem_rows, frame.dem_cols, frame.dem_dx, frame.dem_dy,
+                       static_cast<std::size_t>(params.adaptive.window), survey.heights.tolerance,
+                       filter_scale, report.scale, read));
+  report.local_lowest = map->lowest();
+  report.local_highest = map->highest();
+  out.local_scale = std::move(map);
+  return out;
+}
+
+}  // namespace tsk
