@@ -105,7 +105,9 @@ class BilinearSampler {
         dr_(rows > 1 ? 1 : 0) {}
 
   float operator()(double col, double row) const {
-    constexpr double kEdge = 1e-9;
+    // A sample this close outside the outermost cell centres takes the edge cell: a view a hair
+    // off a cardinal azimuth must not lose the DEM's edge rows (1e-9 lost them at 90.000001).
+    constexpr double kEdge = 1e-5;
     const double u = col - 0.5, v = row - 0.5;
     if (!(u >= -kEdge && u <= last_col_ + kEdge && v >= -kEdge && v <= last_row_ + kEdge)) {
       return kNoData;
@@ -201,7 +203,7 @@ class BilinearSampler {
   template <bool kInterior>
   TSK_AVX2 std::size_t run_avx2(double col0, double row0, double dcol, double drow, std::size_t i,
                                 std::size_t end, float* out) const {
-    constexpr double kEdge = 1e-9;
+    constexpr double kEdge = 1e-5;
     const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
     const __m256d half = _mm256_set1_pd(0.5), low = _mm256_set1_pd(-kEdge);
     const __m256d u_high = _mm256_set1_pd(last_col_ + kEdge);
