@@ -89,57 +89,117 @@
         <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="79" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="80" />
+        <source>Slope filter</source>
+        <translation>Neigungsfilter</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="81" />
+        <source>Adapted to the DEM</source>
+        <translation>An das DGM angepasst</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="81" />
+        <source>Fixed (the thesis's cut-offs)</source>
+        <translation>Fest (die Schwellen der Dissertation)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="82" />
+        <source>Adapted to the DEM (the default): the cut-offs below are scaled by the DEM's median slope over 24 %, that of the terrain the thesis tuned them on at 75 m cells (from 1/16 to 4 times), so that coarse, fine, flat and steep DEMs all give a balanced sketch; height steps within half the DEM's height unit count as flat, so the sketch holds still as the view turns. Fixed: the cut-offs as given, the thesis's filter.</source>
+        <translation>An das DGM angepasst (Standard): die Schwellen unten werden mit der mittleren Hangneigung (Median) des DGM geteilt durch 24 % skaliert, der des Geländes, auf das die Dissertation sie bei 75-m-Zellen abgestimmt hat (1/16- bis 4-fach), so dass grobe, feine, flache und steile DGM alle eine ausgewogene Skizze ergeben; Höhenstufen innerhalb der halben Höheneinheit des DGM gelten als flach, so dass die Skizze stehen bleibt, wenn sich die Blickrichtung dreht. Fest: die Schwellen wie angegeben, der Filter der Dissertation.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="89" />
+        <source>Adapt the filter to</source>
+        <translation>Filter anpassen an</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="90" />
+        <source>The whole DEM</source>
+        <translation>Das ganze DGM</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="90" />
+        <source>Each neighbourhood</source>
+        <translation>Jede Nachbarschaft</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="91" />
+        <source>With the adapted filter: one scale for the whole DEM, or a scale for each neighbourhood, so that a plain beside mountains keeps its subtle breaks of slope (this reads the DEM once more).</source>
+        <translation>Beim angepassten Filter: ein Maßstab für das ganze DGM oder einer für jede Nachbarschaft, so dass eine Ebene neben Bergen ihre feinen Gefällsknicke behält (dazu wird das DGM ein weiteres Mal gelesen).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="96" />
+        <source>Neighbourhood (cells)</source>
+        <translation>Nachbarschaft (Zellen)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="99" />
+        <source>With a scale for each neighbourhood: the side of a neighbourhood, in DEM cells. Scales are blended between neighbourhoods, so the filter has no seams.</source>
+        <translation>Bei einem Maßstab je Nachbarschaft: die Seitenlänge einer Nachbarschaft in DGM-Zellen. Zwischen Nachbarschaften werden die Maßstäbe überblendet, so dass der Filter keine Nähte hat.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="102" />
         <source>Row slope cut-off (%)</source>
         <translation>Grenzwert Zeilenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="81" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="104" />
         <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
         <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="83" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="106" />
         <source>Column slope cut-off (%)</source>
         <translation>Grenzwert Spaltenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="85" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="108" />
         <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
         <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="87" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="110" />
         <source>Control point column slope (%)</source>
         <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="89" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="112" />
         <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
         <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="93" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="116" />
         <source>Allow for diagonals</source>
         <translation>Diagonalen berücksichtigen</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="94" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="117" />
         <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
         <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="147" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="151" />
+        <source>Slope filter adapted to the DEM: its median slope is %1 % against %2 % on the thesis's terrain, so the cut-offs are scaled by %3: row %4 %, column %5 %, control point %6 %.</source>
+        <translation>Neigungsfilter an das DGM angepasst: seine mittlere Hangneigung ist %1 % gegenüber %2 % im Gelände der Dissertation, daher werden die Schwellen mit %3 skaliert: Zeile %4 %, Spalte %5 %, Kontrollpunkt %6 %.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="161" />
+        <source>Each neighbourhood of %1 cells scales them from %2 to %3 times the thesis's.</source>
+        <translation>Jede Nachbarschaft von %1 Zellen skaliert sie auf das %2- bis %3-fache der Schwellen der Dissertation.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="197" />
         <source>%1 and %2 would both be written to %3, one over the other; choose different files, or save both to one GeoPackage with a layer name each.</source>
         <translation>%1 und %2 würden beide nach %3 geschrieben, eines über das andere; wählen Sie verschiedene Dateien, oder speichern Sie beide in ein GeoPackage mit je einem Layernamen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="173" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="223" />
         <source>%1 would be written into %2, the file of %3, which this algorithm reads; choose another file.</source>
         <translation>%1 würde in %2 geschrieben, die Datei von %3, die dieser Algorithmus liest; wählen Sie eine andere Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="219" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="269" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>

@@ -155,6 +155,43 @@ GERMAN = {
         "Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, "
         "auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; "
         "der Wert muss unter dem Grenzwert der Spaltenneigung liegen.",
+    "Adapted to the DEM": "An das DGM angepasst",
+    "Fixed (the thesis's cut-offs)": "Fest (die Schwellen der Dissertation)",
+    "Adapted to the DEM (the default): the cut-offs below are scaled by the DEM's median slope "
+    "over 24 %, that of the terrain the thesis tuned them on at 75 m cells (from 1/16 to 4 "
+    "times), so that coarse, fine, flat and steep DEMs all give a balanced sketch; height steps "
+    "within half the DEM's height unit count as flat, so the sketch holds still as the view "
+    "turns. Fixed: the cut-offs as given, the thesis's filter.":
+        "An das DGM angepasst (Standard): die Schwellen unten werden mit der mittleren "
+        "Hangneigung (Median) des DGM geteilt durch 24 % skaliert, der des Geländes, auf das die "
+        "Dissertation sie bei 75-m-Zellen abgestimmt hat (1/16- bis 4-fach), so dass grobe, "
+        "feine, flache und steile DGM alle eine ausgewogene Skizze ergeben; Höhenstufen "
+        "innerhalb der halben Höheneinheit des DGM gelten als flach, so dass die Skizze stehen "
+        "bleibt, wenn sich die Blickrichtung dreht. Fest: die Schwellen wie angegeben, der "
+        "Filter der Dissertation.",
+    "Adapt the filter to": "Filter anpassen an",
+    "The whole DEM": "Das ganze DGM",
+    "Each neighbourhood": "Jede Nachbarschaft",
+    "With the adapted filter: one scale for the whole DEM, or a scale for each neighbourhood, "
+    "so that a plain beside mountains keeps its subtle breaks of slope (this reads the DEM once "
+    "more).":
+        "Beim angepassten Filter: ein Maßstab für das ganze DGM oder einer für jede "
+        "Nachbarschaft, so dass eine Ebene neben Bergen ihre feinen Gefällsknicke behält (dazu "
+        "wird das DGM ein weiteres Mal gelesen).",
+    "Neighbourhood (cells)": "Nachbarschaft (Zellen)",
+    "With a scale for each neighbourhood: the side of a neighbourhood, in DEM cells. Scales are "
+    "blended between neighbourhoods, so the filter has no seams.":
+        "Bei einem Maßstab je Nachbarschaft: die Seitenlänge einer Nachbarschaft in DGM-Zellen. "
+        "Zwischen Nachbarschaften werden die Maßstäbe überblendet, so dass der Filter keine "
+        "Nähte hat.",
+    "Slope filter adapted to the DEM: its median slope is %1 % against %2 % on the thesis's "
+    "terrain, so the cut-offs are scaled by %3: row %4 %, column %5 %, control point %6 %.":
+        "Neigungsfilter an das DGM angepasst: seine mittlere Hangneigung ist %1 % gegenüber "
+        "%2 % im Gelände der Dissertation, daher werden die Schwellen mit %3 skaliert: Zeile %4 %, "
+        "Spalte %5 %, Kontrollpunkt %6 %.",
+    "Each neighbourhood of %1 cells scales them from %2 to %3 times the thesis's.":
+        "Jede Nachbarschaft von %1 Zellen skaliert sie auf das %2- bis %3-fache der Schwellen der "
+        "Dissertation.",
     "Allow for diagonals": "Diagonalen berücksichtigen",
     "If checked the removed region is the polygon through the control point; if not, the whole "
     "rectangle below both cut-offs is removed.":
