@@ -125,7 +125,8 @@ TEST_CASE("doubling the relief and halving the exaggeration gives the same sketc
   CHECK(c.stats.filtered != d.stats.filtered);
 }
 
-TEST_CASE("integer heights give the same c-set a millionth of a degree off a cardinal view", "[adaptive]") {
+TEST_CASE("integer heights give the same c-set a millionth of a degree off a cardinal view",
+          "[adaptive]") {
   // Terraces of whole metres: a resampled flat cell's step is a tiny number, not 0, and SPEC's
   // strict test flips on it; the adaptive filter's tolerance of half a metre does not.
   HeightGrid z = rolling(90, 110, 0.3);
