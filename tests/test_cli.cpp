@@ -237,6 +237,9 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"silhouettes", dir / "southup.tif", out}, "north-up"},
       {{"silhouettes", dir / "nogeo.tif", out}, "--cell-size"},
       {{"silhouettes", dir / "multi.tif", out, "--band", "3"}, "band 3 does not exist"},
+      {{"silhouettes", kSample, out, "--filter", "thesis"}, "'adaptive' or 'fixed'"},
+      {{"silhouettes", kSample, out, "--adapt", "regional"}, "'whole' or 'local'"},
+      {{"silhouettes", kSample, out, "--adapt-window", "4"}, "between 8 and 100000"},
       {{"silhouettes", kSample, dir / "no/such/folder/out.gpkg"}, "does not exist"},
       {{"silhouettes", kSample, out, "--ve", "0"}, "exaggeration"},
       {{"silhouettes", kSample, out, "--ve", "abc"}, "needs a number"},
@@ -520,6 +523,31 @@ TEST_CASE("a CRS in feet runs with a note that heights must be in feet too", "[c
   const CliRun metres = run_cli({"silhouettes", kSample, dir / "metres.gpkg"});
   CHECK(metres.code == 0);
   CHECK_THAT(metres.err, !Catch::Contains("linear unit"));
+}
+
+TEST_CASE("the adaptive filter says which cut-offs it chose", "[cli][filter]") {
+  ScratchDir dir("filter-report");
+  const CliRun run =
+      run_cli({"silhouettes", kSample, dir / "a.gpkg", "--stats-json", dir / "a.json"});
+  REQUIRE(run.code == 0);
+  CHECK_THAT(run.err, Catch::Contains("adaptive slope filter: median slope 23.9 %"));
+  const std::string json = slurp(dir / "a.json");
+  CHECK_THAT(json, Catch::Contains("\"mode\": \"adaptive\"") &&
+                       Catch::Contains("\"median_slope_pct\": 23.9") &&
+                       Catch::Contains("\"height_tolerance\""));
+  // Local adaptivity reports the range of its scales; the fixed filter its cut-offs as given.
+  const CliRun local = run_cli({"silhouettes", kSample, dir / "l.gpkg", "--adapt", "local",
+                                "--adapt-window", "50", "--stats-json", dir / "l.json"});
+  REQUIRE(local.code == 0);
+  CHECK_THAT(local.err, Catch::Contains("local adaptivity over 50 cells"));
+  CHECK_THAT(slurp(dir / "l.json"), Catch::Contains("\"local_scale_lowest\""));
+  const CliRun fixed = run_cli({"silhouettes", kSample, dir / "f.gpkg", "--filter", "fixed",
+                                "--row-cut", "25", "--stats-json", dir / "f.json"});
+  REQUIRE(fixed.code == 0);
+  CHECK(fixed.err.empty());
+  CHECK_THAT(slurp(dir / "f.json"), Catch::Contains("\"mode\": \"fixed\"") &&
+                                        Catch::Contains("\"row_cut_pct\": 25.000000") &&
+                                        Catch::Contains("\"median_slope_pct\": null"));
 }
 
 TEST_CASE("classify writes the stage of every DEM cell with a colour table", "[cli][diagnostics]") {
