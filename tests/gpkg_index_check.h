@@ -6,7 +6,7 @@
 #include <ogrsf_frmts.h>
 
 #include <algorithm>
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 #include <cmath>
 #include <memory>
 #include <set>

@@ -1,7 +1,7 @@
 // The adaptive slope filter: its survey of the DEM's slopes, its scale, its height tolerance and
 // its local adaptivity, against brute force and invariances.
 #include <algorithm>
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 #include <cmath>
 #include <vector>
 

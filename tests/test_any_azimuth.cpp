@@ -1,5 +1,5 @@
 // Any view azimuth (SPEC 1.1): resampling onto a grid aligned with the line of sight.
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 #include <cmath>
 #include <cstring>
 #include <limits>

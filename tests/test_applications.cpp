@@ -1,5 +1,5 @@
 // Diagnostics maps and the profile plot.
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 #include <cmath>
 
 #include "test_support.h"

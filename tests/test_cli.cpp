@@ -7,7 +7,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 #include <chrono>
 #include <csignal>
 #include <fstream>

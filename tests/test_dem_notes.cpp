@@ -1,6 +1,6 @@
 // The notes on a DEM that both front ends word (io/dem_notes.h), on facts with known answers.
 #include <algorithm>
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 #include <cmath>
 
 #include "dem_notes.h"

@@ -3,7 +3,7 @@
 #include <gdal_priv.h>
 
 #include <algorithm>
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 #include <cmath>
 #include <vector>
 

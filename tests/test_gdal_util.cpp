@@ -1,7 +1,7 @@
 // The io/ layer's GDAL messages.
 #include <cpl_error.h>
 
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 #include <string>
 
 #include "gdal_util.h"

@@ -2,7 +2,7 @@
 // the index give what a brute-force box test gives, and the index follows later edits.
 #include <ogrsf_frmts.h>
 
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 #include <limits>
 #include <memory>
 #include <random>

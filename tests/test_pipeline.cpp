@@ -1,5 +1,5 @@
 #include <algorithm>
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 #include <set>
 
 #include "spec_oracle.h"

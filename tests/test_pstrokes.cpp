@@ -1,6 +1,6 @@
 // The P-stroke sketch: Visvalingam effective areas against a brute-force oracle, analytic
 // shapes, and the combination rule with the f-set.
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 #include <cmath>
 #include <random>
 

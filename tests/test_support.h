@@ -1,7 +1,7 @@
 // Helpers shared by the stage tests: random terrains with printed seeds and whole-DEM runs.
 #pragma once
 
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 #include <cmath>
 #include <cstdint>
 #include <random>

@@ -2,7 +2,7 @@
 #define CATCH_CONFIG_RUNNER
 #include <qgsapplication.h>
 
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 
 int main(int argc, char** argv) {
   qputenv("QT_QPA_PLATFORM", "offscreen");

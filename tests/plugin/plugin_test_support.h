@@ -29,7 +29,7 @@
 #include <QTemporaryDir>
 #include <QThread>
 #include <algorithm>
-#include <catch2/catch.hpp>
+#include "catch_compat.h"
 #include <cmath>
 #include <csignal>
 #include <functional>
