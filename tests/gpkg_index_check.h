@@ -6,13 +6,13 @@
 #include <ogrsf_frmts.h>
 
 #include <algorithm>
-#include "catch_compat.h"
 #include <cmath>
 #include <memory>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "catch_compat.h"
 #include "gdal_util.h"
 
 namespace tsk::test {
