@@ -1,11 +1,11 @@
 // The adaptive slope filter: its survey of the DEM's slopes, its scale, its height tolerance and
 // its local adaptivity, against brute force and invariances.
 #include <algorithm>
-#include "catch_compat.h"
 #include <cmath>
 #include <vector>
 
 #include "adaptive_filter.h"
+#include "catch_compat.h"
 #include "slope_scale_map.h"
 #include "test_support.h"
 

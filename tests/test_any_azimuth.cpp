@@ -1,11 +1,11 @@
 // Any view azimuth (SPEC 1.1): resampling onto a grid aligned with the line of sight.
-#include "catch_compat.h"
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <utility>
 #include <vector>
 
+#include "catch_compat.h"
 #include "test_support.h"
 
 using namespace tsk;

@@ -1,7 +1,7 @@
 // Diagnostics maps and the profile plot.
-#include "catch_compat.h"
 #include <cmath>
 
+#include "catch_compat.h"
 #include "test_support.h"
 
 using namespace tsk;

@@ -1,7 +1,7 @@
-#include "catch_compat.h"
 #include <string>
 #include <vector>
 
+#include "catch_compat.h"
 #include "test_support.h"
 
 using namespace tsk;

@@ -7,12 +7,12 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
-#include "catch_compat.h"
 #include <chrono>
 #include <csignal>
 #include <fstream>
 #include <thread>
 
+#include "catch_compat.h"
 #include "cli_run.h"
 #include "command_support.h"
 #include "dem_reader.h"

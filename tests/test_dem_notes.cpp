@@ -1,8 +1,8 @@
 // The notes on a DEM that both front ends word (io/dem_notes.h), on facts with known answers.
 #include <algorithm>
-#include "catch_compat.h"
 #include <cmath>
 
+#include "catch_compat.h"
 #include "dem_notes.h"
 
 using namespace tsk::io;

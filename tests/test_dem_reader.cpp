@@ -3,10 +3,10 @@
 #include <gdal_priv.h>
 
 #include <algorithm>
-#include "catch_compat.h"
 #include <cmath>
 #include <vector>
 
+#include "catch_compat.h"
 #include "dem_reader.h"
 #include "gdal_test_support.h"
 

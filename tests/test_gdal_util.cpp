@@ -1,9 +1,9 @@
 // The io/ layer's GDAL messages.
 #include <cpl_error.h>
 
-#include "catch_compat.h"
 #include <string>
 
+#include "catch_compat.h"
 #include "gdal_util.h"
 
 using namespace tsk;

@@ -2,12 +2,12 @@
 // the index give what a brute-force box test gives, and the index follows later edits.
 #include <ogrsf_frmts.h>
 
-#include "catch_compat.h"
 #include <limits>
 #include <memory>
 #include <random>
 #include <set>
 
+#include "catch_compat.h"
 #include "cli_run.h"
 #include "gdal_test_support.h"
 #include "gpkg_index_check.h"

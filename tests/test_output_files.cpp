@@ -8,12 +8,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "catch_compat.h"
 #include <fstream>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "catch_compat.h"
 #include "cli_run.h"
 #include "destination_lock.h"
 #include "gdal_test_support.h"

@@ -1,7 +1,7 @@
 #include <algorithm>
-#include "catch_compat.h"
 #include <set>
 
+#include "catch_compat.h"
 #include "spec_oracle.h"
 #include "test_support.h"
 

@@ -1,9 +1,9 @@
 // The P-stroke sketch: Visvalingam effective areas against a brute-force oracle, analytic
 // shapes, and the combination rule with the f-set.
-#include "catch_compat.h"
 #include <cmath>
 #include <random>
 
+#include "catch_compat.h"
 #include "test_support.h"
 
 using namespace tsk;

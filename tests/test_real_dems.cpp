@@ -1,12 +1,12 @@
 // Golden outputs on real DEMs: stage statistics and stroke counts are pinned so any change in
 // behaviour shows. Regenerate after an intended change with TSK_REGENERATE_GOLDEN=1 and review
 // the diff of tests/data/golden_stats.txt.
-#include "catch_compat.h"
 #include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
 
+#include "catch_compat.h"
 #include "dem_reader.h"
 #include "silhouettes.h"
 

@@ -1,5 +1,4 @@
 #include "catch_compat.h"
-
 #include "test_support.h"
 
 using namespace tsk;

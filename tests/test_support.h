@@ -1,12 +1,12 @@
 // Helpers shared by the stage tests: random terrains with printed seeds and whole-DEM runs.
 #pragma once
 
-#include "catch_compat.h"
 #include <cmath>
 #include <cstdint>
 #include <random>
 
 #include "analytic_terrain.h"
+#include "catch_compat.h"
 #include "resampled_silhouettes.h"
 #include "terrain_sketch.h"
 #include "whole_grid_stages.h"

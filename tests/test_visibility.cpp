@@ -1,6 +1,6 @@
-#include "catch_compat.h"
 #include <vector>
 
+#include "catch_compat.h"
 #include "test_support.h"
 
 using namespace tsk;

@@ -29,12 +29,12 @@
 #include <QTemporaryDir>
 #include <QThread>
 #include <algorithm>
-#include "catch_compat.h"
 #include <cmath>
 #include <csignal>
 #include <functional>
 #include <memory>
 
+#include "catch_compat.h"
 #include "dem_reader.h"
 #include "diagnostics.h"
 #include "drape.h"
