@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
-# End-to-end test in the real QGIS desktop under Xvfb: the plugin loads from a fresh profile, the
-# algorithm runs from Processing, both styled layers are on the canvas, a screenshot is saved.
-# Usage: desktop_test.sh PLUGIN_BUILD_DIR DEM OUTPUT_DIR
+# End-to-end test in the real QGIS desktop under Xvfb: the plugin package is installed into a
+# fresh profile through QGIS's own installer (Install from ZIP), the algorithm runs from
+# Processing, both styled layers are on the canvas, a screenshot is saved.
+# Usage: desktop_test.sh PLUGIN_ZIP DEM OUTPUT_DIR
 set -euo pipefail
-plugin_dir=$1 dem=$2 out=$3
+zip=$1 dem=$2 out=$3
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$out" && mkdir -p "$out"
 profiles="$out/profiles"
 profile="$profiles/profiles/default"
-cmake -DPLUGIN_DIR="$plugin_dir" -DPROFILE_DIR="$profile" -DPLUGIN_NAME=terrain_sketch \
-  -P "$here/../../plugin/install_plugin.cmake" > /dev/null
+mkdir -p "$profile/QGIS"
 cat >> "$profile/QGIS/QGIS3.ini" <<'INI'
 [app]
 askToSaveMemoryLayers=false
@@ -17,7 +17,7 @@ askToSaveMemoryLayers=false
 checkVersion=false
 showTips=false
 INI
-export TSK_E2E_OUT="$out" TSK_E2E_DEM="$dem"
+export TSK_E2E_OUT="$out" TSK_E2E_DEM="$dem" TSK_E2E_ZIP="$zip"
 
 run_qgis() {
   rm -f "$out/report.json"
@@ -31,6 +31,8 @@ errors = []
 def check(cond, what):
     if not cond: errors.append(what)
 check(r.get("ok"), "run finished: %s" % r.get("error"))
+check(r.get("installed_from_zip"), "installed from the ZIP by QGIS's installer")
+check(os.path.exists(os.path.join(os.environ["TSK_E2E_OUT"], "profiles/profiles/default/python/plugins/terrain_sketch/libterrain_sketch_provider.so")), "unpacked into the profile")
 check(r.get("provider"), "provider registered")
 check(r.get("plugin_active"), "plugin active in the plugin manager")
 check(not r.get("not_loaded"), "outputs not loaded: %s" % r.get("not_loaded"))

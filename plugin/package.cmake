@@ -1,0 +1,55 @@
+# The plugin package for the QGIS it is built against: metadata.txt with that QGIS as its
+# minimum and maximum version, build_info.py for the loader's version check, and the zip that
+# QGIS's Plugin Manager installs ("Install from ZIP"). Included from plugin/CMakeLists.txt.
+
+# This QGIS's version from its qgsconfig.h (already read into TSK_QGSCONFIG).
+string(REGEX MATCH "#define _QGIS_VERSION_INT ([0-9]+)" _ "${TSK_QGSCONFIG}")
+set(TSK_QGIS_VERSION_INT ${CMAKE_MATCH_1})
+math(EXPR TSK_QGIS_MAJOR "${TSK_QGIS_VERSION_INT} / 10000")
+math(EXPR TSK_QGIS_MINOR "(${TSK_QGIS_VERSION_INT} / 100) % 100")
+set(TSK_QGIS_RELEASE "${TSK_QGIS_MAJOR}.${TSK_QGIS_MINOR}")
+
+# The platform: Debian's release (its number, or the codename of testing and unstable) and the
+# processor.
+file(STRINGS /etc/os-release TSK_OS_ID REGEX "^ID=")
+file(STRINGS /etc/os-release TSK_OS_VERSION REGEX "^VERSION_ID=")
+file(STRINGS /etc/os-release TSK_OS_CODENAME REGEX "^VERSION_CODENAME=")
+string(REGEX REPLACE "^[A-Z_]+=\"?([^\"]*)\"?$" "\\1" TSK_OS_ID "${TSK_OS_ID}")
+string(REGEX REPLACE "^[A-Z_]+=\"?([^\"]*)\"?$" "\\1" TSK_OS_VERSION "${TSK_OS_VERSION}")
+string(REGEX REPLACE "^[A-Z_]+=\"?([^\"]*)\"?$" "\\1" TSK_OS_CODENAME "${TSK_OS_CODENAME}")
+if(TSK_OS_VERSION)
+  set(TSK_PLATFORM "${TSK_OS_ID}${TSK_OS_VERSION}-${CMAKE_SYSTEM_PROCESSOR}")
+else()
+  set(TSK_PLATFORM "${TSK_OS_ID}-${TSK_OS_CODENAME}-${CMAKE_SYSTEM_PROCESSOR}")
+endif()
+set(TSK_PACKAGE_NAME
+    "${TSK_PLUGIN_NAME}-${PROJECT_VERSION}-qgis${TSK_QGIS_RELEASE}-${TSK_PLATFORM}"
+    CACHE INTERNAL "")
+
+# metadata.txt for this QGIS release: QGIS's Plugin Manager marks the package incompatible with
+# any other.
+file(READ ${PROJECT_SOURCE_DIR}/metadata.txt TSK_METADATA)
+string(REGEX REPLACE "qgisMinimumVersion=[^\n]*"
+       "qgisMinimumVersion=${TSK_QGIS_RELEASE}\nqgisMaximumVersion=${TSK_QGIS_RELEASE}.99"
+       TSK_METADATA "${TSK_METADATA}")
+file(GENERATE OUTPUT ${TSK_PLUGIN_DIR}/metadata.txt CONTENT "${TSK_METADATA}")
+file(GENERATE OUTPUT ${TSK_PLUGIN_DIR}/build_info.py CONTENT
+"\"\"\"The QGIS this plugin's compiled provider was built against (written by CMake).\"\"\"
+BUILT_FOR_QGIS_VERSION_INT = ${TSK_QGIS_VERSION_INT}
+BUILT_FOR_QGIS = \"${TSK_QGIS_RELEASE}\"
+PACKAGE = \"${TSK_PACKAGE_NAME}\"
+")
+
+# cmake --build build --target plugin-zip: build/<package>.zip, with the folder terrain_sketch/
+# at its top as QGIS's installer expects.
+set(TSK_PLUGIN_ZIP ${CMAKE_BINARY_DIR}/${TSK_PACKAGE_NAME}.zip CACHE INTERNAL "")
+add_custom_command(OUTPUT ${TSK_PLUGIN_ZIP}
+  COMMAND ${CMAKE_COMMAND} -E rm -f ${TSK_PLUGIN_ZIP}
+  COMMAND ${CMAKE_COMMAND} -E tar cf ${TSK_PLUGIN_ZIP} --format=zip ${TSK_PLUGIN_NAME}
+  WORKING_DIRECTORY ${CMAKE_BINARY_DIR}/qgis-plugin
+  DEPENDS terrain_sketch_provider tsk_plugin_files tsk_translations
+          ${TSK_PLUGIN_DIR}/metadata.txt ${TSK_PLUGIN_DIR}/build_info.py
+          $<TARGET_FILE:terrain_sketch_provider>
+  COMMENT "Packing ${TSK_PACKAGE_NAME}.zip"
+  VERBATIM)
+add_custom_target(plugin-zip ALL DEPENDS ${TSK_PLUGIN_ZIP})

@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Builds and tests Terrain Sketch against the QGIS of another Debian suite, in a chroot made from
+# Debian's packages: trixie (Debian 13, QGIS 3.40 LTR, GDAL 3.10) or sid (QGIS 3.44).
+#   scripts/chroot_stage.sh SUITE [OTHER_RELEASE_ZIP]
+# The chroot is cached outside the repository, in $TSK_CHROOT_CACHE (default
+# /var/cache/terrain-sketch/chroots), and made again when it is missing or its package list
+# changed. The repository is mounted read-only; the build folder is made anew in the chroot.
+# OTHER_RELEASE_ZIP: a plugin package built for another QGIS; installing it here must give
+# QGIS's user a clear message, not a crash.
+set -euo pipefail
+suite=$1 other_zip=${2:-}
+repo=$(cd "$(dirname "$0")/.." && pwd)
+cache=${TSK_CHROOT_CACHE:-/var/cache/terrain-sketch/chroots}
+root=$cache/$suite
+packages="qgis libqgis-dev qttools5-dev qttools5-dev-tools libsqlite3-dev cmake g++ make catch2
+  libgdal-dev gdal-bin python3-gdal xvfb xauth unzip"
+packages=$(echo $packages)
+
+make_chroot() {
+  command -v mmdebstrap > /dev/null || { apt-get update -q && apt-get install -y -q mmdebstrap; }
+  rm -rf "$root" "$root.new"
+  mkdir -p "$cache"
+  # The host's Debian mirror; a frozen mirror's Release files are past their Valid-Until date.
+  local mirror
+  mirror=$(awk '/^URIs:/ {print $2; exit}' /etc/apt/sources.list.d/debian.sources 2>/dev/null || true)
+  mmdebstrap --variant=apt --aptopt='Acquire::Check-Valid-Until "false"' \
+    --include="${packages// /,}" "$suite" "$root.new" ${mirror:+"$mirror"}
+  echo "$packages" > "$root.new/.terrain-sketch-packages"
+  mv "$root.new" "$root"
+}
+
+if [ "$(cat "$root/.terrain-sketch-packages" 2>/dev/null)" != "$packages" ]; then
+  echo "-- making the $suite chroot in $root"
+  start=$(date +%s)
+  make_chroot
+  echo "-- $suite chroot made in $(( $(date +%s) - start )) s"
+fi
+
+mounts=()
+unmount_all() {
+  for (( k=${#mounts[@]}-1; k>=0; k-- )); do umount -l "${mounts[k]}" 2>/dev/null || true; done
+}
+trap unmount_all EXIT
+bind() {  # SOURCE TARGET [ro]
+  mkdir -p "$2"
+  mount --bind "$1" "$2"
+  mounts+=("$2")
+  if [ "${3:-}" = ro ]; then mount -o remount,bind,ro "$2"; fi
+}
+bind /dev "$root/dev"
+bind /dev/pts "$root/dev/pts"
+mount -t proc proc "$root/proc" && mounts+=("$root/proc")
+bind "$repo" "$root/src" ro
+if [ -n "$other_zip" ]; then cp "$other_zip" "$root/tmp/other-release.zip"; fi
+
+jobs=$(nproc)
+chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 \
+  JOBS="$jobs" OTHER_ZIP="${other_zip:+/tmp/other-release.zip}" bash -euo pipefail -c '
+  rm -rf /build
+  cmake -S /src -B /build -DCMAKE_BUILD_TYPE=Release -DTSK_BUILD_CLI=ON -DTSK_BUILD_PLUGIN=ON \
+    -DTSK_BUILD_TESTS=ON -DTSK_BUILD_BENCH=OFF -DTSK_SANITIZE=OFF -DTSK_FUZZ=OFF > /dev/null
+  cmake --build /build -j "$JOBS"
+  ctest --test-dir /build --output-on-failure --no-tests=error -j "$JOBS"
+  if [ -n "$OTHER_ZIP" ]; then bash /src/tests/e2e/other_release_test.sh "$OTHER_ZIP" /tmp/other; fi
+'
