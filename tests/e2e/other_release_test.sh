@@ -7,7 +7,7 @@ zip=$1 work=$2
 rm -rf "$work"
 profile="$work/.local/share/QGIS/QGIS3/profiles/default"
 mkdir -p "$profile/python/plugins" "$profile/QGIS"
-unzip -q "$zip" -d "$profile/python/plugins"
+python3 -m zipfile -e "$zip" "$profile/python/plugins"
 printf '[PythonPlugins]\nterrain_sketch=true\n' > "$profile/QGIS/QGIS3.ini"
 status=0
 out=$(HOME="$work" QT_QPA_PLATFORM=offscreen qgis_process.bin list 2>&1) || status=$?
