@@ -7,7 +7,7 @@ string(REGEX MATCH "#define _QGIS_VERSION_INT ([0-9]+)" _ "${TSK_QGSCONFIG}")
 set(TSK_QGIS_VERSION_INT ${CMAKE_MATCH_1})
 math(EXPR TSK_QGIS_MAJOR "${TSK_QGIS_VERSION_INT} / 10000")
 math(EXPR TSK_QGIS_MINOR "(${TSK_QGIS_VERSION_INT} / 100) % 100")
-set(TSK_QGIS_RELEASE "${TSK_QGIS_MAJOR}.${TSK_QGIS_MINOR}")
+set(TSK_QGIS_RELEASE "${TSK_QGIS_MAJOR}.${TSK_QGIS_MINOR}" CACHE INTERNAL "")
 
 # The platform: Debian's release (its number, or the codename of testing and unstable) and the
 # processor.

@@ -6,7 +6,10 @@ what=${1:-core}
 packages=(build-essential cmake catch2 libgdal-dev libsqlite3-dev gdal-bin clang libclang-rt-dev
   clang-format git)
 if [ "$what" = qgis ]; then
-  packages+=(libqgis-dev qgis qgis-providers qttools5-dev-tools qttools5-dev xvfb xauth)
+  # mmdebstrap: the chroots of the newer QGIS releases; qt6-*: the Qt6 readiness build;
+  # dpkg-dev and file: the Debian package (CPack).
+  packages+=(libqgis-dev qgis qgis-providers qttools5-dev-tools qttools5-dev xvfb xauth mmdebstrap
+    qt6-base-dev qt6-tools-dev qt6-l10n-tools dpkg-dev file)
 fi
 missing=()
 for p in "${packages[@]}"; do

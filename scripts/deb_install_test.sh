@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Installs the Debian package into a clean chroot of the Debian it was built on, with apt-get
+# (which brings its dependencies from Debian's packages), and runs the sample DEM through the
+# installed command-line tool; checks the man page and the plugin's files are in place.
+#   scripts/deb_install_test.sh PACKAGE.deb
+# The clean chroot is kept as a tarball in $TSK_CHROOT_CACHE (default
+# /var/cache/terrain-sketch/chroots) and unpacked afresh for each run.
+set -euo pipefail
+deb=$(realpath "$1")
+repo=$(cd "$(dirname "$0")/.." && pwd)
+cache=${TSK_CHROOT_CACHE:-/var/cache/terrain-sketch/chroots}
+suite=$(. /etc/os-release && echo "$VERSION_CODENAME")
+base=$cache/$suite-clean.tar
+mirror=$(awk '/^URIs:/ {print $2; exit}' /etc/apt/sources.list.d/debian.sources 2>/dev/null || true)
+if [ ! -f "$base" ]; then
+  command -v mmdebstrap > /dev/null || { apt-get update -q && apt-get install -y -q mmdebstrap; }
+  mkdir -p "$cache"
+  mmdebstrap --variant=apt --aptopt='Acquire::Check-Valid-Until "false"' "$suite" "$base.new" \
+    ${mirror:+"$mirror"}
+  mv "$base.new" "$base"
+fi
+root=$(mktemp -d "$cache/deb-test.XXXXXX")
+cleanup() {
+  umount -l "$root/proc" "$root/dev" 2>/dev/null || true
+  rm -rf "$root"
+}
+trap cleanup EXIT
+tar -xf "$base" -C "$root"
+mount --bind /dev "$root/dev"
+mount -t proc proc "$root/proc"
+cp "$deb" "$root/tmp/"
+cp "$repo/resources/sample/jacksboro_utm16n.tif" "$root/tmp/sample.tif"
+chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
+  DEBIAN_FRONTEND=noninteractive PACKAGE="/tmp/$(basename "$deb")" bash -euo pipefail -c '
+  apt-get update -q -o Acquire::Check-Valid-Until=false > /dev/null
+  apt-get install -y -q --no-install-recommends "$PACKAGE" > /tmp/apt.log || {
+    tail -20 /tmp/apt.log; exit 1; }
+  terrain-sketch silhouettes /tmp/sample.tif /tmp/out.gpkg --stats-json /tmp/stats.json
+  grep -q "\"formulated_strokes\": [1-9]" /tmp/stats.json
+  test -s /usr/share/man/man1/terrain-sketch.1.gz
+  test -s /usr/share/qgis/python/plugins/terrain_sketch/libterrain_sketch_provider.so
+  test -s /usr/share/qgis/python/plugins/terrain_sketch/metadata.txt
+  dpkg -s terrain-sketch | grep "^Version"
+'
+echo "Debian package installed and ran: 1 passed, 0 failed"
