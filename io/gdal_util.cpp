@@ -67,9 +67,30 @@ DatasetPtr open_raster(const std::string& path) {
   return dataset;
 }
 
+NoAuxFiles::NoAuxFiles() {
+  const char* before = CPLGetThreadLocalConfigOption("GDAL_PAM_ENABLED", nullptr);
+  had_ = before != nullptr;
+  if (had_) before_ = before;
+  CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");
+}
+
+NoAuxFiles::~NoAuxFiles() {
+  CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", had_ ? before_.c_str() : nullptr);
+}
+
+bool close_dataset(DatasetPtr& dataset) {
+#if GDAL_VERSION_NUM >= GDAL_COMPUTE_VERSION(3, 7, 0)
+  return GDALClose(dataset.release()) == CE_None;
+#else
+  dataset.reset();
+  return true;
+#endif
+}
+
 std::vector<std::string> dataset_files(const std::string& path) {
   GDALAllRegister();
   GdalErrorCapture quiet;
+  const NoAuxFiles no_aux;
   DatasetPtr dataset(static_cast<GDALDataset*>(
       GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr,
                  nullptr)));

@@ -36,6 +36,25 @@ struct GdalCloser {
 };
 using DatasetPtr = std::unique_ptr<GDALDataset, GdalCloser>;
 
+// While alive, datasets this thread opens leave no .aux.xml beside them: a look into a file
+// must not change what is there (GDAL 3.10 writes one for a GeoPackage raster it only opened).
+class NoAuxFiles {
+ public:
+  NoAuxFiles();
+  ~NoAuxFiles();
+  NoAuxFiles(const NoAuxFiles&) = delete;
+  NoAuxFiles& operator=(const NoAuxFiles&) = delete;
+
+ private:
+  std::string before_;
+  bool had_ = false;
+};
+
+// Closes `dataset` and returns false when GDAL says the close failed. GDAL 3.7 and later say so
+// when the cached blocks cannot be written as the file closes; GDAL 3.10's GeoTIFF driver
+// reports a full disk no other way (libtiff prints it, no GDAL error is raised).
+bool close_dataset(DatasetPtr& dataset);
+
 // Throws Error, before GDAL opens it, when `path` names no file or one GDAL's open would hang on
 // or misread: a named pipe, a socket or a device. Folders (an Arc/Info grid) and GDAL's virtual
 // paths (/vsizip/..., NETCDF:"file":var) pass.

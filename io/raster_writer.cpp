@@ -2,13 +2,47 @@
 
 #include <gdal_priv.h>
 
+#include <algorithm>
 #include <limits>
+#include <vector>
 
 #include "gdal_util.h"
 #include "output_files.h"
 
 namespace tsk::io {
 namespace {
+
+// Reads every band of the raster at `staged` back, a block of rows at a time. GDAL 3.10's
+// GeoTIFF driver leaves a full disk unsaid (libtiff prints it, no error is raised and the close
+// succeeds), so a raster is whole only when it reads back.
+void check_reads_back(const std::string& path, const std::filesystem::path& staged,
+                      GDALDataType type) {
+  GdalErrorCapture capture;
+  const NoAuxFiles no_aux;
+  DatasetPtr ds(static_cast<GDALDataset*>(
+      GDALOpenEx(staged.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+  const auto fail = [&] {
+    throw Error("writing '" + path + "' failed: it does not read back (" +
+                (capture.first_failure().empty() ? std::string("is the disk full?")
+                                                 : capture.first_failure()) +
+                ")");
+  };
+  if (!ds) fail();
+  const int cols = ds->GetRasterXSize(), rows = ds->GetRasterYSize();
+  const int block_rows = std::max(1, std::min(rows, (1 << 22) / std::max(1, cols)));
+  std::vector<double> buffer(static_cast<std::size_t>(cols) * static_cast<std::size_t>(block_rows));
+  for (int b = 1; b <= ds->GetRasterCount(); ++b) {
+    for (int top = 0; top < rows; top += block_rows) {
+      const int count = std::min(block_rows, rows - top);
+      if (ds->GetRasterBand(b)->RasterIO(GF_Read, 0, top, cols, count, buffer.data(), cols, count,
+                                         type == GDT_Byte ? GDT_Byte : GDT_Float64, 0,
+                                         0) != CE_None) {
+        fail();
+      }
+    }
+  }
+  if (!capture.first_failure().empty()) fail();
+}
 
 // Creates a raster of pixels.size() bands at `staged` in the format of `path`'s extension, lets
 // `fill` set up each band, writes the pixels. Every failure GDAL reports fails the write: a full
@@ -38,10 +72,12 @@ void write_bands(const std::string& path, const std::filesystem::path& staged, s
       throw Error("writing '" + path + "' failed: " + capture.message());
     }
   }
-  ds.reset();
+  const bool closed = close_dataset(ds);
   if (!capture.first_failure().empty()) {
     throw Error("writing '" + path + "' failed: " + capture.first_failure());
   }
+  if (!closed) throw Error("writing '" + path + "' failed as it was closed (is the disk full?)");
+  check_reads_back(path, staged, type);
 }
 
 }  // namespace

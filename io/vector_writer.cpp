@@ -73,6 +73,7 @@ std::string check_vector_output(const std::string& path, const std::string& form
   if (driver != "GPKG" && driver != "SQLite") return driver;
   check_journal_fits(path);
   GdalErrorCapture quiet;  // a path that is no dataset (or none yet) is free to write
+  const NoAuxFiles no_aux;
   const char* const drivers[] = {driver.c_str(), nullptr};
   DatasetPtr existing(
       GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_RASTER | GDAL_OF_READONLY, drivers));
@@ -178,6 +179,13 @@ void write_line_layer(const std::string& path, const std::string& format,
   OGRSpatialReference srs;
   const bool has_srs = !srs_wkt.empty() && srs.importFromWkt(srs_wkt.c_str()) == OGRERR_NONE;
   srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  // KML places features by longitude and latitude; without a CRS nothing says where they are
+  // (GDAL wrote the map coordinates as degrees, which GDAL 3.13 then reads as no feature).
+  if ((driver_name == "KML" || driver_name == "LIBKML") && !has_srs) {
+    throw Error("'" + path + "' is KML, which places features by longitude and latitude, and the " +
+                "DEM has no CRS to find them from; give the DEM its CRS (gdal_edit.py -a_srs " +
+                "EPSG:...) or write another format (.gpkg)");
+  }
   const bool gpkg = driver_name == "GPKG";
   CPLStringList layer_options;
   if (gpkg) layer_options.SetNameValue("SPATIAL_INDEX", "NO");

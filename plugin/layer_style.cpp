@@ -8,6 +8,7 @@
 #include <QFileInfo>
 
 #include "plugin_paths.h"
+#include "qgis_compat.h"
 
 namespace tsk::plugin {
 namespace {
@@ -30,7 +31,7 @@ class QmlStyler : public QgsProcessingLayerPostProcessorInterface {
     auto* raster = qobject_cast<QgsRasterLayer*>(layer);
     if (raster && mRange == RampRange::data) {
       raster->setContrastEnhancement(QgsContrastEnhancement::StretchToMinimumMaximum,
-                                     QgsRasterMinMaxOrigin::CumulativeCut, QgsRectangle(), 250000);
+                                     kCumulativeCut, QgsRectangle(), 250000);
     }
     layer->triggerRepaint();
   }

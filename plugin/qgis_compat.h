@@ -6,6 +6,7 @@
 #include <qgsprocessing.h>
 #include <qgsprocessingparameters.h>
 #include <qgsrasterbandstats.h>
+#include <qgsrasterminmaxorigin.h>
 #include <qgsunittypes.h>
 
 namespace tsk::plugin {
@@ -25,6 +26,14 @@ constexpr auto kLineString = QgsWkbTypes::LineString;
 constexpr auto kDoubleNumber = QgsProcessingParameterNumber::Double;
 constexpr auto kIntegerNumber = QgsProcessingParameterNumber::Integer;
 constexpr auto kAdvanced = QgsProcessingParameterDefinition::FlagAdvanced;
+#endif
+
+// A raster renderer's stretch over the cumulative cut of its values (the range limit became an
+// enum of Qgis in 3.42).
+#if _QGIS_VERSION_INT >= 34200
+constexpr auto kCumulativeCut = Qgis::RasterRangeLimit::CumulativeCut;
+#else
+constexpr auto kCumulativeCut = QgsRasterMinMaxOrigin::CumulativeCut;
 #endif
 
 // The metre as the unit of a CRS (QgsCoordinateReferenceSystem::mapUnits()).

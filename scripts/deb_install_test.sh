@@ -15,7 +15,7 @@ mirror=$(awk '/^URIs:/ {print $2; exit}' /etc/apt/sources.list.d/debian.sources 
 if [ ! -f "$base" ]; then
   command -v mmdebstrap > /dev/null || { apt-get update -q && apt-get install -y -q mmdebstrap; }
   mkdir -p "$cache"
-  mmdebstrap --variant=apt --aptopt='Acquire::Check-Valid-Until "false"' "$suite" "$base.new" \
+  mmdebstrap --variant=apt --format=tar --aptopt='Acquire::Check-Valid-Until "false"' "$suite" "$base.new" \
     ${mirror:+"$mirror"}
   mv "$base.new" "$base"
 fi

@@ -143,7 +143,7 @@ TEST_CASE("output formats follow the extension", "[cli]") {
     // The second run replaces the first run's output.
     for (const char* command : {"silhouettes", "silhouettes", "profiles", "pstrokes"}) {
       CAPTURE(command);
-      const CliRun run = run_cli({command, kData + "/volcano.tif", dir / name});
+      const CliRun run = run_cli({command, kData + "/gorillas_utm32n.tif", dir / name});
       INFO(run.err);
       REQUIRE(run.code == 0);
       CHECK(summarise(dir / name).features > 0);
@@ -238,6 +238,7 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"silhouettes", dir / "nogeo.tif", out}, "--cell-size"},
       {{"silhouettes", dir / "multi.tif", out, "--band", "3"}, "band 3 does not exist"},
       {{"silhouettes", kSample, out, "--filter", "thesis"}, "'adaptive' or 'fixed'"},
+      {{"silhouettes", kData + "/volcano.tif", dir / "out.kml"}, "no CRS to find them from"},
       {{"silhouettes", kSample, out, "--adapt", "regional"}, "'whole' or 'local'"},
       {{"silhouettes", kSample, out, "--adapt-window", "4"}, "between 8 and 100000"},
       {{"silhouettes", kSample, dir / "no/such/folder/out.gpkg"}, "does not exist"},

@@ -75,7 +75,12 @@ TEST_CASE("a disk that fills up fails a raster or page output and leaves no file
     }();
     INFO(run.error.toStdString());
     CHECK_FALSE(run.ok);
-    CHECK(run.error.contains("File too large"));
+    // GDAL 3.6 raises libtiff's "File too large". GDAL 3.10 leaves it to libtiff, which prints
+    // it, and says only that a write failed or that the file does not read back.
+    const bool gdal310 = GDAL_VERSION_NUM >= GDAL_COMPUTE_VERSION(3, 10, 0);
+    CHECK((run.error.contains("File too large") ||
+           (gdal310 &&
+            (run.error.contains("Write error") || run.error.contains("does not read back")))));
     CHECK(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
     CHECK(runAlgorithm(kData + "/jacksboro_utm16n.tif", output, dir, nullptr, id).ok);
     // The classes' names go in GDAL's side file.
