@@ -58,7 +58,7 @@ chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin LAN
   JOBS="$jobs" OTHER_ZIP="${other_zip:+/tmp/other-release.zip}" bash -euo pipefail -c '
   rm -rf /build
   cmake -S /src -B /build -DCMAKE_BUILD_TYPE=Release -DTSK_BUILD_CLI=ON -DTSK_BUILD_PLUGIN=ON \
-    -DTSK_BUILD_TESTS=ON -DTSK_BUILD_BENCH=OFF -DTSK_SANITIZE=OFF -DTSK_FUZZ=OFF > /dev/null
+    -DTSK_BUILD_TESTS=ON -DTSK_BUILD_BENCH=ON -DTSK_SANITIZE=OFF -DTSK_FUZZ=OFF > /dev/null
   cmake --build /build -j "$JOBS"
   ctest --test-dir /build --output-on-failure --no-tests=error -j "$JOBS"
   if [ -n "$OTHER_ZIP" ]; then bash /src/tests/e2e/other_release_test.sh "$OTHER_ZIP" /tmp/other; fi
