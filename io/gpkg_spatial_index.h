@@ -7,6 +7,11 @@
 // own node format, as GDAL 3.7 and later do, through prepared statements on the SQLite connection
 // that GDAL exposes (binding blobs and ids rather than SQL text: 102 000 strokes are indexed in
 // 0.1 s).
+//
+// GDAL 3.8 and later load the R-tree in bulk too. bench/gpkg_index_bench measured both on the
+// 102 413 strokes of the 8000 x 8000 benchmark (medians of 5 alternated runs, one machine):
+// GDAL 3.6.2 this loader 0.18 s, GDAL's CreateSpatialIndex 1.75 s; GDAL 3.10.3 0.17 s and
+// 0.36 s; GDAL 3.13.3 0.16 s and 0.38 s. This loader stays for every GDAL.
 #pragma once
 
 #include <cstddef>
