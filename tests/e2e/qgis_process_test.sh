@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
-# qgis_process end to end: the plugin installed in a fresh profile is listed, runs on the sample
-# DEM, refuses a geographic DEM with a message, and a Model Builder model chaining GDAL warp,
-# native hillshade and our algorithm runs.
-# Usage: qgis_process_test.sh PLUGIN_BUILD_DIR REPO_DIR OUTPUT_DIR
+# qgis_process end to end: the plugin package (ZIP) unpacked into a fresh profile, as QGIS's
+# installer unpacks it, is listed, runs on the sample DEM, refuses a geographic DEM with a
+# message, and a Model Builder model chaining GDAL warp, native hillshade and our algorithm runs.
+# Usage: qgis_process_test.sh PLUGIN_ZIP REPO_DIR OUTPUT_DIR
 set -uo pipefail
-plugin_dir=$1 repo=$2 out=$3
+zip=$1 repo=$2 out=$3
 rm -rf "$out" && mkdir -p "$out/home"
 export HOME="$out/home" QT_QPA_PLATFORM=offscreen
-cmake -DPLUGIN_DIR="$plugin_dir" -DPROFILE_DIR="$HOME/.local/share/QGIS/QGIS3/profiles/default" \
-  -DPLUGIN_NAME=terrain_sketch -P "$repo/plugin/install_plugin.cmake" > /dev/null
+profile="$HOME/.local/share/QGIS/QGIS3/profiles/default"
+mkdir -p "$profile/python/plugins" "$profile/QGIS"
+python3 -m zipfile -e "$zip" "$profile/python/plugins"
+printf '[PythonPlugins]\nterrain_sketch=true\n' > "$profile/QGIS/QGIS3.ini"
 qp() { timeout 300 /usr/bin/qgis_process.bin "$@" 2>&1; }
 passed=0 failed=0
 check() {  # check NAME CONDITION-EXIT-CODE
