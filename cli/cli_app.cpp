@@ -66,7 +66,8 @@ input and output:
   --cell-size M        cell size in metres for a raster without georeferencing
   --format DRIVER      OGR driver name, overriding the extension
   --stats-json FILE    write the stage statistics as JSON
-  --preview PNG        render the oblique sketch to a PNG picture
+  --preview FILE       render the oblique sketch: .png a picture, .svg vector art (a layer per
+                       class, a path per stroke, for Illustrator or Inkscape)
   --threads N          worker threads (default: all cores)
   --timings            print the time of reading, each stage and writing to stderr
   --strips N           read and process N profiles at a time (default: 1024, more for profiles

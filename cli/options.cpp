@@ -57,9 +57,10 @@ double parse_cell_size(const std::string& option, const std::string& text) {
 }
 
 // The preview is a PNG picture: another extension would name another format.
-std::string parse_png_name(const std::string& option, const std::string& path) {
-  if (io::lowercase_extension(path) != ".png")
-    throw Error(option + " draws a PNG picture: give it a .png name");
+std::string parse_preview_name(const std::string& option, const std::string& path) {
+  const std::string ext = io::lowercase_extension(path);
+  if (ext != ".png" && ext != ".svg")
+    throw Error(option + " draws a PNG picture or SVG vector art: give it a .png or .svg name");
   return path;
 }
 
@@ -161,7 +162,7 @@ Options parse(const std::vector<std::string>& args) {
          if (o.every < 1) throw Error("--every must be at least 1");
        }},
       {"--stats-json", [&](auto&, auto& v) { o.stats_json = v; }},
-      {"--preview", [&](auto& n, auto& v) { o.preview = parse_png_name(n, v); }},
+      {"--preview", [&](auto& n, auto& v) { o.preview = parse_preview_name(n, v); }},
   };
   for (std::size_t k = 0; k < args.size(); ++k) {
     const std::string& a = args[k];

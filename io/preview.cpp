@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <locale>
+#include <sstream>
 #include <vector>
 
 #include "gdal_util.h"
@@ -59,13 +62,15 @@ class Canvas {
   std::vector<float> ink_;
 };
 
-}  // namespace
+// Where the strokes go on the picture: the profile plot, x across the view, y the
+// plan-oblique position along it (from the lowest height), far side up.
+struct PreviewLayout {
+  int width = 0, height = 0;
+  std::function<void(const ChainCell&, double&, double&)> to_screen;
+};
 
-void write_preview(const std::string& path, const SilhouetteResult& result, const HeightGrid& z,
-                   const OrientedFrame& frame, const ViewParams& view,
-                   const PreviewOptions& options) {
-  // Profile plot coordinates: x across the view, y the plan-oblique position along it (from the
-  // lowest height), far side up.
+PreviewLayout preview_layout(const HeightGrid& z, const OrientedFrame& frame,
+                             const ViewParams& view, const PreviewOptions& options) {
   double z_min = std::numeric_limits<double>::infinity();
   double z_max = -z_min;
   for (std::size_t k = 0; k < z.size(); ++k) {
@@ -79,17 +84,24 @@ void write_preview(const std::string& path, const SilhouetteResult& result, cons
   const PlanObliqueShift shift(view, frame.d, z_min);
   const double plot_h = shift(static_cast<double>(frame.length), z_max) * frame.d;
   const int margin = 10;
-  const int width = std::clamp(options.width_px, 64, 20000);
-  const double scale = (width - 2.0 * margin) / plot_w;
-  const int height =
-      std::clamp(static_cast<int>(std::ceil(plot_h * scale)) + 2 * margin, 64, 20000);
-  Canvas canvas(width, height);
-  auto to_screen = [&](const ChainCell& c, double& sx, double& sy) {
+  PreviewLayout layout;
+  layout.width = std::clamp(options.width_px, 64, 20000);
+  const double scale = (layout.width - 2.0 * margin) / plot_w;
+  layout.height = std::clamp(static_cast<int>(std::ceil(plot_h * scale)) + 2 * margin, 64, 20000);
+  const int height = layout.height;
+  layout.to_screen = [&z, frame, shift, scale, height, margin](const ChainCell& c, double& sx,
+                                                               double& sy) {
     const double zc =
         static_cast<double>(z(static_cast<std::size_t>(c.p), static_cast<std::size_t>(c.i)));
     sx = margin + (c.p + 0.5) * frame.w * scale;
     sy = height - margin - shift(c.i + 0.5, zc) * frame.d * scale;
   };
+  return layout;
+}
+
+void write_png_preview(const std::string& path, const SilhouetteResult& result,
+                       const PreviewLayout& layout) {
+  Canvas canvas(layout.width, layout.height);
   // Formulated first so factual strokes stay on top.
   for (StrokeClass cls : {StrokeClass::formulated, StrokeClass::factual}) {
     const bool factual = cls == StrokeClass::factual;
@@ -97,19 +109,19 @@ void write_preview(const std::string& path, const SilhouetteResult& result, cons
       if (s.cls != cls) continue;
       for (std::size_t k = 1; k < s.chain.size(); ++k) {
         double x0, y0, x1, y1;
-        to_screen(s.chain[k - 1], x0, y0);
-        to_screen(s.chain[k], x1, y1);
+        layout.to_screen(s.chain[k - 1], x0, y0);
+        layout.to_screen(s.chain[k], x1, y1);
         canvas.line(x0, y0, x1, y1, factual ? 1.1 : 0.55, factual ? 1.f : 0.6f);
       }
     }
   }
-
   GDALAllRegister();
   GdalErrorCapture capture;
   std::vector<GByte> pixels = canvas.pixels();
   GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
   GDALDriver* png = GetGDALDriverManager()->GetDriverByName("PNG");
   if (!mem || !png) throw Error("GDAL has no MEM or PNG driver");
+  const int width = layout.width, height = layout.height;
   DatasetPtr image(mem->Create("", width, height, 1, GDT_Byte, nullptr));
   if (!image || image->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, width, height, pixels.data(),
                                                   width, height, GDT_Byte, 0, 0) != CE_None) {
@@ -119,6 +131,56 @@ void write_preview(const std::string& path, const SilhouetteResult& result, cons
     DatasetPtr out(png->CreateCopy(staged.c_str(), image.get(), FALSE, nullptr, nullptr, nullptr));
     if (!out) throw Error("cannot write preview '" + path + "': " + capture.message());
   });
+}
+
+// Vector art: one group (an Illustrator or Inkscape layer) per class, one path per stroke, in the
+// colours and widths of the QGIS styles; formulated first so that factual strokes lie on top.
+void write_svg_preview(const std::string& path, const SilhouetteResult& result,
+                       const PreviewLayout& layout) {
+  std::ostringstream svg;
+  svg.imbue(std::locale::classic());
+  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+         "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\""
+      << layout.width << "\" height=\"" << layout.height << "\" viewBox=\"0 0 " << layout.width
+      << " " << layout.height << "\">\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  svg.setf(std::ios::fixed);
+  svg.precision(2);
+  for (StrokeClass cls : {StrokeClass::formulated, StrokeClass::factual}) {
+    const bool factual = cls == StrokeClass::factual;
+    svg << "<g id=\"" << (factual ? "factual" : "formulated") << "\" inkscape:label=\""
+        << (factual ? "Factual silhouettes" : "Formulated silhouettes")
+        << "\" inkscape:groupmode=\"layer\" fill=\"none\" stroke=\""
+        << (factual ? "#111111" : "#6e3e1c") << "\" stroke-width=\"" << (factual ? 2.2 : 1.1)
+        << "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+    for (const Stroke& s : result.strokes) {
+      if (s.cls != cls || s.chain.empty()) continue;
+      svg << "<path d=\"";
+      for (std::size_t k = 0; k < s.chain.size(); ++k) {
+        double x, y;
+        layout.to_screen(s.chain[k], x, y);
+        svg << (k == 0 ? "M" : " L") << x << " " << y;
+      }
+      svg << "\"/>\n";
+    }
+    svg << "</g>\n";
+  }
+  svg << "</svg>\n";
+  write_text_file(path, svg.str());
+}
+
+}  // namespace
+
+void write_preview(const std::string& path, const SilhouetteResult& result, const HeightGrid& z,
+                   const OrientedFrame& frame, const ViewParams& view,
+                   const PreviewOptions& options) {
+  const PreviewLayout layout = preview_layout(z, frame, view, options);
+  if (lowercase_extension(path) == ".svg") {
+    write_svg_preview(path, result, layout);
+  } else {
+    write_png_preview(path, result, layout);
+  }
 }
 
 }  // namespace tsk::io

@@ -12,7 +12,8 @@ struct PreviewOptions {
 };
 
 // Renders the strokes of `result` as seen from the viewpoint (far side up): factual strokes bold
-// black, formulated strokes thinner grey, on white. Writes a PNG, whole or not at all.
+// black, formulated strokes thinner, on white. Writes a PNG, or for a .svg name vector art (a
+// layer per class, a path per stroke), whole or not at all.
 void write_preview(const std::string& path, const SilhouetteResult& result, const HeightGrid& z,
                    const OrientedFrame& frame, const ViewParams& view,
                    const PreviewOptions& options = {});
