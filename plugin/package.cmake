@@ -9,19 +9,8 @@ math(EXPR TSK_QGIS_MAJOR "${TSK_QGIS_VERSION_INT} / 10000")
 math(EXPR TSK_QGIS_MINOR "(${TSK_QGIS_VERSION_INT} / 100) % 100")
 set(TSK_QGIS_RELEASE "${TSK_QGIS_MAJOR}.${TSK_QGIS_MINOR}" CACHE INTERNAL "")
 
-# The platform: Debian's release (its number, or the codename of testing and unstable) and the
-# processor.
-file(STRINGS /etc/os-release TSK_OS_ID REGEX "^ID=")
-file(STRINGS /etc/os-release TSK_OS_VERSION REGEX "^VERSION_ID=")
-file(STRINGS /etc/os-release TSK_OS_CODENAME REGEX "^VERSION_CODENAME=")
-string(REGEX REPLACE "^[A-Z_]+=\"?([^\"]*)\"?$" "\\1" TSK_OS_ID "${TSK_OS_ID}")
-string(REGEX REPLACE "^[A-Z_]+=\"?([^\"]*)\"?$" "\\1" TSK_OS_VERSION "${TSK_OS_VERSION}")
-string(REGEX REPLACE "^[A-Z_]+=\"?([^\"]*)\"?$" "\\1" TSK_OS_CODENAME "${TSK_OS_CODENAME}")
-if(TSK_OS_VERSION)
-  set(TSK_PLATFORM "${TSK_OS_ID}${TSK_OS_VERSION}-${CMAKE_SYSTEM_PROCESSOR}")
-else()
-  set(TSK_PLATFORM "${TSK_OS_ID}-${TSK_OS_CODENAME}-${CMAKE_SYSTEM_PROCESSOR}")
-endif()
+# The platform: Debian's release (cmake/debian_release.cmake) and the processor.
+set(TSK_PLATFORM "${TSK_DEBIAN_RELEASE}-${CMAKE_SYSTEM_PROCESSOR}")
 set(TSK_PACKAGE_NAME
     "${TSK_PLUGIN_NAME}-${PROJECT_VERSION}-qgis${TSK_QGIS_RELEASE}-${TSK_PLATFORM}"
     CACHE INTERNAL "")

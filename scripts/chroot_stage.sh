@@ -16,15 +16,11 @@ packages="qgis libqgis-dev qttools5-dev qttools5-dev-tools libsqlite3-dev cmake 
   libgdal-dev gdal-bin python3-gdal xvfb xauth"
 packages=$(echo $packages)
 
+source "$repo/scripts/debian_root.sh"
 make_chroot() {
-  command -v mmdebstrap > /dev/null || { apt-get update -q && apt-get install -y -q mmdebstrap; }
   rm -rf "$root" "$root.new"
   mkdir -p "$cache"
-  # The host's Debian mirror; a frozen mirror's Release files are past their Valid-Until date.
-  local mirror
-  mirror=$(awk '/^URIs:/ {print $2; exit}' /etc/apt/sources.list.d/debian.sources 2>/dev/null || true)
-  mmdebstrap --variant=apt --aptopt='Acquire::Check-Valid-Until "false"' \
-    --include="${packages// /,}" "$suite" "$root.new" ${mirror:+"$mirror"}
+  make_debian_root "$suite" "$root.new" --include="${packages// /,}"
   echo "$packages" > "$root.new/.terrain-sketch-packages"
   mv "$root.new" "$root"
 }

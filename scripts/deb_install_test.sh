@@ -11,12 +11,10 @@ repo=$(cd "$(dirname "$0")/.." && pwd)
 cache=${TSK_CHROOT_CACHE:-/var/cache/terrain-sketch/chroots}
 suite=$(. /etc/os-release && echo "$VERSION_CODENAME")
 base=$cache/$suite-clean.tar
-mirror=$(awk '/^URIs:/ {print $2; exit}' /etc/apt/sources.list.d/debian.sources 2>/dev/null || true)
+source "$repo/scripts/debian_root.sh"
 if [ ! -f "$base" ]; then
-  command -v mmdebstrap > /dev/null || { apt-get update -q && apt-get install -y -q mmdebstrap; }
   mkdir -p "$cache"
-  mmdebstrap --variant=apt --format=tar --aptopt='Acquire::Check-Valid-Until "false"' "$suite" "$base.new" \
-    ${mirror:+"$mirror"}
+  make_debian_root "$suite" "$base.new" --format=tar
   mv "$base.new" "$base"
 fi
 root=$(mktemp -d "$cache/deb-test.XXXXXX")

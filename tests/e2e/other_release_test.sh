@@ -6,9 +6,8 @@ set -euo pipefail
 zip=$1 work=$2
 rm -rf "$work"
 profile="$work/.local/share/QGIS/QGIS3/profiles/default"
-mkdir -p "$profile/python/plugins" "$profile/QGIS"
-python3 -m zipfile -e "$zip" "$profile/python/plugins"
-printf '[PythonPlugins]\nterrain_sketch=true\n' > "$profile/QGIS/QGIS3.ini"
+source "$(dirname "$0")/install_zip.sh"
+install_zip "$zip" "$profile"
 status=0
 out=$(HOME="$work" QT_QPA_PLATFORM=offscreen qgis_process.bin list 2>&1) || status=$?
 fail() { echo "FAILED: $1"; echo "$out" | tail -20; exit 1; }

@@ -8,9 +8,8 @@ zip=$1 repo=$2 out=$3
 rm -rf "$out" && mkdir -p "$out/home"
 export HOME="$out/home" QT_QPA_PLATFORM=offscreen
 profile="$HOME/.local/share/QGIS/QGIS3/profiles/default"
-mkdir -p "$profile/python/plugins" "$profile/QGIS"
-python3 -m zipfile -e "$zip" "$profile/python/plugins"
-printf '[PythonPlugins]\nterrain_sketch=true\n' > "$profile/QGIS/QGIS3.ini"
+source "$(dirname "$0")/install_zip.sh"
+install_zip "$zip" "$profile"
 qp() { timeout 300 /usr/bin/qgis_process.bin "$@" 2>&1; }
 passed=0 failed=0
 check() {  # check NAME CONDITION-EXIT-CODE
