@@ -56,8 +56,19 @@ slope filter:
   --ctrl PCT           column slope of the control point, percent (default 8.75)
   --no-diagonals       remove the whole rectangle below both cut-offs
 strokes:
+  --strokes S          drawn (default): strokes a cartographer would publish, joined where
+                       they continue each other, smoothed, weighted for taper and depth (M
+                       values); exact: SPEC's strokes, one point per cell (the thesis's)
   --window N           formulated chaining search window, cells (default 3)
-  --min-cells N        drop strokes with fewer cells (default 3)
+  --min-cells N        drop strokes with fewer cells (default 3; drawn: after joining)
+  --join-gap CELLS     drawn: join ends this close, 0-20 (default 2.5; 0: no joining)
+  --join-angle DEG     drawn: ...whose directions agree within this, 0-90 (default 35)
+  --smooth CELLS       drawn: Gaussian smoothing along the stroke, sigma 0-20 (default 1.5)
+  --smooth-tolerance CELLS
+                       drawn: farthest a point moves from its cell, 0-2 (default 0.75)
+  --taper SHARE        drawn: share of a stroke thinned at each end, 0-0.5 (default 0.25)
+  --depth-cue SHARE    drawn: weight lost from front to back, 0-0.95 (default 0.5)
+  --extend CELLS       drawn: run each end on along its direction, 0-10 (default 0)
   --placement P        far (default) or near_and_far: which end of an f-set zone to keep
   --subcell            place factual points at the sub-cell peak of the profile
   --geometry G         map (cell centres) or oblique (plan oblique sketch) (default map)

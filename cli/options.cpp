@@ -117,6 +117,7 @@ void refuse_clashing_paths(const Options& o) {
 Options parse(const std::vector<std::string>& args) {
   Options o;
   o.params.adaptive.mode = FilterMode::adaptive;  // the command line's default; SPEC's is fixed
+  o.params.strokes.mode = StrokeMode::drawn;      // likewise; SPEC's strokes are exact
   std::vector<std::string> positional;
   using Setter = std::function<void(const std::string&, const std::string&)>;
   const std::map<std::string, Setter> with_value = {
@@ -132,6 +133,17 @@ Options parse(const std::vector<std::string>& args) {
       {"--adapt-window", [&](auto& n, auto& v) { o.params.adaptive.window = parse_int(n, v); }},
       {"--window", [&](auto& n, auto& v) { o.params.chain.window = parse_int(n, v); }},
       {"--min-cells", [&](auto& n, auto& v) { o.params.chain.min_cells = parse_int(n, v); }},
+      {"--strokes", [&](auto&, auto& v) { o.params.strokes.mode = parse_stroke_mode(v); }},
+      {"--smooth", [&](auto& n, auto& v) { o.params.strokes.smooth_cells = parse_number(n, v); }},
+      {"--smooth-tolerance",
+       [&](auto& n, auto& v) { o.params.strokes.tolerance_cells = parse_number(n, v); }},
+      {"--join-gap",
+       [&](auto& n, auto& v) { o.params.strokes.join_gap_cells = parse_number(n, v); }},
+      {"--join-angle",
+       [&](auto& n, auto& v) { o.params.strokes.join_angle_deg = parse_number(n, v); }},
+      {"--taper", [&](auto& n, auto& v) { o.params.strokes.taper = parse_number(n, v); }},
+      {"--depth-cue", [&](auto& n, auto& v) { o.params.strokes.depth_cue = parse_number(n, v); }},
+      {"--extend", [&](auto& n, auto& v) { o.params.strokes.extend_cells = parse_number(n, v); }},
       {"--placement", [&](auto&, auto& v) { o.params.placement = parse_placement(v); }},
       {"--geometry", [&](auto&, auto& v) { o.params.geometry = parse_geometry(v); }},
       {"--band", [&](auto& n, auto& v) { o.dem.band = parse_int(n, v); }},

@@ -50,22 +50,25 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
   std::vector<Stroke> drawn;
   double write_s = 0;
   Clock::time_point produced;
-  io::write_strokes(o.output, o.format, dem.info().srs_wkt, [&](const io::StrokeWriter& write) {
-    result = sketch_silhouettes(dem.source(), o.params, static_cast<std::size_t>(o.strips),
-                                progress, [&](Stroke&& stroke) {
-                                  const auto start = Clock::now();
-                                  write(stroke);
-                                  write_s += since(start);
-                                  if (preview) drawn.push_back(std::move(stroke));
-                                });
-    stop_if_interrupted();  // the last chance to stop with nothing written
-    // The statistics and the preview go out before the strokes are committed, so that a failure
-    // to write them discards the strokes too.
-    if (!o.stats_json.empty())
-      io::write_text_file(o.stats_json, stats_json(result.stats, result.filter));
-    if (preview) write_preview(o, result, std::move(drawn));
-    produced = Clock::now();
-  });
+  io::write_strokes(
+      o.output, o.format, dem.info().srs_wkt,
+      [&](const io::StrokeWriter& write) {
+        result = sketch_silhouettes(dem.source(), o.params, static_cast<std::size_t>(o.strips),
+                                    progress, [&](Stroke&& stroke) {
+                                      const auto start = Clock::now();
+                                      write(stroke);
+                                      write_s += since(start);
+                                      if (preview) drawn.push_back(std::move(stroke));
+                                    });
+        stop_if_interrupted();  // the last chance to stop with nothing written
+        // The statistics and the preview go out before the strokes are committed, so that a failure
+        // to write them discards the strokes too.
+        if (!o.stats_json.empty())
+          io::write_text_file(o.stats_json, stats_json(result.stats, result.filter));
+        if (preview) write_preview(o, result, std::move(drawn));
+        produced = Clock::now();
+      },
+      io::kStrokeLayer, o.params.strokes.drawn());
   print_filter(result.filter, err);
   if (o.timings) print_timings(result.timings, write_s, since(produced), err);
   const StageStats& s = result.stats;

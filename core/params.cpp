@@ -50,11 +50,22 @@ void ChainParams::validate() const {
           "minimum stroke cells must be at least 2 (a one-cell chain is noise)");
 }
 
+void DrawnParams::validate() const {
+  require_range(smooth_cells, 0.0, 20.0, "smoothing (cells)");
+  require_range(tolerance_cells, 0.0, 2.0, "smoothing tolerance (cells)");
+  require_range(join_gap_cells, 0.0, 20.0, "join gap (cells)");
+  require_range(join_angle_deg, 0.0, 90.0, "join angle (degrees)");
+  require_range(taper, 0.0, 0.5, "taper (share of the stroke length at each end)");
+  require_range(depth_cue, 0.0, 0.95, "depth cue (weight lost from front to back)");
+  require_range(extend_cells, 0.0, 10.0, "over-extension (cells)");
+}
+
 void SilhouetteParams::validate() const {
   view.validate();
   filter.validate();
   adaptive.validate();
   chain.validate();
+  strokes.validate();
   require(std::isfinite(height_tolerance) && height_tolerance >= 0.0,
           "the height tolerance must be a finite number >= 0");
   require(threads <= 1024, "thread count must be at most 1024");
@@ -82,6 +93,12 @@ Adaptivity parse_adaptivity(const std::string& name) {
   if (name == "whole") return Adaptivity::whole;
   if (name == "local") return Adaptivity::local;
   throw Error("adaptivity must be 'whole' or 'local', got '" + name + "'");
+}
+
+StrokeMode parse_stroke_mode(const std::string& name) {
+  if (name == "drawn") return StrokeMode::drawn;
+  if (name == "exact") return StrokeMode::exact;
+  throw Error("strokes must be 'drawn' or 'exact', got '" + name + "'");
 }
 
 }  // namespace tsk

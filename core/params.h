@@ -53,6 +53,26 @@ struct ChainParams {
 
 enum class Geometry { map, oblique };
 
+// How the chains become strokes: `exact` is SPEC 1.7-1.9 to the bit (one point per cell, chains
+// shorter than min_cells dropped); `drawn` places points at sub-cell positions, joins strokes that
+// visually continue each other before the min_cells generalisation, smooths them within a
+// tolerance of the exact chain and gives each vertex a weight for taper and depth
+// (docs/DRAWN_STROKES.md).
+enum class StrokeMode { exact, drawn };
+
+struct DrawnParams {
+  StrokeMode mode = StrokeMode::exact;  // the core keeps SPEC's strokes; the front ends draw
+  double smooth_cells = 1.5;            // Gaussian sigma along the stroke, cells (0: none)
+  double tolerance_cells = 0.75;        // farthest a smoothed vertex moves from its cell's place
+  double join_gap_cells = 2.5;          // farthest apart two stroke ends that join may be
+  double join_angle_deg = 35.0;         // largest turn between the joined ends' directions
+  double taper = 0.25;                  // share of a stroke's length tapered at each end
+  double depth_cue = 0.5;               // weight lost from the front of the view to its back
+  double extend_cells = 0.0;            // over-extension of each end along its tangent
+  bool drawn() const { return mode == StrokeMode::drawn; }
+  void validate() const;
+};
+
 class SlopeScaleMap;
 
 struct SilhouetteParams {
@@ -65,6 +85,7 @@ struct SilhouetteParams {
   double height_tolerance = 0.0;
   std::shared_ptr<const SlopeScaleMap> local_scale;
   ChainParams chain;
+  DrawnParams strokes;
   Placement placement = Placement::far;
   Geometry geometry = Geometry::map;
   bool subcell = false;  // place occluding points where the transformed profile peaks
@@ -76,5 +97,6 @@ Geometry parse_geometry(const std::string& name);
 Placement parse_placement(const std::string& name);
 FilterMode parse_filter_mode(const std::string& name);
 Adaptivity parse_adaptivity(const std::string& name);
+StrokeMode parse_stroke_mode(const std::string& name);
 
 }  // namespace tsk

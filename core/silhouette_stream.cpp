@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "chaining.h"
+#include "drawn_strokes.h"
 #include "errors.h"
 #include "profile_stages.h"
 #include "silhouettes.h"
@@ -32,8 +33,8 @@ struct SilhouetteStream::State {
     StrokeClass cls;
     std::vector<StrokeBuilder> open;
     std::vector<std::pair<std::size_t, Stroke>> waiting;  // a heap, the oldest chain on top
-    std::vector<Stroke> handed_on;                        // without a sink
-    std::size_t count = 0, cells = 0;                     // of the strokes handed on
+    std::vector<Stroke> handed_on;     // without a sink, or drawn strokes still to be drawn
+    std::size_t count = 0, cells = 0;  // of the strokes handed on
   };
 
   OrientedFrame frame;
@@ -91,16 +92,19 @@ struct SilhouetteStream::State {
     const auto& joined = strokes.linker.add_profile(candidates);
     std::vector<StrokeBuilder>& open = strokes.open;
     if (open.size() < strokes.linker.slot_count()) open.resize(strokes.linker.slot_count());
-    for (std::size_t k = 0; k < joined.size(); ++k) open[joined[k].slot].add(cells[k]);
+    const bool drawn = params.strokes.drawn();
+    for (std::size_t k = 0; k < joined.size(); ++k) open[joined[k].slot].add(cells[k], drawn);
     close(strokes, strokes.linker.closed());
     hand_on(strokes, strokes.linker.oldest_open());
   }
 
-  // Keeps the strokes of closed chains long enough to draw; their slots' storage is reused.
+  // Keeps the strokes of closed chains long enough to draw (every one for drawn strokes, which are
+  // generalised after joining); their slots' storage is reused.
   void close(Strokes& strokes, const std::vector<ChainRef>& chains) {
+    const int min_cells = params.strokes.drawn() ? 1 : params.chain.min_cells;
     for (const ChainRef& chain : chains) {
       StrokeBuilder& builder = strokes.open[chain.slot];
-      if (builder.cells() >= params.chain.min_cells) {
+      if (builder.cells() >= min_cells) {
         strokes.waiting.emplace_back(chain.id, builder.stroke(strokes.cls));
         std::push_heap(strokes.waiting.begin(), strokes.waiting.end(), later_chain);
       }
@@ -108,21 +112,39 @@ struct SilhouetteStream::State {
     }
   }
 
-  // Hands on the waiting strokes of chains started before chain `id`, oldest first.
+  // Hands on the waiting strokes of chains started before chain `id`, oldest first. Drawn
+  // strokes wait for the last chain: joining needs them all.
   void hand_on(Strokes& strokes, std::size_t id) {
     auto& waiting = strokes.waiting;
     while (!waiting.empty() && waiting.front().first < id) {
       std::pop_heap(waiting.begin(), waiting.end(), later_chain);
       Stroke stroke = std::move(waiting.back().second);
       waiting.pop_back();
-      ++strokes.count;
-      strokes.cells += static_cast<std::size_t>(stroke.cells);
-      if (sink) {
-        sink(std::move(stroke));
-      } else {
+      if (params.strokes.drawn()) {
         strokes.handed_on.push_back(std::move(stroke));
+      } else {
+        deliver(strokes, std::move(stroke));
       }
     }
+  }
+
+  void deliver(Strokes& strokes, Stroke&& stroke) {
+    ++strokes.count;
+    strokes.cells += static_cast<std::size_t>(stroke.cells);
+    if (sink) {
+      sink(std::move(stroke));
+    } else {
+      strokes.handed_on.push_back(std::move(stroke));
+    }
+  }
+
+  // Draws the strokes of a class once every chain is complete and hands them on.
+  void draw(Strokes& strokes) {
+    std::vector<Stroke> drawn = draw_strokes(std::move(strokes.handed_on),
+                                             drawing_setup(frame, geotransform, params, z_ref),
+                                             resolve_threads(params.threads));
+    strokes.handed_on.clear();
+    for (Stroke& stroke : drawn) deliver(strokes, std::move(stroke));
   }
 
   static bool later_chain(const std::pair<std::size_t, Stroke>& a,
@@ -153,6 +175,8 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
                               st.geotransform,
                               st.params.geometry,
                               st.params.subcell,
+                              st.params.strokes.drawn(),
+                              st.params.height_tolerance,
                               st.z_ref,
                               first - before};
   const unsigned threads = resolve_threads(st.params.threads);
@@ -205,6 +229,7 @@ SilhouetteResult SilhouetteStream::finish() {
   for (State::Strokes* strokes : {&st.factual, &st.formulated}) {
     st.close(*strokes, strokes->linker.close_all());
     st.hand_on(*strokes, std::numeric_limits<std::size_t>::max());
+    if (st.params.strokes.drawn()) st.draw(*strokes);
   }
   SilhouetteResult& result = st.result;
   StageStats& stats = result.stats;

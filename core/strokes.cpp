@@ -46,6 +46,26 @@ double subcell_peak(const float* z, std::size_t length, std::size_t i, double d,
   return at + std::clamp(offset, -0.5, 0.5);
 }
 
+double subcell_break(const float* z, const std::uint8_t* flags, std::size_t length, std::size_t i,
+                     double d, const ViewParams& view, double height_tolerance) {
+  const double at = static_cast<double>(i);
+  const auto in_zone = [&](std::size_t k) { return k < length && (flags[k] & cell::filtered); };
+  // The zone's edge this cell stands for: the far one, or the near one for a near-end cell.
+  const bool far_edge = !in_zone(i + 1);
+  if (!far_edge && i > 0 && in_zone(i - 1)) return at;  // inside the zone: no edge here
+  const std::size_t inner = far_edge ? i : i - 1, outer = inner + 1;
+  if (!far_edge && i == 0) return at;
+  const double s_in = view.ve * column_slope(z, length, far_edge ? inner : outer, d);
+  const double s_out = view.ve * column_slope(z, length, far_edge ? outer : inner, d);
+  if (!std::isfinite(s_in) || !std::isfinite(s_out)) return at;
+  const CandidateBounds bounds(view, d, height_tolerance);
+  const double bound = s_out >= bounds.upper ? bounds.upper : bounds.lower;
+  if (s_out == s_in) return at;
+  // Fraction of the way from the zone's cell to the one outside at which the slope crosses.
+  const double t = std::clamp((bound - s_in) / (s_out - s_in), 0.0, 0.5);
+  return far_edge ? at + t : at - t;
+}
+
 StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, bool factual) {
   const std::size_t length = ctx.z.cols();
   const double d = ctx.frame.d;
@@ -54,11 +74,16 @@ StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, b
   StrokeCell c;
   c.cell = {static_cast<std::int32_t>(p), static_cast<std::int32_t>(i)};
   c.z = static_cast<double>(zp[i]);
-  const double along =
-      factual && ctx.subcell ? subcell_peak(zp, length, i, d, ctx.view) : static_cast<double>(i);
+  double along = static_cast<double>(i);
+  if (factual && (ctx.subcell || ctx.drawn)) {
+    along = subcell_peak(zp, length, i, d, ctx.view);
+  } else if (!factual && ctx.drawn) {
+    along = subcell_break(zp, ctx.flags.row(row), length, i, d, ctx.view, ctx.height_tolerance);
+  }
   ctx.geotransform.apply(ctx.frame.to_pixel(static_cast<double>(p), along), c.map.x, c.map.y);
   c.point = c.map;
-  if (ctx.geometry == Geometry::oblique) {
+  // Drawn strokes are smoothed in map geometry; their plan-oblique shift comes after.
+  if (ctx.geometry == Geometry::oblique && !ctx.drawn) {
     const double shifted = PlanObliqueShift(ctx.view, d, ctx.z_ref)(along, c.z);
     ctx.geotransform.apply(ctx.frame.to_pixel(static_cast<double>(p), shifted), c.point.x,
                            c.point.y);
@@ -74,7 +99,8 @@ double StrokeBuilder::Mean::value() const {
   return count ? sum / count : kNaN;
 }
 
-void StrokeBuilder::add(const StrokeCell& c) {
+void StrokeBuilder::add(const StrokeCell& c, bool keep_vertices) {
+  if (keep_vertices) vertices_.push_back({c.dist, c.z});
   if (!chain_.empty()) length_ += std::hypot(c.map.x - last_map_.x, c.map.y - last_map_.y);
   last_map_ = c.map;
   chain_.push_back(c.cell);
@@ -95,6 +121,7 @@ Stroke StrokeBuilder::stroke(StrokeClass cls) const {
   s.cells = cells();
   s.chain = chain_;
   s.points = points_;
+  s.vertices = vertices_;
   s.length = length_;
   s.mean_slope_pct = slope_.value();
   s.mean_row_slope_pct = row_slope_.value();
@@ -108,6 +135,7 @@ Stroke StrokeBuilder::stroke(StrokeClass cls) const {
 void StrokeBuilder::clear() {
   chain_.clear();
   points_.clear();
+  vertices_.clear();
   length_ = 0.0, max_depth_ = 0.0;
   slope_ = row_slope_ = depth_ = dist_ = z_ = Mean();
 }

@@ -20,10 +20,22 @@ struct StrokePoint {
   double y;
 };
 
+// What drawing a stroke needs of each of its points beyond its place (see drawn_strokes.h).
+struct StrokeVertex {
+  double dist;  // distance from the front of the view, ground units
+  double z;     // height, metres
+};
+
 struct Stroke {
   StrokeClass cls = StrokeClass::factual;
   std::vector<StrokePoint> points;  // in the chosen geometry, in the DEM's CRS
-  Chain chain;                      // the oriented cells the points stand for
+  Chain chain;                      // the oriented cells the points stand for (exact strokes)
+  // Drawn strokes: each point's weight in (0, 1], its taper times its depth cue, written as M.
+  // Empty for exact strokes.
+  std::vector<double> weights;
+  // Drawn strokes while they are drawn: one per point, points in map geometry. Emptied once the
+  // stroke is drawn.
+  std::vector<StrokeVertex> vertices;
   int cells = 0;
   double length = 0.0;          // ground length in map units (map geometry)
   double mean_slope_pct = 0.0;  // mean |column slope|, percent
@@ -63,6 +75,8 @@ struct StrokeContext {
   const GeoTransform& geotransform;
   Geometry geometry = Geometry::map;
   bool subcell = false;
+  bool drawn = false;             // points at sub-cell places, in map geometry, for drawn strokes
+  double height_tolerance = 0.0;  // the c-set's (SilhouetteParams::height_tolerance)
   double z_ref = 0.0;  // height that stays in place in plan-oblique geometry (the DEM minimum)
   std::size_t first_profile = 0;
 };
@@ -81,6 +95,12 @@ struct StrokeCell {
 double subcell_peak(const float* z, std::size_t length, std::size_t i, double d,
                     const ViewParams& view);
 
+// Position of a thinned (t-set) cell along its profile, refined to where the exaggerated column
+// slope, interpolated linearly between cell centres, leaves the c-set's bounds at the end of its
+// f-set zone (within half a cell, towards the zone's edge). `flags` is the profile's.
+double subcell_break(const float* z, const std::uint8_t* flags, std::size_t length, std::size_t i,
+                     double d, const ViewParams& view, double height_tolerance);
+
 // The record of cell i of profile p (a global profile index; the grid row is p - first_profile).
 StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, bool factual);
 
@@ -88,7 +108,8 @@ StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, b
 // running sums of its attributes, so that the records of its cells need not be kept.
 class StrokeBuilder {
  public:
-  void add(const StrokeCell& c);
+  // keep_vertices: record the cell's distance and height for drawing (drawn strokes).
+  void add(const StrokeCell& c, bool keep_vertices = false);
   int cells() const { return static_cast<int>(chain_.size()); }
   // The stroke so far with its attributes, its vectors sized to fit.
   Stroke stroke(StrokeClass cls) const;
@@ -107,6 +128,7 @@ class StrokeBuilder {
   };
   Chain chain_;
   std::vector<StrokePoint> points_;
+  std::vector<StrokeVertex> vertices_;
   StrokePoint last_map_{};
   double length_ = 0.0, max_depth_ = 0.0;
   Mean slope_, row_slope_, depth_, dist_, z_;

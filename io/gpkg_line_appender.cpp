@@ -97,7 +97,9 @@ void GpkgLineAppender::set(int field, const char* text) {
   rows_->insert.bind(field + 2, text);
 }
 
-void GpkgLineAppender::add(const std::vector<StrokePoint>& points) {
+void GpkgLineAppender::add(const std::vector<StrokePoint>& points, const std::vector<double>& m) {
+  const bool measured = !m.empty();
+  if (measured && m.size() != points.size()) rows_->db.fail("a line with an M value missing");
   if (points.size() > std::numeric_limits<std::uint32_t>::max()) {
     rows_->db.fail("a line of " + std::to_string(points.size()) + " points");
   }
@@ -109,14 +111,20 @@ void GpkgLineAppender::add(const std::vector<StrokePoint>& points) {
   constexpr std::size_t kHeader = 8;
   blob_.resize(kHeader);
   for (double v : {x0, x1, y0, y1}) append(blob_, v);
-  // Well-known binary: byte order, type 2 (LineString), the number of points, the points.
+  // Well-known binary: byte order, type 2 (LineString) or 2002 (LineString M), the number of
+  // points, the points.
   append(blob_, kLittleEndian);
-  append(blob_, std::uint32_t{2});
+  append(blob_, std::uint32_t{measured ? 2002u : 2u});
   append(blob_, static_cast<std::uint32_t>(points.size()));
   static_assert(sizeof(StrokePoint) == 2 * sizeof(double), "points are x, y pairs");
-  const std::size_t at = blob_.size();
-  blob_.resize(at + points.size() * sizeof(StrokePoint));
-  std::memcpy(blob_.data() + at, points.data(), points.size() * sizeof(StrokePoint));
+  if (measured) {
+    for (std::size_t k = 0; k < points.size(); ++k)
+      for (double v : {points[k].x, points[k].y, m[k]}) append(blob_, v);
+  } else {
+    const std::size_t at = blob_.size();
+    blob_.resize(at + points.size() * sizeof(StrokePoint));
+    std::memcpy(blob_.data() + at, points.data(), points.size() * sizeof(StrokePoint));
+  }
   rows_->insert.bind(1, blob_);
   rows_->insert.step();
   boxes_.push_back({rows_->db.last_rowid(), x0, x1, y0, y1});

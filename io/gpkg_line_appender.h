@@ -33,8 +33,9 @@ class GpkgLineAppender {
   void set(int field, std::int64_t value);
   void set(int field, double value);      // NaN and infinities are written as null
   void set(int field, const char* text);  // must outlive the next add()
-  // Inserts a row: the line through `points` with the attributes set since the last row.
-  void add(const std::vector<StrokePoint>& points);
+  // Inserts a row: the line through `points` with the attributes set since the last row, a
+  // LineString M with `m` (one per point) when given, else a LineString.
+  void add(const std::vector<StrokePoint>& points, const std::vector<double>& m = {});
   // Writes the layer's extent and feature count, and its spatial index in bulk.
   void finish();
 

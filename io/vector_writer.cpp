@@ -111,7 +111,8 @@ class LineOutput {
   virtual void set(int field, std::int64_t value) = 0;
   virtual void set(int field, double value) = 0;  // NaN and infinities are null
   virtual void set(int field, const char* text) = 0;
-  virtual void add(const std::vector<StrokePoint>& points) = 0;
+  // The line through `points`, with `m` (one per point) when the layer is measured.
+  virtual void add(const std::vector<StrokePoint>& points, const std::vector<double>& m = {}) = 0;
 };
 
 // Features through OGR, for any vector format.
@@ -128,11 +129,15 @@ class OgrLineOutput : public LineOutput {
     }
   }
   void set(int field, const char* text) override { feature_.SetField(field, text); }
-  void add(const std::vector<StrokePoint>& points) override {
+  void add(const std::vector<StrokePoint>& points, const std::vector<double>& m) override {
     OGRLineString line;
     line.setNumPoints(static_cast<int>(points.size()));
     for (std::size_t k = 0; k < points.size(); ++k) {
-      line.setPoint(static_cast<int>(k), points[k].x, points[k].y);
+      if (m.empty()) {
+        line.setPoint(static_cast<int>(k), points[k].x, points[k].y);
+      } else {
+        line.setPointM(static_cast<int>(k), points[k].x, points[k].y, m[k]);
+      }
     }
     feature_.SetGeometry(&line);
     feature_.SetFID(OGRNullFID);  // a new feature each time
@@ -155,7 +160,9 @@ class GpkgLineOutput : public LineOutput {
   void set(int field, std::int64_t value) override { appender_.set(field, value); }
   void set(int field, double value) override { appender_.set(field, value); }
   void set(int field, const char* text) override { appender_.set(field, text); }
-  void add(const std::vector<StrokePoint>& points) override { appender_.add(points); }
+  void add(const std::vector<StrokePoint>& points, const std::vector<double>& m) override {
+    appender_.add(points, m);
+  }
   void finish() { appender_.finish(); }
 
  private:
@@ -168,7 +175,7 @@ class GpkgLineOutput : public LineOutput {
 void write_line_layer(const std::string& path, const std::string& format,
                       const std::string& srs_wkt, const std::string& layer_name,
                       const std::vector<Field>& fields,
-                      const std::function<void(LineOutput&)>& add_features) {
+                      const std::function<void(LineOutput&)>& add_features, bool measured = false) {
   const std::string driver_name = check_vector_output(path, format);
   GdalErrorCapture capture;
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
@@ -200,8 +207,9 @@ void write_line_layer(const std::string& path, const std::string& format,
   const auto fill = [&](const std::string& target) {
     DatasetPtr ds(driver->Create(target.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
     if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
-    OGRLayer* layer = ds->CreateLayer(layer_name.c_str(), has_srs ? &srs : nullptr, wkbLineString,
-                                      layer_options.List());
+    OGRLayer* layer =
+        ds->CreateLayer(layer_name.c_str(), has_srs ? &srs : nullptr,
+                        measured ? wkbLineStringM : wkbLineString, layer_options.List());
     if (!layer) throw Error("cannot create layer in '" + path + "': " + capture.message());
     for (const Field& field : fields) {
       OGRFieldDefn defn(field.name, field.type);
@@ -247,26 +255,33 @@ void write_line_layer(const std::string& path, const std::string& format,
 
 void write_strokes(const std::string& path, const std::string& format, const std::string& srs_wkt,
                    const std::function<void(const StrokeWriter& write)>& produce,
-                   const std::string& layer_name) {
+                   const std::string& layer_name, bool weighted) {
   std::vector<Field> fields = {{"class", OFTString}, {"cells", OFTInteger}};
   for (const StrokeRealField& f : stroke_real_fields()) fields.push_back({f.name, OFTReal});
-  write_line_layer(path, format, srs_wkt, layer_name, fields, [&](LineOutput& output) {
-    produce([&](const Stroke& s) {
-      set_stroke_attributes(output, s);
-      output.add(s.points);
-    });
-  });
+  write_line_layer(
+      path, format, srs_wkt, layer_name, fields,
+      [&](LineOutput& output) {
+        produce([&](const Stroke& s) {
+          if (weighted != !s.weights.empty())
+            throw Error("a stroke " + std::string(weighted ? "without" : "with") +
+                        " weights for a layer " + (weighted ? "with" : "without") + " them");
+          set_stroke_attributes(output, s);
+          output.add(s.points, s.weights);
+        });
+      },
+      weighted);
 }
 
 void write_strokes(const std::string& path, const std::string& format,
                    const std::vector<Stroke>& strokes, const std::string& srs_wkt,
                    const std::string& layer_name) {
+  const bool weighted = !strokes.empty() && !strokes.front().weights.empty();
   write_strokes(
       path, format, srs_wkt,
       [&](const StrokeWriter& write) {
         for (const Stroke& s : strokes) write(s);
       },
-      layer_name);
+      layer_name, weighted);
 }
 
 void write_profile_lines(const std::string& path, const std::string& format,

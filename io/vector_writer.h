@@ -31,11 +31,12 @@ using StrokeWriter = std::function<void(const Stroke& stroke)>;
 // Creates `path` with the stroke layer in the CRS given as WKT (may be empty) and calls
 // produce(write), which hands every stroke to `write` as it has it: strokes need not be held
 // until they are written. Whole or not at all: if produce throws, nothing is left behind.
+// weighted: the strokes are drawn ones, written as LineString M with their weights as M.
 void write_strokes(const std::string& path, const std::string& format, const std::string& srs_wkt,
                    const std::function<void(const StrokeWriter& write)>& produce,
-                   const std::string& layer_name = kStrokeLayer);
+                   const std::string& layer_name = kStrokeLayer, bool weighted = false);
 
-// Writes `strokes` to `path`, whole or not at all.
+// Writes `strokes` to `path`, whole or not at all; with M values if they are drawn strokes.
 void write_strokes(const std::string& path, const std::string& format,
                    const std::vector<Stroke>& strokes, const std::string& srs_wkt,
                    const std::string& layer_name = kStrokeLayer);

@@ -80,10 +80,10 @@ using test::kNorthUp;
 
 TEST_CASE("the sample DEM becomes a GeoPackage equal to the core's result", "[cli]") {
   ScratchDir dir("sample");
-  // The thesis's filter, which the core runs by default (SPEC 1.5).
+  // The thesis's filter and strokes, which the core runs by default (SPEC 1.5, 1.7-1.9).
   const CliRun run =
       run_cli({"silhouettes", kSample, dir / "out.gpkg", "--stats-json", dir / "stats.json",
-               "--preview", dir / "sketch.png", "--filter", "fixed"});
+               "--preview", dir / "sketch.png", "--filter", "fixed", "--strokes", "exact"});
   INFO(run.err);
   REQUIRE(run.code == 0);
   CHECK(run.err.empty());
@@ -116,6 +116,48 @@ TEST_CASE("the sample DEM becomes a GeoPackage equal to the core's result", "[cl
   CHECK(png->GetRasterXSize() == 1600);
   GDALClose(png);
   CHECK(dir.file_count() == 3);  // no temporary leftovers
+}
+
+TEST_CASE("drawn strokes go out as LineString M with their weights, exact ones as LineString",
+          "[cli][drawn]") {
+  ScratchDir dir("drawn");
+  const CliRun drawn = run_cli({"silhouettes", kSample, dir / "drawn.gpkg", "--filter", "fixed"});
+  const CliRun exact = run_cli(
+      {"silhouettes", kSample, dir / "exact.gpkg", "--filter", "fixed", "--strokes", "exact"});
+  REQUIRE(drawn.code == 0);
+  REQUIRE(exact.code == 0);
+  io::DemOptions options;
+  const io::Dem dem = io::read_dem(kSample, options);
+  SilhouetteParams params;
+  params.strokes.mode = StrokeMode::drawn;
+  const SilhouetteResult core = run_silhouettes(dem.oriented, dem.frame, dem.geotransform, params);
+  GDALAllRegister();
+  for (const char* name : {"drawn.gpkg", "exact.gpkg"}) {
+    const bool weighted = std::string(name) == "drawn.gpkg";
+    GDALDataset* ds = static_cast<GDALDataset*>(GDALOpenEx(
+        (dir / name).c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+    REQUIRE(ds != nullptr);
+    OGRLayer* layer = ds->GetLayer(0);
+    CHECK(layer->GetGeomType() == (weighted ? wkbLineStringM : wkbLineString));
+    std::size_t k = 0;
+    for (auto& feature : *layer) {
+      const auto* line = feature->GetGeometryRef()->toLineString();
+      CHECK(line->IsMeasured() == weighted);
+      if (!weighted || k >= core.strokes.size()) continue;
+      // In the core's order, with the core's weights as M.
+      const Stroke& s = core.strokes[k++];
+      REQUIRE(line->getNumPoints() == static_cast<int>(s.points.size()));
+      for (int j = 0; j < line->getNumPoints(); ++j) {
+        CHECK(line->getM(j) == s.weights[static_cast<std::size_t>(j)]);
+        CHECK(line->getX(j) == s.points[static_cast<std::size_t>(j)].x);
+      }
+    }
+    if (weighted) CHECK(k == core.strokes.size());
+    CHECK(layer->GetFeatureCount() ==
+          static_cast<GIntBig>(weighted ? core.strokes.size()
+                                        : summarise(dir / "exact.gpkg").features));
+    GDALClose(ds);
+  }
 }
 
 TEST_CASE("a shapefile keeps every attribute under its shortened name", "[cli]") {
@@ -238,6 +280,14 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"silhouettes", dir / "nogeo.tif", out}, "--cell-size"},
       {{"silhouettes", dir / "multi.tif", out, "--band", "3"}, "band 3 does not exist"},
       {{"silhouettes", kSample, out, "--filter", "thesis"}, "'adaptive' or 'fixed'"},
+      {{"silhouettes", kSample, out, "--strokes", "smooth"}, "'drawn' or 'exact'"},
+      {{"silhouettes", kSample, out, "--smooth", "-1"}, "smoothing (cells) must be between 0"},
+      {{"silhouettes", kSample, out, "--smooth-tolerance", "3"}, "tolerance (cells) must be"},
+      {{"silhouettes", kSample, out, "--join-gap", "nan"}, "--join-gap needs a number"},
+      {{"silhouettes", kSample, out, "--join-angle", "120"}, "join angle (degrees) must be"},
+      {{"silhouettes", kSample, out, "--taper", "0.6"}, "taper (share"},
+      {{"silhouettes", kSample, out, "--depth-cue", "1"}, "depth cue"},
+      {{"silhouettes", kSample, out, "--extend", "11"}, "over-extension (cells) must be"},
       {{"silhouettes", kData + "/volcano.tif", dir / "out.kml"}, "no CRS to find them from"},
       {{"silhouettes", kSample, out, "--adapt", "regional"}, "'whole' or 'local'"},
       {{"silhouettes", kSample, out, "--adapt-window", "4"}, "between 8 and 100000"},
@@ -656,17 +706,21 @@ TEST_CASE("strips give byte-identical output to the whole DEM", "[cli][strips]")
     SilhouetteParams asked;
     asked.view.azimuth_deg = options.azimuth_deg;
     asked.geometry = Geometry::oblique;
-    asked.adaptive.mode = FilterMode::adaptive;  // the command line's default
+    asked.adaptive.mode = FilterMode::adaptive;  // the command line's defaults
+    asked.strokes.mode = StrokeMode::drawn;
     FilterReport filter;
     const SilhouetteParams params =
         adapt_filter(asked, whole.frame, io::DemFile(kSample, options).source().read, filter);
     StageStats reference;
-    io::write_strokes(dir / "whole.geojson", "", whole.srs_wkt, [&](const io::StrokeWriter& write) {
-      SilhouetteStream stream(whole.frame, whole.geotransform, params, whole.lowest_height, {},
-                              [&](Stroke&& stroke) { write(stroke); });
-      stream.add_strip(whole.oriented, 0, whole.frame.profiles);
-      reference = stream.finish().stats;
-    });
+    io::write_strokes(
+        dir / "whole.geojson", "", whole.srs_wkt,
+        [&](const io::StrokeWriter& write) {
+          SilhouetteStream stream(whole.frame, whole.geotransform, params, whole.lowest_height, {},
+                                  [&](Stroke&& stroke) { write(stroke); });
+          stream.add_strip(whole.oriented, 0, whole.frame.profiles);
+          reference = stream.finish().stats;
+        },
+        io::kStrokeLayer, true);
     std::ofstream(dir / "whole.json") << cli::stats_json(reference, filter);
     const std::vector<std::string> common = {"--azimuth", az, "--geometry", "oblique"};
     auto run = [&](const std::string& name, std::vector<std::string> extra) {

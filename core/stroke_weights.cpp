@@ -1,0 +1,75 @@
+#include "stroke_weights.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tsk {
+namespace {
+
+// The rise of the taper from a tip (u = 0) to full weight (u = 1): quick at first, like a pen
+// touching down.
+double taper_rise(double u) {
+  const double v = 1.0 - std::clamp(u, 0.0, 1.0);
+  return kTipWeight + (1.0 - kTipWeight) * (1.0 - v * v);
+}
+
+}  // namespace
+
+void weigh_stroke(Stroke& stroke, const WeightRule& rule) {
+  const std::size_t n = stroke.points.size();
+  stroke.weights.assign(n, 1.0);
+  double total = 0.0;
+  std::vector<double>& w = stroke.weights;
+  // First the arc length at each point (in w), then the weight.
+  w[0] = 0.0;
+  for (std::size_t k = 1; k < n; ++k) {
+    total += std::hypot(stroke.points[k].x - stroke.points[k - 1].x,
+                        stroke.points[k].y - stroke.points[k - 1].y);
+    w[k] = total;
+  }
+  const double taper_length = rule.taper * total;
+  const bool has_vertices = stroke.vertices.size() == n;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double from_end = std::min(w[k], total - w[k]);
+    const double taper = taper_length > 0.0 ? taper_rise(from_end / taper_length) : 1.0;
+    const double dist = has_vertices ? stroke.vertices[k].dist : 0.0;
+    const double depth =
+        rule.depth > 0.0 ? 1.0 - rule.depth_cue * std::clamp(dist / rule.depth, 0.0, 1.0) : 1.0;
+    w[k] = taper * depth;
+  }
+}
+
+namespace {
+
+// The point a stroke's end runs on to: `length` beyond `end` along the direction from the point
+// about `reach` before it.
+template <typename It>
+StrokePoint run_on(It end, It stop, double length, double reach) {
+  const StrokePoint tip = *end;
+  StrokePoint from = tip;
+  double walked = 0.0;
+  for (It it = std::next(end); it != stop && walked < reach; ++it) {
+    walked += std::hypot(it->x - from.x, it->y - from.y);
+    from = *it;
+  }
+  const double dx = tip.x - from.x, dy = tip.y - from.y, len = std::hypot(dx, dy);
+  if (len <= 0.0) return tip;
+  return {tip.x + dx / len * length, tip.y + dy / len * length};
+}
+
+}  // namespace
+
+void extend_stroke(Stroke& stroke, double length, double reach) {
+  std::vector<StrokePoint>& pts = stroke.points;
+  if (pts.size() < 2 || !(length > 0.0)) return;
+  const StrokePoint before = run_on(pts.begin(), pts.end(), length, reach);
+  const StrokePoint after = run_on(pts.rbegin(), pts.rend(), length, reach);
+  pts.insert(pts.begin(), before);
+  pts.push_back(after);
+  if (!stroke.vertices.empty()) {
+    stroke.vertices.insert(stroke.vertices.begin(), stroke.vertices.front());
+    stroke.vertices.push_back(stroke.vertices.back());
+  }
+}
+
+}  // namespace tsk

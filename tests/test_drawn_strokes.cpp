@@ -1,0 +1,229 @@
+// Drawn strokes (issue 15): joining, generalisation after joining, smoothing within a tolerance,
+// weights, and the exact mode's statistics left alone.
+#include <cmath>
+
+#include "catch_compat.h"
+#include "drawn_strokes.h"
+#include "stroke_joining.h"
+#include "stroke_smoothing.h"
+#include "stroke_weights.h"
+#include "support/analytic_terrain.h"
+#include "test_support.h"
+
+using namespace tsk;
+
+namespace {
+
+Stroke line_stroke(std::vector<StrokePoint> points, StrokeClass cls = StrokeClass::factual) {
+  Stroke s;
+  s.cls = cls;
+  s.points = std::move(points);
+  s.cells = static_cast<int>(s.points.size());
+  s.length = polyline_length(s.points);
+  return s;
+}
+
+// A straight stroke from (x0, y) to (x1, y), a point per unit.
+Stroke row_stroke(int x0, int x1, double y) {
+  std::vector<StrokePoint> pts;
+  for (int x = x0; x <= x1; ++x) pts.push_back({static_cast<double>(x), y});
+  return line_stroke(pts);
+}
+
+// Total absolute turning angle over total length (radians per unit).
+double turning_per_length(const std::vector<StrokePoint>& p) {
+  double turn = 0.0;
+  for (std::size_t k = 1; k + 1 < p.size(); ++k) {
+    const double a = std::atan2(p[k].y - p[k - 1].y, p[k].x - p[k - 1].x);
+    const double b = std::atan2(p[k + 1].y - p[k].y, p[k + 1].x - p[k].x);
+    turn += std::fabs(std::remainder(b - a, 2.0 * 3.14159265358979323846));
+  }
+  return turn / polyline_length(p);
+}
+
+const JoinRule kRule{2.5, 35.0};
+
+}  // namespace
+
+TEST_CASE("a ridge broken by one-cell gaps is joined into one stroke", "[drawn][joining]") {
+  // Four pieces along y = 0 with one missing cell between them, given out of order and one
+  // reversed, as chains of a scan may come.
+  std::vector<Stroke> pieces = {row_stroke(6, 10, 0), row_stroke(0, 4, 0), row_stroke(18, 22, 0),
+                                row_stroke(12, 16, 0)};
+  std::reverse(pieces[2].points.begin(), pieces[2].points.end());
+  const std::vector<Stroke> joined = join_strokes(pieces, kRule);
+  REQUIRE(joined.size() == 1);
+  CHECK(joined[0].cells == 20);
+  REQUIRE(joined[0].points.size() == 20);
+  // Its points run monotonically from one end to the other.
+  const double step = joined[0].points[1].x - joined[0].points[0].x;
+  for (std::size_t k = 1; k < joined[0].points.size(); ++k)
+    CHECK((joined[0].points[k].x - joined[0].points[k - 1].x) * step > 0.0);
+  CHECK(joined[0].length == Approx(4 * 4.0 + 3 * 2.0));
+}
+
+TEST_CASE("two short parallel strokes apart stay two", "[drawn][joining]") {
+  CHECK(join_strokes({row_stroke(0, 3, 0), row_stroke(0, 3, 10)}, kRule).size() == 2);
+  // Side by side one cell apart they are still not one line: each end leads nowhere near the
+  // other's start.
+  CHECK(join_strokes({row_stroke(0, 3, 0), row_stroke(0, 3, 1)}, kRule).size() == 2);
+}
+
+TEST_CASE("a T-junction is not joined across", "[drawn][joining]") {
+  // A stroke ending at the middle of another.
+  const Stroke bar = row_stroke(0, 10, 0);
+  Stroke stem = line_stroke({{5, 1}, {5, 2}, {5, 3}, {5, 4}, {5, 5}});
+  CHECK(join_strokes({bar, stem}, kRule).size() == 2);
+  // A stroke turning off at a right angle just past another's end.
+  stem = line_stroke({{11, 1}, {11, 2}, {11, 3}, {11, 4}});
+  CHECK(join_strokes({bar, stem}, kRule).size() == 2);
+  // Straight on past its end, it joins.
+  CHECK(join_strokes({bar, row_stroke(12, 15, 0)}, kRule).size() == 1);
+}
+
+TEST_CASE("an end joins at most one other end and no loop closes", "[drawn][joining]") {
+  // Three strokes whose ends meet at one spot: two of them join, the third stays apart.
+  const std::vector<Stroke> three = {row_stroke(0, 5, 0), row_stroke(7, 12, 0),
+                                     line_stroke({{6, 1}, {6, 2}, {6, 3}, {6, 4}})};
+  CHECK(join_strokes(three, kRule).size() == 2);
+  // Four arcs of a circle with small gaps between them: every gap may join, but the last join
+  // would close a loop, so they become one open stroke of all their points.
+  std::vector<Stroke> arcs;
+  for (int q = 0; q < 4; ++q) {
+    std::vector<StrokePoint> pts;
+    for (int k = 0; k <= 20; ++k) {
+      const double a = (q * 90.0 + 2.0 + k * 4.3) * 3.14159265358979323846 / 180.0;
+      pts.push_back({20.0 * std::cos(a), 20.0 * std::sin(a)});
+    }
+    arcs.push_back(line_stroke(pts));
+  }
+  const std::vector<Stroke> ring = join_strokes(arcs, kRule);
+  REQUIRE(ring.size() == 1);
+  CHECK(ring[0].points.size() == 84);
+}
+
+TEST_CASE("drawn strokes never join across classes and are generalised after joining",
+          "[drawn][joining]") {
+  const HeightGrid dem = test::random_terrain(90, 110, 7);
+  SilhouetteParams params;
+  params.view.azimuth_deg = 90;
+  params.strokes.mode = StrokeMode::drawn;
+  const SilhouetteResult r = test::run_on_dem(dem, params);
+  REQUIRE(!r.strokes.empty());
+  const std::uint8_t factual_mark = cell::occluding, formulated_mark = cell::thinned;
+  std::size_t cells = 0, factual = 0;
+  for (const Stroke& s : r.strokes) {
+    const std::uint8_t mark = s.cls == StrokeClass::factual ? factual_mark : formulated_mark;
+    for (const ChainCell& c : s.chain) REQUIRE((r.flags(c.p, c.i) & mark));
+    CHECK(s.cells >= params.chain.min_cells);
+    CHECK(s.cells == static_cast<int>(s.chain.size()));
+    REQUIRE(s.weights.size() == s.points.size());
+    CHECK(s.vertices.empty());
+    cells += static_cast<std::size_t>(s.cells);
+    factual += s.cls == StrokeClass::factual;
+  }
+  // The statistics describe the strokes written.
+  CHECK(r.stats.generalised == cells);
+  CHECK(r.stats.factual_strokes == factual);
+  CHECK(r.stats.formulated_strokes == r.strokes.size() - factual);
+}
+
+TEST_CASE("drawn strokes leave every stage statistic up to the t-set as the exact ones",
+          "[drawn]") {
+  const HeightGrid dem = test::random_terrain(120, 100, 11, 0.01);
+  for (double azimuth : {90.0, 200.0}) {
+    SilhouetteParams params;
+    params.view.azimuth_deg = azimuth;
+    const SilhouetteResult exact = test::run_on_dem(dem, params);
+    params.strokes.mode = StrokeMode::drawn;
+    params.geometry = Geometry::oblique;
+    const SilhouetteResult drawn = test::run_on_dem(dem, params);
+    CHECK(drawn.stats.valid == exact.stats.valid);
+    CHECK(drawn.stats.hidden == exact.stats.hidden);
+    CHECK(drawn.stats.occluding == exact.stats.occluding);
+    CHECK(drawn.stats.candidate == exact.stats.candidate);
+    CHECK(drawn.stats.filtered == exact.stats.filtered);
+    CHECK(drawn.stats.thinned == exact.stats.thinned);
+    // Joining keeps short pieces that connect: never fewer cells kept than the exact strokes.
+    CHECK(drawn.stats.generalised >= exact.stats.generalised);
+  }
+}
+
+TEST_CASE("smoothing rounds stair steps without moving a point beyond the tolerance",
+          "[drawn][smoothing]") {
+  std::vector<StrokePoint> zigzag;
+  for (int k = 0; k <= 40; ++k) zigzag.push_back({static_cast<double>(k), (k / 2) % 2 ? 1.0 : 0.0});
+  Stroke s = line_stroke(zigzag);
+  for (int k = 0; k <= 40; ++k) s.vertices.push_back({10.0 * k, 100.0 + k});
+  smooth_stroke(s, 1.5, 0.75);
+  for (std::size_t k = 0; k < zigzag.size(); ++k) {
+    CHECK(std::hypot(s.points[k].x - zigzag[k].x, s.points[k].y - zigzag[k].y) <= 0.75 + 1e-12);
+  }
+  CHECK(s.points.front().x == zigzag.front().x);
+  CHECK(s.points.back().x == zigzag.back().x);
+  CHECK(turning_per_length(s.points) * 3.0 < turning_per_length(zigzag));
+  // A straight line stays put, its vertices' values too (a linear ramp is its own mean).
+  Stroke straight = row_stroke(0, 20, 5.0);
+  for (int k = 0; k <= 20; ++k) straight.vertices.push_back({2.0 * k, 7.0});
+  smooth_stroke(straight, 2.0, 1.0);
+  for (int k = 0; k <= 20; ++k) {
+    CHECK(straight.points[k].y == Approx(5.0));
+    CHECK(straight.vertices[k].z == Approx(7.0));
+  }
+  CHECK(straight.points[10].x == Approx(10.0));
+  CHECK(straight.vertices[10].dist == Approx(20.0));
+}
+
+TEST_CASE("weights taper both ends and fall off towards the back", "[drawn][weights]") {
+  Stroke s = row_stroke(0, 40, 0.0);
+  for (int k = 0; k <= 40; ++k) s.vertices.push_back({0.0, 0.0});
+  weigh_stroke(s, {0.25, 0.5, 100.0});
+  REQUIRE(s.weights.size() == 41);
+  CHECK(s.weights.front() == Approx(kTipWeight));
+  CHECK(s.weights.back() == Approx(kTipWeight));
+  CHECK(s.weights[20] == Approx(1.0));
+  CHECK(s.weights[10] == Approx(1.0));  // a quarter of the length in
+  for (int k = 1; k <= 10; ++k) CHECK(s.weights[k] > s.weights[k - 1]);
+  for (int k = 0; k <= 20; ++k) CHECK(s.weights[k] == Approx(s.weights[40 - k]));
+  // The same stroke at the back of the view weighs half as much, at the middle distance 3/4.
+  for (StrokeVertex& v : s.vertices) v.dist = 100.0;
+  weigh_stroke(s, {0.25, 0.5, 100.0});
+  CHECK(s.weights[20] == Approx(0.5));
+  for (StrokeVertex& v : s.vertices) v.dist = 50.0;
+  weigh_stroke(s, {0.25, 0.5, 100.0});
+  CHECK(s.weights[20] == Approx(0.75));
+  CHECK(s.weights[0] == Approx(0.75 * kTipWeight));
+}
+
+TEST_CASE("over-extension runs the ends on along their direction", "[drawn][weights]") {
+  Stroke s = line_stroke({{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}});
+  s.vertices.assign(5, {3.0, 4.0});
+  extend_stroke(s, 0.5, 1.0);
+  REQUIRE(s.points.size() == 7);
+  CHECK(s.points.front().x == Approx(-0.5));
+  CHECK(s.points.front().y == Approx(0.0));
+  CHECK(s.points.back().x == Approx(2.0));
+  CHECK(s.points.back().y == Approx(2.5));
+  CHECK(s.vertices.size() == 7);
+}
+
+TEST_CASE("drawn strokes stay within the tolerance of the exact chain's cells", "[drawn]") {
+  const HeightGrid dem = test::random_terrain(100, 100, 5);
+  SilhouetteParams params;
+  params.view.azimuth_deg = 270;
+  params.strokes.mode = StrokeMode::drawn;
+  params.strokes.join_gap_cells = 0.0;  // pieces as the chains are, to compare point by point
+  const SilhouetteResult r = test::run_on_dem(dem, params);
+  const OrientedFrame frame = make_frame(dem.rows(), dem.cols(), 10, 10, 270);
+  REQUIRE(!r.strokes.empty());
+  for (const Stroke& s : r.strokes) {
+    REQUIRE(s.points.size() == s.chain.size());
+    for (std::size_t k = 0; k < s.points.size(); ++k) {
+      // Identity georeferencing: map coordinates are pixel positions.
+      const PixelPoint cell = frame.to_pixel(s.chain[k].p, s.chain[k].i);
+      const double cx = cell.col, cy = cell.row;
+      // Half a cell of sub-cell placement along the profile, then the smoothing's tolerance.
+      CHECK(std::hypot(s.points[k].x - cx, s.points[k].y - cy) <= 0.5 + 0.75 + 1e-9);
+    }
+  }
+}
