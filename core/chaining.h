@@ -57,6 +57,10 @@ class ChainLinker {
   // The id of the oldest chain still open (the next id when none is): every chain with a smaller
   // id is complete.
   std::size_t oldest_open() const { return open_.empty() ? started_ : open_.front().chain.id; }
+  // The oldest chain still open, when one is.
+  const ChainRef* oldest_open_chain() const {
+    return open_.empty() ? nullptr : &open_.front().chain;
+  }
 
  private:
   struct Open {

@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
-#include "parallel.h"
 #include "plan_oblique.h"
-#include "stroke_joining.h"
 #include "stroke_smoothing.h"
 #include "stroke_weights.h"
 
@@ -22,7 +21,10 @@ DrawingSetup drawing_setup(const OrientedFrame& frame, const GeoTransform& geotr
   geotransform.apply(frame.to_pixel(0.0, 0.0), origin.x, origin.y);
   geotransform.apply(frame.to_pixel(0.0, 1.0), one_cell.x, one_cell.y);
   setup.cell_step = {one_cell.x - origin.x, one_cell.y - origin.y};
-  setup.cell = std::hypot(setup.cell_step.x, setup.cell_step.y);
+  setup.cell = distance({0.0, 0.0}, setup.cell_step);
+  StrokePoint next_profile;
+  geotransform.apply(frame.to_pixel(1.0, 0.0), next_profile.x, next_profile.y);
+  setup.across = distance(origin, next_profile);
   setup.cells_per_metre = PlanObliqueShift(params.view, frame.d, z_ref)(0.0, z_ref + 1.0);
   setup.z_ref = z_ref;
   return setup;
@@ -42,7 +44,8 @@ void shift_plan_oblique(Stroke& stroke, const DrawingSetup& setup) {
 // Smooths, places, runs on and weighs one joined stroke.
 void finish_stroke(Stroke& stroke, const DrawingSetup& setup) {
   const DrawnParams& p = setup.drawn;
-  smooth_stroke(stroke, p.smooth_cells * setup.cell, p.tolerance_cells * setup.cell);
+  smooth_stroke(stroke, p.smooth_cells * setup.cell, p.tolerance_cells * setup.cell,
+                setup.geometry == Geometry::oblique);
   stroke.length = polyline_length(stroke.points);  // the drawn line's ground length
   if (setup.geometry == Geometry::oblique) shift_plan_oblique(stroke, setup);
   extend_stroke(stroke, p.extend_cells * setup.cell, 3.0 * setup.cell);
@@ -52,19 +55,55 @@ void finish_stroke(Stroke& stroke, const DrawingSetup& setup) {
 
 }  // namespace
 
-std::vector<Stroke> draw_strokes(std::vector<Stroke> strokes, const DrawingSetup& setup,
-                                 unsigned threads) {
-  const DrawnParams& p = setup.drawn;
-  if (p.join_gap_cells > 0.0)
-    strokes = join_strokes(std::move(strokes), {p.join_gap_cells * setup.cell, p.join_angle_deg});
-  // The generalisation comes after joining: only pieces still short and alone are dropped.
-  strokes.erase(std::remove_if(strokes.begin(), strokes.end(),
-                               [&](const Stroke& s) { return s.cells < setup.min_cells; }),
-                strokes.end());
-  parallel_for(strokes.size(), threads, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t k = lo; k < hi; ++k) finish_stroke(strokes[k], setup);
-  });
-  return strokes;
+StrokeDrawer::StrokeDrawer(const DrawingSetup& setup)
+    : setup_(setup),
+      rule_{setup.drawn.join_gap_cells * setup.cell, setup.drawn.join_angle_deg},
+      groups_(rule_) {}
+
+void StrokeDrawer::add(Stroke&& piece) {
+  if (rule_.gap > 0.0) groups_.add(piece);
+  pending_.push_back(std::move(piece));
+  drawn_.push_back(false);
+}
+
+std::vector<std::vector<Stroke>> StrokeDrawer::take_settled(double frontier) {
+  // Groups are taken in the order of their first pieces, up to the first one still open to
+  // pieces to come: its ends must lie farther than the gap from the frontier.
+  const double settled_before = frontier - rule_.gap / std::max(setup_.across, 1e-300) - 1.0;
+  std::vector<std::vector<Stroke>> groups;
+  while (!pending_.empty()) {
+    const std::size_t first = first_pending_;
+    std::vector<std::size_t> members{first};
+    if (rule_.gap > 0.0) {
+      if (!(static_cast<double>(groups_.reach(first)) < settled_before)) break;
+      members = groups_.take_group(first);
+    } else if (!(static_cast<double>(pending_.front().chain.back().p) < settled_before)) {
+      break;
+    }
+    std::vector<Stroke>& group = groups.emplace_back();
+    for (std::size_t id : members) {
+      group.push_back(std::move(pending_[id - first_pending_]));
+      drawn_[id - first_pending_] = true;
+    }
+    while (!drawn_.empty() && drawn_.front()) {
+      pending_.pop_front();
+      drawn_.pop_front();
+      ++first_pending_;
+    }
+  }
+  return groups;
+}
+
+void StrokeDrawer::draw(std::vector<std::vector<Stroke>>& groups, const Out& out) const {
+  for (std::vector<Stroke>& group : groups) {
+    if (rule_.gap > 0.0) group = join_strokes(std::move(group), rule_);
+    for (Stroke& stroke : group) {
+      // The generalisation comes after joining: only pieces still short and alone are dropped.
+      if (stroke.cells < setup_.min_cells) continue;
+      finish_stroke(stroke, setup_);
+      out(std::move(stroke));
+    }
+  }
 }
 
 }  // namespace tsk

@@ -4,11 +4,14 @@
 // and weighted for taper and depth (docs/DRAWN_STROKES.md).
 #pragma once
 
+#include <deque>
+#include <functional>
 #include <vector>
 
 #include "frame.h"
 #include "geotransform.h"
 #include "params.h"
+#include "stroke_joining.h"
 #include "strokes.h"
 
 namespace tsk {
@@ -17,8 +20,9 @@ namespace tsk {
 struct DrawingSetup {
   DrawnParams drawn;
   int min_cells = 3;
-  double cell = 1.0;   // the view's spacing along profiles, map units
-  double depth = 1.0;  // the view's depth, ground units (as StrokeVertex::dist)
+  double cell = 1.0;    // the view's spacing along profiles, map units
+  double across = 1.0;  // the spacing of profiles, map units
+  double depth = 1.0;   // the view's depth, ground units (as StrokeVertex::dist)
   Geometry geometry = Geometry::map;
   // Plan-oblique geometry: the map offset of one cell along the line of sight, and what shifts a
   // point by how many cells.
@@ -30,10 +34,33 @@ struct DrawingSetup {
 DrawingSetup drawing_setup(const OrientedFrame& frame, const GeoTransform& geotransform,
                            const SilhouetteParams& params, double z_ref);
 
-// Draws the strokes of one class, built from every chain (none dropped yet) with their points in
-// map geometry at sub-cell places and their vertices kept. Returns them in the order of their
-// first pieces, each with its weights and without its vertices.
-std::vector<Stroke> draw_strokes(std::vector<Stroke> strokes, const DrawingSetup& setup,
-                                 unsigned threads);
+// Draws the strokes of one class as their chains complete, so that drawing and writing go on
+// alongside the stages. Pieces (the strokes of complete chains, every one, with their points in
+// map geometry at sub-cell places and their vertices kept) come in the order of SPEC 1.7's scan;
+// a group of pieces that may join is drawn once no piece still to come can join it. Drawn strokes
+// come out in the order of their first pieces, each with its weights and without its vertices,
+// whatever the moments draw_settled is called at.
+class StrokeDrawer {
+ public:
+  using Out = std::function<void(Stroke&& stroke)>;
+  explicit StrokeDrawer(const DrawingSetup& setup);
+
+  void add(Stroke&& piece);
+  // Takes the groups whose every end lies more than the join gap before profile `frontier`, the
+  // first profile a piece still to come may reach, up to the first group that does not; after the
+  // last profile, with an infinite frontier, every group left.
+  std::vector<std::vector<Stroke>> take_settled(double frontier);
+  // Draws groups taken, in order, and hands the strokes the generalisation keeps to `out`. May
+  // run on another thread than the other calls.
+  void draw(std::vector<std::vector<Stroke>>& groups, const Out& out) const;
+
+ private:
+  DrawingSetup setup_;
+  JoinRule rule_;
+  StrokeGrouper groups_;
+  std::deque<Stroke> pending_;  // pieces from id first_pending_ on; those drawn left empty
+  std::deque<bool> drawn_;
+  std::size_t first_pending_ = 0;
+};
 
 }  // namespace tsk

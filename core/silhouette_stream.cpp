@@ -1,6 +1,12 @@
 // SilhouetteStream: the method strip by strip, each profile's stages while its cells are in
 // cache, the chains linked in the order of the scan as the next profiles are classified.
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <deque>
+#include <future>
+#include <limits>
+#include <memory>
 #include <mutex>
 #include <utility>
 
@@ -33,8 +39,9 @@ struct SilhouetteStream::State {
     StrokeClass cls;
     std::vector<StrokeBuilder> open;
     std::vector<std::pair<std::size_t, Stroke>> waiting;  // a heap, the oldest chain on top
-    std::vector<Stroke> handed_on;     // without a sink, or drawn strokes still to be drawn
-    std::size_t count = 0, cells = 0;  // of the strokes handed on
+    std::vector<Stroke> handed_on;                        // without a sink
+    std::unique_ptr<StrokeDrawer> drawer;                 // drawn strokes
+    std::size_t count = 0, cells = 0;                     // of the strokes handed on
   };
 
   OrientedFrame frame;
@@ -44,9 +51,17 @@ struct SilhouetteStream::State {
   ProgressFn progress;
   StrokeSink sink;
   std::size_t next_profile = 0;
+  std::size_t next_linked = 0;  // the next profile to link
   Strokes factual{true, 0}, formulated;
   CellFlags flags;  // the current strip's classification, its memory reused by the next strip
   SilhouetteResult result;
+  // Drawn strokes are joined, smoothed, weighed and handed on on a thread of their own, while
+  // the stages go on; declared last, it is stopped first.
+  using Settled = std::vector<std::pair<Strokes*, std::vector<std::vector<Stroke>>>>;
+  Settled settled;  // taken from the drawers, not yet drawn
+  std::atomic<bool> abandoned{false};
+  std::deque<std::future<void>> drawings;
+  std::unique_ptr<Worker> drawing;
 
   State(const OrientedFrame& f, const GeoTransform& gt, const SilhouetteParams& p, double z,
         const ProgressFn& pr, StrokeSink sk)
@@ -56,7 +71,16 @@ struct SilhouetteStream::State {
         z_ref(z),
         progress(pr),
         sink(std::move(sk)),
-        formulated(false, p.chain.window) {}
+        formulated(false, p.chain.window) {
+    if (p.strokes.drawn()) {
+      const DrawingSetup setup = drawing_setup(f, gt, p, z);
+      factual.drawer = std::make_unique<StrokeDrawer>(setup);
+      formulated.drawer = std::make_unique<StrokeDrawer>(setup);
+      if (resolve_threads(p.threads) > 1) drawing = std::make_unique<Worker>();
+    }
+  }
+  // A run that ends early (cancelled, failed) leaves what is still to draw undrawn.
+  ~State() { abandoned = true; }
 
   // Checks that a strip of `count` profiles from `first` follows the last one and matches the
   // frame; returns how many neighbour profiles it holds before its first (0 or 1).
@@ -82,7 +106,14 @@ struct SilhouetteStream::State {
     for (const ProfileChainCells& c : batch) {
       link(factual, c.factual, c.factual_cells);
       link(formulated, c.formulated, c.formulated_cells);
+      ++next_linked;
+      // Profile by profile, so that the two classes interleave alike whatever the batches.
+      if (params.strokes.drawn()) {
+        take_settled(factual);
+        take_settled(formulated);
+      }
     }
+    draw_settled();
   }
 
   // Adds the cells of a profile's candidates to the strokes of their chains, finishes the closed
@@ -96,6 +127,44 @@ struct SilhouetteStream::State {
     for (std::size_t k = 0; k < joined.size(); ++k) open[joined[k].slot].add(cells[k], drawn);
     close(strokes, strokes.linker.closed());
     hand_on(strokes, strokes.linker.oldest_open());
+  }
+
+  // Takes the groups of drawn strokes that no chain still open or to come can join (after the
+  // last profile, all of them) into `settled`, to be drawn in that order.
+  void take_settled(Strokes& strokes, bool last = false) {
+    const ChainRef* oldest = strokes.linker.oldest_open_chain();
+    const double frontier = last     ? std::numeric_limits<double>::infinity()
+                            : oldest ? strokes.open[oldest->slot].first_profile()
+                                     : static_cast<double>(next_linked);
+    std::vector<std::vector<Stroke>> groups = strokes.drawer->take_settled(frontier);
+    if (!groups.empty()) settled.emplace_back(&strokes, std::move(groups));
+  }
+
+  // Draws the groups taken so far, on the drawing thread if there is one, and hands them on.
+  void draw_settled() {
+    if (settled.empty()) return;
+    auto taken = std::make_shared<Settled>(std::move(settled));
+    settled.clear();
+    auto draw = [this, taken] {
+      for (auto& [strokes, groups] : *taken) {
+        if (abandoned) return;
+        strokes->drawer->draw(groups,
+                              [&](Stroke&& stroke) { deliver(*strokes, std::move(stroke)); });
+      }
+    };
+    if (!drawing) return draw();
+    drawings.push_back(drawing->run(draw));
+    // A failed drawing (a sink that could not write) ends the run as soon as it is seen.
+    while (!drawings.empty() &&
+           drawings.front().wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+      drawings.front().get();
+      drawings.pop_front();
+    }
+  }
+
+  // Waits for every drawing given to the drawing thread.
+  void finish_drawing() {
+    for (; !drawings.empty(); drawings.pop_front()) drawings.front().get();
   }
 
   // Keeps the strokes of closed chains long enough to draw (every one for drawn strokes, which are
@@ -112,16 +181,16 @@ struct SilhouetteStream::State {
     }
   }
 
-  // Hands on the waiting strokes of chains started before chain `id`, oldest first. Drawn
-  // strokes wait for the last chain: joining needs them all.
+  // Hands on the waiting strokes of chains started before chain `id`, oldest first: to the
+  // drawer for drawn strokes.
   void hand_on(Strokes& strokes, std::size_t id) {
     auto& waiting = strokes.waiting;
     while (!waiting.empty() && waiting.front().first < id) {
       std::pop_heap(waiting.begin(), waiting.end(), later_chain);
       Stroke stroke = std::move(waiting.back().second);
       waiting.pop_back();
-      if (params.strokes.drawn()) {
-        strokes.handed_on.push_back(std::move(stroke));
+      if (strokes.drawer) {
+        strokes.drawer->add(std::move(stroke));
       } else {
         deliver(strokes, std::move(stroke));
       }
@@ -136,15 +205,6 @@ struct SilhouetteStream::State {
     } else {
       strokes.handed_on.push_back(std::move(stroke));
     }
-  }
-
-  // Draws the strokes of a class once every chain is complete and hands them on.
-  void draw(Strokes& strokes) {
-    std::vector<Stroke> drawn = draw_strokes(std::move(strokes.handed_on),
-                                             drawing_setup(frame, geotransform, params, z_ref),
-                                             resolve_threads(params.threads));
-    strokes.handed_on.clear();
-    for (Stroke& stroke : drawn) deliver(strokes, std::move(stroke));
   }
 
   static bool later_chain(const std::pair<std::size_t, Stroke>& a,
@@ -229,8 +289,10 @@ SilhouetteResult SilhouetteStream::finish() {
   for (State::Strokes* strokes : {&st.factual, &st.formulated}) {
     st.close(*strokes, strokes->linker.close_all());
     st.hand_on(*strokes, std::numeric_limits<std::size_t>::max());
-    if (st.params.strokes.drawn()) st.draw(*strokes);
+    if (strokes->drawer) st.take_settled(*strokes, true);
   }
+  st.draw_settled();
+  st.finish_drawing();
   SilhouetteResult& result = st.result;
   StageStats& stats = result.stats;
   stats.generalised = st.factual.cells + st.formulated.cells;

@@ -6,6 +6,8 @@
 #include <numeric>
 #include <utility>
 
+#include "stroke_smoothing.h"
+
 namespace tsk {
 namespace {
 
@@ -34,17 +36,17 @@ StrokeEnd stroke_end(const std::vector<StrokePoint>& pts, bool start, double rea
   double walked = 0.0;
   for (std::size_t k = 1; k < n && walked < reach; ++k) {
     const StrokePoint next = start ? pts[k] : pts[n - 1 - k];
-    walked += std::hypot(next.x - from.x, next.y - from.y);
+    walked += distance(next, from);
     from = next;
   }
-  const double len = std::hypot(at.x - from.x, at.y - from.y);
+  const double len = distance(at, from);
   if (len <= 0.0) return {at, 0.0, 0.0};
   return {at, (at.x - from.x) / len, (at.y - from.y) / len};
 }
 
 // Angle between two directions in degrees; 180 when either is missing.
 double angle_between(double ax, double ay, double bx, double by) {
-  const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
+  const double la = std::sqrt(ax * ax + ay * ay), lb = std::sqrt(bx * bx + by * by);
   if (la <= 0.0 || lb <= 0.0) return 180.0;
   const double c = std::clamp((ax * bx + ay * by) / (la * lb), -1.0, 1.0);
   return std::acos(c) * 180.0 / kPi;
@@ -53,7 +55,7 @@ double angle_between(double ax, double ay, double bx, double by) {
 // How badly end a leads on into end b (smaller is better), or a negative value when it does not.
 double join_cost(const StrokeEnd& a, const StrokeEnd& b, const JoinRule& rule) {
   const double gx = b.at.x - a.at.x, gy = b.at.y - a.at.y;
-  const double gap = std::hypot(gx, gy);
+  const double gap = std::sqrt(gx * gx + gy * gy);
   if (gap > rule.gap) return -1.0;
   const bool a_dir = a.dx != 0.0 || a.dy != 0.0, b_dir = b.dx != 0.0 || b.dy != 0.0;
   if (!a_dir && !b_dir) return -1.0;
@@ -73,48 +75,120 @@ struct EndPair {
   std::uint32_t a, b;
 };
 
-// Ends sorted into square buckets of the gap's size, to find an end's neighbours.
-class EndBuckets {
+// The first end of each bucket that has had one, by bucket key: an open-addressing table, as the
+// buckets are looked up several times for every stroke added.
+class BucketHeads {
  public:
-  EndBuckets(const std::vector<StrokeEnd>& ends, double size) : size_(size) {
-    keyed_.reserve(ends.size());
-    for (std::size_t e = 0; e < ends.size(); ++e)
-      keyed_.push_back(
-          {key(bucket(ends[e].at.x), bucket(ends[e].at.y)), static_cast<std::uint32_t>(e)});
-    std::sort(keyed_.begin(), keyed_.end());
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+  explicit BucketHeads(std::size_t expected) {
+    std::size_t capacity = 16;
+    while (capacity < 2 * expected) capacity *= 2;
+    slots_.assign(capacity, {kEmpty, kNone});
   }
-  // Calls f(end) for every end in the 3 x 3 buckets around p.
+  // The head of bucket `key`, made (with none) if it has none yet.
+  std::uint32_t& operator[](std::uint64_t key) {
+    if (2 * (used_ + 1) > slots_.size()) grow();
+    Slot& slot = slots_[find_slot(key)];
+    if (slot.key == kEmpty) slot.key = key, ++used_;
+    return slot.head;
+  }
+  // The head of bucket `key`, or kNone.
+  std::uint32_t head(std::uint64_t key) const {
+    const Slot& slot = slots_[find_slot(key)];
+    return slot.key == kEmpty ? kNone : slot.head;
+  }
+
+ private:
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  struct Slot {
+    std::uint64_t key;
+    std::uint32_t head;
+  };
+  std::size_t find_slot(std::uint64_t key) const {
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t k = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+    while (slots_[k].key != key && slots_[k].key != kEmpty) k = (k + 1) & mask;
+    return k;
+  }
+  void grow() {
+    std::vector<Slot> old(2 * slots_.size(), {kEmpty, kNone});
+    old.swap(slots_);
+    for (const Slot& slot : old)
+      if (slot.key != kEmpty) slots_[find_slot(slot.key)] = slot;
+  }
+  std::vector<Slot> slots_;
+  std::size_t used_ = 0;
+};
+
+// Ends in square buckets, to find the ends within a radius of a point; ends can come and go.
+// Each bucket lists its ends through `next_`, so that adding an end allocates nothing once its
+// bucket is known.
+class EndIndex {
+ public:
+  explicit EndIndex(double radius, std::size_t expected = 0)
+      : size_(std::max(2.0 * radius, 1e-9)), heads_(expected) {}
+  void insert(std::uint32_t end, StrokePoint at) {
+    if (next_.size() <= end) next_.resize(std::max<std::size_t>(end + 1, 2 * next_.size()), kNone);
+    std::uint32_t& head = heads_[key(at)];
+    next_[end] = head;
+    head = end;
+  }
+  void remove(std::uint32_t end, StrokePoint at) {
+    for (std::uint32_t* link = &heads_[key(at)]; *link != kNone; link = &next_[*link]) {
+      if (*link == end) {
+        *link = next_[end];
+        return;
+      }
+    }
+  }
+  // Calls f(end) for every end that may lie within `radius` of p: buckets are twice the radius
+  // wide, so those in the 2 x 2 buckets nearest p.
   template <typename F>
   void near(StrokePoint p, F&& f) const {
-    const std::int64_t bx = bucket(p.x), by = bucket(p.y);
-    for (std::int64_t dy = -1; dy <= 1; ++dy) {
-      for (std::int64_t dx = -1; dx <= 1; ++dx) {
-        const std::uint64_t k = key(bx + dx, by + dy);
-        auto it = std::lower_bound(keyed_.begin(), keyed_.end(), std::make_pair(k, 0u));
-        for (; it != keyed_.end() && it->first == k; ++it) f(it->second);
+    const double ux = p.x / size_, uy = p.y / size_;
+    const auto bx = static_cast<std::int64_t>(std::floor(ux));
+    const auto by = static_cast<std::int64_t>(std::floor(uy));
+    const std::int64_t sx = ux - static_cast<double>(bx) < 0.5 ? -1 : 1;
+    const std::int64_t sy = uy - static_cast<double>(by) < 0.5 ? -1 : 1;
+    for (std::int64_t cy : {by, by + sy}) {
+      for (std::int64_t cx : {bx, bx + sx}) {
+        for (std::uint32_t e = heads_.head(key(cx, cy)); e != kNone; e = next_[e]) f(e);
       }
     }
   }
 
  private:
+  static constexpr std::uint32_t kNone = BucketHeads::kNone;
   std::int64_t bucket(double v) const { return static_cast<std::int64_t>(std::floor(v / size_)); }
+  std::uint64_t key(StrokePoint at) const { return key(bucket(at.x), bucket(at.y)); }
   static std::uint64_t key(std::int64_t bx, std::int64_t by) {
     return (static_cast<std::uint64_t>(bx) << 32) ^ (static_cast<std::uint64_t>(by) & 0xffffffffu);
   }
   double size_;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed_;
+  BucketHeads heads_;
+  std::vector<std::uint32_t> next_;  // by end: the next end in its bucket
 };
 
-// Every pair of ends of different strokes that may join, best first.
+// Every pair of ends of different strokes that may join, best first. Most groups are a few
+// strokes, whose ends are simply tried against each other.
 std::vector<EndPair> candidate_pairs(const std::vector<StrokeEnd>& ends, const JoinRule& rule) {
   std::vector<EndPair> pairs;
-  const EndBuckets buckets(ends, std::max(rule.gap, 1e-9));
-  for (std::size_t a = 0; a < ends.size(); ++a) {
-    buckets.near(ends[a].at, [&](std::uint32_t b) {
-      if (b <= a || stroke_of(b) == stroke_of(a)) return;
-      const double cost = join_cost(ends[a], ends[b], rule);
-      if (cost >= 0.0) pairs.push_back({cost, static_cast<std::uint32_t>(a), b});
-    });
+  const auto try_pair = [&](std::size_t a, std::size_t b) {
+    if (b <= a || stroke_of(b) == stroke_of(a)) return;
+    const double cost = join_cost(ends[a], ends[b], rule);
+    if (cost >= 0.0)
+      pairs.push_back({cost, static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)});
+  };
+  constexpr std::size_t kFewEnds = 64;
+  if (ends.size() <= kFewEnds) {
+    for (std::size_t a = 0; a < ends.size(); ++a)
+      for (std::size_t b = a + 1; b < ends.size(); ++b) try_pair(a, b);
+  } else {
+    EndIndex index(rule.gap, ends.size());
+    for (std::size_t e = 0; e < ends.size(); ++e)
+      index.insert(static_cast<std::uint32_t>(e), ends[e].at);
+    for (std::size_t a = 0; a < ends.size(); ++a)
+      index.near(ends[a].at, [&](std::uint32_t b) { try_pair(a, b); });
   }
   std::sort(pairs.begin(), pairs.end(), [](const EndPair& x, const EndPair& y) {
     return x.cost != y.cost ? x.cost < y.cost : std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
@@ -182,23 +256,29 @@ void append_piece(Stroke& joined, Stroke& piece, bool reversed) {
     joined.max_depth_m = std::isfinite(joined.max_depth_m)
                              ? std::max(joined.max_depth_m, piece.max_depth_m)
                              : piece.max_depth_m;
-  joined.length += std::hypot(first.x - last.x, first.y - last.y) + piece.length;
+  joined.length += distance(first, last) + piece.length;
   joined.cells += piece.cells;
   append_in_order(joined.points, piece.points, reversed);
   append_in_order(joined.vertices, piece.vertices, reversed);
   append_in_order(joined.chain, piece.chain, reversed);
 }
 
-}  // namespace
-
-std::vector<Stroke> join_strokes(std::vector<Stroke> strokes, const JoinRule& rule) {
+// The ends of every stroke: stroke k's start at 2k, its last point at 2k + 1.
+std::vector<StrokeEnd> stroke_ends(const std::vector<Stroke>& strokes, const JoinRule& rule) {
   std::vector<StrokeEnd> ends;
   ends.reserve(2 * strokes.size());
   for (const Stroke& s : strokes) {
     ends.push_back(stroke_end(s.points, true, 2.0 * rule.gap));
     ends.push_back(stroke_end(s.points, false, 2.0 * rule.gap));
   }
-  const std::vector<std::size_t> partner = choose_partners(ends, rule);
+  return ends;
+}
+
+}  // namespace
+
+std::vector<Stroke> join_strokes(std::vector<Stroke> strokes, const JoinRule& rule) {
+  if (strokes.size() < 2) return strokes;
+  const std::vector<std::size_t> partner = choose_partners(stroke_ends(strokes, rule), rule);
   const auto joins = [&](std::size_t end) { return partner[end] != end; };
   std::vector<Stroke> joined;
   std::vector<std::uint8_t> taken(strokes.size(), 0);
@@ -219,6 +299,62 @@ std::vector<Stroke> join_strokes(std::vector<Stroke> strokes, const JoinRule& ru
     joined.push_back(std::move(whole));
   }
   return joined;
+}
+
+struct StrokeGrouper::Index : EndIndex {
+  using EndIndex::EndIndex;
+};
+
+StrokeGrouper::StrokeGrouper(const JoinRule& rule)
+    : rule_(rule), index_(std::make_unique<Index>(rule.gap, std::size_t{1} << 16)) {}
+
+StrokeGrouper::~StrokeGrouper() = default;
+
+std::size_t StrokeGrouper::add(const Stroke& stroke) {
+  const std::size_t id = parent_.size();
+  parent_.push_back(id);
+  reach_.push_back(stroke.chain.empty() ? 0 : stroke.chain.back().p);
+  next_.push_back(kNone);
+  tail_.push_back(id);
+  for (bool start : {true, false}) {
+    const StrokeEnd end = stroke_end(stroke.points, start, 2.0 * rule_.gap);
+    ends_.push_back({end.at, end.dx, end.dy});
+    const auto end_id = static_cast<std::uint32_t>(2 * id + (start ? 0 : 1));
+    index_->near(end.at, [&](std::uint32_t other) {
+      const EndRecord& o = ends_[other];
+      if (stroke_of(other) != id && join_cost(end, {o.at, o.dx, o.dy}, rule_) >= 0.0)
+        unite(id, stroke_of(other));
+    });
+    index_->insert(end_id, end.at);
+  }
+  return id;
+}
+
+void StrokeGrouper::unite(std::size_t a, std::size_t b) {
+  a = group_of(a), b = group_of(b);
+  if (a == b) return;
+  if (b < a) std::swap(a, b);
+  // The group's root is its first stroke; its members stay listed from there.
+  parent_[b] = a;
+  reach_[a] = std::max(reach_[a], reach_[b]);
+  next_[tail_[a]] = b;
+  tail_[a] = tail_[b];
+}
+
+std::size_t StrokeGrouper::group_of(std::size_t id) {
+  while (parent_[id] != id) id = parent_[id] = parent_[parent_[id]];
+  return id;
+}
+
+std::vector<std::size_t> StrokeGrouper::take_group(std::size_t root) {
+  std::vector<std::size_t> members;
+  for (std::size_t m = root; m != kNone; m = next_[m]) members.push_back(m);
+  if (members.size() > 1) std::sort(members.begin(), members.end());
+  for (std::size_t m : members) {
+    for (std::size_t e : {2 * m, 2 * m + 1})
+      index_->remove(static_cast<std::uint32_t>(e), ends_[e].at);
+  }
+  return members;
 }
 
 }  // namespace tsk

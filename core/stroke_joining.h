@@ -3,6 +3,8 @@
 // (docs/DRAWN_STROKES.md).
 #pragma once
 
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "strokes.h"
@@ -23,5 +25,42 @@ struct JoinRule {
 // its attributes are the pieces' means weighted by their cells, its length theirs plus the gaps.
 // Strokes come out in the order of their first piece in `strokes`.
 std::vector<Stroke> join_strokes(std::vector<Stroke> strokes, const JoinRule& rule);
+
+// Strokes of one class sorted, as they come, into the groups that joining may link, directly or
+// through others. Joining one group never depends on another, so a group can be joined once no
+// stroke still to come can join it (join_strokes on its members gives what it gives them among
+// all the strokes).
+class StrokeGrouper {
+ public:
+  explicit StrokeGrouper(const JoinRule& rule);
+  ~StrokeGrouper();
+  StrokeGrouper(const StrokeGrouper&) = delete;
+  StrokeGrouper& operator=(const StrokeGrouper&) = delete;
+
+  // Adds a stroke (its chain in profile order) to the groups of the strokes not yet taken that
+  // it may join. Returns its id: ids count up from 0 in the order strokes are added.
+  std::size_t add(const Stroke& stroke);
+  // A stroke's group, named by its first stroke.
+  std::size_t group_of(std::size_t id);
+  // The last profile any stroke of group `root` reaches.
+  std::int32_t reach(std::size_t root) const { return reach_[root]; }
+  // The ids of group `root`'s strokes in order; they join no stroke added later.
+  std::vector<std::size_t> take_group(std::size_t root);
+
+ private:
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  struct EndRecord {
+    StrokePoint at;
+    double dx, dy;
+  };
+  struct Index;
+  void unite(std::size_t a, std::size_t b);
+
+  JoinRule rule_;
+  std::unique_ptr<Index> index_;
+  std::vector<EndRecord> ends_;  // stroke k's start at 2k, its last point at 2k + 1
+  std::vector<std::size_t> parent_, next_, tail_;
+  std::vector<std::int32_t> reach_;
+};
 
 }  // namespace tsk

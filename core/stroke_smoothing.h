@@ -1,17 +1,23 @@
 // Drawn strokes, step 2: smoothing along the stroke, within a tolerance of its exact places.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "strokes.h"
 
 namespace tsk {
 
-// Smooths a stroke's points (and its vertices' distances and heights, which plan-oblique geometry
-// and depth cueing read) with a Gaussian of `sigma` map units along its arc length; the end
-// points stay. A point never moves farther than `tolerance` from where it was: smoothing rounds
-// the cell grid's stair steps but does not invent terrain.
-void smooth_stroke(Stroke& stroke, double sigma, double tolerance);
+// Smooths a stroke's points with a Gaussian of `sigma` map units along it, taken over its points
+// at their mean spacing; the end points stay. A point never moves farther than `tolerance` from
+// where it was: smoothing rounds the cell grid's stair steps but does not invent terrain.
+// heights: smooth its vertices' heights alike, for plan-oblique geometry to place the points by.
+void smooth_stroke(Stroke& stroke, double sigma, double tolerance, bool heights = false);
+
+inline double distance(StrokePoint a, StrokePoint b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return std::sqrt(dx * dx + dy * dy);
+}
 
 // The length of a polyline.
 double polyline_length(const std::vector<StrokePoint>& points);

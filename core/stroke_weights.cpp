@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "stroke_smoothing.h"
+
 namespace tsk {
 namespace {
 
@@ -23,8 +25,7 @@ void weigh_stroke(Stroke& stroke, const WeightRule& rule) {
   // First the arc length at each point (in w), then the weight.
   w[0] = 0.0;
   for (std::size_t k = 1; k < n; ++k) {
-    total += std::hypot(stroke.points[k].x - stroke.points[k - 1].x,
-                        stroke.points[k].y - stroke.points[k - 1].y);
+    total += distance(stroke.points[k - 1], stroke.points[k]);
     w[k] = total;
   }
   const double taper_length = rule.taper * total;
@@ -49,10 +50,10 @@ StrokePoint run_on(It end, It stop, double length, double reach) {
   StrokePoint from = tip;
   double walked = 0.0;
   for (It it = std::next(end); it != stop && walked < reach; ++it) {
-    walked += std::hypot(it->x - from.x, it->y - from.y);
+    walked += distance(from, *it);
     from = *it;
   }
-  const double dx = tip.x - from.x, dy = tip.y - from.y, len = std::hypot(dx, dy);
+  const double dx = tip.x - from.x, dy = tip.y - from.y, len = distance(from, tip);
   if (len <= 0.0) return tip;
   return {tip.x + dx / len * length, tip.y + dy / len * length};
 }

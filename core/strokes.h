@@ -111,6 +111,8 @@ class StrokeBuilder {
   // keep_vertices: record the cell's distance and height for drawing (drawn strokes).
   void add(const StrokeCell& c, bool keep_vertices = false);
   int cells() const { return static_cast<int>(chain_.size()); }
+  // The profile of the first cell (the builder must hold one).
+  std::int32_t first_profile() const { return chain_.front().p; }
   // The stroke so far with its attributes, its vectors sized to fit.
   Stroke stroke(StrokeClass cls) const;
   // Empties the builder for the next chain, keeping its storage.

@@ -118,8 +118,13 @@ void GpkgLineAppender::add(const std::vector<StrokePoint>& points, const std::ve
   append(blob_, static_cast<std::uint32_t>(points.size()));
   static_assert(sizeof(StrokePoint) == 2 * sizeof(double), "points are x, y pairs");
   if (measured) {
-    for (std::size_t k = 0; k < points.size(); ++k)
-      for (double v : {points[k].x, points[k].y, m[k]}) append(blob_, v);
+    std::size_t at = blob_.size();
+    blob_.resize(at + points.size() * 3 * sizeof(double));
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const double xym[3] = {points[k].x, points[k].y, m[k]};
+      std::memcpy(blob_.data() + at, xym, sizeof xym);
+      at += sizeof xym;
+    }
   } else {
     const std::size_t at = blob_.size();
     blob_.resize(at + points.size() * sizeof(StrokePoint));

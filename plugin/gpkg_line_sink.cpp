@@ -38,9 +38,12 @@ bool GpkgLineSink::addFeature(QgsFeature& feature, QgsFeatureSink::Flags) {
     const auto* line = qgsgeometry_cast<const QgsLineString*>(geometry.constGet());
     if (!line) throw Error("a feature without a line");
     mPoints.resize(static_cast<std::size_t>(line->numPoints()));
-    for (int k = 0; k < line->numPoints(); ++k)
+    mMeasures.resize(line->isMeasure() ? mPoints.size() : 0);
+    for (int k = 0; k < line->numPoints(); ++k) {
       mPoints[static_cast<std::size_t>(k)] = {line->xAt(k), line->yAt(k)};
-    lines.add(mPoints);
+      if (line->isMeasure()) mMeasures[static_cast<std::size_t>(k)] = line->mAt(k);
+    }
+    lines.add(mPoints, mMeasures);
     return true;
   } catch (const Error& e) {
     mError = QString::fromStdString(e.what());
@@ -52,7 +55,7 @@ bool GpkgLineSink::addStroke(const Stroke& stroke) {
   try {
     io::GpkgLineAppender& lines = mFile->lines();
     set_stroke_attributes(lines, stroke);
-    lines.add(stroke.points);
+    lines.add(stroke.points, stroke.weights);
     return true;
   } catch (const Error& e) {
     mError = QString::fromStdString(e.what());

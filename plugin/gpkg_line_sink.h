@@ -38,6 +38,7 @@ class GpkgLineSink : public QgsFeatureSink {
   std::unique_ptr<io::GpkgFileAppender> mFile;
   std::vector<QByteArray> mTexts;  // text attributes of the feature being added
   std::vector<StrokePoint> mPoints;
+  std::vector<double> mMeasures;
   QString mError;
 };
 

@@ -118,7 +118,8 @@ QString destinationFile(const QString& target) {
 
 LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
                        const QString& key, QgsProcessingContext& context, const QgsFields& fields,
-                       const QgsCoordinateReferenceSystem& crs, QgsProcessingFeedback* feedback)
+                       const QgsCoordinateReferenceSystem& crs, QgsProcessingFeedback* feedback,
+                       bool measured)
     : mParameters(parameters),
       mKey(key),
       mFields(fields),
@@ -132,8 +133,8 @@ LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMa
   if (!file.path.isEmpty() && !file.addsLayer) mFilesBefore = filesNamedAfter(file.path);
   const bool gpkg = !file.addsLayer && target.endsWith(QLatin1String(".gpkg"), Qt::CaseInsensitive);
   mSink.reset(QgsProcessingParameters::parameterAsSink(
-      definition, parameters, fields, kLineString, crs, context, mDestination,
-      QgsFeatureSink::SinkFlags(), QVariantMap(), QStringList(),
+      definition, parameters, fields, measured ? kLineStringM : kLineString, crs, context,
+      mDestination, QgsFeatureSink::SinkFlags(), QVariantMap(), QStringList(),
       gpkg ? QStringList{QStringLiteral("SPATIAL_INDEX=NO")} : QStringList()));
   if (!mSink) throw QgsProcessingException(SinkErrors::invalidSinkError(parameters, key));
   const QVariantMap parts =

@@ -39,13 +39,15 @@ class LineOutput {
   Q_DECLARE_TR_FUNCTIONS(LineOutput)
 
  public:
-  // Line output `key` of `algorithm` with `fields`, in `crs`. Throws QgsProcessingException with
-  // QGIS's message when the destination cannot be created. A file output is locked for as long
-  // as the output lives (io/destination_lock.h): another run writing it, from QGIS or the
-  // command line, is waited for (said on `feedback`, which can cancel the wait).
+  // Line output `key` of `algorithm` with `fields`, in `crs`, of LineString M when `measured`.
+  // Throws QgsProcessingException with QGIS's message when the destination cannot be created. A
+  // file output is locked for as long as the output lives (io/destination_lock.h): another run
+  // writing it, from QGIS or the command line, is waited for (said on `feedback`, which can cancel
+  // the wait).
   LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
              const QString& key, QgsProcessingContext& context, const QgsFields& fields,
-             const QgsCoordinateReferenceSystem& crs, QgsProcessingFeedback* feedback);
+             const QgsCoordinateReferenceSystem& crs, QgsProcessingFeedback* feedback,
+             bool measured = false);
   ~LineOutput();
   LineOutput(const LineOutput&) = delete;
   LineOutput& operator=(const LineOutput&) = delete;

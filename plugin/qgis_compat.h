@@ -16,6 +16,7 @@ inline const auto kRangeStatistics =
     Qgis::RasterBandStatistic::Min | Qgis::RasterBandStatistic::Max;
 constexpr auto kLineLayer = Qgis::ProcessingSourceType::VectorLine;
 constexpr auto kLineString = Qgis::WkbType::LineString;
+constexpr auto kLineStringM = Qgis::WkbType::LineStringM;
 constexpr auto kDoubleNumber = Qgis::ProcessingNumberParameterType::Double;
 constexpr auto kIntegerNumber = Qgis::ProcessingNumberParameterType::Integer;
 constexpr auto kAdvanced = Qgis::ProcessingParameterFlag::Advanced;
@@ -23,6 +24,7 @@ constexpr auto kAdvanced = Qgis::ProcessingParameterFlag::Advanced;
 constexpr int kRangeStatistics = QgsRasterBandStats::Min | QgsRasterBandStats::Max;
 constexpr auto kLineLayer = QgsProcessing::TypeVectorLine;
 constexpr auto kLineString = QgsWkbTypes::LineString;
+constexpr auto kLineStringM = QgsWkbTypes::LineStringM;
 constexpr auto kDoubleNumber = QgsProcessingParameterNumber::Double;
 constexpr auto kIntegerNumber = QgsProcessingParameterNumber::Integer;
 constexpr auto kAdvanced = QgsProcessingParameterDefinition::FlagAdvanced;

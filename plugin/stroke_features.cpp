@@ -19,15 +19,16 @@ QgsFields strokeFields() {
   return fields;
 }
 
-QgsGeometry lineGeometry(const std::vector<StrokePoint>& points) {
-  QVector<double> xs, ys;
+QgsGeometry lineGeometry(const std::vector<StrokePoint>& points, const std::vector<double>& m) {
+  QVector<double> xs, ys, ms;
   xs.reserve(static_cast<int>(points.size()));
   ys.reserve(static_cast<int>(points.size()));
   for (const StrokePoint& p : points) {
     xs << p.x;
     ys << p.y;
   }
-  return QgsGeometry(new QgsLineString(xs, ys));
+  for (double v : m) ms << v;
+  return QgsGeometry(new QgsLineString(xs, ys, QVector<double>(), ms));
 }
 
 QgsFeature strokeFeature(const Stroke& stroke, const QgsFields& fields) {
@@ -40,7 +41,7 @@ QgsFeature strokeFeature(const Stroke& stroke, const QgsFields& fields) {
     attributes << (std::isfinite(value) ? QVariant(value) : QVariant());
   }
   feature.setAttributes(attributes);
-  feature.setGeometry(lineGeometry(stroke.points));
+  feature.setGeometry(lineGeometry(stroke.points, stroke.weights));
   return feature;
 }
 

@@ -15,7 +15,7 @@ namespace tsk::plugin {
 QgsFields strokeFields();
 
 // A line through `points`.
-QgsGeometry lineGeometry(const std::vector<StrokePoint>& points);
+QgsGeometry lineGeometry(const std::vector<StrokePoint>& points, const std::vector<double>& m = {});
 
 // A line feature for `stroke`; NaN attributes become null.
 QgsFeature strokeFeature(const Stroke& stroke, const QgsFields& fields);

@@ -139,12 +139,15 @@ TEST_CASE("drawn strokes go out as LineString M with their weights, exact ones a
     REQUIRE(ds != nullptr);
     OGRLayer* layer = ds->GetLayer(0);
     CHECK(layer->GetGeomType() == (weighted ? wkbLineStringM : wkbLineString));
-    std::size_t k = 0;
+    // The core's strokes of each class in the core's order, with the core's weights as M; the
+    // command line writes the classes interleaved as strokes complete.
+    std::size_t next[2] = {0, core.stats.factual_strokes};
     for (auto& feature : *layer) {
       const auto* line = feature->GetGeometryRef()->toLineString();
       CHECK(line->IsMeasured() == weighted);
-      if (!weighted || k >= core.strokes.size()) continue;
-      // In the core's order, with the core's weights as M.
+      if (!weighted) continue;
+      std::size_t& k = next[std::string(feature->GetFieldAsString("class")) == "factual" ? 0 : 1];
+      REQUIRE(k < core.strokes.size());
       const Stroke& s = core.strokes[k++];
       REQUIRE(line->getNumPoints() == static_cast<int>(s.points.size()));
       for (int j = 0; j < line->getNumPoints(); ++j) {
@@ -152,7 +155,10 @@ TEST_CASE("drawn strokes go out as LineString M with their weights, exact ones a
         CHECK(line->getX(j) == s.points[static_cast<std::size_t>(j)].x);
       }
     }
-    if (weighted) CHECK(k == core.strokes.size());
+    if (weighted) {
+      CHECK(next[0] == core.stats.factual_strokes);
+      CHECK(next[1] == core.strokes.size());
+    }
     CHECK(layer->GetFeatureCount() ==
           static_cast<GIntBig>(weighted ? core.strokes.size()
                                         : summarise(dir / "exact.gpkg").features));

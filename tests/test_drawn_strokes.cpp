@@ -1,9 +1,12 @@
 // Drawn strokes (issue 15): joining, generalisation after joining, smoothing within a tolerance,
 // weights, and the exact mode's statistics left alone.
+#include <algorithm>
 #include <cmath>
 
 #include "catch_compat.h"
 #include "drawn_strokes.h"
+#include "orient.h"
+#include "plan_oblique.h"
 #include "stroke_joining.h"
 #include "stroke_smoothing.h"
 #include "stroke_weights.h"
@@ -155,7 +158,7 @@ TEST_CASE("smoothing rounds stair steps without moving a point beyond the tolera
   for (int k = 0; k <= 40; ++k) zigzag.push_back({static_cast<double>(k), (k / 2) % 2 ? 1.0 : 0.0});
   Stroke s = line_stroke(zigzag);
   for (int k = 0; k <= 40; ++k) s.vertices.push_back({10.0 * k, 100.0 + k});
-  smooth_stroke(s, 1.5, 0.75);
+  smooth_stroke(s, 1.5, 0.75, true);
   for (std::size_t k = 0; k < zigzag.size(); ++k) {
     CHECK(std::hypot(s.points[k].x - zigzag[k].x, s.points[k].y - zigzag[k].y) <= 0.75 + 1e-12);
   }
@@ -165,7 +168,7 @@ TEST_CASE("smoothing rounds stair steps without moving a point beyond the tolera
   // A straight line stays put, its vertices' values too (a linear ramp is its own mean).
   Stroke straight = row_stroke(0, 20, 5.0);
   for (int k = 0; k <= 20; ++k) straight.vertices.push_back({2.0 * k, 7.0});
-  smooth_stroke(straight, 2.0, 1.0);
+  smooth_stroke(straight, 2.0, 1.0, true);
   for (int k = 0; k <= 20; ++k) {
     CHECK(straight.points[k].y == Approx(5.0));
     CHECK(straight.vertices[k].z == Approx(7.0));
@@ -225,5 +228,50 @@ TEST_CASE("drawn strokes stay within the tolerance of the exact chain's cells", 
       // Half a cell of sub-cell placement along the profile, then the smoothing's tolerance.
       CHECK(std::hypot(s.points[k].x - cx, s.points[k].y - cy) <= 0.5 + 0.75 + 1e-9);
     }
+  }
+}
+
+TEST_CASE("drawn strokes are drawn as chains complete and do not depend on the strips",
+          "[drawn][strips]") {
+  const HeightGrid dem = test::random_terrain(240, 50, 21, 0.01);
+  const OrientedFrame frame = make_frame(240, 50, 10, 10, 270);
+  const HeightGrid z = orient(dem, frame);
+  SilhouetteParams params;
+  params.strokes.mode = StrokeMode::drawn;
+  params.geometry = Geometry::oblique;
+  const SilhouetteResult whole =
+      run_silhouettes(z, frame, GeoTransform{}, params, {}, lowest_height(z));
+  REQUIRE(whole.strokes.size() > 20);
+  for (std::size_t strip : {7u, 40u}) {
+    CAPTURE(strip);
+    std::size_t before_finish = 0;
+    std::vector<Stroke> got;
+    SilhouetteStream streamed(frame, GeoTransform{}, params, lowest_height(z), {},
+                              [&](Stroke&& s) { got.push_back(std::move(s)); });
+    for (std::size_t first = 0; first < frame.profiles; first += strip) {
+      const std::size_t count = std::min(strip, frame.profiles - first);
+      const std::size_t lo = first > 0 ? first - 1 : 0;
+      const std::size_t hi = std::min(frame.profiles, first + count + 1);
+      HeightGrid s(hi - lo, z.cols());
+      for (std::size_t r = lo; r < hi; ++r) std::copy(z.row(r), z.row(r) + z.cols(), s.row(r - lo));
+      streamed.add_strip(s, first, count);
+    }
+    before_finish = got.size();
+    const SilhouetteResult r = streamed.finish();
+    // A sink gets the classes interleaved; the result holds factual strokes first.
+    std::stable_partition(got.begin(), got.end(),
+                          [](const Stroke& s) { return s.cls == StrokeClass::factual; });
+    // Most strokes were drawn and handed on while later profiles were still to come.
+    CHECK(before_finish * 2 > got.size());
+    REQUIRE(got.size() == whole.strokes.size());
+    for (std::size_t k = 0; k < got.size(); ++k) {
+      REQUIRE(got[k].points.size() == whole.strokes[k].points.size());
+      for (std::size_t j = 0; j < got[k].points.size(); ++j) {
+        CHECK(got[k].points[j].x == whole.strokes[k].points[j].x);
+        CHECK(got[k].points[j].y == whole.strokes[k].points[j].y);
+        CHECK(got[k].weights[j] == whole.strokes[k].weights[j]);
+      }
+    }
+    CHECK(r.stats.generalised == whole.stats.generalised);
   }
 }
