@@ -77,8 +77,14 @@ input and output:
   --cell-size M        cell size in metres for a raster without georeferencing
   --format DRIVER      OGR driver name, overriding the extension
   --stats-json FILE    write the stage statistics as JSON
-  --preview FILE       render the oblique sketch: .png a picture, .svg vector art (a layer per
-                       class, a path per stroke, for Illustrator or Inkscape)
+  --preview FILE       render the oblique sketch: .png a picture, .svg or .pdf vector art (a
+                       layer per class, a path per stroke, tapered strokes as filled outlines,
+                       for Illustrator, Inkscape or print)
+  --page SIZE          draw the preview on a page: A4, A3, A2, A1, A0, letter, tabloid or
+                       WxH in mm (turned to suit the sketch; a PNG at 150 dpi)
+  --page-scale N       draw it at 1:N of the ground (default: fit the page)
+  --plotter            vector art for a pen plotter: single lines, strokes merged where they
+                       meet and ordered to cut pen-up travel (printed before and after)
   --threads N          worker threads (default: all cores)
   --timings            print the time of reading, each stage and writing to stderr
   --strips N           read and process N profiles at a time (default: 1024, more for profiles

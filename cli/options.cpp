@@ -56,12 +56,25 @@ double parse_cell_size(const std::string& option, const std::string& text) {
   return size;
 }
 
-// The preview is a PNG picture: another extension would name another format.
+// The preview's extension names its format: another would name one it cannot write.
 std::string parse_preview_name(const std::string& option, const std::string& path) {
   const std::string ext = io::lowercase_extension(path);
-  if (ext != ".png" && ext != ".svg")
-    throw Error(option + " draws a PNG picture or SVG vector art: give it a .png or .svg name");
+  if (ext != ".png" && ext != ".svg" && ext != ".pdf")
+    throw Error(option + " draws a PNG picture or SVG or PDF vector art: give it a .png, .svg or " +
+                ".pdf name");
   return path;
+}
+
+// The page's options make sense only with a preview to put on it, and are checked before work.
+void check_page(const Options& o) {
+  const bool paged = !o.page.size.empty() || o.page.scale > 0.0 || o.page.plotter;
+  if (paged && o.preview.empty())
+    throw Error("--page, --page-scale and --plotter shape the --preview picture: give --preview");
+  if (o.page.scale > 0.0 && o.page.size.empty())
+    throw Error("--page-scale needs a --page to draw the sketch on at that scale");
+  if (!o.page.size.empty()) io::parse_page_size(o.page.size);
+  if (o.page.plotter && io::lowercase_extension(o.preview) == ".png")
+    throw Error("--plotter draws vector art for a pen: give --preview a .svg or .pdf name");
 }
 
 // True when paths a and b name one file: the same existing file, or the same path to be made.
@@ -175,6 +188,13 @@ Options parse(const std::vector<std::string>& args) {
        }},
       {"--stats-json", [&](auto&, auto& v) { o.stats_json = v; }},
       {"--preview", [&](auto& n, auto& v) { o.preview = parse_preview_name(n, v); }},
+      {"--page", [&](auto&, auto& v) { o.page.size = v; }},
+      {"--page-scale",
+       [&](auto& n, auto& v) {
+         o.page.scale = parse_number(n, v);
+         if (!(o.page.scale >= 1.0 && o.page.scale <= 1e9))
+           throw Error(n + " is the N of 1:N, from 1 to 1000000000; got '" + v + "'");
+       }},
   };
   for (std::size_t k = 0; k < args.size(); ++k) {
     const std::string& a = args[k];
@@ -184,6 +204,8 @@ Options parse(const std::vector<std::string>& args) {
       o.params.subcell = true;
     } else if (a == "--timings") {
       o.timings = true;
+    } else if (a == "--plotter") {
+      o.page.plotter = true;
     } else if (auto it = with_value.find(a); it != with_value.end()) {
       if (k + 1 >= args.size()) throw Error(a + " needs a value");
       it->second(a, args[++k]);
@@ -199,6 +221,7 @@ Options parse(const std::vector<std::string>& args) {
   o.dem.azimuth_deg = o.params.view.azimuth_deg;
   o.dem.stop = stop_if_interrupted;  // Ctrl-C and SIGTERM stop the reading too
   o.params.validate();
+  check_page(o);
   refuse_clashing_paths(o);
   return o;
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "dem_reader.h"
+#include "sketch_page.h"
 #include "params.h"
 #include "pstrokes.h"
 
@@ -16,6 +17,7 @@ struct Options {
   int every = 10;
   int strips = 0;
   io::DemOptions dem;
+  io::PageOptions page;  // the preview's page
   SilhouetteParams params;
   PStrokeParams pstrokes;
 };

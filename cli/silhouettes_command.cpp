@@ -1,5 +1,6 @@
 // terrain-sketch silhouettes: the strokes, written as they complete.
 #include <chrono>
+#include <cmath>
 #include <ostream>
 #include <utility>
 #include <vector>
@@ -29,10 +30,19 @@ void print_timings(const StageTimings& t, double write_s, double commit_s, std::
 }
 
 // The preview draws the strokes over the whole DEM turned to the view, read once more.
-void write_preview(const Options& o, SilhouetteResult& result, std::vector<Stroke>&& drawn) {
+io::PlotterReport write_preview(const Options& o, SilhouetteResult& result,
+                                std::vector<Stroke>&& drawn) {
   result.strokes = std::move(drawn);
   const io::Dem whole = io::read_dem(o.input, o.dem);
-  io::write_preview(o.preview, result, whole.oriented, whole.frame, o.params.view);
+  return io::write_preview(o.preview, result, whole.oriented, whole.frame, whole.geotransform,
+                           o.params.view, o.params.geometry, o.page);
+}
+
+void print_plotter(const io::PlotterReport& r, bool millimetres, std::ostream& err) {
+  const char* unit = millimetres ? " mm" : " px";
+  err << "plotter: " << r.strokes << " strokes drawn as " << r.paths << " paths; pen-up travel "
+      << std::lround(r.travel_before) << unit << " in the strokes' order, "
+      << std::lround(r.travel_after) << unit << " ordered\n";
 }
 
 }  // namespace
@@ -47,6 +57,7 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
   if (preview) io::refuse_too_large_to_turn(o.input, dem.info());  // before any work too
   // Strokes are written as they complete, so they are never all held (but for the preview).
   SilhouetteResult result;
+  io::PlotterReport plotter;
   std::vector<Stroke> drawn;
   double write_s = 0;
   Clock::time_point produced;
@@ -65,11 +76,12 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
         // to write them discards the strokes too.
         if (!o.stats_json.empty())
           io::write_text_file(o.stats_json, stats_json(result.stats, result.filter));
-        if (preview) write_preview(o, result, std::move(drawn));
+        if (preview) plotter = write_preview(o, result, std::move(drawn));
         produced = Clock::now();
       },
       io::kStrokeLayer, o.params.strokes.drawn());
   print_filter(result.filter, err);
+  if (o.page.plotter) print_plotter(plotter, !o.page.size.empty(), err);
   if (o.timings) print_timings(result.timings, write_s, since(produced), err);
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes

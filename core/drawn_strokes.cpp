@@ -6,6 +6,7 @@
 
 #include "plan_oblique.h"
 #include "stroke_smoothing.h"
+#include "stroke_splitting.h"
 #include "stroke_weights.h"
 
 namespace tsk {
@@ -31,6 +32,10 @@ DrawingSetup drawing_setup(const OrientedFrame& frame, const GeoTransform& geotr
 }
 
 namespace {
+
+// A step between neighbouring profiles longer than this many cells is a leap along the line of
+// sight (formulated chaining looks at most 3 cells along; factual chaining follows hidden zones).
+constexpr double kLeapCells = 4.0;
 
 // Moves each point of a stroke in map geometry to where plan-oblique geometry draws it.
 void shift_plan_oblique(Stroke& stroke, const DrawingSetup& setup) {
@@ -60,10 +65,14 @@ StrokeDrawer::StrokeDrawer(const DrawingSetup& setup)
       rule_{setup.drawn.join_gap_cells * setup.cell, setup.drawn.join_angle_deg},
       groups_(rule_) {}
 
-void StrokeDrawer::add(Stroke&& piece) {
-  if (rule_.gap > 0.0) groups_.add(piece);
-  pending_.push_back(std::move(piece));
-  drawn_.push_back(false);
+void StrokeDrawer::add(Stroke&& chain) {
+  std::vector<Stroke> pieces;
+  split_at_leaps(std::move(chain), kLeapCells * setup_.cell, pieces);
+  for (Stroke& piece : pieces) {
+    if (rule_.gap > 0.0) groups_.add(piece);
+    pending_.push_back(std::move(piece));
+    drawn_.push_back(false);
+  }
 }
 
 std::vector<std::vector<Stroke>> StrokeDrawer::take_settled(double frontier) {

@@ -45,7 +45,8 @@ class StrokeDrawer {
   using Out = std::function<void(Stroke&& stroke)>;
   explicit StrokeDrawer(const DrawingSetup& setup);
 
-  void add(Stroke&& piece);
+  // A complete chain's stroke, cut into pieces where it leaps (split_at_leaps).
+  void add(Stroke&& chain);
   // Takes the groups whose every end lies more than the join gap before profile `frontier`, the
   // first profile a piece still to come may reach, up to the first group that does not; after the
   // last profile, with an infinite frontier, every group left.

@@ -302,6 +302,7 @@ SilhouetteResult SilhouetteStream::finish() {
   result.filter.choice = st.params.adaptive;
   result.filter.cutoffs = st.params.filter;
   result.filter.heights.tolerance = st.params.height_tolerance;
+  result.z_ref = st.z_ref;
   // Without a sink: factual strokes first, then formulated, each in the order of the scan.
   result.strokes = std::move(st.factual.handed_on);
   result.strokes.reserve(result.strokes.size() + st.formulated.handed_on.size());

@@ -26,6 +26,7 @@ struct SilhouetteResult {
   StageTimings timings;
   CellFlags flags;      // the per-cell classification, for diagnostics and tests
   FilterReport filter;  // the slope filter used
+  double z_ref = 0.0;   // the height plan-oblique geometry kept in place
 };
 
 // Takes each stroke as soon as it is complete and every stroke of its class started before it has

@@ -100,7 +100,7 @@ double StrokeBuilder::Mean::value() const {
 }
 
 void StrokeBuilder::add(const StrokeCell& c, bool keep_vertices) {
-  if (keep_vertices) vertices_.push_back({c.dist, c.z});
+  if (keep_vertices) vertices_.push_back({c.dist, c.z, c.slope_pct, c.row_slope_pct, c.depth_m});
   if (!chain_.empty()) length_ += std::hypot(c.map.x - last_map_.x, c.map.y - last_map_.y);
   last_map_ = c.map;
   chain_.push_back(c.cell);

@@ -24,6 +24,7 @@ struct StrokePoint {
 struct StrokeVertex {
   double dist;  // distance from the front of the view, ground units
   double z;     // height, metres
+  double slope_pct = 0.0, row_slope_pct = 0.0, depth_m = 0.0;  // the cell's (StrokeCell)
 };
 
 struct Stroke {

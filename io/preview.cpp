@@ -12,7 +12,8 @@
 
 #include "gdal_util.h"
 #include "output_files.h"
-#include "plan_oblique.h"
+#include "sketch_page.h"
+#include "vector_art.h"
 
 namespace tsk::io {
 namespace {
@@ -62,56 +63,26 @@ class Canvas {
   std::vector<float> ink_;
 };
 
-// Where the strokes go on the picture: the profile plot, x across the view, y the
-// plan-oblique position along it (from the lowest height), far side up.
-struct PreviewLayout {
-  int width = 0, height = 0;
-  std::function<void(const ChainCell&, double&, double&)> to_screen;
-};
-
-PreviewLayout preview_layout(const HeightGrid& z, const OrientedFrame& frame,
-                             const ViewParams& view, const PreviewOptions& options) {
-  double z_min = std::numeric_limits<double>::infinity();
-  double z_max = -z_min;
-  for (std::size_t k = 0; k < z.size(); ++k) {
-    if (is_data(z.data()[k])) {
-      z_min = std::min(z_min, static_cast<double>(z.data()[k]));
-      z_max = std::max(z_max, static_cast<double>(z.data()[k]));
+void write_png_preview(const std::string& path, SketchPage page) {
+  // A paper page is drawn at 150 dots per inch.
+  if (page.millimetres) {
+    const double px = 150.0 / 25.4;
+    page.width = std::ceil(page.width * px), page.height = std::ceil(page.height * px);
+    for (PagePath& p : page.paths) {
+      for (StrokePoint& q : p.points) q.x *= px, q.y *= px;
+      for (double& w : p.widths) w *= px;
     }
   }
-  if (!std::isfinite(z_min)) z_min = z_max = 0.0;
-  const double plot_w = std::max(frame.w, static_cast<double>(frame.profiles) * frame.w);
-  const PlanObliqueShift shift(view, frame.d, z_min);
-  const double plot_h = shift(static_cast<double>(frame.length), z_max) * frame.d;
-  const int margin = 10;
-  PreviewLayout layout;
-  layout.width = std::clamp(options.width_px, 64, 20000);
-  const double scale = (layout.width - 2.0 * margin) / plot_w;
-  layout.height = std::clamp(static_cast<int>(std::ceil(plot_h * scale)) + 2 * margin, 64, 20000);
-  const int height = layout.height;
-  layout.to_screen = [&z, frame, shift, scale, height, margin](const ChainCell& c, double& sx,
-                                                               double& sy) {
-    const double zc =
-        static_cast<double>(z(static_cast<std::size_t>(c.p), static_cast<std::size_t>(c.i)));
-    sx = margin + (c.p + 0.5) * frame.w * scale;
-    sy = height - margin - shift(c.i + 0.5, zc) * frame.d * scale;
-  };
-  return layout;
-}
-
-void write_png_preview(const std::string& path, const SilhouetteResult& result,
-                       const PreviewLayout& layout) {
-  Canvas canvas(layout.width, layout.height);
+  Canvas canvas(static_cast<int>(page.width), static_cast<int>(page.height));
   // Formulated first so factual strokes stay on top.
   for (StrokeClass cls : {StrokeClass::formulated, StrokeClass::factual}) {
     const bool factual = cls == StrokeClass::factual;
-    for (const Stroke& s : result.strokes) {
+    for (const PagePath& s : page.paths) {
       if (s.cls != cls) continue;
-      for (std::size_t k = 1; k < s.chain.size(); ++k) {
-        double x0, y0, x1, y1;
-        layout.to_screen(s.chain[k - 1], x0, y0);
-        layout.to_screen(s.chain[k], x1, y1);
-        canvas.line(x0, y0, x1, y1, factual ? 1.1 : 0.55, factual ? 1.f : 0.6f);
+      for (std::size_t k = 1; k < s.points.size(); ++k) {
+        const double radius = 0.25 * (s.widths[k - 1] + s.widths[k]);
+        canvas.line(s.points[k - 1].x, s.points[k - 1].y, s.points[k].x, s.points[k].y, radius,
+                    factual ? 1.f : 0.6f);
       }
     }
   }
@@ -121,7 +92,7 @@ void write_png_preview(const std::string& path, const SilhouetteResult& result,
   GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
   GDALDriver* png = GetGDALDriverManager()->GetDriverByName("PNG");
   if (!mem || !png) throw Error("GDAL has no MEM or PNG driver");
-  const int width = layout.width, height = layout.height;
+  const int width = canvas.width(), height = canvas.height();
   DatasetPtr image(mem->Create("", width, height, 1, GDT_Byte, nullptr));
   if (!image || image->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, width, height, pixels.data(),
                                                   width, height, GDT_Byte, 0, 0) != CE_None) {
@@ -133,54 +104,29 @@ void write_png_preview(const std::string& path, const SilhouetteResult& result,
   });
 }
 
-// Vector art: one group (an Illustrator or Inkscape layer) per class, one path per stroke, in the
-// colours and widths of the QGIS styles; formulated first so that factual strokes lie on top.
-void write_svg_preview(const std::string& path, const SilhouetteResult& result,
-                       const PreviewLayout& layout) {
-  std::ostringstream svg;
-  svg.imbue(std::locale::classic());
-  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
-         "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\""
-      << layout.width << "\" height=\"" << layout.height << "\" viewBox=\"0 0 " << layout.width
-      << " " << layout.height << "\">\n"
-      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  svg.setf(std::ios::fixed);
-  svg.precision(2);
-  for (StrokeClass cls : {StrokeClass::formulated, StrokeClass::factual}) {
-    const bool factual = cls == StrokeClass::factual;
-    svg << "<g id=\"" << (factual ? "factual" : "formulated") << "\" inkscape:label=\""
-        << (factual ? "Factual silhouettes" : "Formulated silhouettes")
-        << "\" inkscape:groupmode=\"layer\" fill=\"none\" stroke=\""
-        << (factual ? "#111111" : "#6e3e1c") << "\" stroke-width=\"" << (factual ? 2.2 : 1.1)
-        << "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
-    for (const Stroke& s : result.strokes) {
-      if (s.cls != cls || s.chain.empty()) continue;
-      svg << "<path d=\"";
-      for (std::size_t k = 0; k < s.chain.size(); ++k) {
-        double x, y;
-        layout.to_screen(s.chain[k], x, y);
-        svg << (k == 0 ? "M" : " L") << x << " " << y;
-      }
-      svg << "\"/>\n";
-    }
-    svg << "</g>\n";
-  }
-  svg << "</svg>\n";
-  write_text_file(path, svg.str());
-}
-
 }  // namespace
 
-void write_preview(const std::string& path, const SilhouetteResult& result, const HeightGrid& z,
-                   const OrientedFrame& frame, const ViewParams& view,
-                   const PreviewOptions& options) {
-  const PreviewLayout layout = preview_layout(z, frame, view, options);
-  if (lowercase_extension(path) == ".svg") {
-    write_svg_preview(path, result, layout);
-  } else {
-    write_png_preview(path, result, layout);
+PlotterReport write_preview(const std::string& path, const SilhouetteResult& result,
+                            const HeightGrid& z, const OrientedFrame& frame,
+                            const GeoTransform& geotransform, const ViewParams& view,
+                            Geometry geometry, const PageOptions& options) {
+  const std::string ext = lowercase_extension(path);
+  if (options.plotter && ext == ".png")
+    throw Error("--plotter draws vector art for a pen: give --preview a .svg or .pdf name");
+  const SketchPage page = lay_out_sketch(result, z, frame, geotransform, view, geometry, options);
+  if (ext == ".png") {
+    write_png_preview(path, page);
+    return {};
   }
+  PlotterPage plotter;
+  if (options.plotter) plotter = plan_plotter_page(page);
+  const PlotterPage* pen = options.plotter ? &plotter : nullptr;
+  if (ext == ".pdf") {
+    write_pdf(path, page, pen);
+  } else {
+    write_svg(path, page, pen);
+  }
+  return plotter.report;
 }
 
 }  // namespace tsk::io

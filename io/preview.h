@@ -1,21 +1,22 @@
-// A picture of the oblique sketch (the thesis's profile plot) without QGIS.
+// A picture of the oblique sketch (the thesis's profile plot) without QGIS: PNG, or vector art
+// (SVG, PDF) for print, Illustrator or a pen plotter.
 #pragma once
 
 #include <string>
 
 #include "silhouettes.h"
+#include "sketch_page.h"
+#include "vector_art.h"
 
 namespace tsk::io {
 
-struct PreviewOptions {
-  int width_px = 1600;
-};
-
 // Renders the strokes of `result` as seen from the viewpoint (far side up): factual strokes bold
-// black, formulated strokes thinner, on white. Writes a PNG, or for a .svg name vector art (a
-// layer per class, a path per stroke), whole or not at all.
-void write_preview(const std::string& path, const SilhouetteResult& result, const HeightGrid& z,
-                   const OrientedFrame& frame, const ViewParams& view,
-                   const PreviewOptions& options = {});
+// black, formulated strokes thinner, on white; drawn strokes tapered and weighted for depth. The
+// extension of `path` picks the format: .png a picture, .svg or .pdf vector art (sketch_page.h,
+// vector_art.h). Whole or not at all. Returns the plotter's figures for a plotter page.
+PlotterReport write_preview(const std::string& path, const SilhouetteResult& result,
+                            const HeightGrid& z, const OrientedFrame& frame,
+                            const GeoTransform& geotransform, const ViewParams& view,
+                            Geometry geometry, const PageOptions& options = {});
 
 }  // namespace tsk::io

@@ -24,6 +24,14 @@ const QString kGeometry = QStringLiteral("GEOMETRY");
 const QString kPlacement = QStringLiteral("PLACEMENT");
 const QString kSubcell = QStringLiteral("SUBCELL");
 const QString kStrips = QStringLiteral("STRIPS");
+const QString kStrokes = QStringLiteral("STROKES");
+const QString kJoinGap = QStringLiteral("JOIN_GAP");
+const QString kJoinAngle = QStringLiteral("JOIN_ANGLE");
+const QString kSmooth = QStringLiteral("SMOOTH");
+const QString kSmoothTolerance = QStringLiteral("SMOOTH_TOLERANCE");
+const QString kTaper = QStringLiteral("TAPER");
+const QString kDepthCue = QStringLiteral("DEPTH_CUE");
+const QString kExtend = QStringLiteral("EXTEND");
 const QString kFactual = QStringLiteral("FACTUAL");
 const QString kFormulated = QStringLiteral("FORMULATED");
 
@@ -112,6 +120,7 @@ void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
       tr("Place factual points where the transformed profile peaks between cells instead of at "
          "cell centres (removes the thesis's halo)."),
       true);
+  addStrokeParameters();
   add(integer(kStrips, tr("Profiles per strip (0: automatic)"), 0, 0, 1000000),
       tr("The DEM is read and processed this many profiles at a time, the next strip read while "
          "this one is processed, so DEMs larger than memory run too. 0 chooses 1024, more for "
@@ -129,6 +138,60 @@ void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
   }
 }
 
+void SilhouettesAlgorithm::addStrokeParameters() {
+  const DrawnParams defaults;
+  auto add = [this](const QString& key, const QString& label, double value, double min, double max,
+                    const QString& help) {
+    addWithHelp(number(key, label, value, min, max), help, true);
+  };
+  addWithHelp(
+      new QgsProcessingParameterEnum(
+          kStrokes, tr("Strokes"),
+          {tr("Drawn (joined, smoothed, tapered)"), tr("Exact (the thesis's, a point per cell)")},
+          false, 0),
+      tr("Drawn (the default): strokes a cartographer would publish. Pieces of one class that "
+         "continue each other across a small gap are joined before short strokes are dropped; "
+         "points lie between cells where the profile peaks or the slope breaks, and are smoothed "
+         "along the stroke; every point carries a weight (its M value) that tapers the ends and "
+         "thins the strokes towards the back of the view, which the layers' styles draw. Exact: "
+         "the thesis's strokes, a point at each cell centre."),
+      true);
+  add(kJoinGap, tr("Join gap (cells)"), defaults.join_gap_cells, 0, 20,
+      tr("Drawn strokes: ends of two strokes this close (in cells) are joined when their "
+         "directions agree. 0 joins none."));
+  add(kJoinAngle, tr("Join angle (degrees)"), defaults.join_angle_deg, 0, 90,
+      tr("Drawn strokes: the largest turn between two ends' directions, and the step between "
+         "them, for them to be joined."));
+  add(kSmooth, tr("Smoothing (cells)"), defaults.smooth_cells, 0, 20,
+      tr("Drawn strokes: the width (sigma, in cells) of the Gaussian smoothing along each "
+         "stroke. 0 keeps the points where they are."));
+  add(kSmoothTolerance, tr("Smoothing tolerance (cells)"), defaults.tolerance_cells, 0, 2,
+      tr("Drawn strokes: no point moves farther than this (in cells) from its place on the "
+         "exact chain, so smoothing never invents terrain."));
+  add(kTaper, tr("Taper (share of the stroke)"), defaults.taper, 0, 0.5,
+      tr("Drawn strokes: the share of a stroke's length over which each end thins."));
+  add(kDepthCue, tr("Depth cue"), defaults.depth_cue, 0, 0.95,
+      tr("Drawn strokes: the share of the weight strokes lose from the front of the view to "
+         "its back."));
+  add(kExtend, tr("Over-extension (cells)"), defaults.extend_cells, 0, 10,
+      tr("Drawn strokes: each end runs on this far (in cells) along its direction, as a "
+         "hand-drawn stroke does. 0: none."));
+}
+
+void SilhouettesAlgorithm::readStrokes(const QVariantMap& parameters,
+                                       QgsProcessingContext& context) {
+  DrawnParams& d = mParams.strokes;
+  d.mode =
+      parameterAsEnum(parameters, kStrokes, context) == 1 ? StrokeMode::exact : StrokeMode::drawn;
+  d.join_gap_cells = parameterAsDouble(parameters, kJoinGap, context);
+  d.join_angle_deg = parameterAsDouble(parameters, kJoinAngle, context);
+  d.smooth_cells = parameterAsDouble(parameters, kSmooth, context);
+  d.tolerance_cells = parameterAsDouble(parameters, kSmoothTolerance, context);
+  d.taper = parameterAsDouble(parameters, kTaper, context);
+  d.depth_cue = parameterAsDouble(parameters, kDepthCue, context);
+  d.extend_cells = parameterAsDouble(parameters, kExtend, context);
+}
+
 double SilhouettesAlgorithm::readParameters(const QVariantMap& parameters,
                                             QgsProcessingContext& context) {
   SilhouetteParams& p = mParams;
@@ -142,6 +205,7 @@ double SilhouettesAlgorithm::readParameters(const QVariantMap& parameters,
                                                                       : Placement::far;
   p.subcell = parameterAsBool(parameters, kSubcell, context);
   mStrips = parameterAsInt(parameters, kStrips, context);
+  readStrokes(parameters, context);
   p.validate();
   return p.view.azimuth_deg;
 }
@@ -160,8 +224,10 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
         tr("Processing the DEM in %1 strips of %2 profiles.").arg(strips).arg(strip));
   }
   const QgsFields fields = strokeFields();
-  LineOutput factual(*this, parameters, kFactual, context, fields, raster.crs(), feedback);
-  LineOutput formulated(*this, parameters, kFormulated, context, fields, raster.crs(), feedback);
+  const bool drawn = mParams.strokes.drawn();
+  LineOutput factual(*this, parameters, kFactual, context, fields, raster.crs(), feedback, drawn);
+  LineOutput formulated(*this, parameters, kFormulated, context, fields, raster.crs(), feedback,
+                        drawn);
   // Each stroke goes to its output as it completes, from the thread that links the chains, while
   // the other threads work on the next profiles. A failure or cancel discards both outputs.
   const ProgressFn progress = [feedback](double f) {
@@ -194,8 +260,10 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
 
 QVariantMap SilhouettesAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
                                                        QgsProcessingFeedback*) {
-  styleOnCompletion(context, mFactualId, QStringLiteral("factual"));
-  styleOnCompletion(context, mFormulatedId, QStringLiteral("formulated"));
+  // Drawn strokes get the styles that draw their weights: tapered, thinner at the back.
+  const QString drawn = mParams.strokes.drawn() ? QStringLiteral("_drawn") : QString();
+  styleOnCompletion(context, mFactualId, QStringLiteral("factual") + drawn);
+  styleOnCompletion(context, mFormulatedId, QStringLiteral("formulated") + drawn);
   return {};
 }
 

@@ -29,6 +29,9 @@ class SilhouettesAlgorithm : public DemViewAlgorithm {
                                    QgsProcessingFeedback* feedback) override;
 
  private:
+  void addStrokeParameters();
+  void readStrokes(const QVariantMap& parameters, QgsProcessingContext& context);
+
   SilhouetteParams mParams;
   int mStrips = 0;
   QString mFactualId;

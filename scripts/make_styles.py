@@ -9,8 +9,10 @@ import sys
 from osgeo import gdal
 from qgis.core import (QgsApplication, QgsContrastEnhancement, QgsLineSymbol,
                        QgsPalettedRasterRenderer, QgsProperty, QgsRasterLayer,
-                       QgsSingleBandGrayRenderer, QgsSingleSymbolRenderer, QgsSymbolLayer,
-                       QgsVectorLayer)
+                       QgsSimpleLineSymbolLayer, QgsSingleBandGrayRenderer,
+                       QgsSingleSymbolRenderer, QgsSymbolLayer, QgsUnitTypes, QgsVectorLayer,
+                       QgsVectorSimplifyMethod)
+from qgis.PyQt.QtCore import Qt
 from qgis.PyQt.QtGui import QColor
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -35,6 +37,55 @@ STYLES = [
     ("profiles", "60,60,60", "0.25"),
     ("pstrokes", "150,70,20", "0.3"),
 ]
+
+# Drawn strokes (LineString M, M the weight of each point in (0, 1]: its taper times its depth
+# cue). QGIS 3.22 draws a width per point only through buffer_by_m, far too slow for a real DEM's
+# strokes (bench/render_styles.py: minutes for 100 000), so the styles draw the taper as steps:
+# four lines of the stroke, each narrower one running further towards the ends, the widest
+# trimmed to the middle half as the weights' taper (the default --taper 0.25) is. Every step's
+# width is scaled by the stroke's largest weight, its depth cue.
+DRAWN_STYLES = [("factual_drawn", "17,17,17", 0.7), ("formulated_drawn", "110,62,28", 0.4)]
+TIP_WEIGHT, TAPER, STEPS = 0.15, 0.25, 4
+
+
+def taper_steps():
+    """(share of the full width, trim at each end in percent of the length) of each step: where
+    the weights' taper (kTipWeight + (1 - kTipWeight) (1 - (1 - u)^2)) reaches that width."""
+    steps = []
+    for j in range(STEPS):
+        share = TIP_WEIGHT + (1 - TIP_WEIGHT) * j / (STEPS - 1)
+        u = 1 - (1 - (share - TIP_WEIGHT) / (1 - TIP_WEIGHT)) ** 0.5
+        steps.append((share, 100 * TAPER * u))
+    return steps
+
+
+def drawn_symbol(colour, full_mm):
+    symbol = QgsLineSymbol()
+    symbol.deleteSymbolLayer(0)
+    for share, trim in taper_steps():
+        line = QgsSimpleLineSymbolLayer(QColor(*map(int, colour.split(","))), full_mm * share)
+        line.setPenCapStyle(Qt.RoundCap)
+        line.setPenJoinStyle(Qt.RoundJoin)
+        for setter, unit in ((line.setTrimDistanceStart, line.setTrimDistanceStartUnit),
+                             (line.setTrimDistanceEnd, line.setTrimDistanceEndUnit)):
+            setter(trim)
+            unit(QgsUnitTypes.RenderPercentage)
+        line.setDataDefinedProperty(QgsSymbolLayer.PropertyStrokeWidth, QgsProperty.fromExpression(
+            "%g * coalesce(m_max($geometry), 1)" % (full_mm * share)))
+        symbol.appendSymbolLayer(line)
+    return symbol
+
+
+def drawn_styles():
+    for name, colour, full_mm in DRAWN_STYLES:
+        layer = QgsVectorLayer("LineStringM?crs=EPSG:32616&" + FIELDS, name, "memory")
+        layer.setRenderer(QgsSingleSymbolRenderer(drawn_symbol(colour, full_mm)))
+        # Simplifying the lines for drawing would drop the M values the widths come from.
+        simplify = QgsVectorSimplifyMethod()
+        simplify.setSimplifyHints(QgsVectorSimplifyMethod.NoSimplification)
+        layer.setSimplifyMethod(simplify)
+        save(layer, name)
+
 
 # Stage classes as in the thesis's map views (same colours as the CLI's colour table).
 CLASSES = [(1, "visible", "#ffffff"), (2, "hidden", "#bed2eb"), (3, "occluding", "#dc1e1e"),
@@ -86,6 +137,7 @@ def main():
             symbol.setWidth(float(width))
         layer.setRenderer(QgsSingleSymbolRenderer(symbol))
         save(layer, name)
+    drawn_styles()
     import tempfile
     with tempfile.TemporaryDirectory() as tmp:
         raster_styles(tmp)

@@ -310,7 +310,7 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       // for a PNG, a folder of CSV files named .gpkg, a complex band's real part.
       {{"silhouettes", kSample, out, "--azimuth", "0x5A"}, "needs a number"},
       {{"silhouettes", kSample, out, "--band", "1e0"}, "whole number"},
-      {{"silhouettes", kSample, out, "--preview", dir / "x.jpg"}, ".png or .svg name"},
+      {{"silhouettes", kSample, out, "--preview", dir / "x.jpg"}, ".png, .svg or .pdf name"},
       {{"silhouettes", kSample, dir / "x.gpkg", "--format", "CSV"}, "a .gpkg name is GPKG's"},
       {{"silhouettes", dir / "complex.tif", out}, "complex numbers (CFloat32)"},
       {{"silhouettes", dir / "nogeo.tif", out, "--cell-size", "0"}, "--cell-size must be positive"},

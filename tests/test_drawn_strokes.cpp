@@ -9,6 +9,7 @@
 #include "plan_oblique.h"
 #include "stroke_joining.h"
 #include "stroke_smoothing.h"
+#include "stroke_splitting.h"
 #include "stroke_weights.h"
 #include "support/analytic_terrain.h"
 #include "test_support.h"
@@ -147,8 +148,6 @@ TEST_CASE("drawn strokes leave every stage statistic up to the t-set as the exac
     CHECK(drawn.stats.candidate == exact.stats.candidate);
     CHECK(drawn.stats.filtered == exact.stats.filtered);
     CHECK(drawn.stats.thinned == exact.stats.thinned);
-    // Joining keeps short pieces that connect: never fewer cells kept than the exact strokes.
-    CHECK(drawn.stats.generalised >= exact.stats.generalised);
   }
 }
 
@@ -274,4 +273,37 @@ TEST_CASE("drawn strokes are drawn as chains complete and do not depend on the s
     }
     CHECK(r.stats.generalised == whole.stats.generalised);
   }
+}
+
+TEST_CASE("a chain that leaps along the line of sight is cut there", "[drawn][splitting]") {
+  // Five cells on consecutive profiles; between the third and fourth the chain leaps 10 cells.
+  StrokeBuilder builder;
+  const double along[] = {0, 1, 1, 11, 12};
+  for (int k = 0; k < 5; ++k) {
+    StrokeCell c;
+    c.cell = {k, static_cast<std::int32_t>(along[k])};
+    c.map = c.point = {static_cast<double>(k), along[k]};
+    c.dist = 10.0 * along[k];
+    c.z = 100.0 + k;
+    c.slope_pct = 10.0 * (k + 1);
+    c.row_slope_pct = 1.0;
+    c.depth_m = 2.0 * k;
+    builder.add(c, true);
+  }
+  std::vector<Stroke> pieces;
+  split_at_leaps(builder.stroke(StrokeClass::factual), 4.0, pieces);
+  REQUIRE(pieces.size() == 2);
+  CHECK(pieces[0].cells == 3);
+  CHECK(pieces[1].cells == 2);
+  CHECK(pieces[0].length == Approx(1.0 + std::sqrt(2.0)));
+  CHECK(pieces[1].length == Approx(std::sqrt(2.0)));
+  CHECK(pieces[0].mean_slope_pct == Approx(20.0));  // cells 1-3: 10, 20, 30
+  CHECK(pieces[1].mean_slope_pct == Approx(45.0));  // 40, 50
+  CHECK(pieces[1].max_depth_m == Approx(8.0));
+  CHECK(pieces[1].chain.front().p == 3);
+  CHECK(pieces[1].vertices.size() == 2);
+  // Without a leap the stroke stays whole.
+  std::vector<Stroke> whole;
+  split_at_leaps(builder.stroke(StrokeClass::factual), 20.0, whole);
+  CHECK(whole.size() == 1);
 }

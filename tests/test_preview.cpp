@@ -83,6 +83,6 @@ TEST_CASE("the SVG preview holds a layer per class and a path per stroke", "[cli
   // Another extension is refused before any work.
   const CliRun jpeg = run_cli({"silhouettes", kSample, dir / "t.gpkg", "--preview", dir / "t.jpg"});
   CHECK(jpeg.code == 1);
-  CHECK_THAT(jpeg.err, Catch::Contains(".png or .svg name"));
+  CHECK_THAT(jpeg.err, Catch::Contains(".png, .svg or .pdf name"));
   CHECK(dir.file_count() == 3);
 }

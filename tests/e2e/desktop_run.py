@@ -5,7 +5,8 @@ import json
 import os
 import traceback
 
-from qgis.core import QgsApplication, QgsProcessingFeedback, QgsProject, QgsRectangle
+from qgis.core import (QgsApplication, QgsProcessingFeedback, QgsProject, QgsRectangle,
+                       QgsWkbTypes)
 from qgis.PyQt.QtCore import QTimer
 from qgis.utils import iface
 
@@ -51,6 +52,8 @@ def describe(layer):
             prop = sl.dataDefinedProperties().property(sl.PropertyStrokeWidth)
             info["colour"] = symbol.color().name()
             info["width_expression"] = prop.expressionString() if prop.isActive() else None
+            info["symbol_layers"] = symbol.symbolLayerCount()
+            info["geometry_type"] = QgsWkbTypes.displayString(layer.wkbType())
     elif hasattr(renderer, "contrastEnhancement") and renderer.contrastEnhancement():
         info["ramp_max"] = renderer.contrastEnhancement().maximumValue()
     return info

@@ -38,16 +38,17 @@ check(r.get("plugin_active"), "plugin active in the plugin manager")
 check(not r.get("not_loaded"), "outputs not loaded: %s" % r.get("not_loaded"))
 layers = {l["file"]: l for l in r.get("layers", [])}
 check(len(layers) == 7, "seven layers loaded, got %s" % list(layers))
-for path, colour, field in (("factual.gpkg", "#111111", "mean_depth"),
-                            ("formulated.gpkg", "#6e3e1c", "mean_slope")):
+# The default strokes are drawn ones: LineString M, styled as tapered steps whose widths follow
+# each stroke's weight (its depth cue, the M values).
+for path, colour in (("factual.gpkg", "#111111"), ("formulated.gpkg", "#6e3e1c")):
     l = layers.get(path, {})
     check(l.get("features", 0) > 100, path + " has features")
     check(l.get("crs") == "EPSG:32616", path + " CRS")
+    check(l.get("geometry_type") == "LineStringM", path + " LineString M, got %s" % l.get("geometry_type"))
     check(l.get("renderer") == "singleSymbol", path + " styled")
     check(l.get("colour") == colour, path + " colour %s" % l.get("colour"))
-    check(field in (l.get("width_expression") or ""), path + " width by " + field)
-    # Widths follow the layer's own spread, not depths and slopes fixed for one DEM.
-    check("stdev(" in (l.get("width_expression") or ""), path + " width from the data")
+    check(l.get("symbol_layers") == 4, path + " drawn in four tapered steps")
+    check("m_max($geometry)" in (l.get("width_expression") or ""), path + " width by weight")
 check(layers.get("profiles.gpkg", {}).get("features", 0) > 20, "profile plot lines")
 check(layers.get("classes.tif", {}).get("renderer") == "paletted", "classes paletted")
 check(layers.get("rowslope.tif", {}).get("renderer") == "singlebandgray", "row slope grey")

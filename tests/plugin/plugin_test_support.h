@@ -171,13 +171,15 @@ inline io::Dem coreDem(const QString& file, double azimuth = 90) {
 }
 
 // Runs the core directly on the same file through io's GDAL reader, as the command line does,
-// with the algorithms' default filter: adapted to the DEM, read window by window for it.
+// with the algorithms' defaults: the filter adapted to the DEM (read window by window for it),
+// drawn strokes.
 inline SilhouetteResult coreResult(const QString& file, double azimuth, Geometry geometry) {
   const io::Dem dem = coreDem(file, azimuth);
   SilhouetteParams params;
   params.view.azimuth_deg = azimuth;
   params.geometry = geometry;
-  params.adaptive.mode = FilterMode::adaptive;
+  params.adaptive.mode = FilterMode::adaptive;  // the algorithm's defaults
+  params.strokes.mode = StrokeMode::drawn;
   io::DemOptions options;
   options.azimuth_deg = azimuth;
   FilterReport filter;

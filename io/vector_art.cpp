@@ -1,0 +1,180 @@
+#include "vector_art.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <locale>
+#include <sstream>
+
+#include "output_files.h"
+#include "stroke_outline.h"
+
+namespace tsk::io {
+namespace {
+
+constexpr StrokeClass kClassOrder[] = {StrokeClass::formulated, StrokeClass::factual};
+
+struct ClassLook {
+  const char* id;
+  const char* label;
+  const char* svg_colour;
+  double rgb[3];
+};
+
+ClassLook look(StrokeClass cls) {
+  if (cls == StrokeClass::factual)
+    return {"factual", "Factual silhouettes", "#111111", {0.067, 0.067, 0.067}};
+  return {"formulated", "Formulated silhouettes", "#6e3e1c", {0.431, 0.243, 0.110}};
+}
+
+bool uniform(const std::vector<double>& widths) {
+  return std::all_of(widths.begin(), widths.end(), [&](double w) { return w == widths.front(); });
+}
+
+// Calls draw(points, closed, width) for each path of class `cls`: a line of one width, or a
+// tapered stroke's filled outline (width 0).
+template <typename Draw>
+void class_paths(const SketchPage& page, const PlotterPage* plotter, std::size_t class_index,
+                 Draw&& draw) {
+  if (plotter) {
+    for (const auto& line : plotter->classes[class_index].paths) draw(line, false, 0.0);
+    return;
+  }
+  for (const PagePath& p : page.paths) {
+    if (p.cls != kClassOrder[class_index] || p.points.empty()) continue;
+    if (uniform(p.widths)) {
+      draw(p.points, false, p.widths.front());
+    } else {
+      draw(tapered_outline(p.points, p.widths), true, 0.0);
+    }
+  }
+}
+
+// Numbers as vector formats want them: a point for the decimal, no exponent.
+std::ostringstream number_stream() {
+  std::ostringstream out;
+  out.imbue(std::locale::classic());
+  out.setf(std::ios::fixed);
+  out.precision(3);
+  return out;
+}
+
+}  // namespace
+
+PlotterPage plan_plotter_page(const SketchPage& page) {
+  PlotterPage plotter;
+  // Ends closer than a fifth of a millimetre (or of a pixel's width, 0.75 px) meet.
+  const double meet = page.millimetres ? 0.2 : 0.75;
+  for (StrokeClass cls : kClassOrder) {
+    std::vector<std::vector<StrokePoint>> lines;
+    for (const PagePath& p : page.paths)
+      if (p.cls == cls && !p.points.empty()) lines.push_back(p.points);
+    plotter.report.strokes += lines.size();
+    PenPlan plan = plan_pen_paths(std::move(lines), meet, {0.0, 0.0});
+    plotter.report.travel_before += plan.travel_before;
+    plotter.report.travel_after += plan.travel_after;
+    plotter.report.paths += plan.paths.size();
+    plotter.classes.push_back(std::move(plan));
+  }
+  return plotter;
+}
+
+void write_svg(const std::string& path, const SketchPage& page, const PlotterPage* plotter) {
+  std::ostringstream svg = number_stream();
+  const char* unit = page.millimetres ? "mm" : "";
+  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+         "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\""
+      << page.width << unit << "\" height=\"" << page.height << unit << "\" viewBox=\"0 0 "
+      << page.width << " " << page.height << "\">\n";
+  if (!plotter) svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  for (std::size_t c = 0; c < 2; ++c) {
+    const ClassLook l = look(kClassOrder[c]);
+    svg << "<g id=\"" << l.id << "\" inkscape:label=\"" << l.label
+        << "\" inkscape:groupmode=\"layer\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+    class_paths(page, plotter, c, [&](const std::vector<StrokePoint>& pts, bool closed, double w) {
+      svg << "<path d=\"";
+      for (std::size_t k = 0; k < pts.size(); ++k)
+        svg << (k == 0 ? "M" : " L") << pts[k].x << " " << pts[k].y;
+      if (closed) {
+        svg << " Z\" fill=\"" << l.svg_colour << "\" stroke=\"none\"/>\n";
+      } else {
+        svg << "\" fill=\"none\" stroke=\"" << l.svg_colour << "\" stroke-width=\""
+            << (plotter ? (page.millimetres ? 0.3 : 1.0) : w) << "\"/>\n";
+      }
+    });
+    svg << "</g>\n";
+  }
+  svg << "</svg>\n";
+  write_text_file(path, svg.str());
+}
+
+namespace {
+
+// A PDF's objects, numbered from 1, and its cross-reference table.
+class PdfFile {
+ public:
+  void add(const std::string& object) { objects_.push_back(object); }
+  std::string text() const {
+    std::string out = "%PDF-1.5\n%\xe2\xe3\xcf\xd3\n";
+    std::vector<std::size_t> offsets;
+    for (std::size_t k = 0; k < objects_.size(); ++k) {
+      offsets.push_back(out.size());
+      out += std::to_string(k + 1) + " 0 obj\n" + objects_[k] + "\nendobj\n";
+    }
+    const std::size_t xref = out.size();
+    out += "xref\n0 " + std::to_string(objects_.size() + 1) + "\n0000000000 65535 f \n";
+    for (std::size_t at : offsets) {
+      char line[24];
+      std::snprintf(line, sizeof line, "%010zu 00000 n \n", at);
+      out += line;
+    }
+    out += "trailer\n<< /Size " + std::to_string(objects_.size() + 1) +
+           " /Root 1 0 R >>\nstartxref\n" + std::to_string(xref) + "\n%%EOF\n";
+    return out;
+  }
+
+ private:
+  std::vector<std::string> objects_;
+};
+
+}  // namespace
+
+void write_pdf(const std::string& path, const SketchPage& page, const PlotterPage* plotter) {
+  // Points of 1/72 inch, y up: millimetres and pixels (taken as points) turned over.
+  const double to_pt = page.millimetres ? 72.0 / 25.4 : 1.0;
+  const double width = page.width * to_pt, height = page.height * to_pt;
+  std::ostringstream content = number_stream();
+  content << "1 J 1 j\n";
+  for (std::size_t c = 0; c < 2; ++c) {
+    const ClassLook l = look(kClassOrder[c]);
+    content << "/OC /L" << c << " BDC\n"
+            << l.rgb[0] << " " << l.rgb[1] << " " << l.rgb[2] << " RG " << l.rgb[0] << " "
+            << l.rgb[1] << " " << l.rgb[2] << " rg\n";
+    class_paths(page, plotter, c, [&](const std::vector<StrokePoint>& pts, bool closed, double w) {
+      for (std::size_t k = 0; k < pts.size(); ++k)
+        content << pts[k].x * to_pt << " " << height - pts[k].y * to_pt << (k ? " l\n" : " m\n");
+      if (closed) {
+        content << "f\n";
+      } else {
+        content << (plotter ? (page.millimetres ? 0.3 : 1.0) : w) * to_pt << " w S\n";
+      }
+    });
+    content << "EMC\n";
+  }
+  const std::string stream = content.str();
+  std::ostringstream media = number_stream();
+  media << "[0 0 " << width << " " << height << "]";
+  PdfFile pdf;
+  pdf.add(
+      "<< /Type /Catalog /Pages 2 0 R /OCProperties << /OCGs [5 0 R 6 0 R] /D << /Order "
+      "[5 0 R 6 0 R] >> >> >>");
+  pdf.add("<< /Type /Pages /Kids [3 0 R] /Count 1 >>");
+  pdf.add("<< /Type /Page /Parent 2 0 R /MediaBox " + media.str() +
+          " /Resources << /Properties << /L0 5 0 R /L1 6 0 R >> >> /Contents 4 0 R >>");
+  pdf.add("<< /Length " + std::to_string(stream.size()) + " >>\nstream\n" + stream + "\nendstream");
+  pdf.add(std::string("<< /Type /OCG /Name (") + look(kClassOrder[0]).label + ") >>");
+  pdf.add(std::string("<< /Type /OCG /Name (") + look(kClassOrder[1]).label + ") >>");
+  write_text_file(path, pdf.text());
+}
+
+}  // namespace tsk::io
