@@ -3,8 +3,9 @@
 # Usage: scripts/install-deps.sh [core|qgis]   (core: library, CLI and tests; qgis: plus the plugin)
 set -euo pipefail
 what=${1:-core}
+# poppler-utils and librsvg2-bin: the vector previews' tests render the PDF and SVG they write.
 packages=(build-essential cmake catch2 libgdal-dev libsqlite3-dev gdal-bin clang libclang-rt-dev
-  clang-format git)
+  clang-format git poppler-utils librsvg2-bin)
 if [ "$what" = qgis ]; then
   # mmdebstrap: the chroots of the newer QGIS releases; qt6-*: the Qt6 readiness build;
   # dpkg-dev and file: the Debian package (CPack).

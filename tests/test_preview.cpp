@@ -1,6 +1,7 @@
 // The command line's --preview as vector art: the SVG parsed back with GDAL's XML parser.
 #include <cpl_minixml.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -31,7 +32,7 @@ long long json_count(const std::string& json, const std::string& key) {
 }
 
 struct SvgPaths {
-  std::map<std::string, long long> per_group;
+  std::map<std::string, long long> per_group, closed_per_group;
   long long points = 0, outside = 0;
 };
 
@@ -51,7 +52,9 @@ SvgPaths read_svg(const std::string& text) {
     for (const CPLXMLNode* p = g->psChild; p; p = p->psNext) {
       if (p->eType != CXT_Element || std::string(p->pszValue) != "path") continue;
       ++found.per_group[id];
-      std::istringstream d(CPLGetXMLValue(p, "d", ""));
+      const std::string data = CPLGetXMLValue(p, "d", "");
+      if (!data.empty() && data.back() == 'Z') ++found.closed_per_group[id];
+      std::istringstream d(data);
       std::string x_with_command;
       double y = 0;
       while (d >> x_with_command >> y) {
@@ -85,4 +88,129 @@ TEST_CASE("the SVG preview holds a layer per class and a path per stroke", "[cli
   CHECK(jpeg.code == 1);
   CHECK_THAT(jpeg.err, Catch::Contains(".png, .svg or .pdf name"));
   CHECK(dir.file_count() == 3);
+}
+
+TEST_CASE("drawn strokes are filled outlines in the vector art, exact strokes lines",
+          "[cli][preview][drawn]") {
+  ScratchDir dir("outlines");
+  for (const char* strokes : {"drawn", "exact"}) {
+    CAPTURE(strokes);
+    const std::string name = strokes;
+    const CliRun run =
+        run_cli({"silhouettes", kSample, dir / (name + ".gpkg"), "--strokes", strokes, "--preview",
+                 dir / (name + ".svg"), "--stats-json", dir / (name + ".json")});
+    REQUIRE(run.code == 0);
+    const std::string json = read_all(dir / (name + ".json"));
+    SvgPaths svg = read_svg(read_all(dir / (name + ".svg")));
+    const long long outlines = name == "drawn" ? 1 : 0;
+    CHECK(svg.closed_per_group["factual"] == outlines * json_count(json, "factual_strokes"));
+    CHECK(svg.closed_per_group["formulated"] == outlines * json_count(json, "formulated_strokes"));
+  }
+}
+
+namespace {
+
+// Renders page 1 of a PDF with poppler's pdftoppm and opens the picture.
+GDALDataset* render_pdf(const std::string& pdf, const std::string& stem, int dpi) {
+  const std::string command =
+      "pdftoppm -png -singlefile -r " + std::to_string(dpi) + " '" + pdf + "' '" + stem + "' 2>&1";
+  REQUIRE(std::system(command.c_str()) == 0);
+  GDALAllRegister();
+  return static_cast<GDALDataset*>(GDALOpen((stem + ".png").c_str(), GA_ReadOnly));
+}
+
+}  // namespace
+
+TEST_CASE("the PDF preview is a page of the sketch with a layer per class", "[cli][preview]") {
+  ScratchDir dir("pdf");
+  const CliRun run =
+      run_cli({"silhouettes", kSample, dir / "s.gpkg", "--preview", dir / "s.pdf", "--page", "A4"});
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  const std::string pdf = read_all(dir / "s.pdf");
+  CHECK_THAT(pdf, Catch::Contains("/Type /OCG /Name (Factual silhouettes)"));
+  CHECK_THAT(pdf, Catch::Contains("/Type /OCG /Name (Formulated silhouettes)"));
+  // The sample is about as tall as wide in the sketch: an A4 page, portrait, in points.
+  CHECK_THAT(pdf, Catch::Contains("/MediaBox [0 0 595.276 841.890]"));
+  GDALDataset* page = render_pdf(dir / "s.pdf", dir / "page", 40);
+  REQUIRE(page != nullptr);
+  const int w = page->GetRasterXSize(), h = page->GetRasterYSize();
+  CHECK(w == Approx(210 / 25.4 * 40).margin(1));
+  CHECK(h == Approx(297 / 25.4 * 40).margin(1));
+  REQUIRE(page->GetRasterCount() >= 3);
+  std::vector<GByte> rgb(static_cast<std::size_t>(w) * h * 3);
+  REQUIRE(page->RasterIO(GF_Read, 0, 0, w, h, rgb.data(), w, h, GDT_Byte, 3, nullptr, 3, 3 * w,
+                         1) == CE_None);
+  GDALClose(page);
+  long long black = 0, sepia = 0, margin_ink = 0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const GByte* p = &rgb[3 * (static_cast<std::size_t>(y) * w + x)];
+      const bool ink = p[0] < 200 || p[1] < 200 || p[2] < 200;
+      black += p[0] < 80 && p[1] < 80 && p[2] < 80;
+      sepia += p[0] > p[2] + 40 && p[0] < 220;
+      // Nothing inside the 10 mm margin but a few pixels of the widest strokes' ends.
+      const double mm_x = x * 25.4 / 40, mm_y = y * 25.4 / 40;
+      margin_ink += ink && (mm_x < 9 || mm_x > 201 || mm_y < 9 || mm_y > 288);
+    }
+  }
+  CHECK(black > 2000);
+  CHECK(sepia > 200);
+  CHECK(margin_ink == 0);
+}
+
+TEST_CASE("pages and scales are checked, and a sketch too large for its page is refused",
+          "[cli][preview][robustness]") {
+  ScratchDir dir("pages");
+  struct Bad {
+    std::vector<std::string> extra;
+    std::string message;
+  };
+  const Bad cases[] = {
+      {{"--preview", dir / "a.svg", "--page", "A4", "--page-scale", "100000"},
+       "larger than the page"},
+      {{"--preview", dir / "a.svg", "--page-scale", "5000"}, "--page-scale needs a --page"},
+      {{"--preview", dir / "a.svg", "--page", "B7"}, "--page must be A4"},
+      {{"--preview", dir / "a.svg", "--page", "20x30"}, "each 50 to 5000"},
+      {{"--preview", dir / "a.svg", "--page", "A3", "--page-scale", "0.5"}, "1:N, from 1"},
+      {{"--preview", dir / "a.png", "--plotter"}, "give --preview a .svg or .pdf name"},
+      {{"--page", "A4"}, "shape the --preview picture"},
+  };
+  for (const Bad& b : cases) {
+    std::vector<std::string> args = {"silhouettes", kSample, dir / "s.gpkg"};
+    args.insert(args.end(), b.extra.begin(), b.extra.end());
+    const CliRun run = run_cli(args);
+    CAPTURE(b.message);
+    CHECK(run.code == 1);
+    CHECK_THAT(run.err, Catch::Contains(b.message));
+    CHECK(dir.file_count() == 0);
+  }
+  // At 1:250 000 the sample's 31 km fit an A3 page, in millimetres.
+  const CliRun fits = run_cli({"silhouettes", kSample, dir / "s.gpkg", "--preview", dir / "a.svg",
+                               "--page", "A3", "--page-scale", "250000"});
+  INFO(fits.err);
+  REQUIRE(fits.code == 0);
+  CHECK_THAT(read_all(dir / "a.svg"), Catch::Contains("width=\"297.000mm\" height=\"420.000mm\""));
+}
+
+TEST_CASE("the plotter page merges strokes that meet and cuts the pen's travel",
+          "[cli][preview][plotter]") {
+  ScratchDir dir("plotter");
+  const CliRun run = run_cli({"silhouettes", kSample, dir / "s.gpkg", "--preview", dir / "p.svg",
+                              "--page", "A3", "--plotter", "--stats-json", dir / "s.json"});
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  std::smatch m;
+  REQUIRE(std::regex_search(run.err, m,
+                            std::regex("([0-9]+) strokes drawn as ([0-9]+) paths; pen-up travel "
+                                       "([0-9]+) mm in the strokes' order, ([0-9]+) mm ordered")));
+  const long long strokes = std::stoll(m[1]), paths = std::stoll(m[2]);
+  const std::string json = read_all(dir / "s.json");
+  CHECK(strokes == json_count(json, "factual_strokes") + json_count(json, "formulated_strokes"));
+  CHECK(paths <= strokes);
+  CHECK(std::stoll(m[4]) * 3 < std::stoll(m[3]));  // ordered, a third of the travel at most
+  SvgPaths svg = read_svg(read_all(dir / "p.svg"));
+  CHECK(svg.per_group["factual"] + svg.per_group["formulated"] == paths);
+  CHECK(svg.closed_per_group["factual"] + svg.closed_per_group["formulated"] == 0);
+  CHECK(svg.outside == 0);
 }
