@@ -65,7 +65,7 @@ strokes:
   --join-angle DEG     drawn: ...whose directions agree within this, 0-90 (default 35)
   --smooth CELLS       drawn: Gaussian smoothing along the stroke, sigma 0-20 (default 1.5)
   --smooth-tolerance CELLS
-                       drawn: farthest a point moves from its cell, 0-2 (default 0.75)
+                       drawn: farthest a point lies from its cell, 0-2 (default 1)
   --taper SHARE        drawn: share of a stroke thinned at each end, 0-0.5 (default 0.25)
   --depth-cue SHARE    drawn: weight lost from front to back, 0-0.95 (default 0.5)
   --extend CELLS       drawn: run each end on along its direction, 0-10 (default 0)

@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "dem_reader.h"
-#include "sketch_page.h"
 #include "params.h"
 #include "pstrokes.h"
+#include "sketch_page.h"
 
 namespace tsk::cli {
 

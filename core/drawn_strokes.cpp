@@ -49,8 +49,15 @@ void shift_plan_oblique(Stroke& stroke, const DrawingSetup& setup) {
 // Smooths, places, runs on and weighs one joined stroke.
 void finish_stroke(Stroke& stroke, const DrawingSetup& setup) {
   const DrawnParams& p = setup.drawn;
+  // The exact places: each point's cell centre, the sub-cell offset along the profile undone.
+  std::vector<StrokePoint> centres(stroke.points.size());
+  for (std::size_t k = 0; k < centres.size(); ++k) {
+    const double offset = stroke.vertices[k].offset;
+    centres[k] = {stroke.points[k].x - setup.cell_step.x * offset,
+                  stroke.points[k].y - setup.cell_step.y * offset};
+  }
   smooth_stroke(stroke, p.smooth_cells * setup.cell, p.tolerance_cells * setup.cell,
-                setup.geometry == Geometry::oblique);
+                setup.geometry == Geometry::oblique, &centres);
   stroke.length = polyline_length(stroke.points);  // the drawn line's ground length
   if (setup.geometry == Geometry::oblique) shift_plan_oblique(stroke, setup);
   extend_stroke(stroke, p.extend_cells * setup.cell, 3.0 * setup.cell);
@@ -69,6 +76,8 @@ void StrokeDrawer::add(Stroke&& chain) {
   std::vector<Stroke> pieces;
   split_at_leaps(std::move(chain), kLeapCells * setup_.cell, pieces);
   for (Stroke& piece : pieces) {
+    // A single cell has no direction to join by; alone, the generalisation drops it anyway.
+    if (piece.cells < 2) continue;
     if (rule_.gap > 0.0) groups_.add(piece);
     pending_.push_back(std::move(piece));
     drawn_.push_back(false);

@@ -63,7 +63,7 @@ enum class StrokeMode { exact, drawn };
 struct DrawnParams {
   StrokeMode mode = StrokeMode::exact;  // the core keeps SPEC's strokes; the front ends draw
   double smooth_cells = 1.5;            // Gaussian sigma along the stroke, cells (0: none)
-  double tolerance_cells = 0.75;        // farthest a smoothed vertex moves from its cell's place
+  double tolerance_cells = 1.0;         // farthest a drawn point lies from its cell's centre
   double join_gap_cells = 2.5;          // farthest apart two stroke ends that join may be
   double join_angle_deg = 35.0;         // largest turn between the joined ends' directions
   double taper = 0.25;                  // share of a stroke's length tapered at each end

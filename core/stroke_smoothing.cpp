@@ -5,6 +5,8 @@
 
 namespace tsk {
 
+constexpr int kSmoothingPasses = 3;
+
 double polyline_length(const std::vector<StrokePoint>& points) {
   double length = 0.0;
   for (std::size_t k = 1; k < points.size(); ++k) {
@@ -28,19 +30,17 @@ std::vector<double> kernel(double sigma_points, std::size_t n) {
 
 }  // namespace
 
-void smooth_stroke(Stroke& stroke, double sigma, double tolerance, bool heights) {
-  const std::size_t n = stroke.points.size();
-  if (n < 3 || !(sigma > 0.0)) return;
-  // A chain has a point per profile, so its points lie about evenly along it: the Gaussian over
-  // arc length is one over point indices, sigma taken in points at the stroke's mean spacing.
-  const double spacing = polyline_length(stroke.points) / static_cast<double>(n - 1);
-  if (!(spacing > 0.0)) return;
-  const std::vector<double> w = kernel(sigma / spacing, n);
+namespace {
+
+// One pass: the Gaussian mean about each inner point (of heights too, if `z` is given), then each
+// point held within `tolerance` of its anchor.
+void smoothing_pass(std::vector<StrokePoint>& points, const std::vector<double>& w,
+                    const std::vector<StrokePoint>& anchors, double tolerance,
+                    std::vector<StrokePoint>& scratch, std::vector<StrokeVertex>* vertices) {
+  const auto last = static_cast<std::ptrdiff_t>(points.size() - 1);
   const auto reach = static_cast<std::ptrdiff_t>(w.size() - 1);
-  const bool has_vertices = heights && stroke.vertices.size() == n;
-  std::vector<StrokePoint> points(n);
-  std::vector<double> z(has_vertices ? n : 0);
-  const auto last = static_cast<std::ptrdiff_t>(n - 1);
+  scratch = points;
+  std::vector<double> z(vertices ? points.size() : 0);
   for (std::ptrdiff_t k = 1; k < last; ++k) {
     double sw = 0.0, sx = 0.0, sy = 0.0, sz = 0.0;
     for (std::ptrdiff_t j = std::max<std::ptrdiff_t>(0, k - reach); j <= std::min(last, k + reach);
@@ -48,22 +48,43 @@ void smooth_stroke(Stroke& stroke, double sigma, double tolerance, bool heights)
       const double wj = w[static_cast<std::size_t>(std::abs(j - k))];
       const auto u = static_cast<std::size_t>(j);
       sw += wj;
-      sx += wj * stroke.points[u].x;
-      sy += wj * stroke.points[u].y;
-      if (has_vertices) sz += wj * stroke.vertices[u].z;
+      sx += wj * points[u].x;
+      sy += wj * points[u].y;
+      if (vertices) sz += wj * (*vertices)[u].z;
     }
     const auto u = static_cast<std::size_t>(k);
-    points[u] = {sx / sw, sy / sw};
-    if (has_vertices) z[u] = sz / sw;
+    scratch[u] = {sx / sw, sy / sw};
+    if (vertices) z[u] = sz / sw;
   }
-  for (std::size_t k = 1; k + 1 < n; ++k) {
-    StrokePoint& p = stroke.points[k];
-    double dx = points[k].x - p.x, dy = points[k].y - p.y;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const StrokePoint anchor = anchors[k];
+    double dx = scratch[k].x - anchor.x, dy = scratch[k].y - anchor.y;
     const double moved = std::sqrt(dx * dx + dy * dy);
     if (moved > tolerance) dx *= tolerance / moved, dy *= tolerance / moved;
-    p.x += dx;
-    p.y += dy;
-    if (has_vertices) stroke.vertices[k].z = z[k];
+    points[k] = {anchor.x + dx, anchor.y + dy};
+    if (vertices && k > 0 && static_cast<std::ptrdiff_t>(k) < last) (*vertices)[k].z = z[k];
+  }
+}
+
+}  // namespace
+
+void smooth_stroke(Stroke& stroke, double sigma, double tolerance, bool heights,
+                   const std::vector<StrokePoint>* anchors) {
+  const std::size_t n = stroke.points.size();
+  if (n < 3 || !(sigma > 0.0)) return;
+  // A chain has a point per profile, so its points lie about evenly along it: the Gaussian over
+  // arc length is one over point indices, sigma taken in points at the stroke's mean spacing.
+  const double spacing = polyline_length(stroke.points) / static_cast<double>(n - 1);
+  if (!(spacing > 0.0)) return;
+  const std::vector<double> w = kernel(sigma / spacing, n);
+  const std::vector<StrokePoint> held = anchors && anchors->size() == n ? *anchors : stroke.points;
+  std::vector<StrokePoint> scratch;
+  // Where a pass pulls a point back within the tolerance, it leaves a kink; the next passes
+  // smooth the kinks out within the same band.
+  for (int pass = 0; pass < kSmoothingPasses; ++pass) {
+    const bool first = pass == 0;
+    smoothing_pass(stroke.points, w, held, tolerance, scratch,
+                   first && heights && stroke.vertices.size() == n ? &stroke.vertices : nullptr);
   }
 }
 

@@ -9,10 +9,12 @@
 namespace tsk {
 
 // Smooths a stroke's points with a Gaussian of `sigma` map units along it, taken over its points
-// at their mean spacing; the end points stay. A point never moves farther than `tolerance` from
-// where it was: smoothing rounds the cell grid's stair steps but does not invent terrain.
-// heights: smooth its vertices' heights alike, for plan-oblique geometry to place the points by.
-void smooth_stroke(Stroke& stroke, double sigma, double tolerance, bool heights = false);
+// at their mean spacing; the end points stay. A point never ends farther than `tolerance` from
+// its anchor (where it was, if no anchors are given; its cell's centre for drawn strokes):
+// smoothing rounds the cell grid's stair steps but does not invent terrain. heights: smooth its
+// vertices' heights alike, for plan-oblique geometry to place the points by.
+void smooth_stroke(Stroke& stroke, double sigma, double tolerance, bool heights = false,
+                   const std::vector<StrokePoint>* anchors = nullptr);
 
 inline double distance(StrokePoint a, StrokePoint b) {
   const double dx = b.x - a.x, dy = b.y - a.y;

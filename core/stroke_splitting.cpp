@@ -25,7 +25,7 @@ void split_at_leaps(Stroke&& stroke, double max_step, std::vector<Stroke>& piece
     c.map = c.point = stroke.points[k];
     const StrokeVertex& v = stroke.vertices[k];
     c.dist = v.dist, c.z = v.z, c.slope_pct = v.slope_pct, c.row_slope_pct = v.row_slope_pct;
-    c.depth_m = v.depth_m;
+    c.depth_m = v.depth_m, c.offset = v.offset;
     builder.add(c, true);
   }
   pieces.push_back(builder.stroke(stroke.cls));

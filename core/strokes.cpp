@@ -89,6 +89,7 @@ StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, b
                            c.point.y);
   }
   c.dist = along * d;
+  c.offset = along - static_cast<double>(i);
   c.slope_pct = std::fabs(column_slope(zp, length, i, d)) * 100.0;
   c.row_slope_pct = std::fabs(row_slope(ctx.z, row, i, ctx.frame.w)) * 100.0;
   c.depth_m = factual ? hidden_zone(zp, ctx.flags.row(row), length, i, d, ctx.view).depth_m : kNaN;
@@ -100,7 +101,8 @@ double StrokeBuilder::Mean::value() const {
 }
 
 void StrokeBuilder::add(const StrokeCell& c, bool keep_vertices) {
-  if (keep_vertices) vertices_.push_back({c.dist, c.z, c.slope_pct, c.row_slope_pct, c.depth_m});
+  if (keep_vertices)
+    vertices_.push_back({c.dist, c.z, c.slope_pct, c.row_slope_pct, c.depth_m, c.offset});
   if (!chain_.empty()) length_ += std::hypot(c.map.x - last_map_.x, c.map.y - last_map_.y);
   last_map_ = c.map;
   chain_.push_back(c.cell);

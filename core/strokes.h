@@ -25,6 +25,7 @@ struct StrokeVertex {
   double dist;  // distance from the front of the view, ground units
   double z;     // height, metres
   double slope_pct = 0.0, row_slope_pct = 0.0, depth_m = 0.0;  // the cell's (StrokeCell)
+  double offset = 0.0;  // of the point from its cell's centre along the profile, cells
 };
 
 struct Stroke {
@@ -85,9 +86,10 @@ struct StrokeContext {
 // One cell of a stroke with what the stroke's geometry and attributes need from it.
 struct StrokeCell {
   ChainCell cell;
-  StrokePoint map;    // cell centre (or sub-cell peak) in map geometry
-  StrokePoint point;  // in the chosen geometry
-  double dist = 0.0;  // distance from the front of the view, ground units
+  StrokePoint map;      // cell centre (or sub-cell peak) in map geometry
+  StrokePoint point;    // in the chosen geometry
+  double dist = 0.0;    // distance from the front of the view, ground units
+  double offset = 0.0;  // of the point from the cell's centre along the profile, cells
   double slope_pct = 0.0, row_slope_pct = 0.0, depth_m = 0.0, z = 0.0;
 };
 

@@ -224,8 +224,9 @@ TEST_CASE("drawn strokes stay within the tolerance of the exact chain's cells", 
       // Identity georeferencing: map coordinates are pixel positions.
       const PixelPoint cell = frame.to_pixel(s.chain[k].p, s.chain[k].i);
       const double cx = cell.col, cy = cell.row;
-      // Half a cell of sub-cell placement along the profile, then the smoothing's tolerance.
-      CHECK(std::hypot(s.points[k].x - cx, s.points[k].y - cy) <= 0.5 + 0.75 + 1e-9);
+      // Sub-cell placement and smoothing together stay within the tolerance of the centre.
+      CHECK(std::hypot(s.points[k].x - cx, s.points[k].y - cy) <=
+            params.strokes.tolerance_cells + 1e-9);
     }
   }
 }
