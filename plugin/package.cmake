@@ -40,7 +40,8 @@ add_custom_command(OUTPUT ${TSK_PLUGIN_ZIP}
           ${TSK_PLUGIN_DIR}/metadata.txt ${TSK_PLUGIN_DIR}/build_info.py
           $<TARGET_FILE:terrain_sketch_provider>
           # the sources the targets copy: a changed style or shim repacks the zip too
-          ${TSK_STYLE_FILES} ${CMAKE_CURRENT_SOURCE_DIR}/python/__init__.py ${TSK_QM_FILES}
+          ${TSK_STYLE_FILES} ${TSK_LAYOUT_FILES} ${CMAKE_CURRENT_SOURCE_DIR}/python/__init__.py
+          ${TSK_QM_FILES}
   COMMENT "Packing ${TSK_PACKAGE_NAME}.zip"
   VERBATIM)
 add_custom_target(plugin-zip ALL DEPENDS ${TSK_PLUGIN_ZIP})
