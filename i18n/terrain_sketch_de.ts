@@ -294,7 +294,7 @@
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/line_output.cpp" line="184" />
+        <location filename="../plugin/line_output.cpp" line="185" />
         <source>Could not write %1 whole: the file ends cut short. Is the disk full?</source>
         <translation>%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der Datenträger voll?</translation>
     </message>
@@ -428,7 +428,7 @@
 <context>
     <name>QmlStyler</name>
     <message>
-        <location filename="../plugin/layer_style.cpp" line="27" />
+        <location filename="../plugin/layer_style.cpp" line="28" />
         <source>Could not apply style %1: %2</source>
         <translation>Stil %1 konnte nicht angewendet werden: %2</translation>
     </message>
@@ -542,22 +542,22 @@
 <context>
     <name>SilhouettesAlgorithm</name>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="41" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="49" />
         <source>Silhouettes (factual and formulated)</source>
         <translation>Silhouetten (faktisch und formuliert)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="45" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="53" />
         <source>silhouette,occluding contour,sketch,oblique,panorama,block diagram,plan oblique,terrain,dem,hidden</source>
         <translation>Silhouette,Verdeckungskontur,Skizze,Schrägansicht,Panorama,Blockbild,Plan oblique,Gelände,DGM,verdeckt</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="51" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="59" />
         <source>Draws the silhouette lines of a DEM seen obliquely from above as vector strokes.</source>
         <translation>Zeichnet die Silhouettenlinien eines schräg von oben gesehenen DGM als Vektorstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="55" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="63" />
         <source>Finds the lines a cartographer sketches first when drawing terrain seen obliquely from above.
 
 Factual Silhouettes are occluding contours: cells beyond which the terrain hides what lies behind it, in a parallel view with vertical exaggeration and a base slope added along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view brings into sight (the candidate set), kept where the slope filter finds them significant (outside the weak/weak corner of column slope against row slope), thinned to the cell furthest from the viewer and chained across profiles.
@@ -565,6 +565,8 @@ Factual Silhouettes are occluding contours: cells beyond which the terrain hides
 The DEM's heights must be in metres and its CRS projected in metres; a geographic DEM is refused. Any view azimuth works; the four cardinal ones are exact.
 
 Two line outputs: Factual silhouettes (styled bold black, width by hidden depth) and Formulated silhouettes (thinner grey, width by slope). Separate layers so each can be styled, filtered or switched off on its own, and routed separately in models. Each stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth and max_depth (m, factual only), mean_dist (ground distance from the front edge of the view, in the CRS's unit) and mean_z (m).
+
+The strokes are drawn by default, as a cartographer would publish them: joined where they continue each other, smoothed within a cell of the exact chain, and stored as LineString M whose M values weigh each point (thin at the ends, thinner at the back of the view); the styles draw those weights. The advanced parameter Strokes gives the thesis's exact strokes instead.
 
 The stage figures (log and outputs), in percent of the cells with data: HIDDEN_PCT (cells hidden behind nearer terrain), OCCLUDING_PCT (occluding cells), CSET_PCT (the candidate set: back-facing cells the raised view brings into sight), FSET_PCT (the filtered set: visible candidates the slope filter keeps), TSET_PCT (the thinned set: one cell per filtered zone) and GSET_PCT (the generalised set: cells of the strokes kept, those with at least the minimum number of cells); FACTUAL_STROKES and FORMULATED_STROKES count the strokes.
 
@@ -577,112 +579,204 @@ Die Höhen des DGM müssen in Metern vorliegen und sein KBS in Metern projiziert
 
 Zwei Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter Tiefe) und Formulierte Silhouetten (dünner grau, Breite nach Neigung). Getrennte Layer, damit jeder für sich gestaltet, gefiltert oder ausgeblendet und in Modellen getrennt weitergeleitet werden kann. Jeder Strich trägt: class, cells, length, mean_slope und mean_row_slope (%), mean_depth und max_depth (m, nur faktisch), mean_dist (Abstand im Gelände vom vorderen Bildrand, in der Einheit des KBS) und mean_z (m).
 
+Die Striche werden standardmäßig gezeichnet, wie sie ein Kartograf veröffentlichen würde: verbunden, wo sie einander fortsetzen, innerhalb einer Zelle der exakten Kette geglättet und als LineString M gespeichert, deren M-Werte jeden Punkt gewichten (dünn an den Enden, dünner zum hinteren Rand der Ansicht); die Stile zeichnen diese Gewichte. Der erweiterte Parameter Striche liefert stattdessen die exakten Striche der Dissertation.
+
 Die Stufenkennzahlen (Protokoll und Ausgaben), in Prozent der Zellen mit Daten: HIDDEN_PCT (hinter näherem Gelände verdeckte Zellen), OCCLUDING_PCT (verdeckende Zellen), CSET_PCT (die Kandidatenmenge: abgewandte Zellen, die der erhöhte Blick sichtbar macht), FSET_PCT (die gefilterte Menge: sichtbare Kandidaten, die der Neigungsfilter behält), TSET_PCT (die ausgedünnte Menge: eine Zelle je gefilterter Zone) und GSET_PCT (die generalisierte Menge: Zellen der behaltenen Striche, die mindestens die Mindestzahl an Zellen haben); FACTUAL_STROKES und FORMULATED_STROKES zählen die Striche.
 
 Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="97" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="110" />
         <source>Chaining window (cells)</source>
         <translation>Verkettungsfenster (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="98" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
         <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
         <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="99" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="112" />
         <source>Minimum stroke cells</source>
         <translation>Mindestzahl Zellen je Strich</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="100" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
         <source>Strokes with fewer cells are dropped (generalisation).</source>
         <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="101" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="114" />
         <source>Geometry</source>
         <translation>Geometrie</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
         <source>Map (cell centres)</source>
         <translation>Karte (Zellmittelpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="102" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
         <source>Plan oblique (the sketch)</source>
         <translation>Plan oblique (die Skizze)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="104" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
         <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
         <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="107" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="120" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="108" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="121" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="108" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="121" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="110" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="124" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="112" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="125" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="129" />
         <source>Profiles per strip (0: automatic)</source>
         <translation>Profile je Streifen (0: automatisch)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="130" />
         <source>The DEM is read and processed this many profiles at a time, the next strip read while this one is processed, so DEMs larger than memory run too. 0 chooses 1024, more for profiles under 1024 cells (a million cells a strip), or fewer when profiles are so long that the strips would take more than 512 MB. Strips that would take more than half of this machine's memory are refused.</source>
         <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, mehr für Profile unter 1024 Zellen (eine Million Zellen je Streifen), oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="136" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="137" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="124" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="138" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="125" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="139" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="160" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="154" />
+        <source>Strokes</source>
+        <translation>Striche</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="155" />
+        <source>Drawn (joined, smoothed, tapered)</source>
+        <translation>Gezeichnet (verbunden, geglättet, verjüngt)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="155" />
+        <source>Exact (the thesis's, a point per cell)</source>
+        <translation>Exakt (wie in der Dissertation, ein Punkt je Zelle)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="157" />
+        <source>Drawn (the default): strokes a cartographer would publish. Pieces of one class that continue each other across a small gap are joined before short strokes are dropped; points lie between cells where the profile peaks or the slope breaks, and are smoothed along the stroke; every point carries a weight (its M value) that tapers the ends and thins the strokes towards the back of the view, which the layers' styles draw. Exact: the thesis's strokes, a point at each cell centre.</source>
+        <translation>Gezeichnet (Voreinstellung): Striche, wie sie ein Kartograf veröffentlichen würde. Stücke einer Klasse, die einander über eine kleine Lücke fortsetzen, werden verbunden, bevor kurze Striche entfallen; Punkte liegen zwischen den Zellen, wo das Profil gipfelt oder die Neigung bricht, und werden entlang des Strichs geglättet; jeder Punkt trägt ein Gewicht (seinen M-Wert), das die Enden verjüngt und die Striche zum hinteren Rand der Ansicht hin dünner macht, wie es die Stile der Layer zeichnen. Exakt: die Striche der Dissertation, ein Punkt in jeder Zellmitte.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="164" />
+        <source>Join gap (cells)</source>
+        <translation>Verbindungslücke (Zellen)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="165" />
+        <source>Drawn strokes: ends of two strokes this close (in cells) are joined when their directions agree. 0 joins none.</source>
+        <translation>Gezeichnete Striche: Enden zweier Striche, die so nahe beieinander liegen (in Zellen), werden verbunden, wenn ihre Richtungen übereinstimmen. 0 verbindet keine.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="167" />
+        <source>Join angle (degrees)</source>
+        <translation>Verbindungswinkel (Grad)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="168" />
+        <source>Drawn strokes: the largest turn between two ends' directions, and the step between them, for them to be joined.</source>
+        <translation>Gezeichnete Striche: die größte Drehung zwischen den Richtungen zweier Enden und dem Schritt zwischen ihnen, bei der sie noch verbunden werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="170" />
+        <source>Smoothing (cells)</source>
+        <translation>Glättung (Zellen)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="171" />
+        <source>Drawn strokes: the width (sigma, in cells) of the Gaussian smoothing along each stroke. 0 keeps the points where they are.</source>
+        <translation>Gezeichnete Striche: die Breite (Sigma, in Zellen) der Gaußschen Glättung entlang jedes Strichs. 0 lässt die Punkte, wo sie sind.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="173" />
+        <source>Smoothing tolerance (cells)</source>
+        <translation>Glättungstoleranz (Zellen)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="174" />
+        <source>Drawn strokes: no point moves farther than this (in cells) from its place on the exact chain, so smoothing never invents terrain.</source>
+        <translation>Gezeichnete Striche: kein Punkt liegt weiter als dies (in Zellen) von seinem Platz auf der exakten Kette, so dass die Glättung nie Gelände erfindet.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="176" />
+        <source>Taper (share of the stroke)</source>
+        <translation>Verjüngung (Anteil des Strichs)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="177" />
+        <source>Drawn strokes: the share of a stroke's length over which each end thins.</source>
+        <translation>Gezeichnete Striche: der Anteil der Strichlänge, über den jedes Ende dünner wird.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="178" />
+        <source>Depth cue</source>
+        <translation>Tiefenwirkung</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="179" />
+        <source>Drawn strokes: the share of the weight strokes lose from the front of the view to its back.</source>
+        <translation>Gezeichnete Striche: der Anteil des Gewichts, den Striche vom vorderen zum hinteren Rand der Ansicht verlieren.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="181" />
+        <source>Over-extension (cells)</source>
+        <translation>Überzeichnung (Zellen)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="182" />
+        <source>Drawn strokes: each end runs on this far (in cells) along its direction, as a hand-drawn stroke does. 0: none.</source>
+        <translation>Gezeichnete Striche: jedes Ende läuft so weit (in Zellen) in seiner Richtung weiter, wie es ein von Hand gezeichneter Strich tut. 0: keine.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="229" />
         <source>Processing the DEM in %1 strips of %2 profiles.</source>
         <translation>Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.</translation>
     </message>

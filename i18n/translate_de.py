@@ -75,7 +75,12 @@ GERMAN = {
     "so each can be styled, filtered or switched off on its own, and routed separately in models. "
     "Each stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth and "
     "max_depth (m, factual only), mean_dist (ground distance from the front edge of the view, in "
-    "the CRS's unit) and mean_z (m).\n\nThe stage figures (log and outputs), in percent of the "
+    "the CRS's unit) and mean_z (m).\n\n"
+    "The strokes are drawn by default, as a cartographer would publish them: joined where they "
+    "continue each other, smoothed within a cell of the exact chain, and stored as LineString M "
+    "whose M values weigh each point (thin at the ends, thinner at the back of the view); the "
+    "styles draw those weights. The advanced parameter Strokes gives the thesis's exact strokes "
+    "instead.\n\nThe stage figures (log and outputs), in percent of the "
     "cells with data: HIDDEN_PCT (cells hidden behind nearer terrain), OCCLUDING_PCT (occluding "
     "cells), CSET_PCT (the candidate set: back-facing cells the raised view brings into sight), "
     "FSET_PCT (the filtered set: visible candidates the slope filter keeps), TSET_PCT (the thinned "
@@ -101,7 +106,13 @@ GERMAN = {
         "für sich gestaltet, gefiltert oder ausgeblendet und in Modellen getrennt weitergeleitet "
         "werden kann. Jeder Strich trägt: class, cells, length, mean_slope und mean_row_slope (%), "
         "mean_depth und max_depth (m, nur faktisch), mean_dist (Abstand im Gelände vom vorderen "
-        "Bildrand, in der Einheit des KBS) und mean_z (m).\n\nDie Stufenkennzahlen (Protokoll und "
+        "Bildrand, in der Einheit des KBS) und mean_z (m).\n\n"
+        "Die Striche werden standardmäßig gezeichnet, wie sie ein Kartograf veröffentlichen "
+        "würde: verbunden, wo sie einander fortsetzen, innerhalb einer Zelle der exakten Kette "
+        "geglättet und als LineString M gespeichert, deren M-Werte jeden Punkt gewichten (dünn an "
+        "den Enden, dünner zum hinteren Rand der Ansicht); die Stile zeichnen diese Gewichte. Der "
+        "erweiterte Parameter Striche liefert stattdessen die exakten Striche der Dissertation."
+        "\n\nDie Stufenkennzahlen (Protokoll und "
         "Ausgaben), in Prozent der Zellen mit Daten: HIDDEN_PCT (hinter näherem Gelände "
         "verdeckte Zellen), OCCLUDING_PCT (verdeckende Zellen), CSET_PCT (die Kandidatenmenge: "
         "abgewandte Zellen, die der erhöhte Blick sichtbar macht), FSET_PCT (die gefilterte "
@@ -378,6 +389,42 @@ GERMAN = {
     "Float32 raster of |row slope| in percent.": "Float32-Raster der |Zeilenneigung| in Prozent.",
     "Terrain sketch: factual and formulated silhouettes":
         "Geländeskizze: faktische und formulierte Silhouetten",
+    'Strokes':
+        'Striche',
+    'Drawn (joined, smoothed, tapered)':
+        'Gezeichnet (verbunden, geglättet, verjüngt)',
+    "Exact (the thesis's, a point per cell)":
+        'Exakt (wie in der Dissertation, ein Punkt je Zelle)',
+    "Drawn (the default): strokes a cartographer would publish. Pieces of one class that continue each other across a small gap are joined before short strokes are dropped; points lie between cells where the profile peaks or the slope breaks, and are smoothed along the stroke; every point carries a weight (its M value) that tapers the ends and thins the strokes towards the back of the view, which the layers' styles draw. Exact: the thesis's strokes, a point at each cell centre.":
+        'Gezeichnet (Voreinstellung): Striche, wie sie ein Kartograf veröffentlichen würde. Stücke einer Klasse, die einander über eine kleine Lücke fortsetzen, werden verbunden, bevor kurze Striche entfallen; Punkte liegen zwischen den Zellen, wo das Profil gipfelt oder die Neigung bricht, und werden entlang des Strichs geglättet; jeder Punkt trägt ein Gewicht (seinen M-Wert), das die Enden verjüngt und die Striche zum hinteren Rand der Ansicht hin dünner macht, wie es die Stile der Layer zeichnen. Exakt: die Striche der Dissertation, ein Punkt in jeder Zellmitte.',
+    'Join gap (cells)':
+        'Verbindungslücke (Zellen)',
+    'Drawn strokes: ends of two strokes this close (in cells) are joined when their directions agree. 0 joins none.':
+        'Gezeichnete Striche: Enden zweier Striche, die so nahe beieinander liegen (in Zellen), werden verbunden, wenn ihre Richtungen übereinstimmen. 0 verbindet keine.',
+    'Join angle (degrees)':
+        'Verbindungswinkel (Grad)',
+    "Drawn strokes: the largest turn between two ends' directions, and the step between them, for them to be joined.":
+        'Gezeichnete Striche: die größte Drehung zwischen den Richtungen zweier Enden und dem Schritt zwischen ihnen, bei der sie noch verbunden werden.',
+    'Smoothing (cells)':
+        'Glättung (Zellen)',
+    'Drawn strokes: the width (sigma, in cells) of the Gaussian smoothing along each stroke. 0 keeps the points where they are.':
+        'Gezeichnete Striche: die Breite (Sigma, in Zellen) der Gaußschen Glättung entlang jedes Strichs. 0 lässt die Punkte, wo sie sind.',
+    'Smoothing tolerance (cells)':
+        'Glättungstoleranz (Zellen)',
+    'Drawn strokes: no point moves farther than this (in cells) from its place on the exact chain, so smoothing never invents terrain.':
+        'Gezeichnete Striche: kein Punkt liegt weiter als dies (in Zellen) von seinem Platz auf der exakten Kette, so dass die Glättung nie Gelände erfindet.',
+    'Taper (share of the stroke)':
+        'Verjüngung (Anteil des Strichs)',
+    "Drawn strokes: the share of a stroke's length over which each end thins.":
+        'Gezeichnete Striche: der Anteil der Strichlänge, über den jedes Ende dünner wird.',
+    'Depth cue':
+        'Tiefenwirkung',
+    'Drawn strokes: the share of the weight strokes lose from the front of the view to its back.':
+        'Gezeichnete Striche: der Anteil des Gewichts, den Striche vom vorderen zum hinteren Rand der Ansicht verlieren.',
+    'Over-extension (cells)':
+        'Überzeichnung (Zellen)',
+    'Drawn strokes: each end runs on this far (in cells) along its direction, as a hand-drawn stroke does. 0: none.':
+        'Gezeichnete Striche: jedes Ende läuft so weit (in Zellen) in seiner Richtung weiter, wie es ein von Hand gezeichneter Strich tut. 0: keine.',
 }
 
 

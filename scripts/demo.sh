@@ -5,6 +5,7 @@
 #   through qgis_process:  out/jacksboro_factual.gpkg, out/jacksboro_formulated.gpkg
 #   with the CLI:          out/jacksboro_silhouettes.gpkg, out/jacksboro_stats.json,
 #                          out/jacksboro_sketch.png (a picture of the oblique sketch)
+#                          out/jacksboro_sketch.pdf (the sketch as vector art on an A3 page)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh qgis
@@ -22,5 +23,8 @@ QT_QPA_PLATFORM=${QT_QPA_PLATFORM:-offscreen} /usr/bin/qgis_process.bin run \
 
 build/cli/terrain-sketch silhouettes "$dem" out/jacksboro_silhouettes.gpkg --geometry oblique \
   --stats-json out/jacksboro_stats.json --preview out/jacksboro_sketch.png
+build/cli/terrain-sketch silhouettes "$dem" out/jacksboro_page.gpkg --preview out/jacksboro_sketch.pdf \
+  --page A3
 echo "wrote out/jacksboro_factual.gpkg, out/jacksboro_formulated.gpkg (qgis_process),"
-echo "      out/jacksboro_silhouettes.gpkg, out/jacksboro_stats.json, out/jacksboro_sketch.png (CLI)"
+echo "      out/jacksboro_silhouettes.gpkg, out/jacksboro_stats.json, out/jacksboro_sketch.png,"
+echo "      out/jacksboro_sketch.pdf (an A3 page of vector art) (CLI)"
