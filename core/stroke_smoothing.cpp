@@ -28,39 +28,51 @@ std::vector<double> kernel(double sigma_points, std::size_t n) {
   return w;
 }
 
-}  // namespace
-
-namespace {
-
-// One pass: the Gaussian mean about each inner point (of heights too, if `z` is given), then each
-// point held within `tolerance` of its anchor.
+// One pass: the Gaussian mean about each inner point (of heights too, if `vertices` are given),
+// then each point held within `tolerance` of its anchor.
 void smoothing_pass(std::vector<StrokePoint>& points, const std::vector<double>& w,
                     const std::vector<StrokePoint>& anchors, double tolerance,
-                    std::vector<StrokePoint>& scratch, std::vector<StrokeVertex>* vertices) {
+                    std::vector<StrokePoint>& scratch, std::vector<double>& z,
+                    std::vector<StrokeVertex>* vertices) {
   const auto last = static_cast<std::ptrdiff_t>(points.size() - 1);
   const auto reach = static_cast<std::ptrdiff_t>(w.size() - 1);
   scratch = points;
-  std::vector<double> z(vertices ? points.size() : 0);
+  z.resize(vertices ? points.size() : 0);
+  double total = w[0];
+  for (std::size_t j = 1; j < w.size(); ++j) total += 2.0 * w[j];
   for (std::ptrdiff_t k = 1; k < last; ++k) {
+    const auto u = static_cast<std::size_t>(k);
+    if (k >= reach && k + reach <= last && !vertices) {
+      // Inside the stroke the kernel is whole: pairs of points either side, one normaliser.
+      double sx = w[0] * points[u].x, sy = w[0] * points[u].y;
+      for (std::size_t j = 1; j < w.size(); ++j) {
+        sx += w[j] * (points[u - j].x + points[u + j].x);
+        sy += w[j] * (points[u - j].y + points[u + j].y);
+      }
+      scratch[u] = {sx / total, sy / total};
+      continue;
+    }
     double sw = 0.0, sx = 0.0, sy = 0.0, sz = 0.0;
     for (std::ptrdiff_t j = std::max<std::ptrdiff_t>(0, k - reach); j <= std::min(last, k + reach);
          ++j) {
       const double wj = w[static_cast<std::size_t>(std::abs(j - k))];
-      const auto u = static_cast<std::size_t>(j);
+      const auto v = static_cast<std::size_t>(j);
       sw += wj;
-      sx += wj * points[u].x;
-      sy += wj * points[u].y;
-      if (vertices) sz += wj * (*vertices)[u].z;
+      sx += wj * points[v].x;
+      sy += wj * points[v].y;
+      if (vertices) sz += wj * (*vertices)[v].z;
     }
-    const auto u = static_cast<std::size_t>(k);
     scratch[u] = {sx / sw, sy / sw};
     if (vertices) z[u] = sz / sw;
   }
   for (std::size_t k = 0; k < points.size(); ++k) {
     const StrokePoint anchor = anchors[k];
     double dx = scratch[k].x - anchor.x, dy = scratch[k].y - anchor.y;
-    const double moved = std::sqrt(dx * dx + dy * dy);
-    if (moved > tolerance) dx *= tolerance / moved, dy *= tolerance / moved;
+    const double moved_squared = dx * dx + dy * dy;
+    if (moved_squared > tolerance * tolerance) {
+      const double scale = tolerance / std::sqrt(moved_squared);
+      dx *= scale, dy *= scale;
+    }
     points[k] = {anchor.x + dx, anchor.y + dy};
     if (vertices && k > 0 && static_cast<std::ptrdiff_t>(k) < last) (*vertices)[k].z = z[k];
   }
@@ -78,12 +90,14 @@ void smooth_stroke(Stroke& stroke, double sigma, double tolerance, bool heights,
   if (!(spacing > 0.0)) return;
   const std::vector<double> w = kernel(sigma / spacing, n);
   const std::vector<StrokePoint> held = anchors && anchors->size() == n ? *anchors : stroke.points;
-  std::vector<StrokePoint> scratch;
+  // Storage kept from stroke to stroke (smoothing runs on one thread at a time per drawer).
+  thread_local std::vector<StrokePoint> scratch;
+  thread_local std::vector<double> z;
   // Where a pass pulls a point back within the tolerance, it leaves a kink; the next passes
   // smooth the kinks out within the same band.
   for (int pass = 0; pass < kSmoothingPasses; ++pass) {
     const bool first = pass == 0;
-    smoothing_pass(stroke.points, w, held, tolerance, scratch,
+    smoothing_pass(stroke.points, w, held, tolerance, scratch, z,
                    first && heights && stroke.vertices.size() == n ? &stroke.vertices : nullptr);
   }
 }
