@@ -134,6 +134,21 @@ Stroke StrokeBuilder::stroke(StrokeClass cls) const {
   return s;
 }
 
+Stroke StrokeBuilder::take(StrokeClass cls) {
+  const int cells = this->cells();
+  Chain chain = std::move(chain_);
+  std::vector<StrokePoint> points = std::move(points_);
+  std::vector<StrokeVertex> vertices = std::move(vertices_);
+  chain_.clear(), points_.clear(), vertices_.clear();
+  Stroke s = stroke(cls);  // the attributes, from the running sums
+  s.cells = cells;
+  s.chain = std::move(chain);
+  s.points = std::move(points);
+  s.vertices = std::move(vertices);
+  clear();
+  return s;
+}
+
 void StrokeBuilder::clear() {
   chain_.clear();
   points_.clear();

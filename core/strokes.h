@@ -118,6 +118,8 @@ class StrokeBuilder {
   std::int32_t first_profile() const { return chain_.front().p; }
   // The stroke so far with its attributes, its vectors sized to fit.
   Stroke stroke(StrokeClass cls) const;
+  // The stroke so far, its vectors moved out of the builder, which is left empty.
+  Stroke take(StrokeClass cls);
   // Empties the builder for the next chain, keeping its storage.
   void clear();
 
