@@ -146,10 +146,11 @@ struct SilhouetteStream::State {
     auto taken = std::make_shared<Settled>(std::move(settled));
     settled.clear();
     auto draw = [this, taken] {
-      for (auto& [strokes, groups] : *taken) {
+      for (auto& entry : *taken) {
         if (abandoned) return;
-        strokes->drawer->draw(groups,
-                              [&](Stroke&& stroke) { deliver(*strokes, std::move(stroke)); });
+        Strokes& strokes = *entry.first;
+        strokes.drawer->draw(entry.second,
+                             [&](Stroke&& stroke) { deliver(strokes, std::move(stroke)); });
       }
     };
     if (!drawing) return draw();
