@@ -49,10 +49,10 @@ std::vector<StrokePoint> tapered_outline(const std::vector<StrokePoint>& line,
   std::vector<StrokePoint> outline;
   outline.reserve(2 * n + 2);
   outline.push_back({line[0].x + first.x * 0.5 * widths[0], line[0].y + first.y * 0.5 * widths[0]});
-  outline.insert(outline.end(), left.begin(), left.end());
+  for (const StrokePoint& q : left) outline.push_back(q);
   outline.push_back(
       {line[n - 1].x + end.x * 0.5 * widths[n - 1], line[n - 1].y + end.y * 0.5 * widths[n - 1]});
-  outline.insert(outline.end(), right.rbegin(), right.rend());
+  for (auto it = right.rbegin(); it != right.rend(); ++it) outline.push_back(*it);
   return outline;
 }
 

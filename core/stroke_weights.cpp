@@ -65,11 +65,18 @@ void extend_stroke(Stroke& stroke, double length, double reach) {
   if (pts.size() < 2 || !(length > 0.0)) return;
   const StrokePoint before = run_on(pts.begin(), pts.end(), length, reach);
   const StrokePoint after = run_on(pts.rbegin(), pts.rend(), length, reach);
-  pts.insert(pts.begin(), before);
+  // Shifted up by one for the new first point (GCC 14 warns falsely about an insert here).
   pts.push_back(after);
+  pts.push_back(after);
+  std::move_backward(pts.begin(), pts.end() - 2, pts.end() - 1);
+  pts.front() = before;
   if (!stroke.vertices.empty()) {
-    stroke.vertices.insert(stroke.vertices.begin(), stroke.vertices.front());
-    stroke.vertices.push_back(stroke.vertices.back());
+    const StrokeVertex first = stroke.vertices.front(), last = stroke.vertices.back();
+    stroke.vertices.push_back(last);
+    stroke.vertices.push_back(last);
+    std::move_backward(stroke.vertices.begin(), stroke.vertices.end() - 2,
+                       stroke.vertices.end() - 1);
+    stroke.vertices.front() = first;
   }
 }
 
