@@ -89,7 +89,10 @@ void smooth_stroke(Stroke& stroke, double sigma, double tolerance, bool heights,
   const double spacing = polyline_length(stroke.points) / static_cast<double>(n - 1);
   if (!(spacing > 0.0)) return;
   const std::vector<double> w = kernel(sigma / spacing, n);
-  const std::vector<StrokePoint> held = anchors && anchors->size() == n ? *anchors : stroke.points;
+  // Points are held near their anchors, or near where they were when no anchors are given.
+  std::vector<StrokePoint> where_they_were;
+  if (!anchors || anchors->size() != n) where_they_were = stroke.points;
+  const std::vector<StrokePoint>& held = where_they_were.empty() ? *anchors : where_they_were;
   // Storage kept from stroke to stroke (smoothing runs on one thread at a time per drawer).
   thread_local std::vector<StrokePoint> scratch;
   thread_local std::vector<double> z;

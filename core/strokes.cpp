@@ -52,9 +52,9 @@ double subcell_break(const float* z, const std::uint8_t* flags, std::size_t leng
   const auto in_zone = [&](std::size_t k) { return k < length && (flags[k] & cell::filtered); };
   // The zone's edge this cell stands for: the far one, or the near one for a near-end cell.
   const bool far_edge = !in_zone(i + 1);
-  if (!far_edge && i > 0 && in_zone(i - 1)) return at;  // inside the zone: no edge here
+  // Inside the zone there is no edge here; a near edge needs a cell before it.
+  if (!far_edge && (i == 0 || in_zone(i - 1))) return at;
   const std::size_t inner = far_edge ? i : i - 1, outer = inner + 1;
-  if (!far_edge && i == 0) return at;
   const double s_in = view.ve * column_slope(z, length, far_edge ? inner : outer, d);
   const double s_out = view.ve * column_slope(z, length, far_edge ? outer : inner, d);
   if (!std::isfinite(s_in) || !std::isfinite(s_out)) return at;
@@ -117,13 +117,27 @@ void StrokeBuilder::add(const StrokeCell& c, bool keep_vertices) {
 }
 
 Stroke StrokeBuilder::stroke(StrokeClass cls) const {
+  Stroke s = attributes(cls);
+  s.chain = chain_;
+  s.points = points_;
+  s.vertices = vertices_;
+  return s;
+}
+
+Stroke StrokeBuilder::take(StrokeClass cls) {
+  Stroke s = attributes(cls);
+  s.chain = std::move(chain_);
+  s.points = std::move(points_);
+  s.vertices = std::move(vertices_);
+  clear();
+  return s;
+}
+
+Stroke StrokeBuilder::attributes(StrokeClass cls) const {
   const bool factual = cls == StrokeClass::factual;
   Stroke s;
   s.cls = cls;
   s.cells = cells();
-  s.chain = chain_;
-  s.points = points_;
-  s.vertices = vertices_;
   s.length = length_;
   s.mean_slope_pct = slope_.value();
   s.mean_row_slope_pct = row_slope_.value();
@@ -131,21 +145,6 @@ Stroke StrokeBuilder::stroke(StrokeClass cls) const {
   s.max_depth_m = factual ? max_depth_ : kNaN;
   s.mean_dist = dist_.value();
   s.mean_z = z_.value();
-  return s;
-}
-
-Stroke StrokeBuilder::take(StrokeClass cls) {
-  const int cells = this->cells();
-  Chain chain = std::move(chain_);
-  std::vector<StrokePoint> points = std::move(points_);
-  std::vector<StrokeVertex> vertices = std::move(vertices_);
-  chain_.clear(), points_.clear(), vertices_.clear();
-  Stroke s = stroke(cls);  // the attributes, from the running sums
-  s.cells = cells;
-  s.chain = std::move(chain);
-  s.points = std::move(points);
-  s.vertices = std::move(vertices);
-  clear();
   return s;
 }
 

@@ -133,6 +133,8 @@ class StrokeBuilder {
     }
     double value() const;
   };
+  // The stroke's attributes from the running sums, without its vectors.
+  Stroke attributes(StrokeClass cls) const;
   Chain chain_;
   std::vector<StrokePoint> points_;
   std::vector<StrokeVertex> vertices_;
