@@ -6,6 +6,8 @@
 # outputs never change. The stats hash covers the stage figures, not the filter's report.
 set -euo pipefail
 filter=${FILTER:-fixed}
+# STROKES=drawn hashes the drawn strokes; by default SPEC's exact ones, which never change.
+strokes=${STROKES:-exact}
 mkdir -p "$4"
 build=$(realpath "$1") dem=$(realpath "$2") sample=$(realpath "$3") work=$(realpath "$4")
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -15,7 +17,7 @@ dump() {  # the rows of every layer of a vector file, geometry as WKT, in file o
 run_cli() {  # NAME ARGS...
   local name=$1; shift
   "$build/cli/terrain-sketch" silhouettes "$dem" "$work/$name.gpkg" --stats-json "$work/$name.json" \
-    --filter "$filter" "$@" > /dev/null 2>&1
+    --filter "$filter" --strokes "$strokes" "$@" > /dev/null 2>&1
   local stats
   stats=$(sed '/"filter"/,$d' "$work/$name.json" | tr -d ',' | sha256sum | cut -c1-16)
   echo "cli $name: strokes $(dump "$work/$name.gpkg") stats $stats"
@@ -32,7 +34,8 @@ if [ -x /usr/bin/qgis_process.bin ] && [ -d "$build/qgis-plugin/terrain_sketch" 
     -P "$repo/plugin/install_plugin.cmake" > /dev/null
   for az in 90 45; do
     /usr/bin/qgis_process.bin run terrainsketch:silhouettes --INPUT="$sample" --BAND=1 --AZIMUTH=$az \
-      --FILTER=$([ "$filter" = fixed ] && echo 1 || echo 0) --GEOMETRY=1 --FACTUAL="$work/q$az-f.gpkg" --FORMULATED="$work/q$az-o.gpkg" > "$work/q$az.log" 2>&1
+      --FILTER=$([ "$filter" = fixed ] && echo 1 || echo 0) \
+      --STROKES=$([ "$strokes" = exact ] && echo 1 || echo 0) --GEOMETRY=1 --FACTUAL="$work/q$az-f.gpkg" --FORMULATED="$work/q$az-o.gpkg" > "$work/q$az.log" 2>&1
     echo "qgis azimuth $az oblique: factual $(dump "$work/q$az-f.gpkg") formulated $(dump "$work/q$az-o.gpkg")"
   done
 fi
