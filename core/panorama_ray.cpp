@@ -1,0 +1,188 @@
+#include "panorama_ray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "profile_stages.h"
+#include "slope_filter.h"
+#include "thinning.h"
+
+namespace tsk {
+namespace {
+
+constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
+
+// Where ray r's samples lie on the DEM: sample i (1-based) at pixel origin + i * along, and the
+// points a step to either side of it at -/+ across.
+struct RayPlace {
+  PixelPoint origin, along, across;
+  PixelPoint direction;  // unit vector in map units (east, north)
+
+  RayPlace(const PanoramaRays& rays, std::size_t r)
+      : origin(rays.observer), direction(rays.direction(r)) {
+    along = {direction.col * rays.step * rays.col_per_x, direction.row * rays.step * rays.row_per_y};
+    // The right of the ray, (north, -east), a step long.
+    across = {direction.row * rays.step * rays.col_per_x,
+              -direction.col * rays.step * rays.row_per_y};
+  }
+  PixelPoint at(std::size_t k) const {  // sample index k = i - 1
+    const double i = static_cast<double>(k + 1);
+    return {origin.col + i * along.col, origin.row + i * along.row};
+  }
+};
+
+// Heights along the ray, lowered by the curvature drop, and the tangents of their elevation angles.
+void sample_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace& place,
+                RayScratch& s) {
+  const std::size_t n = rays.samples;
+  s.apparent.resize(n);
+  s.tangent.resize(n);
+  s.flags.assign(n, 0);
+  const double step_m = rays.step_metres();
+  for (std::size_t k = 0; k < n; ++k) {
+    const PixelPoint px = place.at(k);
+    const double apparent =
+        static_cast<double>(bilinear_height(dem, px.col, px.row)) - rays.drop[k];
+    s.apparent[k] = static_cast<float>(apparent);
+    s.tangent[k] = (apparent - rays.eye) / (static_cast<double>(k + 1) * step_m);
+  }
+}
+
+// SPEC 1.2 on elevation angles: hidden below the running maximum, occluding before a hidden one.
+void classify_sight(RayScratch& s) {
+  double running_max = -std::numeric_limits<double>::infinity();
+  const std::size_t n = s.apparent.size(), none = n;
+  std::size_t last_visible = none;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!is_data(s.apparent[k])) continue;  // the maximum carries over nodata
+    std::uint8_t f = cell::valid;
+    if (s.tangent[k] < running_max) {
+      f |= cell::hidden;
+      if (last_visible != none) s.flags[last_visible] |= cell::occluding;
+    } else {
+      running_max = s.tangent[k];
+    }
+    s.flags[k] = f;
+    last_visible = (f & cell::hidden) ? none : k;
+  }
+}
+
+// The c-set (docs/PANORAMA.md 1.4): the slope along the ray falls away less steeply than the
+// sight line descends onto it, -B < gc < 0 with B = -tangent, each bound moved in by the
+// height tolerance.
+void select_candidates(const PanoramaRays& rays, double tolerance, RayScratch& s) {
+  const double step_m = rays.step_metres();
+  const double inset = tolerance / step_m;
+  for (std::size_t k = 0; k + 1 < s.apparent.size(); ++k) {
+    const double gc =
+        (static_cast<double>(s.apparent[k + 1]) - static_cast<double>(s.apparent[k])) / step_m;
+    const bool candidate = (gc > s.tangent[k] + inset) & (gc < -inset);
+    s.flags[k] |= static_cast<std::uint8_t>(candidate * cell::candidate);
+  }
+}
+
+// The slope across the ray at sample k, over two steps, one-sided beside nodata (SPEC 1.3).
+double across_slope(const HeightGrid& dem, const RayPlace& place, std::size_t k, double step_m) {
+  const PixelPoint p = place.at(k);
+  const double centre = bilinear_height(dem, p.col, p.row);
+  const double right = bilinear_height(dem, p.col + place.across.col, p.row + place.across.row);
+  const double left = bilinear_height(dem, p.col - place.across.col, p.row - place.across.row);
+  const bool has_left = std::isfinite(left), has_right = std::isfinite(right);
+  if (has_left && has_right) return (right - left) / (2.0 * step_m);
+  if (has_right) return (right - centre) / step_m;
+  if (has_left) return (centre - left) / step_m;
+  return 0.0;
+}
+
+double along_slope(const RayScratch& s, std::size_t k, double step_m) {
+  if (k + 1 >= s.apparent.size()) return std::numeric_limits<double>::quiet_NaN();
+  return (static_cast<double>(s.apparent[k + 1]) - static_cast<double>(s.apparent[k])) / step_m;
+}
+
+// SPEC 1.5 on the visible c-set.
+void filter_samples(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace& place,
+                    const FilterRule& rule, RayScratch& s) {
+  const double step_m = rays.step_metres();
+  for (std::size_t k = 0; k < s.flags.size(); ++k) {
+    if ((s.flags[k] & (cell::candidate | cell::hidden)) != cell::candidate) continue;
+    const double col_pct = std::fabs(along_slope(s, k, step_m)) * 100.0;
+    const double row_pct = std::fabs(across_slope(dem, place, k, step_m)) * 100.0;
+    s.flags[k] |= static_cast<std::uint8_t>(rule.accepts(col_pct, row_pct) * cell::filtered);
+  }
+}
+
+// How far, in metres, the terrain of the hidden zone after occluding sample k lies below the
+// sight line that grazes it, at its deepest.
+double zone_depth(const PanoramaRays& rays, const RayScratch& s, std::size_t k) {
+  const double step_m = rays.step_metres();
+  double deepest = 0.0;
+  for (std::size_t j = k + 1; j < s.flags.size(); ++j) {
+    if (!(s.flags[j] & cell::valid)) continue;
+    if (!(s.flags[j] & cell::hidden)) break;
+    const double sight = rays.eye + s.tangent[k] * static_cast<double>(j + 1) * step_m;
+    deepest = std::max(deepest, sight - static_cast<double>(s.apparent[j]));
+  }
+  return deepest;
+}
+
+// The stroke cells of one class's candidates.
+void collect_cells(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace& place,
+                   std::size_t r, const RayScratch& s, bool factual, RayChainCells& out) {
+  const ProfileCandidates& candidates = factual ? out.factual : out.formulated;
+  std::vector<StrokeCell>& cells = factual ? out.factual_cells : out.formulated_cells;
+  std::vector<StrokePoint>& view = factual ? out.factual_view : out.formulated_view;
+  cells.clear();
+  view.clear();
+  const double step_m = rays.step_metres(), azimuth = rays.azimuth_deg(r);
+  for (std::int32_t i : candidates.cell) {
+    const std::size_t k = static_cast<std::size_t>(i);
+    StrokeCell c;
+    c.cell = {static_cast<std::int32_t>(r), i};
+    c.dist = rays.distance(k + 1);
+    c.map = {rays.observer_x + c.dist * place.direction.col,
+             rays.observer_y + c.dist * place.direction.row};
+    c.point = c.map;
+    c.z = static_cast<double>(s.apparent[k]) + rays.drop[k];
+    c.slope_pct = std::fabs(along_slope(s, k, step_m)) * 100.0;
+    c.row_slope_pct = std::fabs(across_slope(dem, place, k, step_m)) * 100.0;
+    c.depth_m = factual ? zone_depth(rays, s, k) : std::numeric_limits<double>::quiet_NaN();
+    cells.push_back(c);
+    view.push_back({azimuth, std::atan(s.tangent[k]) * kDegPerRad});
+  }
+}
+
+void record_visibility(const RayScratch& s, std::uint8_t* out) {
+  std::memset(out, 0, (s.flags.size() + 3) / 4);
+  for (std::size_t k = 0; k < s.flags.size(); ++k) {
+    const std::uint8_t f = s.flags[k];
+    const std::uint8_t code = !(f & cell::valid)   ? sample_class::out
+                              : (f & cell::hidden) ? sample_class::hidden
+                                                   : sample_class::visible;
+    out[k / 4] |= static_cast<std::uint8_t>(code << (2 * (k % 4)));
+  }
+}
+
+}  // namespace
+
+void classify_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayRules& rules,
+                  std::size_t r, RayScratch& scratch, RayChainCells& out,
+                  std::uint8_t* visibility) {
+  const RayPlace place(rays, r);
+  sample_ray(dem, rays, place, scratch);
+  classify_sight(scratch);
+  select_candidates(rays, rules.height_tolerance, scratch);
+  filter_samples(dem, rays, place, FilterRule(rules.filter), scratch);
+  const std::size_t n = scratch.flags.size();
+  thin_profile(scratch.flags.data(), n, rules.placement);
+  out.counts = StageStats{};
+  count_profile(scratch.flags.data(), n, out.counts);
+  profile_candidates(scratch.flags.data(), n, true, out.factual);
+  profile_candidates(scratch.flags.data(), n, false, out.formulated);
+  collect_cells(dem, rays, place, r, scratch, true, out);
+  collect_cells(dem, rays, place, r, scratch, false, out);
+  if (visibility) record_visibility(scratch, visibility);
+}
+
+}  // namespace tsk

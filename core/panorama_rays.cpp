@@ -1,0 +1,170 @@
+#include "panorama_rays.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "errors.h"
+
+namespace tsk {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kRadPerDeg = kPi / 180.0;
+
+std::string number(double v) {
+  std::string s = std::to_string(v);
+  s.erase(s.find_last_not_of('0') + 1);
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s;
+}
+
+void require(bool ok, const std::string& message) {
+  if (!ok) throw Error(message);
+}
+
+// The height under O: bilinear, or the cell O stands in where bilinear reaches past the DEM's
+// edge or onto nodata beside it.
+double ground_at_observer(const HeightGrid& dem, const PixelPoint& o, double x, double y) {
+  float ground = bilinear_height(dem, o.col, o.row);
+  if (!is_data(ground)) ground = dem(static_cast<std::size_t>(o.row), static_cast<std::size_t>(o.col));
+  require(is_data(ground), "the observer at " + number(x) + ", " + number(y) +
+                               " stands on a cell without data: choose a point on the terrain");
+  return static_cast<double>(ground);
+}
+
+// The distance from O to the DEM's farthest corner, map units.
+double farthest_corner(const HeightGrid& dem, const GeoTransform& gt, double x, double y) {
+  double farthest = 0.0;
+  for (double row : {0.0, static_cast<double>(dem.rows())}) {
+    for (double col : {0.0, static_cast<double>(dem.cols())}) {
+      double cx, cy;
+      gt.apply({col, row}, cx, cy);
+      farthest = std::max(farthest, std::hypot(cx - x, cy - y));
+    }
+  }
+  return farthest;
+}
+
+}  // namespace
+
+void PanoramaView::validate() const {
+  require(std::isfinite(observer_x) && std::isfinite(observer_y),
+          "the observer's coordinates must be finite numbers");
+  require(std::isfinite(observer_height) && observer_height >= 0.0 && observer_height <= 1e5,
+          "the observer height must be from 0 to 100000 metres above the ground, got " +
+              number(observer_height));
+  require(std::isfinite(max_distance) && max_distance >= 0.0,
+          "the range (maximum distance) must be positive, got " + number(max_distance));
+  require(std::isfinite(refraction) && refraction >= 0.0 && refraction < 1.0,
+          "the refraction coefficient must be at least 0 and below 1, got " + number(refraction));
+  require(std::isfinite(earth_radius) && earth_radius > 0.0,
+          "the earth radius must be positive, got " + number(earth_radius));
+  require(std::isfinite(metres_per_unit) && metres_per_unit > 0.0,
+          "the metres per map unit must be positive");
+  field_of_view(azimuth_from, azimuth_to);
+}
+
+FieldOfView field_of_view(double azimuth_from, double azimuth_to) {
+  require(std::isfinite(azimuth_from) && std::isfinite(azimuth_to) &&
+              std::fabs(azimuth_from) <= 1e6 && std::fabs(azimuth_to) <= 1e6,
+          "the azimuths of the field of view must be numbers of degrees");
+  const double width = azimuth_to - azimuth_from;
+  require(width != 0.0, "the field of view from " + number(azimuth_from) + " to " +
+                            number(azimuth_to) +
+                            " degrees is empty: give two different azimuths (0 and 360 for all "
+                            "round)");
+  FieldOfView field;
+  field.from_deg = std::fmod(std::fmod(azimuth_from, 360.0) + 360.0, 360.0);
+  const double turned = std::fmod(std::fmod(width, 360.0) + 360.0, 360.0);
+  field.full_circle = turned == 0.0;
+  field.width_deg = field.full_circle ? 360.0 : turned;
+  return field;
+}
+
+double PanoramaRays::azimuth_deg(std::size_t r) const {
+  return field.from_deg + (static_cast<double>(r) + 0.5) * ray_spacing_deg();
+}
+
+PixelPoint PanoramaRays::direction(std::size_t r) const {
+  // In a full circle the rays come in four quarters of equal count (plan_rays): a ray's vector is
+  // its first quarter's turned by whole quarter turns, which is exact.
+  const std::size_t quarter = field.full_circle ? rays / 4 : rays;
+  const std::size_t turns = r / quarter;
+  const double angle = (field.from_deg + (static_cast<double>(r % quarter) + 0.5) *
+                                             ray_spacing_deg()) *
+                       kRadPerDeg;
+  double east = std::sin(angle), north = std::cos(angle);
+  for (std::size_t t = 0; t < turns; ++t) {
+    const double turned_east = north;  // a quarter turn clockwise: (e, n) -> (n, -e)
+    north = -east;
+    east = turned_east;
+  }
+  return {east, north};
+}
+
+PanoramaRays plan_rays(const HeightGrid& dem, const GeoTransform& gt, const PanoramaView& view) {
+  view.validate();
+  const auto& a = gt.a;
+  require(a[2] == 0.0 && a[4] == 0.0 && a[1] > 0.0 && a[5] < 0.0,
+          "a panorama needs a north-up DEM (no rotation, rows from north to south)");
+  require(dem.rows() > 0 && dem.cols() > 0, "the DEM has no cells");
+  PanoramaRays rays;
+  rays.observer_x = view.observer_x;
+  rays.observer_y = view.observer_y;
+  rays.observer = gt.to_pixel(view.observer_x, view.observer_y);
+  const PixelPoint& o = rays.observer;
+  require(o.col >= 0.0 && o.row >= 0.0 && o.col < static_cast<double>(dem.cols()) &&
+              o.row < static_cast<double>(dem.rows()),
+          "the observer at " + number(view.observer_x) + ", " + number(view.observer_y) +
+              " lies outside the DEM: choose a point on it");
+  rays.eye = ground_at_observer(dem, o, view.observer_x, view.observer_y) + view.observer_height;
+  rays.step = std::min(a[1], -a[5]);
+  rays.metres_per_unit = view.metres_per_unit;
+  rays.col_per_x = 1.0 / a[1];
+  rays.row_per_y = 1.0 / a[5];
+  const double farthest = farthest_corner(dem, gt, view.observer_x, view.observer_y);
+  rays.max_distance =
+      view.max_distance > 0.0 ? std::min(view.max_distance, farthest) : farthest;
+  const double reach = rays.max_distance / rays.step;  // the range in cells
+  require(reach >= 1.0, "the range of " + number(rays.max_distance) +
+                            " map units is shorter than a cell: give a longer --max-distance");
+  rays.field = field_of_view(view.azimuth_from, view.azimuth_to);
+  // Neighbouring rays at most a cell apart at the far end (docs/PANORAMA.md 1.1).
+  const double needed = std::ceil(rays.field.width_deg * kRadPerDeg * reach);
+  require(needed < 1e9 && reach < 1e9, "the panorama would need " + number(needed) +
+                                           " rays: the range is too long for the cell size");
+  rays.rays = std::max<std::size_t>(4, static_cast<std::size_t>(needed));
+  if (rays.field.full_circle) rays.rays = (rays.rays + 3) / 4 * 4;
+  rays.samples = static_cast<std::size_t>(std::floor(reach));
+  checked_cell_count(rays.rays, rays.samples);
+  rays.drop.resize(rays.samples);
+  const double bend = (1.0 - view.refraction) / (2.0 * view.earth_radius);
+  for (std::size_t k = 0; k < rays.samples; ++k) {
+    const double metres = rays.distance(k + 1) * view.metres_per_unit;
+    rays.drop[k] = bend * metres * metres;
+  }
+  return rays;
+}
+
+float bilinear_height(const HeightGrid& dem, double col, double row) {
+  const double u = col - 0.5, v = row - 0.5;
+  const double c0 = std::floor(u), r0 = std::floor(v);
+  const double fu = u - c0, fv = v - r0;
+  const auto at = [&dem](double r, double c) {
+    if (r < 0.0 || c < 0.0 || r >= static_cast<double>(dem.rows()) ||
+        c >= static_cast<double>(dem.cols()))
+      return kNoData;
+    return dem(static_cast<std::size_t>(r), static_cast<std::size_t>(c));
+  };
+  // A neighbour of weight 0 is not read, so a sample on a cell centre needs only that cell.
+  const double z00 = at(r0, c0);
+  const double z01 = fu > 0.0 ? at(r0, c0 + 1) : z00;
+  const double z10 = fv > 0.0 ? at(r0 + 1, c0) : z00;
+  const double z11 = fu > 0.0 ? (fv > 0.0 ? at(r0 + 1, c0 + 1) : z01) : z10;
+  const double top = z00 * (1.0 - fu) + z01 * fu;
+  const double bottom = z10 * (1.0 - fu) + z11 * fu;
+  return static_cast<float>(top * (1.0 - fv) + bottom * fv);
+}
+
+}  // namespace tsk
