@@ -52,9 +52,8 @@ PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotra
       RayScratch scratch;
       for (std::size_t k = lo; k < hi; ++k) {
         const std::size_t r = first + k;
-        std::uint8_t* record = params.record_visibility
-                                   ? result.samples.data() + r * result.row_bytes()
-                                   : nullptr;
+        std::uint8_t* record =
+            params.record_visibility ? result.samples.data() + r * result.row_bytes() : nullptr;
         classify_ray(dem, rays, params.rules, r, scratch, batch[k], record);
       }
     });

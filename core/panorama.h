@@ -20,14 +20,14 @@ struct PanoramaParams {
   PanoramaView view;
   RayRules rules;
   ChainParams chain;
-  unsigned threads = 0;             // 0: one per hardware thread
-  bool record_visibility = false;   // keep every sample's class for visibility_raster()
+  unsigned threads = 0;            // 0: one per hardware thread
+  bool record_visibility = false;  // keep every sample's class for visibility_raster()
   void validate() const;
 };
 
 struct PanoramaResult {
   PanoramaRays rays;
-  StageStats stats;  // shares of the valid samples in range
+  StageStats stats;                     // shares of the valid samples in range
   std::vector<PanoramaStroke> strokes;  // factual first, each class in the order chains started
   // With record_visibility: two bits per sample (sample_class), row_bytes() per ray.
   std::vector<std::uint8_t> samples;

@@ -22,7 +22,8 @@ struct RayPlace {
 
   RayPlace(const PanoramaRays& rays, std::size_t r)
       : origin(rays.observer), direction(rays.direction(r)) {
-    along = {direction.col * rays.step * rays.col_per_x, direction.row * rays.step * rays.row_per_y};
+    along = {direction.col * rays.step * rays.col_per_x,
+             direction.row * rays.step * rays.row_per_y};
     // The right of the ray, (north, -east), a step long.
     across = {direction.row * rays.step * rays.col_per_x,
               -direction.col * rays.step * rays.row_per_y};

@@ -29,9 +29,9 @@ constexpr std::uint8_t out = 0, visible = 1, hidden = 2;
 
 // Per ray storage, reused ray after ray by one thread.
 struct RayScratch {
-  std::vector<float> apparent;     // z' = z - drop, metres; NaN for nodata
-  std::vector<double> tangent;     // (z' - h0) / d: the tangent of the elevation angle
-  std::vector<std::uint8_t> flags; // the cell:: bits, per sample
+  std::vector<float> apparent;      // z' = z - drop, metres; NaN for nodata
+  std::vector<double> tangent;      // (z' - h0) / d: the tangent of the elevation angle
+  std::vector<std::uint8_t> flags;  // the cell:: bits, per sample
 };
 
 // One ray's chain candidates (SPEC 1.7) with their stroke cells (map geometry) and points in the
@@ -46,7 +46,6 @@ struct RayChainCells {
 // Classifies ray r of `rays` over `dem` into `out`. With `visibility`, writes its samples'
 // classes there (rays.samples two-bit codes).
 void classify_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayRules& rules,
-                  std::size_t r, RayScratch& scratch, RayChainCells& out,
-                  std::uint8_t* visibility);
+                  std::size_t r, RayScratch& scratch, RayChainCells& out, std::uint8_t* visibility);
 
 }  // namespace tsk

@@ -27,7 +27,8 @@ void require(bool ok, const std::string& message) {
 // edge or onto nodata beside it.
 double ground_at_observer(const HeightGrid& dem, const PixelPoint& o, double x, double y) {
   float ground = bilinear_height(dem, o.col, o.row);
-  if (!is_data(ground)) ground = dem(static_cast<std::size_t>(o.row), static_cast<std::size_t>(o.col));
+  if (!is_data(ground))
+    ground = dem(static_cast<std::size_t>(o.row), static_cast<std::size_t>(o.col));
   require(is_data(ground), "the observer at " + number(x) + ", " + number(y) +
                                " stands on a cell without data: choose a point on the terrain");
   return static_cast<double>(ground);
@@ -91,9 +92,8 @@ PixelPoint PanoramaRays::direction(std::size_t r) const {
   // its first quarter's turned by whole quarter turns, which is exact.
   const std::size_t quarter = field.full_circle ? rays / 4 : rays;
   const std::size_t turns = r / quarter;
-  const double angle = (field.from_deg + (static_cast<double>(r % quarter) + 0.5) *
-                                             ray_spacing_deg()) *
-                       kRadPerDeg;
+  const double angle =
+      (field.from_deg + (static_cast<double>(r % quarter) + 0.5) * ray_spacing_deg()) * kRadPerDeg;
   double east = std::sin(angle), north = std::cos(angle);
   for (std::size_t t = 0; t < turns; ++t) {
     const double turned_east = north;  // a quarter turn clockwise: (e, n) -> (n, -e)
@@ -124,8 +124,7 @@ PanoramaRays plan_rays(const HeightGrid& dem, const GeoTransform& gt, const Pano
   rays.col_per_x = 1.0 / a[1];
   rays.row_per_y = 1.0 / a[5];
   const double farthest = farthest_corner(dem, gt, view.observer_x, view.observer_y);
-  rays.max_distance =
-      view.max_distance > 0.0 ? std::min(view.max_distance, farthest) : farthest;
+  rays.max_distance = view.max_distance > 0.0 ? std::min(view.max_distance, farthest) : farthest;
   const double reach = rays.max_distance / rays.step;  // the range in cells
   require(reach >= 1.0, "the range of " + number(rays.max_distance) +
                             " map units is shorter than a cell: give a longer --max-distance");

@@ -34,12 +34,12 @@ FieldOfView field_of_view(double azimuth_from, double azimuth_to);
 // The rays of a view over one DEM: where they start, how far apart their samples are, how many
 // there are and where they point. Sample i (1..samples) of a ray lies at distance i * step.
 struct PanoramaRays {
-  PixelPoint observer;     // O in DEM pixels
+  PixelPoint observer;  // O in DEM pixels
   double observer_x = 0, observer_y = 0;
-  double eye = 0.0;        // h0: the ground at O plus the observer height, metres
-  double step = 1.0;       // s: the DEM's smaller cell size, map units
+  double eye = 0.0;   // h0: the ground at O plus the observer height, metres
+  double step = 1.0;  // s: the DEM's smaller cell size, map units
   double metres_per_unit = 1.0;
-  double max_distance = 0; // map units
+  double max_distance = 0;  // map units
   FieldOfView field;
   std::size_t rays = 0, samples = 0;
   double col_per_x = 1.0, row_per_y = -1.0;  // DEM pixels per map unit (north-up grids)

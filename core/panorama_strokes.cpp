@@ -46,9 +46,9 @@ void PanoramaLinker::keep(std::size_t id, Open& open) {
   PanoramaStroke stroke;
   stroke.map = open.builder.take(factual_ ? StrokeClass::factual : StrokeClass::formulated);
   stroke.view = std::move(open.view);
-  const auto [lo, hi] = std::minmax_element(
-      stroke.view.begin(), stroke.view.end(),
-      [](const StrokePoint& a, const StrokePoint& b) { return a.x < b.x; });
+  const auto [lo, hi] =
+      std::minmax_element(stroke.view.begin(), stroke.view.end(),
+                          [](const StrokePoint& a, const StrokePoint& b) { return a.x < b.x; });
   stroke.azimuth_min = lo->x;
   stroke.azimuth_max = hi->x;
   kept_.emplace_back(id, std::move(stroke));
@@ -67,8 +67,8 @@ void PanoramaLinker::close_seam(const std::vector<ChainRef>& last_joined) {
     Open& before = open_[last_joined[k].slot];
     if (before.from_first_ray) continue;  // a chain round the whole circle is not wound twice
     const std::size_t id = first_joined_[j].id;
-    const auto held = std::find_if(held_.begin(), held_.end(),
-                                   [id](const Open& h) { return h.id == id; });
+    const auto held =
+        std::find_if(held_.begin(), held_.end(), [id](const Open& h) { return h.id == id; });
     if (held == held_.end()) continue;
     for (std::size_t c = 0; c < held->cells.size(); ++c) {
       before.builder.add(held->cells[c]);

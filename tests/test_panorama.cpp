@@ -1,0 +1,188 @@
+// Panorama sketches (docs/PANORAMA.md): analytic terrains with answers worked out by hand here,
+// and the panorama of a turned DEM.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <vector>
+
+#include "catch_compat.h"
+#include "panorama.h"
+#include "test_support.h"
+
+namespace tsk {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kCell = 10.0;
+
+// North-up georeferencing with 10 m cells, the grid's north-west corner at (0, rows * 10).
+GeoTransform north_up(std::size_t rows) {
+  GeoTransform gt;
+  gt.a = {0.0, kCell, 0.0, static_cast<double>(rows) * kCell, 0.0, -kCell};
+  return gt;
+}
+
+// The map position of the centre of cell (row, col).
+StrokePoint centre(const GeoTransform& gt, std::size_t row, std::size_t col) {
+  StrokePoint p{};
+  gt.apply({static_cast<double>(col) + 0.5, static_cast<double>(row) + 0.5}, p.x, p.y);
+  return p;
+}
+
+HeightGrid terrain(std::size_t rows, std::size_t cols,
+                   const std::function<double(double x, double y)>& height) {
+  HeightGrid dem(rows, cols);
+  const GeoTransform gt = north_up(rows);
+  for (std::size_t r = 0; r < rows; ++r)
+    for (std::size_t c = 0; c < cols; ++c) {
+      const StrokePoint p = centre(gt, r, c);
+      dem(r, c) = static_cast<float>(height(p.x, p.y));
+    }
+  return dem;
+}
+
+PanoramaParams looking_from(const StrokePoint& observer, double eye_height) {
+  PanoramaParams params;
+  params.view.observer_x = observer.x;
+  params.view.observer_y = observer.y;
+  params.view.observer_height = eye_height;
+  params.record_visibility = true;
+  return params;
+}
+
+// The hidden zone's far end behind a wall, worked out from the geometry: the first distance, in
+// centimetre steps, where the apparent ground rises above the sight line over the wall's top.
+double wall_shadow_end(double wall_distance, double wall_height, double eye, double k, double R) {
+  const auto drop = [&](double d) { return (1.0 - k) * d * d / (2.0 * R); };
+  const double sight = (wall_height - drop(wall_distance) - eye) / wall_distance;
+  double d = wall_distance;
+  while ((-drop(d) - eye) / d < sight) d += 0.01;
+  return d;
+}
+
+}  // namespace
+
+TEST_CASE("a cone seen from outside has its silhouette on the tangent rays", "[panorama]") {
+  const std::size_t n = 301;
+  const double apex_x = 1505, apex_y = 1505, radius = 600, height = 300;
+  const HeightGrid dem = terrain(n, n, [&](double x, double y) {
+    return std::max(0.0, height * (1.0 - std::hypot(x - apex_x, y - apex_y) / radius));
+  });
+  const GeoTransform gt = north_up(n);
+  const StrokePoint eye_at = centre(gt, 150, 10);  // due west of the apex, 1400 m away
+  PanoramaParams params = looking_from(eye_at, 2.0);
+  params.view.azimuth_from = 45, params.view.azimuth_to = 135;
+  params.view.max_distance = 2200;
+  const PanoramaResult result = sketch_panorama(dem, gt, params);
+  const double distance = apex_x - eye_at.x;
+  const double half_angle = std::asin(radius / distance) * 180.0 / kPi;
+  double lo = 1e9, hi = -1e9;
+  for (const PanoramaStroke& s : result.strokes) {
+    if (s.map.cls != StrokeClass::factual) continue;
+    lo = std::min(lo, s.azimuth_min), hi = std::max(hi, s.azimuth_max);
+    for (const StrokePoint& p : s.map.points)  // every occluder lies on the cone
+      CHECK(std::hypot(p.x - apex_x, p.y - apex_y) <= radius + 1.5 * kCell);
+  }
+  // Within a ray spacing, and the cell of bilinear reach at the cone's rim.
+  const double tolerance = result.rays.ray_spacing_deg() + kCell / distance * 180.0 / kPi;
+  CHECK(std::fabs(lo - (90.0 - half_angle)) <= tolerance);
+  CHECK(std::fabs(hi - (90.0 + half_angle)) <= tolerance);
+}
+
+TEST_CASE("the horizon of a plain on a curved earth lies where geometry puts it", "[panorama]") {
+  const double eye = 10.0, k = 0.13, R = 6371000.0;
+  const double horizon = std::sqrt(2.0 * R * eye / (1.0 - k));  // 12.1 km
+  const std::size_t rows = 21, cols = 1500;
+  const HeightGrid dem(rows, cols, 0.0f);
+  const GeoTransform gt = north_up(rows);
+  PanoramaParams params = looking_from(centre(gt, 10, 0), eye);
+  params.view.azimuth_from = 89, params.view.azimuth_to = 91;
+  const PanoramaResult result = sketch_panorama(dem, gt, params);
+  const Grid<std::uint8_t> seen = visibility_raster(result, rows, cols, gt);
+  // Along the observer's row: visible out to the horizon, hidden beyond.
+  std::size_t last_visible = 0;
+  for (std::size_t c = 0; c < cols; ++c)
+    if (seen(10, c) == visibility_code::visible) last_visible = c;
+  CHECK(std::fabs(static_cast<double>(last_visible) * kCell - horizon) <= kCell);
+  CHECK(seen(10, cols - 1) == visibility_code::hidden);
+  // The horizon is a factual silhouette.
+  REQUIRE(result.stats.factual_strokes >= 1);
+  for (const PanoramaStroke& s : result.strokes)
+    if (s.map.cls == StrokeClass::factual) CHECK(std::fabs(s.map.mean_dist - horizon) <= kCell);
+}
+
+TEST_CASE("the zone hidden behind a wall ends where the sight line over it meets the ground",
+          "[panorama]") {
+  const std::size_t rows = 41, cols = 400;
+  const double wall_height = 8.0, k = 0.13, R = 6371000.0;
+  // A wall three cells thick, so that its top is flat between cell centres 100 and 102.
+  const HeightGrid dem = terrain(
+      rows, cols, [&](double x, double) { return x > 1000 && x < 1030 ? wall_height : 0.0; });
+  const GeoTransform gt = north_up(rows);
+  const StrokePoint eye_at = centre(gt, 20, 0);
+  const double wall_distance = 1025.0 - eye_at.x;  // the far edge of the wall's flat top
+  for (const double eye : {12.0, 20.0, 6.0}) {
+    CAPTURE(eye);
+    PanoramaParams params = looking_from(eye_at, eye);
+    params.view.azimuth_from = 80, params.view.azimuth_to = 100;
+    const PanoramaResult result = sketch_panorama(dem, gt, params);
+    const Grid<std::uint8_t> seen = visibility_raster(result, rows, cols, gt);
+    std::size_t first_seen_again = cols;
+    for (std::size_t c = 103; c < cols && first_seen_again == cols; ++c)
+      if (seen(20, c) == visibility_code::visible) first_seen_again = c;
+    CHECK(seen(20, 103) == visibility_code::hidden);
+    if (eye > wall_height) {
+      const double end = wall_shadow_end(wall_distance, wall_height, eye, k, R);
+      CHECK(std::fabs(centre(gt, 20, first_seen_again).x - eye_at.x - end) <= kCell);
+    } else {
+      CHECK(first_seen_again == cols);  // the zone reaches the end of the DEM
+    }
+  }
+}
+
+}  // namespace tsk
+
+namespace tsk {
+
+TEST_CASE("a DEM turned a quarter about the observer turns the panorama a quarter of azimuth",
+          "[panorama][invariance]") {
+  const std::size_t n = 121;
+  const HeightGrid dem = test::random_terrain(n, n, 5);
+  const HeightGrid turned = test::rotate_clockwise(dem);
+  const GeoTransform gt = north_up(n);
+  const PanoramaParams params = looking_from({605.0, 605.0}, 30.0);  // the centre cell's centre
+  const PanoramaResult a = sketch_panorama(dem, gt, params);
+  const PanoramaResult b = sketch_panorama(turned, gt, params);
+  REQUIRE(a.rays.rays == b.rays.rays);
+  CHECK(a.stats.hidden == b.stats.hidden);
+  CHECK(a.stats.occluding == b.stats.occluding);
+  CHECK(a.stats.candidate == b.stats.candidate);
+  CHECK(a.stats.thinned == b.stats.thinned);
+  // Every stroke comes back a quarter turn on, with the same cells and length.
+  REQUIRE(a.strokes.size() == b.strokes.size());
+  REQUIRE(a.strokes.size() > 10);
+  std::multimap<long, const PanoramaStroke*> by_start;
+  for (const PanoramaStroke& s : b.strokes)
+    by_start.emplace(std::lround(std::fmod(s.view.front().x, 360.0) * 1000.0), &s);
+  for (const PanoramaStroke& s : a.strokes) {
+    const long turned_start = std::lround(std::fmod(s.view.front().x + 90.0, 360.0) * 1000.0);
+    const auto [lo, hi] = by_start.equal_range(turned_start);
+    const auto match = std::find_if(lo, hi, [&](const auto& entry) {
+      const PanoramaStroke& t = *entry.second;
+      return t.map.cls == s.map.cls && t.map.cells == s.map.cells &&
+             std::fabs(t.map.length - s.map.length) < 1e-6 &&
+             std::fabs(t.view.front().y - s.view.front().y) < 1e-9;
+    });
+    CHECK(match != hi);
+  }
+  // And so does the visibility raster.
+  const Grid<std::uint8_t> seen_a = visibility_raster(a, n, n, gt);
+  const Grid<std::uint8_t> seen_b = visibility_raster(b, n, n, gt);
+  std::size_t same = 0;
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t c = 0; c < n; ++c) same += seen_b(r, c) == seen_a(n - 1 - c, r);
+  CHECK(same >= n * n * 999 / 1000);
+}
+
+}  // namespace tsk
