@@ -29,6 +29,9 @@ commands:
                 across it bend (Visvalingam effective areas), kept out of the f-set (OUTPUT: vector)
   drape         project --source RASTER (on the DEM's grid, all bands: a hillshade, a slope
                 map, an image) into plan-oblique space, hidden areas removed (OUTPUT: GeoTIFF)
+  panorama      the silhouettes seen from a viewpoint (--observer), all round or over a
+                field of view, with earth curvature: strokes on the map and in the panorama
+                (OUTPUT: .gpkg or .sqlite, layers map and panorama)
   filter-plot   column against row slope with the c-set and the slope filter's removal region,
                 to tune the control point (OUTPUT: HTML page with an SVG diagram)
 
@@ -91,6 +94,17 @@ input and output:
                        under 1024 cells, fewer for profiles so long that strips would pass
                        512 MB; memory is about 9 bytes x cells of N profiles, 13 at a
                        non-cardinal azimuth)
+panorama (the slope filter and stroke options above apply; the view options do not):
+  --observer X,Y       where the viewer stands, in the DEM's CRS (required)
+  --observer-height M  eye height above the ground, metres, 0-100000 (default 1.7)
+  --max-distance M     farthest distance drawn, map units, > 0 (default: the farthest corner)
+  --azimuth-from DEG   the field of view, clockwise from --azimuth-from to --azimuth-to
+  --azimuth-to DEG     (default 0 to 360: all round)
+  --refraction K       refraction coefficient, 0 <= K < 1 (default 0.13)
+  --visibility FILE    write a Byte GeoTIFF on the DEM's grid: 1 visible, 0 hidden, 255 out
+                       of range
+  --preview FILE       the panorama, azimuth across, elevation up, far strokes lighter (.png,
+                       .svg, .pdf; --page SIZE draws it on a landscape page)
 profiles:
   --every N            draw every N-th cross-section (default 10)
 pstrokes (tolerances: effective areas in m2 of the profiles' distance-height triangles):
@@ -118,7 +132,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   const std::map<std::string, Command> commands = {
       {"silhouettes", silhouettes}, {"profiles", profiles},       {"classify", classify},
       {"row-slope", row_slope},     {"filter-plot", filter_plot}, {"drape", drape},
-      {"pstrokes", pstrokes}};
+      {"pstrokes", pstrokes},       {"panorama", panorama}};
   const auto command = commands.find(args[0]);
   if (command == commands.end()) {
     err << "terrain-sketch: unknown command '" << args[0] << "'\n" << kUsage;

@@ -19,6 +19,7 @@ int row_slope(const Args& args, std::ostream& out, std::ostream& err, const Prog
 int profiles(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress);
 int pstrokes(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress);
 int drape(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress);
+int panorama(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress);
 int filter_plot(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress);
 
 }  // namespace tsk::cli

@@ -56,6 +56,24 @@ double parse_cell_size(const std::string& option, const std::string& text) {
   return size;
 }
 
+// "X,Y": the observer's position in the DEM's CRS.
+void parse_observer(const std::string& option, const std::string& text, Options& o) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos)
+    throw Error(option + " needs X,Y in the DEM's CRS, got '" + text + "'");
+  o.panorama.observer_x = parse_number(option, text.substr(0, comma));
+  o.panorama.observer_y = parse_number(option, text.substr(comma + 1));
+  o.observer_given = true;
+}
+
+// A panorama's range: a positive distance in map units.
+double parse_range(const std::string& option, const std::string& text) {
+  const double range = parse_number(option, text);
+  if (!(range > 0.0))
+    throw Error(option + " must be a positive distance in the DEM's map units; got '" + text + "'");
+  return range;
+}
+
 // The preview's extension names its format: another would name one it cannot write.
 std::string parse_preview_name(const std::string& option, const std::string& path) {
   const std::string ext = io::lowercase_extension(path);
@@ -92,8 +110,10 @@ bool same_file(const std::string& a, const std::string& b) {
 // in a GeoPackage written over by its own strokes) and two outputs of one name would lose one.
 // Each output's folder must exist and be writable.
 void refuse_clashing_paths(const Options& o) {
-  const std::pair<const char*, const std::string*> outputs[] = {
-      {"OUTPUT", &o.output}, {"--stats-json", &o.stats_json}, {"--preview", &o.preview}};
+  const std::pair<const char*, const std::string*> outputs[] = {{"OUTPUT", &o.output},
+                                                                {"--stats-json", &o.stats_json},
+                                                                {"--preview", &o.preview},
+                                                                {"--visibility", &o.visibility}};
   // Every file GDAL reads for each input: a VRT's sources too.
   std::vector<std::pair<const char*, std::vector<std::string>>> inputs;
   for (const auto& [name, path] :
@@ -187,6 +207,14 @@ Options parse(const std::vector<std::string>& args) {
          if (o.every < 1) throw Error("--every must be at least 1");
        }},
       {"--stats-json", [&](auto&, auto& v) { o.stats_json = v; }},
+      {"--observer", [&](auto& n, auto& v) { parse_observer(n, v, o); }},
+      {"--observer-height",
+       [&](auto& n, auto& v) { o.panorama.observer_height = parse_number(n, v); }},
+      {"--max-distance", [&](auto& n, auto& v) { o.panorama.max_distance = parse_range(n, v); }},
+      {"--azimuth-from", [&](auto& n, auto& v) { o.panorama.azimuth_from = parse_number(n, v); }},
+      {"--azimuth-to", [&](auto& n, auto& v) { o.panorama.azimuth_to = parse_number(n, v); }},
+      {"--refraction", [&](auto& n, auto& v) { o.panorama.refraction = parse_number(n, v); }},
+      {"--visibility", [&](auto&, auto& v) { o.visibility = v; }},
       {"--preview", [&](auto& n, auto& v) { o.preview = parse_preview_name(n, v); }},
       {"--page", [&](auto&, auto& v) { o.page.size = v; }},
       {"--page-scale",
@@ -221,6 +249,7 @@ Options parse(const std::vector<std::string>& args) {
   o.dem.azimuth_deg = o.params.view.azimuth_deg;
   o.dem.stop = stop_if_interrupted;  // Ctrl-C and SIGTERM stop the reading too
   o.params.validate();
+  o.panorama.validate();
   check_page(o);
   refuse_clashing_paths(o);
   return o;

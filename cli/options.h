@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "dem_reader.h"
+#include "panorama_rays.h"
 #include "params.h"
 #include "pstrokes.h"
 #include "sketch_page.h"
@@ -13,6 +14,9 @@ namespace tsk::cli {
 
 struct Options {
   std::string input, output, format, stats_json, preview, source;
+  std::string visibility;  // panorama: the visibility raster
+  bool observer_given = false;
+  PanoramaView panorama;  // the panorama's view (its observer when observer_given)
   bool timings = false;
   int every = 10;
   int strips = 0;

@@ -82,7 +82,7 @@ void write_png_preview(const std::string& path, SketchPage page) {
       for (std::size_t k = 1; k < s.points.size(); ++k) {
         const double radius = 0.25 * (s.widths[k - 1] + s.widths[k]);
         canvas.line(s.points[k - 1].x, s.points[k - 1].y, s.points[k].x, s.points[k].y, radius,
-                    factual ? 1.f : 0.6f);
+                    static_cast<float>(s.ink) * (factual ? 1.f : 0.6f));
       }
     }
   }
@@ -110,10 +110,15 @@ PlotterReport write_preview(const std::string& path, const SilhouetteResult& res
                             const HeightGrid& z, const OrientedFrame& frame,
                             const GeoTransform& geotransform, const ViewParams& view,
                             Geometry geometry, const PageOptions& options) {
+  return write_page(path, lay_out_sketch(result, z, frame, geotransform, view, geometry, options),
+                    options);
+}
+
+PlotterReport write_page(const std::string& path, const SketchPage& page,
+                         const PageOptions& options) {
   const std::string ext = lowercase_extension(path);
   if (options.plotter && ext == ".png")
     throw Error("--plotter draws vector art for a pen: give --preview a .svg or .pdf name");
-  const SketchPage page = lay_out_sketch(result, z, frame, geotransform, view, geometry, options);
   if (ext == ".png") {
     write_png_preview(path, page);
     return {};

@@ -19,4 +19,8 @@ PlotterReport write_preview(const std::string& path, const SilhouetteResult& res
                             const GeoTransform& geotransform, const ViewParams& view,
                             Geometry geometry, const PageOptions& options = {});
 
+// Writes a laid-out page in the format of `path`'s extension, as write_preview does.
+PlotterReport write_page(const std::string& path, const SketchPage& page,
+                         const PageOptions& options = {});
+
 }  // namespace tsk::io

@@ -137,4 +137,22 @@ void write_classification(const std::string& path, const Grid<std::uint8_t>& cla
   });
 }
 
+void write_visibility(const std::string& path, const Grid<std::uint8_t>& visibility,
+                      const GeoTransform& gt, const std::string& srs_wkt) {
+  // Hidden ground greyed, visible ground clear, beyond the range left out.
+  static const GDALColorEntry hidden = {60, 60, 60, 150}, visible = {255, 255, 255, 0};
+  write_atomically(path, [&](const std::filesystem::path& staged) {
+    write_bands(path, staged, visibility.rows(), visibility.cols(), GDT_Byte, {visibility.data()},
+                gt, srs_wkt, [](GDALRasterBand& band) {
+                  band.SetNoDataValue(255);
+                  GDALColorTable table;
+                  table.SetColorEntry(0, &hidden);
+                  table.SetColorEntry(1, &visible);
+                  band.SetColorTable(&table);
+                  const char* names[] = {"hidden", "visible", nullptr};
+                  band.SetCategoryNames(const_cast<char**>(names));
+                });
+  });
+}
+
 }  // namespace tsk::io

@@ -26,4 +26,9 @@ void write_float_raster(const std::string& path, const std::vector<HeightGrid>& 
 void write_classification(const std::string& path, const Grid<std::uint8_t>& classes,
                           const GeoTransform& gt, const std::string& srs_wkt);
 
+// A panorama's visibility on the DEM's grid: 1 visible, 0 hidden, 255 out of range (nodata), with
+// a colour table and class names.
+void write_visibility(const std::string& path, const Grid<std::uint8_t>& visibility,
+                      const GeoTransform& gt, const std::string& srs_wkt);
+
 }  // namespace tsk::io

@@ -26,6 +26,7 @@ struct PagePath {
   StrokeClass cls;
   std::vector<StrokePoint> points;  // page units, y down
   std::vector<double> widths;       // page units, at each point
+  double ink = 1.0;  // share of the class's colour over white: far panorama strokes are lighter
 };
 
 struct SketchPage {

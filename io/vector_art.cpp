@@ -1,9 +1,12 @@
 #include "vector_art.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <locale>
 #include <sstream>
+#include <string>
 
 #include "output_files.h"
 #include "stroke_outline.h"
@@ -30,23 +33,41 @@ bool uniform(const std::vector<double>& widths) {
   return std::all_of(widths.begin(), widths.end(), [&](double w) { return w == widths.front(); });
 }
 
-// Calls draw(points, closed, width) for each path of class `cls`: a line of one width, or a
+// Calls draw(points, closed, width, ink) for each path of class `cls`: a line of one width, or a
 // tapered stroke's filled outline (width 0).
 template <typename Draw>
 void class_paths(const SketchPage& page, const PlotterPage* plotter, std::size_t class_index,
                  Draw&& draw) {
   if (plotter) {
-    for (const auto& line : plotter->classes[class_index].paths) draw(line, false, 0.0);
+    for (const auto& line : plotter->classes[class_index].paths) draw(line, false, 0.0, 1.0);
     return;
   }
   for (const PagePath& p : page.paths) {
     if (p.cls != kClassOrder[class_index] || p.points.empty()) continue;
     if (uniform(p.widths)) {
-      draw(p.points, false, p.widths.front());
+      draw(p.points, false, p.widths.front(), p.ink);
     } else {
-      draw(tapered_outline(p.points, p.widths), true, 0.0);
+      draw(tapered_outline(p.points, p.widths), true, 0.0, p.ink);
     }
   }
+}
+
+// The class's colour `ink` of the way from white, each channel from 0 to 1.
+std::array<double, 3> inked(const ClassLook& l, double ink) {
+  std::array<double, 3> rgb{};
+  for (int k = 0; k < 3; ++k) rgb[k] = 1.0 - ink * (1.0 - l.rgb[k]);
+  return rgb;
+}
+
+// The colour as SVG writes it: the class's own at full ink.
+std::string svg_colour(const ClassLook& l, double ink) {
+  if (ink == 1.0) return l.svg_colour;
+  const std::array<double, 3> rgb = inked(l, ink);
+  char hex[8];
+  std::snprintf(hex, sizeof hex, "#%02x%02x%02x", static_cast<unsigned>(std::lround(rgb[0] * 255)),
+                static_cast<unsigned>(std::lround(rgb[1] * 255)),
+                static_cast<unsigned>(std::lround(rgb[2] * 255)));
+  return hex;
 }
 
 // Numbers as vector formats want them: a point for the decimal, no exponent.
@@ -91,17 +112,19 @@ void write_svg(const std::string& path, const SketchPage& page, const PlotterPag
     const ClassLook l = look(kClassOrder[c]);
     svg << "<g id=\"" << l.id << "\" inkscape:label=\"" << l.label
         << "\" inkscape:groupmode=\"layer\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
-    class_paths(page, plotter, c, [&](const std::vector<StrokePoint>& pts, bool closed, double w) {
-      svg << "<path d=\"";
-      for (std::size_t k = 0; k < pts.size(); ++k)
-        svg << (k == 0 ? "M" : " L") << pts[k].x << " " << pts[k].y;
-      if (closed) {
-        svg << " Z\" fill=\"" << l.svg_colour << "\" stroke=\"none\"/>\n";
-      } else {
-        svg << "\" fill=\"none\" stroke=\"" << l.svg_colour << "\" stroke-width=\""
-            << (plotter ? (page.millimetres ? 0.3 : 1.0) : w) << "\"/>\n";
-      }
-    });
+    class_paths(page, plotter, c,
+                [&](const std::vector<StrokePoint>& pts, bool closed, double w, double ink) {
+                  svg << "<path d=\"";
+                  for (std::size_t k = 0; k < pts.size(); ++k)
+                    svg << (k == 0 ? "M" : " L") << pts[k].x << " " << pts[k].y;
+                  if (closed) {
+                    svg << " Z\" fill=\"" << svg_colour(l, ink) << "\" stroke=\"none\"/>\n";
+                  } else {
+                    svg << "\" fill=\"none\" stroke=\"" << svg_colour(l, ink)
+                        << "\" stroke-width=\"" << (plotter ? (page.millimetres ? 0.3 : 1.0) : w)
+                        << "\"/>\n";
+                  }
+                });
     svg << "</g>\n";
   }
   svg << "</svg>\n";
@@ -150,15 +173,26 @@ void write_pdf(const std::string& path, const SketchPage& page, const PlotterPag
     content << "/OC /L" << c << " BDC\n"
             << l.rgb[0] << " " << l.rgb[1] << " " << l.rgb[2] << " RG " << l.rgb[0] << " "
             << l.rgb[1] << " " << l.rgb[2] << " rg\n";
-    class_paths(page, plotter, c, [&](const std::vector<StrokePoint>& pts, bool closed, double w) {
-      for (std::size_t k = 0; k < pts.size(); ++k)
-        content << pts[k].x * to_pt << " " << height - pts[k].y * to_pt << (k ? " l\n" : " m\n");
-      if (closed) {
-        content << "f\n";
-      } else {
-        content << (plotter ? (page.millimetres ? 0.3 : 1.0) : w) * to_pt << " w S\n";
-      }
-    });
+    double current_ink = 1.0;
+    class_paths(
+        page, plotter, c,
+        [&](const std::vector<StrokePoint>& pts, bool closed, double w, double ink) {
+          if (ink !=
+              current_ink) {  // only lighter paths change the colour: others stay as they were
+            const std::array<double, 3> rgb = inked(l, ink);
+            content << rgb[0] << " " << rgb[1] << " " << rgb[2] << " RG " << rgb[0] << " " << rgb[1]
+                    << " " << rgb[2] << " rg\n";
+            current_ink = ink;
+          }
+          for (std::size_t k = 0; k < pts.size(); ++k)
+            content << pts[k].x * to_pt << " " << height - pts[k].y * to_pt
+                    << (k ? " l\n" : " m\n");
+          if (closed) {
+            content << "f\n";
+          } else {
+            content << (plotter ? (page.millimetres ? 0.3 : 1.0) : w) * to_pt << " w S\n";
+          }
+        });
     content << "EMC\n";
   }
   const std::string stream = content.str();

@@ -86,12 +86,19 @@ std::string check_vector_output(const std::string& path, const std::string& form
   if (existing->GetRasterCount() > 0 || (subdatasets && *subdatasets)) refuse("a raster");
   // An earlier output is one layer with one of our names, or the file's (as QGIS names them).
   const std::string stem = std::filesystem::path(path).stem().string();
+  std::size_t panorama_layers = 0;
   for (OGRLayer* layer : existing->GetLayers()) {
     const std::string name = layer->GetName();
-    if (name != kStrokeLayer && name != kProfileLayer && name != kPStrokeLayer && name != stem)
+    const bool panorama = name == kPanoramaMapLayer || name == kPanoramaLayer;
+    panorama_layers += panorama;
+    if (name != kStrokeLayer && name != kProfileLayer && name != kPStrokeLayer && name != stem &&
+        !panorama)
       refuse("the layer '" + name + "'");
   }
-  if (existing->GetLayerCount() > 1) refuse(std::to_string(existing->GetLayerCount()) + " layers");
+  // A panorama's two layers are one earlier output.
+  const auto layers = static_cast<std::size_t>(existing->GetLayerCount());
+  if (layers > 1 && !(layers == 2 && panorama_layers == 2))
+    refuse(std::to_string(layers) + " layers");
   return driver;
 }
 
@@ -169,22 +176,34 @@ class GpkgLineOutput : public LineOutput {
   GpkgLineAppender appender_;
 };
 
-// Creates `path` with one line layer of `fields` and lets add_features fill it, all inside a
-// transaction; whole or not at all. A GeoPackage is filled through SQLite and gets its spatial
-// index in bulk; other formats through OGR.
-void write_line_layer(const std::string& path, const std::string& format,
-                      const std::string& srs_wkt, const std::string& layer_name,
-                      const std::vector<Field>& fields,
-                      const std::function<void(LineOutput&)>& add_features, bool measured = false) {
-  const std::string driver_name = check_vector_output(path, format);
-  GdalErrorCapture capture;
-  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
-  if (!driver || !driver->GetMetadataItem(GDAL_DCAP_VECTOR) ||
-      !driver->GetMetadataItem(GDAL_DCAP_CREATE)) {
-    throw Error("'" + driver_name + "' is not an OGR vector driver that can create files");
+// One line layer of an output: its name, CRS (WKT, may be empty), fields and features.
+struct LineLayer {
+  std::string name;
+  std::string srs_wkt;
+  std::vector<Field> fields;
+  std::function<void(LineOutput&)> add_features;
+  bool measured = false;
+};
+
+// What a driver needs to be told to write lines: GeoPackages get their spatial index in bulk, and
+// a CSV keeps no geometry and no field types unless asked to (the lines go in a WKT column, read
+// back as lines, and the types in a .csvt file beside it).
+CPLStringList line_layer_options(const std::string& driver_name) {
+  CPLStringList options;
+  if (driver_name == "GPKG") options.SetNameValue("SPATIAL_INDEX", "NO");
+  if (driver_name == "CSV") {
+    options.SetNameValue("GEOMETRY", "AS_WKT");
+    options.SetNameValue("CREATE_CSVT", "YES");
   }
+  return options;
+}
+
+// Creates `layer` in `ds` (at `path` for messages) and fills it.
+void fill_line_layer(GDALDataset& ds, const std::string& path, const std::string& driver_name,
+                     const LineLayer& spec, const GdalErrorCapture& capture) {
   OGRSpatialReference srs;
-  const bool has_srs = !srs_wkt.empty() && srs.importFromWkt(srs_wkt.c_str()) == OGRERR_NONE;
+  const bool has_srs =
+      !spec.srs_wkt.empty() && srs.importFromWkt(spec.srs_wkt.c_str()) == OGRERR_NONE;
   srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
   // KML places features by longitude and latitude; without a CRS nothing says where they are
   // (GDAL wrote the map coordinates as degrees, which GDAL 3.13 then reads as no feature).
@@ -193,37 +212,50 @@ void write_line_layer(const std::string& path, const std::string& format,
                 "DEM has no CRS to find them from; give the DEM its CRS (gdal_edit.py -a_srs " +
                 "EPSG:...) or write another format (.gpkg)");
   }
-  const bool gpkg = driver_name == "GPKG";
-  CPLStringList layer_options;
-  if (gpkg) layer_options.SetNameValue("SPATIAL_INDEX", "NO");
-  // A CSV keeps no geometry and no field types unless asked to: the lines go in a WKT column,
-  // read back as lines, and the types in a .csvt file beside it.
-  if (driver_name == "CSV") {
-    layer_options.SetNameValue("GEOMETRY", "AS_WKT");
-    layer_options.SetNameValue("CREATE_CSVT", "YES");
+  OGRLayer* layer = ds.CreateLayer(spec.name.c_str(), has_srs ? &srs : nullptr,
+                                   spec.measured ? wkbLineStringM : wkbLineString,
+                                   line_layer_options(driver_name).List());
+  if (!layer) throw Error("cannot create layer in '" + path + "': " + capture.message());
+  for (const Field& field : spec.fields) {
+    OGRFieldDefn defn(field.name, field.type);
+    check(layer->CreateField(&defn), std::string("creating field '") + field.name + "'", capture);
   }
+  if (driver_name == "GPKG") {
+    GpkgLineOutput output(ds, *layer);
+    spec.add_features(output);
+    output.finish();
+  } else {
+    OgrLineOutput output(*layer, path);
+    spec.add_features(output);
+  }
+}
 
-  // Creates the layer at `target`, fills it and closes it.
+// Creates `path` with `layers` and fills them, all inside a transaction; whole or not at all. A
+// GeoPackage is filled through SQLite and gets its spatial index in bulk; other formats through
+// OGR.
+void write_line_layers(const std::string& path, const std::string& format,
+                       const std::vector<LineLayer>& layers,
+                       const std::function<void()>& before_commit = {}) {
+  const std::string driver_name = check_vector_output(path, format);
+  GdalErrorCapture capture;
+  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
+  if (!driver || !driver->GetMetadataItem(GDAL_DCAP_VECTOR) ||
+      !driver->GetMetadataItem(GDAL_DCAP_CREATE)) {
+    throw Error("'" + driver_name + "' is not an OGR vector driver that can create files");
+  }
+  const bool database = driver_name == "GPKG" || driver_name == "SQLite";
+  if (layers.size() > 1 && !database) {
+    throw Error("'" + path + "' is to hold " + std::to_string(layers.size()) + " layers, and a " +
+                driver_name +
+                " file holds one: write a GeoPackage (.gpkg) or SQLite file (.sqlite)");
+  }
+  // Creates the layers at `target`, fills them and closes the file.
   const auto fill = [&](const std::string& target) {
     DatasetPtr ds(driver->Create(target.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
     if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
-    OGRLayer* layer =
-        ds->CreateLayer(layer_name.c_str(), has_srs ? &srs : nullptr,
-                        measured ? wkbLineStringM : wkbLineString, layer_options.List());
-    if (!layer) throw Error("cannot create layer in '" + path + "': " + capture.message());
-    for (const Field& field : fields) {
-      OGRFieldDefn defn(field.name, field.type);
-      check(layer->CreateField(&defn), std::string("creating field '") + field.name + "'", capture);
-    }
     const bool transaction = ds->StartTransaction() == OGRERR_NONE;
-    if (gpkg) {
-      GpkgLineOutput output(*ds, *layer);
-      add_features(output);
-      output.finish();
-    } else {
-      OgrLineOutput output(*layer, path);
-      add_features(output);
-    }
+    for (const LineLayer& layer : layers) fill_line_layer(*ds, path, driver_name, layer, capture);
+    if (before_commit) before_commit();
     if (transaction) check(ds->CommitTransaction(), "committing '" + path + "'", capture);
     CPLErrorReset();
     ds.reset();  // closing flushes: a failure here means an incomplete file
@@ -232,7 +264,6 @@ void write_line_layer(const std::string& path, const std::string& format,
     }
   };
   // The database formats report their failed writes themselves.
-  const bool database = gpkg || driver_name == "SQLite";
   write_atomically(path, [&](const std::filesystem::path& staged) {
     const std::filesystem::path folder = staged.parent_path();
     take_write_failure(folder);  // none left from an earlier try in this folder
@@ -251,15 +282,27 @@ void write_line_layer(const std::string& path, const std::string& format,
   });
 }
 
+void write_line_layer(const std::string& path, const std::string& format,
+                      const std::string& srs_wkt, const std::string& layer_name,
+                      const std::vector<Field>& fields,
+                      const std::function<void(LineOutput&)>& add_features, bool measured = false) {
+  write_line_layers(path, format, {{layer_name, srs_wkt, fields, add_features, measured}});
+}
+
+// The fields of a stroke layer: class, cells and stroke_real_fields().
+std::vector<Field> stroke_fields() {
+  std::vector<Field> fields = {{"class", OFTString}, {"cells", OFTInteger}};
+  for (const StrokeRealField& f : stroke_real_fields()) fields.push_back({f.name, OFTReal});
+  return fields;
+}
+
 }  // namespace
 
 void write_strokes(const std::string& path, const std::string& format, const std::string& srs_wkt,
                    const std::function<void(const StrokeWriter& write)>& produce,
                    const std::string& layer_name, bool weighted) {
-  std::vector<Field> fields = {{"class", OFTString}, {"cells", OFTInteger}};
-  for (const StrokeRealField& f : stroke_real_fields()) fields.push_back({f.name, OFTReal});
   write_line_layer(
-      path, format, srs_wkt, layer_name, fields,
+      path, format, srs_wkt, layer_name, stroke_fields(),
       [&](LineOutput& output) {
         produce([&](const Stroke& s) {
           if (weighted != !s.weights.empty())
@@ -306,6 +349,30 @@ void write_pstrokes(const std::string& path, const std::string& format,
                        output.add(s.points);
                      }
                    });
+}
+
+void write_panorama_strokes(const std::string& path, const std::string& format,
+                            const std::vector<PanoramaStroke>& strokes, const std::string& srs_wkt,
+                            const std::function<void()>& before_commit) {
+  std::vector<Field> fields = stroke_fields();
+  const int azimuth_field = static_cast<int>(fields.size());
+  fields.push_back({"azimuth_min", OFTReal});
+  fields.push_back({"azimuth_max", OFTReal});
+  // Both layers carry the same attributes; they differ in geometry.
+  const auto layer = [&](bool panorama) {
+    return [&strokes, azimuth_field, panorama](LineOutput& output) {
+      for (const PanoramaStroke& s : strokes) {
+        set_stroke_attributes(output, s.map);
+        output.set(azimuth_field, s.azimuth_min);
+        output.set(azimuth_field + 1, s.azimuth_max);
+        output.add(panorama ? s.view : s.map.points);
+      }
+    };
+  };
+  write_line_layers(path, format,
+                    {{kPanoramaMapLayer, srs_wkt, fields, layer(false)},
+                     {kPanoramaLayer, "", fields, layer(true)}},
+                    before_commit);
 }
 
 }  // namespace tsk::io

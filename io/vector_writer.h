@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "panorama_strokes.h"
 #include "profile_plot.h"
 #include "pstrokes.h"
 #include "strokes.h"
@@ -18,6 +19,9 @@ std::string vector_driver_for(const std::string& path, const std::string& format
 inline constexpr const char* kStrokeLayer = "silhouettes";
 inline constexpr const char* kProfileLayer = "profiles";
 inline constexpr const char* kPStrokeLayer = "pstrokes";
+// A panorama's two layers: its strokes on the map and in the panorama (azimuth, elevation).
+inline constexpr const char* kPanoramaMapLayer = "map";
+inline constexpr const char* kPanoramaLayer = "panorama";
 
 // Checks, before any work, that a line layer can be written to `path`: a vector format is known
 // for it, and no GeoPackage or SQLite file is there that holds more than an earlier output (one
@@ -48,5 +52,14 @@ void write_profile_lines(const std::string& path, const std::string& format,
 // Writes P-strokes (fields: class, score_m2) to `path`, whole or not at all.
 void write_pstrokes(const std::string& path, const std::string& format,
                     const std::vector<PStroke>& strokes, const std::string& srs_wkt);
+
+// Writes a panorama's strokes to `path`, whole or not at all, in two layers: `map`, in the DEM's
+// CRS (WKT, may be empty), and `panorama`, without a CRS, x the azimuth and y the elevation angle
+// in degrees. Both have the stroke fields with azimuth_min and azimuth_max; the file must hold
+// two layers (a GeoPackage or SQLite file). before_commit runs when the layers are filled and
+// not yet committed: what it throws leaves nothing written.
+void write_panorama_strokes(const std::string& path, const std::string& format,
+                            const std::vector<PanoramaStroke>& strokes, const std::string& srs_wkt,
+                            const std::function<void()>& before_commit = {});
 
 }  // namespace tsk::io

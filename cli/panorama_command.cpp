@@ -1,0 +1,107 @@
+// terrain-sketch panorama: the silhouettes seen from a viewpoint (docs/PANORAMA.md), on the map
+// and in the panorama, with the visibility raster and a preview.
+#include <ostream>
+#include <string>
+
+#include "adaptive_filter.h"
+#include "command_support.h"
+#include "commands.h"
+#include "dem_note_text.h"
+#include "errors.h"
+#include "interrupt.h"
+#include "output_files.h"
+#include "panorama.h"
+#include "panorama_page.h"
+#include "preview.h"
+#include "raster_writer.h"
+#include "vector_writer.h"
+
+namespace tsk::cli {
+namespace {
+
+// Everything that can be refused before the DEM is read.
+void check_before_work(const Options& o) {
+  if (!o.observer_given)
+    throw Error("panorama needs --observer X,Y: where the viewer stands, in the DEM's CRS");
+  const std::string driver = io::check_vector_output(o.output, o.format);
+  if (driver != "GPKG" && driver != "SQLite")
+    throw Error(
+        "a panorama's strokes go in two layers (map and panorama): name OUTPUT .gpkg or "
+        ".sqlite");
+  if (!o.visibility.empty()) require_geotiff(o.visibility);
+  if (o.page.scale > 0.0)
+    throw Error("--page-scale sets a map scale, which a panorama has not: leave it out");
+  if (o.params.adaptive.mode == FilterMode::adaptive &&
+      o.params.adaptive.adapt == Adaptivity::local)
+    throw Error("--adapt local is not available for panoramas yet: use --adapt whole");
+}
+
+// The DEM as it lies, read whole: the view from the west is its own grid, unturned.
+io::Dem read_whole_dem(const Options& o, std::ostream& err) {
+  io::DemOptions options = o.dem;
+  options.azimuth_deg = 90.0;
+  const io::DemFile file(o.input, options);
+  io::refuse_too_large_to_turn(o.input, file.info());
+  io::Dem dem = io::read_dem(o.input, options);
+  print_notes(dem.notes, err);
+  const OrientedFrame& f = dem.frame;
+  if (f.resampled || f.row_per_p != 1 || f.col_per_i != 1 || f.row0 != 0 || f.col0 != 0)
+    throw Error("internal: the DEM was not read on its own grid");
+  return dem;
+}
+
+PanoramaParams panorama_params(const Options& o, const io::Dem& dem, FilterReport& report,
+                               std::ostream& err) {
+  const io::DemFile file(o.input, o.dem);
+  const SilhouetteParams adapted = adapt_filter(o.params, dem.frame, file.source().read, report);
+  print_filter(report, err);
+  PanoramaParams params;
+  params.view = o.panorama;
+  params.view.metres_per_unit = dem.ground_scale;
+  params.rules = {adapted.filter, adapted.height_tolerance, o.params.placement};
+  params.chain = o.params.chain;
+  params.threads = o.params.threads;
+  params.record_visibility = !o.visibility.empty();
+  return params;
+}
+
+void write_outputs(const Options& o, const io::Dem& dem, const PanoramaResult& result,
+                   const FilterReport& report, std::ostream& err) {
+  // The strokes are committed last: a failure to write the others leaves no strokes either.
+  io::write_panorama_strokes(o.output, o.format, result.strokes, dem.srs_wkt, [&] {
+    stop_if_interrupted();
+    if (!o.visibility.empty()) {
+      io::write_visibility(
+          o.visibility,
+          visibility_raster(result, dem.rows, dem.cols, dem.geotransform, o.params.threads),
+          dem.geotransform, dem.srs_wkt);
+    }
+    if (!o.stats_json.empty()) io::write_text_file(o.stats_json, stats_json(result.stats, report));
+    if (!o.preview.empty()) {
+      const io::PanoramaPage page = lay_out_panorama(result, o.params.strokes, o.page);
+      io::write_page(o.preview, page.page, o.page);
+      err << "note: the preview's elevation angles are drawn " << page.exaggeration
+          << " times as tall as its azimuths are wide\n";
+    }
+  });
+}
+
+}  // namespace
+
+int panorama(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress) {
+  const Options o = parse(args);
+  check_before_work(o);
+  const io::Dem dem = read_whole_dem(o, err);
+  FilterReport report;
+  const PanoramaParams params = panorama_params(o, dem, report, err);
+  const PanoramaResult result = sketch_panorama(dem.oriented, dem.geotransform, params, progress);
+  write_outputs(o, dem, result, report, err);
+  const StageStats& s = result.stats;
+  out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes
+      << " formulated strokes from " << result.rays.rays << " rays of " << result.rays.samples
+      << " samples (hidden " << s.pct(s.hidden) << " %, c-set " << s.pct(s.candidate)
+      << " %, f-set " << s.pct(s.filtered) << " %, t-set " << s.pct(s.thinned) << " %)\n";
+  return 0;
+}
+
+}  // namespace tsk::cli

@@ -1,0 +1,23 @@
+// A panorama laid out on a page for its preview: azimuth across, elevation angle up, far strokes
+// lighter and thinner than near ones.
+#pragma once
+
+#include "panorama.h"
+#include "params.h"
+#include "sketch_page.h"
+
+namespace tsk::io {
+
+struct PanoramaPage {
+  SketchPage page;
+  double exaggeration = 1.0;  // of the elevation angles over the azimuths, to fill the page
+};
+
+// Lays the strokes of `result` out: the field of view across the page (a full circle's strokes
+// across the seam drawn at both ends), the strokes' elevation angles from top to bottom of it.
+// Drawn strokes (strokes.drawn()) are smoothed and tapered on the page; exact ones are polylines
+// through their samples. A page size (options.size) is taken landscape.
+PanoramaPage lay_out_panorama(const PanoramaResult& result, const DrawnParams& strokes,
+                              const PageOptions& options);
+
+}  // namespace tsk::io
