@@ -1,10 +1,12 @@
 // terrain-sketch panorama: the silhouettes seen from a viewpoint (docs/PANORAMA.md), on the map
 // and in the panorama, with the visibility raster and a preview.
+#include <algorithm>
 #include <ostream>
 #include <string>
 
 #include "adaptive_filter.h"
 #include "command_support.h"
+#include "dem_windows.h"
 #include "commands.h"
 #include "dem_note_text.h"
 #include "errors.h"
@@ -52,8 +54,15 @@ io::Dem read_whole_dem(const Options& o, std::ostream& err) {
 
 PanoramaParams panorama_params(const Options& o, const io::Dem& dem, FilterReport& report,
                                std::ostream& err) {
-  const io::DemFile file(o.input, o.dem);
-  const SilhouetteParams adapted = adapt_filter(o.params, dem.frame, file.source().read, report);
+  // The DEM is held whole already: the filter's survey reads it from memory, not from the file.
+  const HeightGrid& grid = dem.oriented;
+  const WindowReader from_memory = [&grid](const DemWindow& w, float* heights) {
+    for (std::size_t r = 0; r < w.rows; ++r) {
+      const float* row = grid.row(w.row0 + r) + w.col0;
+      std::copy(row, row + w.cols, heights + r * w.cols);
+    }
+  };
+  const SilhouetteParams adapted = adapt_filter(o.params, dem.frame, from_memory, report);
   print_filter(report, err);
   PanoramaParams params;
   params.view = o.panorama;

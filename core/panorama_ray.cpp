@@ -34,39 +34,73 @@ struct RayPlace {
   }
 };
 
-// Heights along the ray, lowered by the curvature drop, and the tangents of their elevation angles.
+// The first sample index from `from` (up to `end`) at which `leaves` holds, for a property
+// that, once it holds along the ray, holds from there on.
+template <typename Leaves>
+std::size_t first_leaving(std::size_t from, std::size_t end, Leaves&& leaves) {
+  while (from < end) {
+    const std::size_t mid = from + (end - from) / 2;
+    if (leaves(mid)) {
+      end = mid;
+    } else {
+      from = mid + 1;
+    }
+  }
+  return from;
+}
+
+// Heights along the ray, lowered by the curvature drop, the tangents of their elevation angles,
+// and SPEC 1.2 on them: hidden below the running maximum, occluding before a hidden one. Sets
+// s.end: the samples from there on lie off the DEM.
 void sample_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace& place,
                 RayScratch& s) {
   const std::size_t n = rays.samples;
   s.apparent.resize(n);
   s.tangent.resize(n);
   s.flags.assign(n, 0);
-  const double step_m = rays.step_metres();
-  for (std::size_t k = 0; k < n; ++k) {
+  const double cols = static_cast<double>(dem.cols()), rows = static_cast<double>(dem.rows());
+  const auto uv = [&place](std::size_t k) {
     const PixelPoint px = place.at(k);
-    const double apparent =
-        static_cast<double>(bilinear_height(dem, px.col, px.row)) - rays.drop[k];
-    s.apparent[k] = static_cast<float>(apparent);
-    s.tangent[k] = (apparent - rays.eye) / (static_cast<double>(k + 1) * step_m);
-  }
-}
-
-// SPEC 1.2 on elevation angles: hidden below the running maximum, occluding before a hidden one.
-void classify_sight(RayScratch& s) {
+    return PixelPoint{px.col - 0.5, px.row - 0.5};
+  };
+  // Off the DEM (all four cells outside it), and off its interior (a cell outside it): O lies
+  // on the DEM, so a ray leaves each for good; it may start off the interior, at the edge.
+  const auto off_dem = [&](std::size_t k) {
+    const PixelPoint p = uv(k);
+    return p.col < -1.0 || p.row < -1.0 || p.col >= cols || p.row >= rows;
+  };
+  const auto off_interior = [&](std::size_t k) {
+    const PixelPoint p = uv(k);
+    return p.col < 0.0 || p.row < 0.0 || p.col >= cols - 1.0 || p.row >= rows - 1.0;
+  };
+  s.end = first_leaving(0, n, off_dem);
+  std::size_t interior = 0;
+  while (interior < s.end && off_interior(interior)) ++interior;
+  const std::size_t interior_end = first_leaving(interior, s.end, off_interior);
+  std::fill(s.apparent.begin() + static_cast<std::ptrdiff_t>(s.end), s.apparent.end(), kNoData);
   double running_max = -std::numeric_limits<double>::infinity();
-  const std::size_t n = s.apparent.size(), none = n;
-  std::size_t last_visible = none;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (!is_data(s.apparent[k])) continue;  // the maximum carries over nodata
-    std::uint8_t f = cell::valid;
-    if (s.tangent[k] < running_max) {
-      f |= cell::hidden;
-      if (last_visible != none) s.flags[last_visible] |= cell::occluding;
+  std::size_t last_visible = n;  // the last visible sample, waiting for the next valid one
+  for (std::size_t k = 0; k < s.end; ++k) {
+    const PixelPoint p = uv(k);
+    float z;
+    if (k >= interior && k < interior_end) {  // nearly every sample: no bounds checks
+      const double c0 = std::floor(p.col), r0 = std::floor(p.row);
+      const float* cell =
+          dem.data() + static_cast<std::size_t>(r0) * dem.cols() + static_cast<std::size_t>(c0);
+      z = bilinear_weighing(cell, dem.cols(), p.col - c0, p.row - r0);
     } else {
-      running_max = s.tangent[k];
+      z = bilinear_height(dem, p.col + 0.5, p.row + 0.5);
     }
-    s.flags[k] = f;
-    last_visible = (f & cell::hidden) ? none : k;
+    const double apparent = static_cast<double>(z) - rays.drop[k];
+    const double tangent = (apparent - rays.eye) * rays.inverse_distance[k];
+    s.apparent[k] = static_cast<float>(apparent);
+    s.tangent[k] = tangent;
+    if (!is_data(s.apparent[k])) continue;  // nodata: the maximum carries over it
+    const bool hidden = tangent < running_max;
+    s.flags[k] = static_cast<std::uint8_t>(cell::valid | (hidden ? cell::hidden : 0));
+    if (hidden && last_visible != n) s.flags[last_visible] |= cell::occluding;
+    running_max = hidden ? running_max : tangent;
+    last_visible = hidden ? n : k;
   }
 }
 
@@ -76,7 +110,7 @@ void classify_sight(RayScratch& s) {
 void select_candidates(const PanoramaRays& rays, double tolerance, RayScratch& s) {
   const double step_m = rays.step_metres();
   const double inset = tolerance / step_m;
-  for (std::size_t k = 0; k + 1 < s.apparent.size(); ++k) {
+  for (std::size_t k = 0; k + 1 < s.end; ++k) {
     const double gc =
         (static_cast<double>(s.apparent[k + 1]) - static_cast<double>(s.apparent[k])) / step_m;
     const bool candidate = (gc > s.tangent[k] + inset) & (gc < -inset);
@@ -106,7 +140,7 @@ double along_slope(const RayScratch& s, std::size_t k, double step_m) {
 void filter_samples(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace& place,
                     const FilterRule& rule, RayScratch& s) {
   const double step_m = rays.step_metres();
-  for (std::size_t k = 0; k < s.flags.size(); ++k) {
+  for (std::size_t k = 0; k < s.end; ++k) {
     if ((s.flags[k] & (cell::candidate | cell::hidden)) != cell::candidate) continue;
     const double col_pct = std::fabs(along_slope(s, k, step_m)) * 100.0;
     const double row_pct = std::fabs(across_slope(dem, place, k, step_m)) * 100.0;
@@ -119,7 +153,7 @@ void filter_samples(const HeightGrid& dem, const PanoramaRays& rays, const RayPl
 double zone_depth(const PanoramaRays& rays, const RayScratch& s, std::size_t k) {
   const double step_m = rays.step_metres();
   double deepest = 0.0;
-  for (std::size_t j = k + 1; j < s.flags.size(); ++j) {
+  for (std::size_t j = k + 1; j < s.end; ++j) {
     if (!(s.flags[j] & cell::valid)) continue;
     if (!(s.flags[j] & cell::hidden)) break;
     const double sight = rays.eye + s.tangent[k] * static_cast<double>(j + 1) * step_m;
@@ -172,10 +206,9 @@ void classify_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayRule
                   std::uint8_t* visibility) {
   const RayPlace place(rays, r);
   sample_ray(dem, rays, place, scratch);
-  classify_sight(scratch);
   select_candidates(rays, rules.height_tolerance, scratch);
   filter_samples(dem, rays, place, FilterRule(rules.filter), scratch);
-  const std::size_t n = scratch.flags.size();
+  const std::size_t n = scratch.end;  // the samples after it have no data
   thin_profile(scratch.flags.data(), n, rules.placement);
   out.counts = StageStats{};
   count_profile(scratch.flags.data(), n, out.counts);

@@ -32,6 +32,7 @@ struct RayScratch {
   std::vector<float> apparent;      // z' = z - drop, metres; NaN for nodata
   std::vector<double> tangent;      // (z' - h0) / d: the tangent of the elevation angle
   std::vector<std::uint8_t> flags;  // the cell:: bits, per sample
+  std::size_t end = 0;              // the samples from here on lie off the DEM
 };
 
 // One ray's chain candidates (SPEC 1.7) with their stroke cells (map geometry) and points in the

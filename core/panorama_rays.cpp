@@ -138,10 +138,12 @@ PanoramaRays plan_rays(const HeightGrid& dem, const GeoTransform& gt, const Pano
   rays.samples = static_cast<std::size_t>(std::floor(reach));
   checked_cell_count(rays.rays, rays.samples);
   rays.drop.resize(rays.samples);
+  rays.inverse_distance.resize(rays.samples);
   const double bend = (1.0 - view.refraction) / (2.0 * view.earth_radius);
   for (std::size_t k = 0; k < rays.samples; ++k) {
     const double metres = rays.distance(k + 1) * view.metres_per_unit;
     rays.drop[k] = bend * metres * metres;
+    rays.inverse_distance[k] = 1.0 / metres;
   }
   return rays;
 }
@@ -150,20 +152,18 @@ float bilinear_height(const HeightGrid& dem, double col, double row) {
   const double u = col - 0.5, v = row - 0.5;
   const double c0 = std::floor(u), r0 = std::floor(v);
   const double fu = u - c0, fv = v - r0;
-  const auto at = [&dem](double r, double c) {
-    if (r < 0.0 || c < 0.0 || r >= static_cast<double>(dem.rows()) ||
-        c >= static_cast<double>(dem.cols()))
-      return kNoData;
-    return dem(static_cast<std::size_t>(r), static_cast<std::size_t>(c));
-  };
-  // A neighbour of weight 0 is not read, so a sample on a cell centre needs only that cell.
-  const double z00 = at(r0, c0);
-  const double z01 = fu > 0.0 ? at(r0, c0 + 1) : z00;
-  const double z10 = fv > 0.0 ? at(r0 + 1, c0) : z00;
-  const double z11 = fu > 0.0 ? (fv > 0.0 ? at(r0 + 1, c0 + 1) : z01) : z10;
-  const double top = z00 * (1.0 - fu) + z01 * fu;
-  const double bottom = z10 * (1.0 - fu) + z11 * fu;
-  return static_cast<float>(top * (1.0 - fv) + bottom * fv);
+  const double rows = static_cast<double>(dem.rows()), cols = static_cast<double>(dem.cols());
+  if (c0 >= 0.0 && r0 >= 0.0 && c0 + 1.0 < cols && r0 + 1.0 < rows)
+    return bilinear_weighing(&dem(static_cast<std::size_t>(r0), static_cast<std::size_t>(c0)),
+                             dem.cols(), fu, fv);
+  // At the DEM's edge: the four cells copied, those outside it nodata.
+  float cells[4];
+  for (int k = 0; k < 4; ++k) {
+    const double r = r0 + (k / 2), c = c0 + (k % 2);
+    const bool inside = r >= 0.0 && c >= 0.0 && r < rows && c < cols;
+    cells[k] = inside ? dem(static_cast<std::size_t>(r), static_cast<std::size_t>(c)) : kNoData;
+  }
+  return bilinear_weighing(cells, 2, fu, fv);
 }
 
 }  // namespace tsk
