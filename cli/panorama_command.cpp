@@ -1,5 +1,8 @@
 // terrain-sketch panorama: the silhouettes seen from a viewpoint (docs/PANORAMA.md), on the map
 // and in the panorama, with the visibility raster and a preview.
+#include <cpl_conv.h>
+#include <gdal.h>
+
 #include <algorithm>
 #include <ostream>
 #include <string>
@@ -42,6 +45,9 @@ void check_before_work(const Options& o) {
 io::Dem read_whole_dem(const Options& o, std::ostream& err) {
   io::DemOptions options = o.dem;
   options.azimuth_deg = 90.0;
+  // Read once, block row after block row, into a grid held whole: GDAL's cache would only hold
+  // a second copy of some of it, at the peak of memory. Keep it small unless the user chose one.
+  if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(16 << 20);
   const io::DemFile file(o.input, options);
   io::refuse_too_large_to_turn(o.input, file.info());
   io::Dem dem = io::read_dem(o.input, options);

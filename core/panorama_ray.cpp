@@ -84,10 +84,10 @@ void sample_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace&
     const PixelPoint p = uv(k);
     float z;
     if (k >= interior && k < interior_end) {  // nearly every sample: no bounds checks
-      const double c0 = std::floor(p.col), r0 = std::floor(p.row);
-      const float* cell =
-          dem.data() + static_cast<std::size_t>(r0) * dem.cols() + static_cast<std::size_t>(c0);
-      z = bilinear_weighing(cell, dem.cols(), p.col - c0, p.row - r0);
+      // Both are at least 0 here, where truncating is flooring, and cheaper.
+      const std::size_t c0 = static_cast<std::size_t>(p.col), r0 = static_cast<std::size_t>(p.row);
+      z = bilinear_weighing(dem.data() + r0 * dem.cols() + c0, dem.cols(),
+                            p.col - static_cast<double>(c0), p.row - static_cast<double>(r0));
     } else {
       z = bilinear_height(dem, p.col + 0.5, p.row + 0.5);
     }

@@ -220,6 +220,16 @@ void fill_line_layer(GDALDataset& ds, const std::string& path, const std::string
     OGRFieldDefn defn(field.name, field.type);
     check(layer->CreateField(&defn), std::string("creating field '") + field.name + "'", capture);
   }
+  if (driver_name == "GPKG" && !has_srs) {
+    // GDAL records a layer without a CRS as "undefined geographic", which QGIS would place as
+    // degrees on the earth: "undefined Cartesian" (-1) leaves it unplaced, as the panorama is.
+    const std::string name = spec.name;
+    for (const char* table : {"gpkg_geometry_columns", "gpkg_contents"}) {
+      const std::string sql = std::string("UPDATE ") + table +
+                              " SET srs_id = -1 WHERE table_name = '" + name + "'";
+      ds.ExecuteSQL(sql.c_str(), nullptr, nullptr);
+    }
+  }
   if (driver_name == "GPKG") {
     GpkgLineOutput output(ds, *layer);
     spec.add_features(output);

@@ -1,0 +1,236 @@
+// terrain-sketch panorama: its outputs, its visibility against an exact line of sight and against
+// GDAL's viewshed, and the bad input it refuses without writing anything.
+#include <gdal_alg.h>
+#include <ogrsf_frmts.h>
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <set>
+
+#include "catch_compat.h"
+#include "cli_run.h"
+#include "gdal_test_support.h"
+#include "gdal_util.h"
+
+using namespace tsk;
+using test::CliRun;
+using test::run_cli;
+using test::ScratchDir;
+
+namespace {
+
+const std::string kSample = TSK_SAMPLE_DEM;
+const std::string kData = TSK_TEST_DATA;
+// The sample's highest cell's centre: a summit with a view.
+const std::string kSummit = "749008.1394,4009477.9308";
+
+struct Raster {
+  int rows = 0, cols = 0;
+  std::array<double, 6> gt{};
+  std::vector<float> values;
+  float at(int r, int c) const { return values[static_cast<std::size_t>(r) * cols + c]; }
+};
+
+Raster read_raster(const std::string& path) {
+  GDALAllRegister();
+  io::DatasetPtr ds(static_cast<GDALDataset*>(GDALOpen(path.c_str(), GA_ReadOnly)));
+  REQUIRE(ds);
+  Raster r;
+  r.rows = ds->GetRasterYSize(), r.cols = ds->GetRasterXSize();
+  ds->GetGeoTransform(r.gt.data());
+  r.values.resize(static_cast<std::size_t>(r.rows) * r.cols);
+  REQUIRE(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, r.cols, r.rows, r.values.data(), r.cols,
+                                         r.rows, GDT_Float32, 0, 0) == CE_None);
+  return r;
+}
+
+// The cell centre of (row, col) on the map.
+std::pair<double, double> centre(const Raster& r, int row, int col) {
+  return {r.gt[0] + (col + 0.5) * r.gt[1], r.gt[3] + (row + 0.5) * r.gt[5]};
+}
+
+std::string coordinates(std::pair<double, double> p) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.4f,%.4f", p.first, p.second);
+  return text;
+}
+
+// Whether cell (row, col) is seen from the eye over cell (r0, c0): the straight sight line to its
+// centre, sampled four times a cell, passes above the bilinear surface, every height lowered by
+// curvature and refraction. Written from docs/PANORAMA.md, apart from the code under test.
+bool seen_exactly(const Raster& dem, int r0, int c0, double eye, int row, int col) {
+  const double k = 0.13, R = 6371000.0, cell = dem.gt[1];
+  const double length = std::hypot(row - r0, col - c0);
+  if (length < 1.0) return true;
+  const auto drop = [&](double d) { return (1.0 - k) * d * d / (2.0 * R); };
+  const auto bilinear = [&](double r, double c) {
+    const int ri = std::min(static_cast<int>(std::floor(r)), dem.rows - 2);
+    const int ci = std::min(static_cast<int>(std::floor(c)), dem.cols - 2);
+    const double fr = r - ri, fc = c - ci;
+    return (dem.at(ri, ci) * (1 - fc) + dem.at(ri, ci + 1) * fc) * (1 - fr) +
+           (dem.at(ri + 1, ci) * (1 - fc) + dem.at(ri + 1, ci + 1) * fc) * fr;
+  };
+  const double target_d = length * cell;
+  const double target = (dem.at(row, col) - drop(target_d) - eye) / target_d;
+  const int steps = static_cast<int>(length * 4);
+  for (int s = 1; s < steps; ++s) {
+    const double t = static_cast<double>(s) / steps, d = t * target_d;
+    const double z = bilinear(r0 + t * (row - r0), c0 + t * (col - c0)) - drop(d);
+    if ((z - eye) / d > target + 1e-12) return false;
+  }
+  return true;
+}
+
+// The share of cells in range of both on which two visibility rasters (1 visible, 0 hidden) agree.
+double agreement(const Raster& a, const Raster& b) {
+  std::size_t both = 0, same = 0;
+  for (std::size_t k = 0; k < a.values.size(); ++k) {
+    if (a.values[k] > 1 || b.values[k] > 1) continue;
+    ++both;
+    same += a.values[k] == b.values[k];
+  }
+  return both ? static_cast<double>(same) / static_cast<double>(both) : 0.0;
+}
+
+Raster gdal_viewshed(const std::string& dem, std::pair<double, double> observer, double height,
+                     const std::string& out) {
+  io::DatasetPtr ds(static_cast<GDALDataset*>(GDALOpen(dem.c_str(), GA_ReadOnly)));
+  REQUIRE(ds);
+  GDALDatasetH shed = GDALViewshedGenerate(
+      ds->GetRasterBand(1), "GTiff", out.c_str(), nullptr, observer.first, observer.second, height,
+      0.0, 1, 0, 255, 255, 1.0 - 0.13, GVM_Edge, 0.0, nullptr, nullptr, GVOT_NORMAL, nullptr);
+  REQUIRE(shed != nullptr);
+  GDALClose(shed);
+  return read_raster(out);
+}
+
+std::size_t layer_features(GDALDataset& ds, const char* name, bool& has_crs) {
+  OGRLayer* layer = ds.GetLayerByName(name);
+  REQUIRE(layer != nullptr);
+  // A layer without a CRS may read back as an undefined local (engineering) one.
+  const OGRSpatialReference* srs = layer->GetSpatialRef();
+  has_crs = srs != nullptr && !srs->IsLocal();
+  return static_cast<std::size_t>(layer->GetFeatureCount());
+}
+
+}  // namespace
+
+TEST_CASE("panorama writes its strokes on the map and in the panorama, and its pictures",
+          "[cli][panorama]") {
+  ScratchDir dir("panorama-outputs");
+  const CliRun run = run_cli({"panorama", kSample, dir / "p.gpkg", "--observer", kSummit,
+                              "--observer-height", "2", "--visibility", dir / "seen.tif",
+                              "--preview", dir / "p.svg", "--stats-json", dir / "p.json"});
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  io::DatasetPtr ds(static_cast<GDALDataset*>(
+      GDALOpenEx((dir / "p.gpkg").c_str(), GDAL_OF_VECTOR, nullptr, nullptr, nullptr)));
+  REQUIRE(ds);
+  bool map_crs = false, panorama_crs = true;
+  const std::size_t on_map = layer_features(*ds, "map", map_crs);
+  const std::size_t in_panorama = layer_features(*ds, "panorama", panorama_crs);
+  CHECK(on_map == in_panorama);
+  CHECK(on_map > 100);
+  CHECK(map_crs);
+  CHECK_FALSE(panorama_crs);
+  // Panorama x is the azimuth, within the full circle (a turn on across its seam).
+  for (auto& feature : *ds->GetLayerByName("panorama")) {
+    OGREnvelope box;
+    feature->GetGeometryRef()->getEnvelope(&box);
+    CHECK(box.MinX >= 0.0);
+    CHECK(box.MaxX <= 720.0);
+    CHECK(feature->GetFieldAsDouble("azimuth_min") <= feature->GetFieldAsDouble("azimuth_max"));
+  }
+  // The visibility raster lies on the DEM's grid with its three values.
+  const Raster dem = read_raster(kSample), seen = read_raster(dir / "seen.tif");
+  CHECK(seen.rows == dem.rows);
+  CHECK(seen.cols == dem.cols);
+  CHECK(seen.gt == dem.gt);
+  std::set<float> values(seen.values.begin(), seen.values.end());
+  CHECK(values == std::set<float>{0, 1, 255});
+  // Far strokes are lighter: the factual strokes come in more than one shade.
+  const std::string svg = [&] {
+    std::ifstream in(dir / "p.svg");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  CHECK(svg.find("id=\"factual\"") != std::string::npos);
+  std::set<std::string> shades;
+  for (std::size_t at = svg.find("fill=\"#"); at != std::string::npos;
+       at = svg.find("fill=\"#", at + 1))
+    shades.insert(svg.substr(at + 6, 7));
+  CHECK(shades.size() > 5);
+}
+
+TEST_CASE("panorama visibility agrees with an exact line of sight and with GDAL's viewshed",
+          "[cli][panorama][gdal]") {
+  ScratchDir dir("panorama-viewshed");
+  for (const std::string name : {"gorillas_utm32n.tif", "bei_5m_local.tif", "volcano.tif"}) {
+    const std::string path = kData + "/" + name;
+    const Raster dem = read_raster(path);
+    // Three observers spread over the DEM, each 10 m above the ground.
+    for (const auto& [fr, fc] : {std::pair{0.3, 0.4}, {0.5, 0.5}, {0.7, 0.8}}) {
+      const int r0 = static_cast<int>(fr * dem.rows), c0 = static_cast<int>(fc * dem.cols);
+      CAPTURE(name, r0, c0);
+      const double height = 10.0;
+      const CliRun run =
+          run_cli({"panorama", path, dir / "p.gpkg", "--observer", coordinates(centre(dem, r0, c0)),
+                   "--observer-height", "10", "--visibility", dir / "seen.tif"});
+      INFO(run.err);
+      REQUIRE(run.code == 0);
+      const Raster seen = read_raster(dir / "seen.tif");
+      Raster exact = seen;
+      const double eye = dem.at(r0, c0) + height;
+      for (int r = 0; r < dem.rows; ++r)
+        for (int c = 0; c < dem.cols; ++c)
+          exact.values[static_cast<std::size_t>(r) * dem.cols + c] =
+              seen_exactly(dem, r0, c0, eye, r, c) ? 1.0f : 0.0f;
+      CHECK(agreement(seen, exact) >= 0.97);
+      const Raster shed = gdal_viewshed(path, centre(dem, r0, c0), height, dir / "gdal.tif");
+      // GDAL's viewshed interpolates its horizon its own way (docs/PANORAMA.md 2): bench/
+      // evaluate_panorama.py reports the agreement, which is held here well above chance.
+      CHECK(agreement(seen, shed) >= 0.9);
+    }
+  }
+}
+
+TEST_CASE("panorama refuses a view it cannot draw, and writes nothing", "[cli][panorama]") {
+  ScratchDir dir("panorama-refusals");
+  const std::string geographic = kData + "/jacksboro_geo.tif";
+  const std::string holes = dir / "holes.tif";
+  test::write_tiff(
+      holes, 40, 40, 1, [](int, int r, int c) { return r < 20 && c < 20 ? -9999.0f : 100.0f; },
+      test::kNorthUp, 32616, -9999);
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{kSample, "--observer", "0,0"}, "outside the DEM"},
+      {{holes, "--observer", "500050,3999950"}, "without data"},
+      {{kSample, "--observer", kSummit, "--max-distance", "0"}, "must be a positive distance"},
+      {{kSample, "--observer", kSummit, "--max-distance", "-5"}, "must be a positive distance"},
+      {{kSample, "--observer", kSummit, "--azimuth-from", "30", "--azimuth-to", "30"},
+       "field of view from 30 to 30 degrees is empty"},
+      {{geographic, "--observer", "-84,36"}, "gdalwarp"},
+      {{kSample}, "needs --observer"},
+      {{kSample, "--observer", "749008"}, "needs X,Y"},
+      {{kSample, "--observer", kSummit, "--refraction", "1"}, "refraction coefficient"},
+      {{kSample, "--observer", kSummit, "--observer-height", "-2"}, "observer height"},
+      {{kSample, "--observer", kSummit, "--visibility", dir / "seen.png"}, "GeoTIFF"},
+      {{kSample, "--observer", kSummit, "--preview", dir / "p.png", "--page", "A3", "--page-scale",
+        "50000"},
+       "--page-scale"},
+  };
+  for (const auto& [args, message] : cases) {
+    std::vector<std::string> full = {"panorama", args.front(), dir / "out.gpkg"};
+    full.insert(full.end(), args.begin() + 1, args.end());
+    CAPTURE(full);
+    const CliRun run = run_cli(full);
+    CHECK(run.code == 1);
+    CHECK_THAT(run.err, Catch::Contains(message));
+    CHECK_FALSE(test::fs::exists(dir / "out.gpkg"));
+    CHECK_FALSE(test::fs::exists(dir / "seen.png"));
+  }
+  // One layer per file cannot hold the map and the panorama.
+  const CliRun shp = run_cli({"panorama", kSample, dir / "out.shp", "--observer", kSummit});
+  CHECK(shp.code == 1);
+  CHECK_THAT(shp.err, Catch::Contains(".gpkg"));
+  CHECK(dir.file_count() == 1);  // holes.tif alone
+}
