@@ -50,14 +50,8 @@ QgsProcessingParameterNumber* DemViewAlgorithm::number(const QString& key, const
 }
 
 void DemViewAlgorithm::addDemAndViewParameters(bool exaggeration) {
+  addDemParameters();
   const ViewParams defaults;
-  addWithHelp(new QgsProcessingParameterRasterLayer(QStringLiteral("INPUT"), tr("Elevation (DEM)")),
-              tr("Digital elevation model with heights in metres, in a projected CRS in metres."));
-  // Optional, so that qgis_process and models need not give it: QGIS 3.22 asks for a band
-  // parameter's value even when it has a default.
-  addWithHelp(new QgsProcessingParameterBand(QStringLiteral("BAND"), tr("Band"), 1,
-                                             QStringLiteral("INPUT"), true),
-              tr("The band holding the heights (the first when none is chosen)."));
   addWithHelp(
       number(QStringLiteral("AZIMUTH"), tr("View azimuth (degrees)"), defaults.azimuth_deg, 0, 360),
       tr("Compass bearing the viewer faces, clockwise from grid north: 0 (from the "
@@ -72,6 +66,16 @@ void DemViewAlgorithm::addDemAndViewParameters(bool exaggeration) {
                      0.01, 10000),
               tr("Slope added along the line of sight, in percent: the view elevation angle is "
                  "atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees)."));
+}
+
+void DemViewAlgorithm::addDemParameters() {
+  addWithHelp(new QgsProcessingParameterRasterLayer(QStringLiteral("INPUT"), tr("Elevation (DEM)")),
+              tr("Digital elevation model with heights in metres, in a projected CRS in metres."));
+  // Optional, so that qgis_process and models need not give it: QGIS 3.22 asks for a band
+  // parameter's value even when it has a default.
+  addWithHelp(new QgsProcessingParameterBand(QStringLiteral("BAND"), tr("Band"), 1,
+                                             QStringLiteral("INPUT"), true),
+              tr("The band holding the heights (the first when none is chosen)."));
 }
 
 void DemViewAlgorithm::addFilterParameters() {
@@ -286,16 +290,25 @@ SilhouetteResult DemViewAlgorithm::runSilhouettes(const SilhouetteParams& params
     feedback->setProgress(from + (to - from) * fraction);
     return !feedback->isCanceled();
   };
+  FilterReport filter;
+  const SilhouetteParams run = adaptFilter(params, feedback, filter);
   return withCoreErrors([&] {
-    FilterReport filter;
-    const SilhouetteParams run =
-        adapt_filter(params, mRaster->frame(), mRaster->source(mAzimuth).read, filter);
-    logFilter(filter, feedback);
     SilhouetteResult result =
         run_silhouettes(mRaster->oriented(), mRaster->frame(), mRaster->geotransform(), run,
                         progress, mRaster->lowestHeight());
     result.filter = filter;
     return result;
+  });
+}
+
+SilhouetteParams DemViewAlgorithm::adaptFilter(const SilhouetteParams& params,
+                                               QgsProcessingFeedback* feedback,
+                                               FilterReport& report) {
+  return withCoreErrors([&] {
+    const SilhouetteParams run =
+        adapt_filter(params, mRaster->frame(), mRaster->source(mAzimuth).read, report);
+    logFilter(report, feedback);
+    return run;
   });
 }
 

@@ -34,6 +34,8 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
                                               double value, double min, double max);
   // INPUT, BAND and AZIMUTH; with `exaggeration` also VE and BASE_SLOPE.
   void addDemAndViewParameters(bool exaggeration);
+  // INPUT and BAND.
+  void addDemParameters();
   // FILTER, ADAPT, ADAPT_WINDOW, ROW_CUT, COL_CUT, CTRL_COL, DIAGONALS.
   void addFilterParameters();
   ViewParams readView(const QVariantMap& parameters, QgsProcessingContext& context) const;
@@ -69,6 +71,10 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   // errors become QgsProcessingException.
   SilhouetteResult runSilhouettes(const SilhouetteParams& params, QgsProcessingFeedback* feedback,
                                   double from, double to);
+  // The slope filter of `params` adapted to the raster read by readRaster() (and logged), with
+  // what it used in `report`; the core's errors become QgsProcessingException.
+  SilhouetteParams adaptFilter(const SilhouetteParams& params, QgsProcessingFeedback* feedback,
+                               FilterReport& report);
   // The prepared raster, not read yet (for reading strip by strip).
   RasterGrid& preparedRaster() { return *mRaster; }
 

@@ -5,6 +5,7 @@
 #include "classification_algorithm.h"
 #include "drape_algorithm.h"
 #include "filter_diagram_algorithm.h"
+#include "panorama_algorithm.h"
 #include "plugin_paths.h"
 #include "profile_plot_algorithm.h"
 #include "pstroke_algorithm.h"
@@ -37,6 +38,7 @@ void TerrainSketchProvider::loadAlgorithms() {
   addAlgorithm(new FilterDiagramAlgorithm());
   addAlgorithm(new DrapeAlgorithm());
   addAlgorithm(new PStrokeAlgorithm());
+  addAlgorithm(new PanoramaAlgorithm());
 }
 
 }  // namespace tsk::plugin

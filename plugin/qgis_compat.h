@@ -20,6 +20,7 @@ constexpr auto kLineStringM = Qgis::WkbType::LineStringM;
 constexpr auto kDoubleNumber = Qgis::ProcessingNumberParameterType::Double;
 constexpr auto kIntegerNumber = Qgis::ProcessingNumberParameterType::Integer;
 constexpr auto kAdvanced = Qgis::ProcessingParameterFlag::Advanced;
+constexpr auto kOptional = Qgis::ProcessingParameterFlag::Optional;
 #else
 constexpr int kRangeStatistics = QgsRasterBandStats::Min | QgsRasterBandStats::Max;
 constexpr auto kLineLayer = QgsProcessing::TypeVectorLine;
@@ -28,6 +29,7 @@ constexpr auto kLineStringM = QgsWkbTypes::LineStringM;
 constexpr auto kDoubleNumber = QgsProcessingParameterNumber::Double;
 constexpr auto kIntegerNumber = QgsProcessingParameterNumber::Integer;
 constexpr auto kAdvanced = QgsProcessingParameterDefinition::FlagAdvanced;
+constexpr auto kOptional = QgsProcessingParameterDefinition::FlagOptional;
 #endif
 
 // A raster renderer's stretch over the cumulative cut of its values (the range limit became an

@@ -25,6 +25,12 @@ void writeByteRaster(const QString& path, const Grid<std::uint8_t>& grid, const 
   });
 }
 
+void writeVisibilityRaster(const QString& path, const Grid<std::uint8_t>& grid,
+                           const RasterGrid& dem) {
+  withCoreErrors(
+      [&] { io::write_visibility(filePath(path), grid, dem.geotransform(), crsWkt(dem.crs())); });
+}
+
 void writeFloatRaster(const QString& path, const std::vector<HeightGrid>& bands,
                       const GeoTransform& geotransform, const QgsCoordinateReferenceSystem& crs) {
   withCoreErrors([&] { io::write_float_raster(filePath(path), bands, geotransform, crsWkt(crs)); });

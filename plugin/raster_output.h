@@ -17,6 +17,9 @@ class RasterGrid;
 
 // Byte classes on the DEM's grid, nodata 0.
 void writeByteRaster(const QString& path, const Grid<std::uint8_t>& grid, const RasterGrid& dem);
+// A panorama's visibility on the DEM's grid: 1 visible, 0 hidden, 255 out of range (nodata).
+void writeVisibilityRaster(const QString& path, const Grid<std::uint8_t>& grid,
+                           const RasterGrid& dem);
 // Float32 bands (all of one size), nodata NaN.
 void writeFloatRaster(const QString& path, const std::vector<HeightGrid>& bands,
                       const GeoTransform& geotransform, const QgsCoordinateReferenceSystem& crs);

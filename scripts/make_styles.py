@@ -87,6 +87,29 @@ def drawn_styles():
         save(layer, name)
 
 
+# Panorama strokes (docs/PANORAMA.md), on the map and in the panorama: the classes' colours and
+# widths, far strokes lighter (towards a quarter of the ink) and thinner (to half), as in the
+# command line's preview.
+PANORAMA_FAR = 'scale_linear("mean_dist", 0, maximum("mean_dist"), 0, 1)'
+PANORAMA_COLOUR = ("color_mix_rgb(if(\"class\" = 'factual', '17,17,17', '110,62,28'), "
+                   "'255,255,255', 0.75 * " + PANORAMA_FAR + ")")
+PANORAMA_WIDTH = "if(\"class\" = 'factual', 0.6, 0.35) * (1 - 0.5 * " + PANORAMA_FAR + ")"
+
+
+def panorama_style():
+    layer = QgsVectorLayer("LineString?crs=EPSG:32616&" + FIELDS, "panorama", "memory")
+    symbol = QgsLineSymbol.createSimple({"line_color": "17,17,17", "line_width": "0.5",
+                                         "line_width_unit": "MM", "capstyle": "round",
+                                         "joinstyle": "round"})
+    line = symbol.symbolLayer(0)
+    line.setDataDefinedProperty(QgsSymbolLayer.PropertyStrokeColor,
+                                QgsProperty.fromExpression(PANORAMA_COLOUR))
+    line.setDataDefinedProperty(QgsSymbolLayer.PropertyStrokeWidth,
+                                QgsProperty.fromExpression(PANORAMA_WIDTH))
+    layer.setRenderer(QgsSingleSymbolRenderer(symbol))
+    save(layer, "panorama")
+
+
 # Stage classes as in the thesis's map views (same colours as the CLI's colour table).
 CLASSES = [(1, "visible", "#ffffff"), (2, "hidden", "#bed2eb"), (3, "occluding", "#dc1e1e"),
            (4, "c-set", "#d7d7d7"), (5, "f-set", "#787878"), (6, "t-set", "#141414")]
@@ -138,6 +161,7 @@ def main():
         layer.setRenderer(QgsSingleSymbolRenderer(symbol))
         save(layer, name)
     drawn_styles()
+    panorama_style()
     import tempfile
     with tempfile.TemporaryDirectory() as tmp:
         raster_styles(tmp)

@@ -9,7 +9,7 @@ TEST_CASE("every algorithm and parameter has help, and numbers show what they ca
   const QgsProcessingProvider* provider =
       QgsApplication::processingRegistry()->providerById(QStringLiteral("terrainsketch"));
   REQUIRE(provider != nullptr);
-  REQUIRE(provider->algorithms().size() == 7);
+  REQUIRE(provider->algorithms().size() == 8);
   for (const QgsProcessingAlgorithm* alg : provider->algorithms()) {
     CAPTURE(alg->id().toStdString());
     CHECK(alg->shortHelpString().size() > 100);

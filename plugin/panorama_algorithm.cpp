@@ -1,0 +1,203 @@
+#include "panorama_algorithm.h"
+
+#include <qgsprocessingfeedback.h>
+#include <qgsprocessingparameters.h>
+#include <qgsrasterlayer.h>
+
+#include "errors.h"
+#include "layer_style.h"
+#include "line_output.h"
+#include "qgis_compat.h"
+#include "raster_grid.h"
+#include "raster_output.h"
+#include "stroke_features.h"
+
+namespace tsk::plugin {
+namespace {
+
+const QString kObserver = QStringLiteral("OBSERVER");
+const QString kObserverHeight = QStringLiteral("OBSERVER_HEIGHT");
+const QString kMaxDistance = QStringLiteral("MAX_DISTANCE");
+const QString kAzimuthFrom = QStringLiteral("AZIMUTH_FROM");
+const QString kAzimuthTo = QStringLiteral("AZIMUTH_TO");
+const QString kRefraction = QStringLiteral("REFRACTION");
+const QString kMinCells = QStringLiteral("MIN_CELLS");
+const QString kWindow = QStringLiteral("WINDOW");
+const QString kMapOutput = QStringLiteral("MAP_OUTPUT");
+const QString kPanoramaOutput = QStringLiteral("PANORAMA_OUTPUT");
+const QString kVisibility = QStringLiteral("VISIBILITY");
+
+}  // namespace
+
+QString PanoramaAlgorithm::name() const {
+  return QStringLiteral("panorama");
+}
+QString PanoramaAlgorithm::displayName() const {
+  return tr("Panorama sketch");
+}
+
+QString PanoramaAlgorithm::shortHelpString() const {
+  return tr(
+      "The silhouettes of the terrain seen from a viewpoint, as a panorama board draws them: "
+      "rays are cast from the observer all round (or over a field of view), every ray a "
+      "profile of the silhouette method. Factual silhouettes are the occluding edges, the "
+      "skyline and the ridges in front of it; Formulated silhouettes are back-facing slopes "
+      "that the sight line, descending onto them, still reaches, kept by the slope filter. "
+      "Heights are lowered by the earth's curvature, lessened by refraction. The strokes come "
+      "on the map (the DEM's CRS) and in the panorama (x the azimuth, y the elevation angle, "
+      "in degrees, without a CRS), far strokes drawn lighter.");
+}
+
+PanoramaAlgorithm* PanoramaAlgorithm::createInstance() const {
+  return new PanoramaAlgorithm();
+}
+
+void PanoramaAlgorithm::addViewParameters() {
+  const PanoramaView defaults;
+  addWithHelp(new QgsProcessingParameterPoint(kObserver, tr("Observer")),
+              tr("Where the viewer stands: click it on the map. It must lie on the DEM, on a "
+                 "cell with data."));
+  addWithHelp(number(kObserverHeight, tr("Observer height (m)"), defaults.observer_height, 0, 1e5),
+              tr("The eye's height above the ground at the observer, in metres."));
+  // Optional: not given, the range is the whole DEM (a number's widget cannot be left empty).
+  auto* range = number(kMaxDistance, tr("Range (map units)"), 1, 0.001, 1e9);
+  range->setFlags(range->flags() | kOptional);
+  range->setDefaultValue(QVariant());
+  addWithHelp(range, tr("The farthest distance drawn, in the DEM's map units; when not given, "
+                        "the whole DEM."));
+  addWithHelp(number(kAzimuthFrom, tr("Field of view from (degrees)"), 0, -360, 720),
+              tr("The field of view turns clockwise from this azimuth (from grid north) to the "
+                 "next. 0 to 360, the default, is all round."));
+  addWithHelp(number(kAzimuthTo, tr("Field of view to (degrees)"), 360, -360, 720),
+              tr("The azimuth the field of view ends at; equal azimuths make an empty field."));
+  addWithHelp(number(kRefraction, tr("Refraction coefficient"), defaults.refraction, 0, 0.99),
+              tr("How much refraction lessens the earth's curvature (k): heights are lowered by "
+                 "(1 - k) d² / 2R at distance d. 0.13 is the usual value over land."),
+              true);
+}
+
+void PanoramaAlgorithm::initAlgorithm(const QVariantMap&) {
+  addDemParameters();
+  addViewParameters();
+  addFilterParameters();
+  const ChainParams chain;
+  addWithHelp(new QgsProcessingParameterNumber(kMinCells, tr("Minimum stroke length (samples)"),
+                                               kIntegerNumber, chain.min_cells, false, 1, 1000000),
+              tr("Strokes of fewer samples are dropped."), true);
+  addWithHelp(new QgsProcessingParameterNumber(kWindow, tr("Formulated chaining window (samples)"),
+                                               kIntegerNumber, chain.window, false, 0, 1000),
+              tr("How far along the next ray a formulated chain may step."), true);
+  addWithHelp(new QgsProcessingParameterFeatureSink(kMapOutput, tr("Panorama strokes on the map"),
+                                                    kLineLayer),
+              tr("The strokes in the DEM's CRS, with their class, distance and azimuths."));
+  addWithHelp(new QgsProcessingParameterFeatureSink(kPanoramaOutput, tr("Panorama"), kLineLayer),
+              tr("The same strokes in the panorama: x the azimuth and y the elevation angle, in "
+                 "degrees, without a CRS. Open it in a map of its own."));
+  auto* visibility = new QgsProcessingParameterRasterDestination(kVisibility, tr("Visibility"),
+                                                                 QVariant(), true, false);
+  addWithHelp(visibility, tr("Optional: a raster on the DEM's grid, 1 where the ground is seen, "
+                             "0 where it is hidden, nodata out of range."));
+}
+
+double PanoramaAlgorithm::readParameters(const QVariantMap& parameters,
+                                         QgsProcessingContext& context) {
+  readFilter(parameters, context, mFilter);
+  mFilter.chain.min_cells = parameterAsInt(parameters, kMinCells, context);
+  mFilter.chain.window = parameterAsInt(parameters, kWindow, context);
+  mFilter.validate();
+  if (mFilter.adaptive.mode == FilterMode::adaptive && mFilter.adaptive.adapt == Adaptivity::local)
+    throw Error(tr("Adapting the filter to each neighbourhood is not available for panoramas "
+                   "yet: adapt it to the whole DEM.")
+                    .toStdString());
+  QgsRasterLayer* dem = parameterAsRasterLayer(parameters, QStringLiteral("INPUT"), context);
+  const QgsCoordinateReferenceSystem crs = dem ? dem->crs() : QgsCoordinateReferenceSystem();
+  const QgsPointXY observer = parameterAsPoint(parameters, kObserver, context, crs);
+  if (dem && !dem->extent().contains(observer))
+    throw Error(tr("The observer lies outside the DEM: choose a point on it.").toStdString());
+  PanoramaView& view = mParams.view;
+  view.observer_x = observer.x();
+  view.observer_y = observer.y();
+  view.observer_height = parameterAsDouble(parameters, kObserverHeight, context);
+  const QVariant range = parameters.value(kMaxDistance);
+  view.max_distance = range.isValid() && !range.toString().isEmpty()
+                          ? parameterAsDouble(parameters, kMaxDistance, context)
+                          : 0.0;
+  view.azimuth_from = parameterAsDouble(parameters, kAzimuthFrom, context);
+  view.azimuth_to = parameterAsDouble(parameters, kAzimuthTo, context);
+  view.refraction = parameterAsDouble(parameters, kRefraction, context);
+  view.validate();
+  mVisibility = parameterAsOutputLayer(parameters, kVisibility, context);
+  return 90.0;  // the DEM read as it lies: the view from the west is its own grid
+}
+
+PanoramaResult PanoramaAlgorithm::sketch(QgsProcessingFeedback* feedback) {
+  const RasterGrid& raster = readRaster(feedback, 20);
+  FilterReport report;
+  const SilhouetteParams adapted = adaptFilter(mFilter, feedback, report);
+  mParams.rules = {adapted.filter, adapted.height_tolerance, adapted.placement};
+  mParams.chain = adapted.chain;
+  mParams.threads = adapted.threads;
+  mParams.record_visibility = !mVisibility.isEmpty();
+  const ProgressFn progress = [feedback](double fraction) {
+    if (!feedback) return true;
+    feedback->setProgress(20 + 60 * fraction);
+    return !feedback->isCanceled();
+  };
+  return withCoreErrors(
+      [&] { return sketch_panorama(raster.oriented(), raster.geotransform(), mParams, progress); });
+}
+
+void PanoramaAlgorithm::writeStrokes(const QVariantMap& parameters, QgsProcessingContext& context,
+                                     const PanoramaResult& result,
+                                     QgsProcessingFeedback* feedback) {
+  QgsFields fields = strokeFields();
+  fields.append(makeField(QStringLiteral("azimuth_min"), FieldKind::Real));
+  fields.append(makeField(QStringLiteral("azimuth_max"), FieldKind::Real));
+  LineOutput map(*this, parameters, kMapOutput, context, fields, preparedRaster().crs(), feedback);
+  LineOutput panorama(*this, parameters, kPanoramaOutput, context, fields,
+                      QgsCoordinateReferenceSystem(), feedback);
+  for (const PanoramaStroke& s : result.strokes) {
+    QgsFeature feature = strokeFeature(s.map, fields);
+    // strokeFeature fills the stroke fields only: the azimuths follow them.
+    QgsAttributes attributes = feature.attributes();
+    attributes << s.azimuth_min << s.azimuth_max;
+    feature.setAttributes(attributes);
+    addWithProgress(map, feature, feedback, 2 * result.strokes.size(), 80);
+    feature.setGeometry(lineGeometry(s.view));
+    addWithProgress(panorama, feature, feedback, 2 * result.strokes.size(), 80);
+  }
+  map.finish();
+  panorama.finish();
+  mMapId = map.destination();
+  mPanoramaId = panorama.destination();
+}
+
+QVariantMap PanoramaAlgorithm::processAlgorithm(const QVariantMap& parameters,
+                                                QgsProcessingContext& context,
+                                                QgsProcessingFeedback* feedback) {
+  const PanoramaResult result = sketch(feedback);
+  const RasterGrid& raster = preparedRaster();
+  // The raster first: the line outputs, once finished, are whole.
+  if (!mVisibility.isEmpty()) {
+    const Grid<std::uint8_t> seen = withCoreErrors([&] {
+      return visibility_raster(result, raster.oriented().rows(), raster.oriented().cols(),
+                               raster.geotransform());
+    });
+    writeVisibilityRaster(mVisibility, seen, raster);
+  }
+  if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
+  writeStrokes(parameters, context, result, feedback);
+  releaseRaster();
+  QVariantMap outputs = {{kMapOutput, mMapId}, {kPanoramaOutput, mPanoramaId}};
+  if (!mVisibility.isEmpty()) outputs.insert(kVisibility, mVisibility);
+  return outputs;
+}
+
+QVariantMap PanoramaAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
+                                                    QgsProcessingFeedback*) {
+  styleOnCompletion(context, mMapId, QStringLiteral("panorama"));
+  styleOnCompletion(context, mPanoramaId, QStringLiteral("panorama"));
+  return {};
+}
+
+}  // namespace tsk::plugin

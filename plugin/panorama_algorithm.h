@@ -1,0 +1,39 @@
+// Processing algorithm "Panorama sketch" (docs/PANORAMA.md): the silhouettes seen from a point,
+// all round or over a field of view, on the map and in the panorama, with the visibility raster.
+#pragma once
+
+#include "dem_view_algorithm.h"
+#include "panorama.h"
+
+namespace tsk::plugin {
+
+class PanoramaAlgorithm : public DemViewAlgorithm {
+  Q_DECLARE_TR_FUNCTIONS(PanoramaAlgorithm)
+
+ public:
+  QString name() const override;
+  QString displayName() const override;
+  QString shortHelpString() const override;
+  PanoramaAlgorithm* createInstance() const override;
+
+ protected:
+  void initAlgorithm(const QVariantMap& configuration = QVariantMap()) override;
+  double readParameters(const QVariantMap& parameters, QgsProcessingContext& context) override;
+  QVariantMap processAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,
+                               QgsProcessingFeedback* feedback) override;
+  QVariantMap postProcessAlgorithm(QgsProcessingContext& context,
+                                   QgsProcessingFeedback* feedback) override;
+
+ private:
+  // The view's parameters; then the outputs.
+  void addViewParameters();
+  PanoramaResult sketch(QgsProcessingFeedback* feedback);
+  void writeStrokes(const QVariantMap& parameters, QgsProcessingContext& context,
+                    const PanoramaResult& result, QgsProcessingFeedback* feedback);
+
+  SilhouetteParams mFilter;  // the slope filter and chaining, as the silhouettes take them
+  PanoramaParams mParams;
+  QString mVisibility, mMapId, mPanoramaId;
+};
+
+}  // namespace tsk::plugin

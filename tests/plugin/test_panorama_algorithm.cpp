@@ -1,0 +1,82 @@
+// The panorama algorithm against the core.
+#include <qgsrasterlayer.h>
+
+#include "panorama.h"
+#include "plugin_test_support.h"
+
+using namespace tsk::plugin_test;
+
+namespace {
+
+// The sample's highest cell's centre, as a point parameter in the DEM's CRS.
+const QString kSummit = QStringLiteral("749008.1394,4009477.9308 [EPSG:32616]");
+
+}  // namespace
+
+TEST_CASE("the panorama algorithm draws the core's panorama on the map and in the panorama",
+          "[plugin][panorama]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/jacksboro_utm16n.tif";
+  // The thesis's filter, which the core runs by default.
+  const Run run = runOk(dem,
+                        {{"OBSERVER", kSummit},
+                         {"OBSERVER_HEIGHT", 2},
+                         {"AZIMUTH_FROM", 270},
+                         {"AZIMUTH_TO", 90},
+                         {"FILTER", 1},
+                         {"MAP_OUTPUT", dir.filePath("map.gpkg")},
+                         {"PANORAMA_OUTPUT", dir.filePath("panorama.gpkg")},
+                         {"VISIBILITY", dir.filePath("seen.tif")}},
+                        dir, QStringLiteral("panorama"));
+  const io::Dem core = coreDem(dem);
+  PanoramaParams params;
+  params.view.observer_x = 749008.1394, params.view.observer_y = 4009477.9308;
+  params.view.observer_height = 2;
+  params.view.azimuth_from = 270, params.view.azimuth_to = 90;
+  params.record_visibility = true;
+  const PanoramaResult expected = sketch_panorama(core.oriented, core.geotransform, params);
+  REQUIRE(expected.strokes.size() > 100);
+  QgsVectorLayer map(run.results.value("MAP_OUTPUT").toString(), "map", "ogr");
+  QgsVectorLayer panorama(run.results.value("PANORAMA_OUTPUT").toString(), "panorama", "ogr");
+  REQUIRE(map.isValid());
+  REQUIRE(panorama.isValid());
+  CHECK(map.featureCount() == static_cast<long long>(expected.strokes.size()));
+  CHECK(panorama.featureCount() == static_cast<long long>(expected.strokes.size()));
+  CHECK(map.crs().authid() == QStringLiteral("EPSG:32616"));
+  // The panorama's x runs over the field of view, from 270 degrees a half turn on.
+  const QgsRectangle extent = panorama.extent();
+  CHECK(extent.xMinimum() >= 270.0);
+  CHECK(extent.xMaximum() <= 450.0);
+  // Every feature carries its azimuths, which bound its panorama line.
+  QgsFeature feature;
+  for (QgsFeatureIterator it = panorama.getFeatures(); it.nextFeature(feature);) {
+    const QgsRectangle box = feature.geometry().boundingBox();
+    CHECK(feature.attribute("azimuth_min").toDouble() == Approx(box.xMinimum()));
+    CHECK(feature.attribute("azimuth_max").toDouble() == Approx(box.xMaximum()));
+  }
+  // The visibility raster is the core's.
+  QgsRasterLayer seen(run.results.value("VISIBILITY").toString(), "seen", "gdal");
+  REQUIRE(seen.isValid());
+  const Grid<std::uint8_t> raster =
+      visibility_raster(expected, core.rows, core.cols, core.geotransform);
+  std::unique_ptr<QgsRasterBlock> block(
+      seen.dataProvider()->block(1, seen.extent(), seen.width(), seen.height()));
+  std::size_t same = 0;
+  for (int r = 0; r < seen.height(); ++r)
+    for (int c = 0; c < seen.width(); ++c)
+      same += (block->isNoData(r, c) ? 255 : block->value(r, c)) == raster(r, c);
+  CHECK(same == raster.size());
+}
+
+TEST_CASE("the panorama algorithm refuses an observer off the DEM", "[plugin][panorama]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/jacksboro_utm16n.tif";
+  const Run run = runAlgorithm(dem,
+                               {{"OBSERVER", QStringLiteral("0,0 [EPSG:32616]")},
+                                {"MAP_OUTPUT", dir.filePath("map.gpkg")},
+                                {"PANORAMA_OUTPUT", dir.filePath("panorama.gpkg")}},
+                               dir, nullptr, QStringLiteral("panorama"));
+  CHECK_FALSE(run.ok);
+  CHECK(run.error.contains(QStringLiteral("outside the DEM")));
+  CHECK_FALSE(QFileInfo::exists(dir.filePath("map.gpkg")));
+}
