@@ -39,167 +39,167 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="54" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="72" />
         <source>Elevation (DEM)</source>
         <translation>Höhenmodell (DGM)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="55" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="73" />
         <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
         <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="76" />
         <source>Band</source>
         <translation>Kanal</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="60" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="78" />
         <source>The band holding the heights (the first when none is chosen).</source>
         <translation>Der Kanal mit den Höhen (der erste, wenn keiner gewählt ist).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="62" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="56" />
         <source>View azimuth (degrees)</source>
         <translation>Blickrichtung (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="63" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="57" />
         <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
         <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="69" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="63" />
         <source>Vertical exaggeration</source>
         <translation>Überhöhung</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="70" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="64" />
         <source>Factor applied to heights before occlusion is computed.</source>
         <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="71" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="65" />
         <source>Base slope (%)</source>
         <translation>Grundneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="73" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="67" />
         <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
         <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="80" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="84" />
         <source>Slope filter</source>
         <translation>Neigungsfilter</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="81" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="85" />
         <source>Adapted to the DEM</source>
         <translation>An das DGM angepasst</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="81" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="85" />
         <source>Fixed (the thesis's cut-offs)</source>
         <translation>Fest (die Schwellen der Dissertation)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="82" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="86" />
         <source>Adapted to the DEM (the default): the cut-offs below are scaled by the DEM's median slope over 24 %, that of the terrain the thesis tuned them on at 75 m cells (from 1/16 to 4 times), so that coarse, fine, flat and steep DEMs all give a balanced sketch; height steps within half the DEM's height unit count as flat, so the sketch holds still as the view turns. Fixed: the cut-offs as given, the thesis's filter.</source>
         <translation>An das DGM angepasst (Standard): die Schwellen unten werden mit der mittleren Hangneigung (Median) des DGM geteilt durch 24 % skaliert, der des Geländes, auf das die Dissertation sie bei 75-m-Zellen abgestimmt hat (1/16- bis 4-fach), so dass grobe, feine, flache und steile DGM alle eine ausgewogene Skizze ergeben; Höhenstufen innerhalb der halben Höheneinheit des DGM gelten als flach, so dass die Skizze stehen bleibt, wenn sich die Blickrichtung dreht. Fest: die Schwellen wie angegeben, der Filter der Dissertation.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="89" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="93" />
         <source>Adapt the filter to</source>
         <translation>Filter anpassen an</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="90" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="94" />
         <source>The whole DEM</source>
         <translation>Das ganze DGM</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="90" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="94" />
         <source>Each neighbourhood</source>
         <translation>Jede Nachbarschaft</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="91" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="95" />
         <source>With the adapted filter: one scale for the whole DEM, or a scale for each neighbourhood, so that a plain beside mountains keeps its subtle breaks of slope (this reads the DEM once more).</source>
         <translation>Beim angepassten Filter: ein Maßstab für das ganze DGM oder einer für jede Nachbarschaft, so dass eine Ebene neben Bergen ihre feinen Gefällsknicke behält (dazu wird das DGM ein weiteres Mal gelesen).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="96" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="100" />
         <source>Neighbourhood (cells)</source>
         <translation>Nachbarschaft (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="99" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="103" />
         <source>With a scale for each neighbourhood: the side of a neighbourhood, in DEM cells. Scales are blended between neighbourhoods, so the filter has no seams.</source>
         <translation>Bei einem Maßstab je Nachbarschaft: die Seitenlänge einer Nachbarschaft in DGM-Zellen. Zwischen Nachbarschaften werden die Maßstäbe überblendet, so dass der Filter keine Nähte hat.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="102" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="106" />
         <source>Row slope cut-off (%)</source>
         <translation>Grenzwert Zeilenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="104" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="108" />
         <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
         <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="106" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="110" />
         <source>Column slope cut-off (%)</source>
         <translation>Grenzwert Spaltenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="108" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="112" />
         <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
         <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="110" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="114" />
         <source>Control point column slope (%)</source>
         <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="112" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="116" />
         <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
         <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="116" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="120" />
         <source>Allow for diagonals</source>
         <translation>Diagonalen berücksichtigen</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="117" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="121" />
         <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
         <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="151" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="155" />
         <source>Slope filter adapted to the DEM: its median slope is %1 % against %2 % on the thesis's terrain, so the cut-offs are scaled by %3: row %4 %, column %5 %, control point %6 %.</source>
         <translation>Neigungsfilter an das DGM angepasst: seine mittlere Hangneigung ist %1 % gegenüber %2 % im Gelände der Dissertation, daher werden die Schwellen mit %3 skaliert: Zeile %4 %, Spalte %5 %, Kontrollpunkt %6 %.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="161" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="165" />
         <source>Each neighbourhood of %1 cells scales them from %2 to %3 times the thesis's.</source>
         <translation>Jede Nachbarschaft von %1 Zellen skaliert sie auf das %2- bis %3-fache der Schwellen der Dissertation.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="197" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="201" />
         <source>%1 and %2 would both be written to %3, one over the other; choose different files, or save both to one GeoPackage with a layer name each.</source>
         <translation>%1 und %2 würden beide nach %3 geschrieben, eines über das andere; wählen Sie verschiedene Dateien, oder speichern Sie beide in ein GeoPackage mit je einem Layernamen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="223" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="227" />
         <source>%1 would be written into %2, the file of %3, which this algorithm reads; choose another file.</source>
         <translation>%1 würde in %2 geschrieben, die Datei von %3, die dieser Algorithmus liest; wählen Sie eine andere Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="269" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="273" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -390,6 +390,144 @@
         <location filename="../plugin/pstroke_algorithm.cpp" line="65" />
         <source>P-strokes as lines with their class and score.</source>
         <translation>P-Striche als Linien mit ihrer Klasse und Bewertung.</translation>
+    </message>
+</context>
+<context>
+    <name>PanoramaAlgorithm</name>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="36" />
+        <source>Panorama sketch</source>
+        <translation>Panoramaskizze</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="40" />
+        <source>The silhouettes of the terrain seen from a viewpoint, as a panorama board draws them: rays are cast from the observer all round (or over a field of view), every ray a profile of the silhouette method. Factual silhouettes are the occluding edges, the skyline and the ridges in front of it; Formulated silhouettes are back-facing slopes that the sight line, descending onto them, still reaches, kept by the slope filter. Heights are lowered by the earth's curvature, lessened by refraction. The strokes come on the map (the DEM's CRS) and in the panorama (x the azimuth, y the elevation angle, in degrees, without a CRS), far strokes drawn lighter.</source>
+        <translation>Die Silhouetten des Geländes von einem Standpunkt aus, wie eine Panoramatafel sie zeichnet: Vom Beobachter werden Strahlen rundum (oder über ein Blickfeld) ausgesandt, jeder Strahl ein Profil der Silhouettenmethode. Faktische Silhouetten sind die verdeckenden Kanten, der Horizont und die Grate davor; formulierte Silhouetten sind abgewandte Hänge, die die Sichtlinie, auf sie hinabfallend, noch erreicht, vom Neigungsfilter ausgewählt. Die Höhen werden um die Erdkrümmung, vermindert durch die Refraktion, abgesenkt. Die Striche entstehen auf der Karte (im KBS des DGM) und im Panorama (x das Azimut, y der Höhenwinkel, in Grad, ohne KBS); ferne Striche sind heller gezeichnet.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="57" />
+        <source>Observer</source>
+        <translation>Beobachter</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="58" />
+        <source>Where the viewer stands: click it on the map. It must lie on the DEM, on a cell with data.</source>
+        <translation>Wo der Betrachter steht: in der Karte anklicken. Der Punkt muss auf dem DGM liegen, auf einer Zelle mit Daten.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="60" />
+        <source>Observer height (m)</source>
+        <translation>Beobachterhöhe (m)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="61" />
+        <source>The eye's height above the ground at the observer, in metres.</source>
+        <translation>Die Augenhöhe über dem Boden am Standpunkt, in Metern.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="63" />
+        <source>Range (map units)</source>
+        <translation>Reichweite (Karteneinheiten)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="66" />
+        <source>The farthest distance drawn, in the DEM's map units; when not given, the whole DEM.</source>
+        <translation>Die größte gezeichnete Entfernung in den Karteneinheiten des DGM; ohne Angabe das ganze DGM.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="68" />
+        <source>Field of view from (degrees)</source>
+        <translation>Blickfeld von (Grad)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="69" />
+        <source>The field of view turns clockwise from this azimuth (from grid north) to the next. 0 to 360, the default, is all round.</source>
+        <translation>Das Blickfeld dreht sich im Uhrzeigersinn von diesem Azimut (von Gitternord) zum nächsten. 0 bis 360, die Vorgabe, ist rundum.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="71" />
+        <source>Field of view to (degrees)</source>
+        <translation>Blickfeld bis (Grad)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="72" />
+        <source>The azimuth the field of view ends at; equal azimuths make an empty field.</source>
+        <translation>Das Azimut, bei dem das Blickfeld endet; gleiche Azimute ergeben ein leeres Blickfeld.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="73" />
+        <source>Refraction coefficient</source>
+        <translation>Refraktionskoeffizient</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="74" />
+        <source>How much refraction lessens the earth's curvature (k): heights are lowered by (1 - k) d² / 2R at distance d. 0.13 is the usual value over land.</source>
+        <translation>Wie stark die Refraktion die Erdkrümmung vermindert (k): Höhen werden in der Entfernung d um (1 - k) d² / 2R abgesenkt. 0,13 ist der übliche Wert über Land.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="84" />
+        <source>Minimum stroke length (samples)</source>
+        <translation>Mindestlänge der Striche (Abtastpunkte)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="86" />
+        <source>Strokes of fewer samples are dropped.</source>
+        <translation>Striche mit weniger Abtastpunkten werden verworfen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="87" />
+        <source>Formulated chaining window (samples)</source>
+        <translation>Suchfenster der formulierten Verkettung (Abtastpunkte)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="89" />
+        <source>How far along the next ray a formulated chain may step.</source>
+        <translation>Wie weit eine formulierte Kette auf dem nächsten Strahl springen darf.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="90" />
+        <source>Panorama strokes on the map</source>
+        <translation>Panoramastriche auf der Karte</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="92" />
+        <source>The strokes in the DEM's CRS, with their class, distance and azimuths.</source>
+        <translation>Die Striche im KBS des DGM, mit ihrer Klasse, Entfernung und ihren Azimuten.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="93" />
+        <source>Panorama</source>
+        <translation>Panorama</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="94" />
+        <source>The same strokes in the panorama: x the azimuth and y the elevation angle, in degrees, without a CRS. Open it in a map of its own.</source>
+        <translation>Dieselben Striche im Panorama: x das Azimut und y der Höhenwinkel, in Grad, ohne KBS. In einer eigenen Karte öffnen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="96" />
+        <source>Visibility</source>
+        <translation>Sichtbarkeit</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="98" />
+        <source>Optional: a raster on the DEM's grid, 1 where the ground is seen, 0 where it is hidden, nodata out of range.</source>
+        <translation>Optional: ein Raster auf dem Gitter des DGM, 1 wo der Boden gesehen wird, 0 wo er verdeckt ist, NoData außerhalb der Reichweite.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="109" />
+        <source>Adapting the filter to each neighbourhood is not available for panoramas yet: adapt it to the whole DEM.</source>
+        <translation>Die Anpassung des Filters an jede Nachbarschaft ist für Panoramen noch nicht verfügbar: an das ganze DGM anpassen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="116" />
+        <source>The observer lies outside the DEM: choose a point on it.</source>
+        <translation>Der Beobachter liegt außerhalb des DGM: einen Punkt darauf wählen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="188" />
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
     </message>
 </context>
 <context>
@@ -784,12 +922,12 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
 <context>
     <name>TerrainSketchProvider</name>
     <message>
-        <location filename="../plugin/provider.cpp" line="20" />
+        <location filename="../plugin/provider.cpp" line="21" />
         <source>Terrain sketch</source>
         <translation>Geländeskizze</translation>
     </message>
     <message>
-        <location filename="../plugin/provider.cpp" line="23" />
+        <location filename="../plugin/provider.cpp" line="24" />
         <source>Terrain sketch: factual and formulated silhouettes</source>
         <translation>Geländeskizze: faktische und formulierte Silhouetten</translation>
     </message>

@@ -425,6 +425,58 @@ GERMAN = {
         'Überzeichnung (Zellen)',
     'Drawn strokes: each end runs on this far (in cells) along its direction, as a hand-drawn stroke does. 0: none.':
         'Gezeichnete Striche: jedes Ende läuft so weit (in Zellen) in seiner Richtung weiter, wie es ein von Hand gezeichneter Strich tut. 0: keine.',
+    'Panorama sketch':
+        'Panoramaskizze',
+    "The silhouettes of the terrain seen from a viewpoint, as a panorama board draws them: rays are cast from the observer all round (or over a field of view), every ray a profile of the silhouette method. Factual silhouettes are the occluding edges, the skyline and the ridges in front of it; Formulated silhouettes are back-facing slopes that the sight line, descending onto them, still reaches, kept by the slope filter. Heights are lowered by the earth's curvature, lessened by refraction. The strokes come on the map (the DEM's CRS) and in the panorama (x the azimuth, y the elevation angle, in degrees, without a CRS), far strokes drawn lighter.":
+        'Die Silhouetten des Geländes von einem Standpunkt aus, wie eine Panoramatafel sie zeichnet: Vom Beobachter werden Strahlen rundum (oder über ein Blickfeld) ausgesandt, jeder Strahl ein Profil der Silhouettenmethode. Faktische Silhouetten sind die verdeckenden Kanten, der Horizont und die Grate davor; formulierte Silhouetten sind abgewandte Hänge, die die Sichtlinie, auf sie hinabfallend, noch erreicht, vom Neigungsfilter ausgewählt. Die Höhen werden um die Erdkrümmung, vermindert durch die Refraktion, abgesenkt. Die Striche entstehen auf der Karte (im KBS des DGM) und im Panorama (x das Azimut, y der Höhenwinkel, in Grad, ohne KBS); ferne Striche sind heller gezeichnet.',
+    'Observer':
+        'Beobachter',
+    'Where the viewer stands: click it on the map. It must lie on the DEM, on a cell with data.':
+        'Wo der Betrachter steht: in der Karte anklicken. Der Punkt muss auf dem DGM liegen, auf einer Zelle mit Daten.',
+    'Observer height (m)':
+        'Beobachterhöhe (m)',
+    "The eye's height above the ground at the observer, in metres.":
+        'Die Augenhöhe über dem Boden am Standpunkt, in Metern.',
+    'Range (map units)':
+        'Reichweite (Karteneinheiten)',
+    "The farthest distance drawn, in the DEM's map units; when not given, the whole DEM.":
+        'Die größte gezeichnete Entfernung in den Karteneinheiten des DGM; ohne Angabe das ganze DGM.',
+    'Field of view from (degrees)':
+        'Blickfeld von (Grad)',
+    'The field of view turns clockwise from this azimuth (from grid north) to the next. 0 to 360, the default, is all round.':
+        'Das Blickfeld dreht sich im Uhrzeigersinn von diesem Azimut (von Gitternord) zum nächsten. 0 bis 360, die Vorgabe, ist rundum.',
+    'Field of view to (degrees)':
+        'Blickfeld bis (Grad)',
+    'The azimuth the field of view ends at; equal azimuths make an empty field.':
+        'Das Azimut, bei dem das Blickfeld endet; gleiche Azimute ergeben ein leeres Blickfeld.',
+    'Refraction coefficient':
+        'Refraktionskoeffizient',
+    "How much refraction lessens the earth's curvature (k): heights are lowered by (1 - k) d² / 2R at distance d. 0.13 is the usual value over land.":
+        'Wie stark die Refraktion die Erdkrümmung vermindert (k): Höhen werden in der Entfernung d um (1 - k) d² / 2R abgesenkt. 0,13 ist der übliche Wert über Land.',
+    'Minimum stroke length (samples)':
+        'Mindestlänge der Striche (Abtastpunkte)',
+    'Strokes of fewer samples are dropped.':
+        'Striche mit weniger Abtastpunkten werden verworfen.',
+    'Formulated chaining window (samples)':
+        'Suchfenster der formulierten Verkettung (Abtastpunkte)',
+    'How far along the next ray a formulated chain may step.':
+        'Wie weit eine formulierte Kette auf dem nächsten Strahl springen darf.',
+    'Panorama strokes on the map':
+        'Panoramastriche auf der Karte',
+    "The strokes in the DEM's CRS, with their class, distance and azimuths.":
+        'Die Striche im KBS des DGM, mit ihrer Klasse, Entfernung und ihren Azimuten.',
+    'Panorama':
+        'Panorama',
+    'The same strokes in the panorama: x the azimuth and y the elevation angle, in degrees, without a CRS. Open it in a map of its own.':
+        'Dieselben Striche im Panorama: x das Azimut und y der Höhenwinkel, in Grad, ohne KBS. In einer eigenen Karte öffnen.',
+    'Visibility':
+        'Sichtbarkeit',
+    "Optional: a raster on the DEM's grid, 1 where the ground is seen, 0 where it is hidden, nodata out of range.":
+        'Optional: ein Raster auf dem Gitter des DGM, 1 wo der Boden gesehen wird, 0 wo er verdeckt ist, NoData außerhalb der Reichweite.',
+    'Adapting the filter to each neighbourhood is not available for panoramas yet: adapt it to the whole DEM.':
+        'Die Anpassung des Filters an jede Nachbarschaft ist für Panoramen noch nicht verfügbar: an das ganze DGM anpassen.',
+    'The observer lies outside the DEM: choose a point on it.':
+        'Der Beobachter liegt außerhalb des DGM: einen Punkt darauf wählen.',
 }
 
 
