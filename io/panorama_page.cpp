@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
 #include <limits>
 
 #include "stroke_smoothing.h"
@@ -9,6 +11,10 @@
 
 namespace tsk::io {
 namespace {
+
+constexpr double kMostExaggeration = 3.0;
+// A drawn stroke is cut where its chain steps more samples than this along the next ray.
+constexpr std::int32_t kLeapSamples = 4;
 
 // The page's frame: its size and margins, and how degrees map onto it.
 struct PanoramaFrame {
@@ -45,34 +51,57 @@ PanoramaFrame frame_page(const PanoramaResult& result, const PageOptions& option
   f.from_deg = field.from_deg;
   f.top_deg = high;
   f.per_deg_x = (f.width - 2 * f.margin) / field.width_deg;
-  f.per_deg_y = (f.height - 2 * f.margin) / (high - low);
+  // Heights fill the page, but are never drawn more than kMostExaggeration times as tall as the
+  // azimuths are wide: panorama boards exaggerate gently. A picture without a page is as tall
+  // as that needs.
+  f.per_deg_y = std::min((f.height - 2 * f.margin) / (high - low), kMostExaggeration * f.per_deg_x);
+  if (options.size.empty())
+    f.height = std::max(200.0, std::ceil(2 * f.margin + (high - low) * f.per_deg_y));
   return f;
 }
 
-// The path of one stroke on the page, `turns` turns on (-1: a full circle's overflow at the left).
-PagePath stroke_path(const PanoramaStroke& s, const PanoramaFrame& f, double turns, double depth,
-                     const DrawnParams& strokes) {
-  PagePath path;
-  path.cls = s.map.cls;
+// The paths of one stroke on the page, `turns` turns on (-1: a full circle's overflow at the
+// left). Drawn strokes are cut where the chain leaps along the rays, as drawn strokes of the
+// parallel view are (a leap is no line on the terrain), then smoothed and tapered.
+void add_stroke_paths(const PanoramaStroke& s, const PanoramaFrame& f, double turns, double depth,
+                      const DrawnParams& strokes, std::vector<PagePath>& out) {
   const bool factual = s.map.cls == StrokeClass::factual;
   // Far strokes lighter and thinner, down to a quarter of the ink and half the width.
   const double far = std::clamp(s.map.mean_dist / depth, 0.0, 1.0);
-  path.ink = 1.0 - 0.75 * far;
   const double width =
       (f.millimetres ? (factual ? 0.5 : 0.3) : (factual ? 2.2 : 1.3)) * (1.0 - 0.5 * far);
-  Stroke page_stroke;
-  for (const StrokePoint& v : s.view) page_stroke.points.push_back(f.at(v, turns));
-  if (strokes.drawn() && page_stroke.points.size() >= 2) {
-    // Gentle on the page: the rays are closer than a pixel, so the stair steps are sub-pixel.
-    const double unit = f.millimetres ? 0.25 : 1.0;
-    smooth_stroke(page_stroke, 1.5 * unit, unit);
-    weigh_stroke(page_stroke, {strokes.taper, 0.0, 0.0});
+  const bool drawn = strokes.drawn() && s.map.chain.size() == s.view.size();
+  // A leap: many samples along the next ray, or (near the observer, where a sample spans much
+  // of the picture) a step up or down the page far steeper than across it.
+  const double jump = f.millimetres ? 1.0 : 4.0;
+  const auto leaps = [&](std::size_t k) {
+    const StrokePoint a = f.at(s.view[k - 1], turns), b = f.at(s.view[k], turns);
+    const double up = std::fabs(b.y - a.y);
+    return std::abs(s.map.chain[k].i - s.map.chain[k - 1].i) > kLeapSamples ||
+           (up > jump && up > 3.0 * std::fabs(b.x - a.x));
+  };
+  std::size_t begin = 0;
+  while (begin < s.view.size()) {
+    std::size_t end = begin + 1;
+    while (end < s.view.size() && !(drawn && leaps(end))) ++end;
+    Stroke piece;
+    for (std::size_t k = begin; k < end; ++k) piece.points.push_back(f.at(s.view[k], turns));
+    begin = end;
+    if (drawn && piece.points.size() < 2) continue;
+    if (drawn) {
+      // Gentle on the page: the rays are closer than a pixel, so the stair steps are sub-pixel.
+      const double unit = f.millimetres ? 0.25 : 1.0;
+      smooth_stroke(piece, 1.5 * unit, unit);
+      weigh_stroke(piece, {strokes.taper, 0.0, 0.0});
+    }
+    PagePath path;
+    path.cls = s.map.cls;
+    path.ink = 1.0 - 0.75 * far;
+    path.points = std::move(piece.points);
+    path.widths.assign(path.points.size(), width);
+    for (std::size_t k = 0; k < piece.weights.size(); ++k) path.widths[k] *= piece.weights[k];
+    out.push_back(std::move(path));
   }
-  path.points = std::move(page_stroke.points);
-  path.widths.assign(path.points.size(), width);
-  for (std::size_t k = 0; k < page_stroke.weights.size(); ++k)
-    path.widths[k] *= page_stroke.weights[k];
-  return path;
 }
 
 }  // namespace
@@ -88,10 +117,10 @@ PanoramaPage lay_out_panorama(const PanoramaResult& result, const DrawnParams& s
   const double depth = result.rays.max_distance;
   const double right_edge = f.from_deg + result.rays.field.width_deg;
   for (const PanoramaStroke& s : result.strokes) {
-    out.page.paths.push_back(stroke_path(s, f, 0.0, depth, strokes));
+    add_stroke_paths(s, f, 0.0, depth, strokes, out.page.paths);
     // A stroke across a full circle's seam runs past the right edge: its rest shows at the left.
     if (result.rays.field.full_circle && s.azimuth_max > right_edge)
-      out.page.paths.push_back(stroke_path(s, f, -1.0, depth, strokes));
+      add_stroke_paths(s, f, -1.0, depth, strokes, out.page.paths);
   }
   return out;
 }

@@ -10,7 +10,7 @@ namespace tsk::io {
 
 struct PanoramaPage {
   SketchPage page;
-  double exaggeration = 1.0;  // of the elevation angles over the azimuths, to fill the page
+  double exaggeration = 1.0;  // of the elevation angles over the azimuths: at most 3
 };
 
 // Lays the strokes of `result` out: the field of view across the page (a full circle's strokes

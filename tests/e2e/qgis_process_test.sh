@@ -41,6 +41,20 @@ check "model exit code" $?
 gdalinfo "$out/hs.tif" > /dev/null 2>&1; check "model hillshade raster" $?
 [ "$(features "$out/mf.gpkg")" -gt 100 ] 2>/dev/null; check "model factual features" $?
 
+# The panorama from the sample's summit, the observer given as a point with its CRS.
+qp run terrainsketch:panorama --INPUT="$repo/resources/sample/jacksboro_utm16n.tif" \
+  --OBSERVER='749008.1394,4009477.9308 [EPSG:32616]' --OBSERVER_HEIGHT=2 \
+  --MAP_OUTPUT="$out/pm.gpkg" --PANORAMA_OUTPUT="$out/pp.gpkg" --VISIBILITY="$out/seen.tif" \
+  > "$out/panorama.txt"
+check "panorama exit code" $?
+[ "$(features "$out/pm.gpkg")" -gt 100 ] 2>/dev/null; check "panorama map features" $?
+[ "$(features "$out/pp.gpkg")" = "$(features "$out/pm.gpkg")" ]; check "panorama features" $?
+gdalinfo "$out/seen.tif" > /dev/null 2>&1; check "panorama visibility raster" $?
+qp run terrainsketch:panorama --INPUT="$repo/resources/sample/jacksboro_utm16n.tif" \
+  --OBSERVER='0,0 [EPSG:32616]' --MAP_OUTPUT="$out/px.gpkg" --PANORAMA_OUTPUT="$out/py.gpkg" \
+  > "$out/panorama_off.txt"
+[ $? -ne 0 ] && [ ! -e "$out/px.gpkg" ]; check "panorama observer off the DEM refused" $?
+
 # Two runs writing the same outputs at once, one on a larger DEM: each waits for the other's
 # outputs to be complete (a lock per output file), both succeed, and the outputs are whole (one
 # run's failure used to delete the other's files).
