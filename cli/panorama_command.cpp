@@ -9,9 +9,9 @@
 
 #include "adaptive_filter.h"
 #include "command_support.h"
-#include "dem_windows.h"
 #include "commands.h"
 #include "dem_note_text.h"
+#include "dem_windows.h"
 #include "errors.h"
 #include "interrupt.h"
 #include "output_files.h"

@@ -225,8 +225,8 @@ void fill_line_layer(GDALDataset& ds, const std::string& path, const std::string
     // degrees on the earth: "undefined Cartesian" (-1) leaves it unplaced, as the panorama is.
     const std::string name = spec.name;
     for (const char* table : {"gpkg_geometry_columns", "gpkg_contents"}) {
-      const std::string sql = std::string("UPDATE ") + table +
-                              " SET srs_id = -1 WHERE table_name = '" + name + "'";
+      const std::string sql =
+          std::string("UPDATE ") + table + " SET srs_id = -1 WHERE table_name = '" + name + "'";
       ds.ExecuteSQL(sql.c_str(), nullptr, nullptr);
     }
   }
