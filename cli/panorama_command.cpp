@@ -106,10 +106,13 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaResult& r
 int panorama(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress) {
   const Options o = parse(args);
   check_before_work(o);
-  const io::Dem dem = read_whole_dem(o, err);
+  io::Dem dem = read_whole_dem(o, err);
   FilterReport report;
   const PanoramaParams params = panorama_params(o, dem, report, err);
   const PanoramaResult result = sketch_panorama(dem.oriented, dem.geotransform, params, progress);
+  // The outputs need the DEM's grid and georeferencing, not its heights: freed, they make room
+  // for the visibility raster.
+  dem.oriented = HeightGrid();
   write_outputs(o, dem, result, report, err);
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes
