@@ -103,6 +103,9 @@ panorama (the slope filter and stroke options above apply; the view options do n
   --refraction K       refraction coefficient, 0 <= K < 1 (default 0.13)
   --visibility FILE    write a Byte GeoTIFF on the DEM's grid: 1 visible, 0 hidden, 255 out
                        of range
+  --peaks FILE         points to label where the observer sees them (any OGR layer): a
+                       `peaks` layer of leaders in the panorama, and names on the preview
+  --peak-names FIELD   the points' field holding their names (default name)
   --preview FILE       the panorama, azimuth across, elevation up, far strokes lighter (.png,
                        .svg, .pdf; --page SIZE draws it on a landscape page)
 profiles:

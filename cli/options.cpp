@@ -116,8 +116,8 @@ void refuse_clashing_paths(const Options& o) {
                                                                 {"--visibility", &o.visibility}};
   // Every file GDAL reads for each input: a VRT's sources too.
   std::vector<std::pair<const char*, std::vector<std::string>>> inputs;
-  for (const auto& [name, path] :
-       {std::pair{"INPUT", &o.input}, std::pair{"--source", &o.source}}) {
+  for (const auto& [name, path] : {std::pair{"INPUT", &o.input}, std::pair{"--source", &o.source},
+                                   std::pair{"--peaks", &o.peaks}}) {
     if (path->empty()) continue;
     io::check_input_path(*path);
     std::vector<std::string> files = io::dataset_files(*path);
@@ -215,6 +215,8 @@ Options parse(const std::vector<std::string>& args) {
       {"--azimuth-to", [&](auto& n, auto& v) { o.panorama.azimuth_to = parse_number(n, v); }},
       {"--refraction", [&](auto& n, auto& v) { o.panorama.refraction = parse_number(n, v); }},
       {"--visibility", [&](auto&, auto& v) { o.visibility = v; }},
+      {"--peaks", [&](auto&, auto& v) { o.peaks = v; }},
+      {"--peak-names", [&](auto&, auto& v) { o.peak_names = v; }},
       {"--preview", [&](auto& n, auto& v) { o.preview = parse_preview_name(n, v); }},
       {"--page", [&](auto&, auto& v) { o.page.size = v; }},
       {"--page-scale",

@@ -14,7 +14,8 @@ namespace tsk::cli {
 
 struct Options {
   std::string input, output, format, stats_json, preview, source;
-  std::string visibility;  // panorama: the visibility raster
+  std::string visibility;                  // panorama: the visibility raster
+  std::string peaks, peak_names = "name";  // panorama: named points to label, their name field
   bool observer_given = false;
   PanoramaView panorama;  // the panorama's view (its observer when observer_given)
   bool timings = false;

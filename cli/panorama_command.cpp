@@ -14,6 +14,7 @@
 #include "dem_windows.h"
 #include "errors.h"
 #include "interrupt.h"
+#include "named_points.h"
 #include "output_files.h"
 #include "panorama.h"
 #include "panorama_page.h"
@@ -81,9 +82,11 @@ PanoramaParams panorama_params(const Options& o, const io::Dem& dem, FilterRepor
 }
 
 void write_outputs(const Options& o, const io::Dem& dem, const PanoramaResult& result,
-                   const FilterReport& report, std::ostream& err) {
+                   const std::vector<PeakLeader>& leaders, const FilterReport& report,
+                   std::ostream& err) {
+  const std::vector<PeakLeader>* peaks = o.peaks.empty() ? nullptr : &leaders;
   // The strokes are committed last: a failure to write the others leaves no strokes either.
-  io::write_panorama_strokes(o.output, o.format, result.strokes, dem.srs_wkt, [&] {
+  io::write_panorama_strokes(o.output, o.format, result.strokes, dem.srs_wkt, peaks, [&] {
     stop_if_interrupted();
     if (!o.visibility.empty()) {
       io::write_visibility(
@@ -93,7 +96,7 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaResult& r
     }
     if (!o.stats_json.empty()) io::write_text_file(o.stats_json, stats_json(result.stats, report));
     if (!o.preview.empty()) {
-      const io::PanoramaPage page = lay_out_panorama(result, o.params.strokes, o.page);
+      const io::PanoramaPage page = lay_out_panorama(result, o.params.strokes, o.page, leaders);
       io::write_page(o.preview, page.page, o.page);
       err << "note: the preview's elevation angles are drawn " << page.exaggeration
           << " times as tall as its azimuths are wide\n";
@@ -107,18 +110,26 @@ int panorama(const Args& args, std::ostream& out, std::ostream& err, const Progr
   const Options o = parse(args);
   check_before_work(o);
   io::Dem dem = read_whole_dem(o, err);
+  // The peaks are read before the work, so that a bad file is refused first.
+  const std::vector<NamedPoint> peaks =
+      o.peaks.empty() ? std::vector<NamedPoint>()
+                      : io::read_named_points(o.peaks, o.peak_names, dem.srs_wkt);
   FilterReport report;
   const PanoramaParams params = panorama_params(o, dem, report, err);
   const PanoramaResult result = sketch_panorama(dem.oriented, dem.geotransform, params, progress);
+  const std::vector<PeakLeader> leaders =
+      lead_peaks(result, see_peaks(dem.oriented, dem.geotransform, result.rays, peaks));
   // The outputs need the DEM's grid and georeferencing, not its heights: freed, they make room
   // for the visibility raster.
   dem.oriented = HeightGrid();
-  write_outputs(o, dem, result, report, err);
+  write_outputs(o, dem, result, leaders, report, err);
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes
       << " formulated strokes from " << result.rays.rays << " rays of " << result.rays.samples
       << " samples (hidden " << s.pct(s.hidden) << " %, c-set " << s.pct(s.candidate)
       << " %, f-set " << s.pct(s.filtered) << " %, t-set " << s.pct(s.thinned) << " %)\n";
+  if (!o.peaks.empty())
+    out << leaders.size() << " of the " << peaks.size() << " peaks are in sight, labelled\n";
   return 0;
 }
 

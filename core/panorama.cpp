@@ -77,6 +77,22 @@ PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotra
   return result;
 }
 
+std::vector<PeakLeader> lead_peaks(const PanoramaResult& result,
+                                   const std::vector<SeenPeak>& seen) {
+  double low = 0.0, high = 0.0;  // the horizontal, when there are no strokes
+  bool first = true;
+  for (const PanoramaStroke& s : result.strokes) {
+    for (const StrokePoint& p : s.view) {
+      low = first ? p.y : std::min(low, p.y);
+      high = first ? p.y : std::max(high, p.y);
+      first = false;
+    }
+  }
+  for (const SeenPeak& p : seen) high = std::max(high, p.elevation_deg);
+  const double row = std::max(0.05, 0.1 * (high - low));
+  return peak_leaders(seen, high, row, result.rays.field.width_deg / 20.0);
+}
+
 Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t rows,
                                      std::size_t cols, const GeoTransform& geotransform,
                                      unsigned threads) {

@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "panorama_peaks.h"
 #include "panorama_ray.h"
 #include "panorama_rays.h"
 #include "panorama_strokes.h"
@@ -38,6 +39,11 @@ struct PanoramaResult {
 // `progress` says stop.
 PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotransform,
                                const PanoramaParams& params, const ProgressFn& progress = {});
+
+// The leaders of the peaks `seen` over the strokes of `result`: their labels a little above the
+// highest stroke, in rows a tenth of the strokes' span of elevation apart, each label taking a
+// twentieth of the field of view.
+std::vector<PeakLeader> lead_peaks(const PanoramaResult& result, const std::vector<SeenPeak>& seen);
 
 // The visibility raster on the DEM's grid (docs/PANORAMA.md 2): each cell takes the class of the
 // sample nearest its centre. `result` must hold the samples (record_visibility).

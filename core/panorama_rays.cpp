@@ -139,7 +139,8 @@ PanoramaRays plan_rays(const HeightGrid& dem, const GeoTransform& gt, const Pano
   checked_cell_count(rays.rays, rays.samples);
   rays.drop.resize(rays.samples);
   rays.inverse_distance.resize(rays.samples);
-  const double bend = (1.0 - view.refraction) / (2.0 * view.earth_radius);
+  rays.bend = (1.0 - view.refraction) / (2.0 * view.earth_radius);
+  const double bend = rays.bend;
   for (std::size_t k = 0; k < rays.samples; ++k) {
     const double metres = rays.distance(k + 1) * view.metres_per_unit;
     rays.drop[k] = bend * metres * metres;

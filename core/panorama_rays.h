@@ -43,6 +43,7 @@ struct PanoramaRays {
   FieldOfView field;
   std::size_t rays = 0, samples = 0;
   double col_per_x = 1.0, row_per_y = -1.0;  // DEM pixels per map unit (north-up grids)
+  double bend = 0.0;                     // (1 - k) / 2R: the curvature drop at d metres is bend d^2
   std::vector<double> drop;              // per sample: the curvature drop (1 - k) d^2 / 2R, metres
   std::vector<double> inverse_distance;  // per sample: 1 / d, per metre
 

@@ -28,7 +28,8 @@ struct PanoramaFrame {
   }
 };
 
-PanoramaFrame frame_page(const PanoramaResult& result, const PageOptions& options) {
+PanoramaFrame frame_page(const PanoramaResult& result, const std::vector<PeakLeader>& leaders,
+                         const PageOptions& options) {
   PanoramaFrame f;
   const FieldOfView& field = result.rays.field;
   if (!options.size.empty()) {
@@ -47,6 +48,8 @@ PanoramaFrame frame_page(const PanoramaResult& result, const PageOptions& option
   double low = std::numeric_limits<double>::infinity(), high = -low;
   for (const PanoramaStroke& s : result.strokes)
     for (const StrokePoint& p : s.view) low = std::min(low, p.y), high = std::max(high, p.y);
+  for (const PeakLeader& l : leaders)
+    low = std::min(low, l.top.y), high = std::max(high, l.label.y);
   if (!(high > low)) low = -1.0, high = 1.0;
   f.from_deg = field.from_deg;
   f.top_deg = high;
@@ -107,8 +110,8 @@ void add_stroke_paths(const PanoramaStroke& s, const PanoramaFrame& f, double tu
 }  // namespace
 
 PanoramaPage lay_out_panorama(const PanoramaResult& result, const DrawnParams& strokes,
-                              const PageOptions& options) {
-  const PanoramaFrame f = frame_page(result, options);
+                              const PageOptions& options, const std::vector<PeakLeader>& leaders) {
+  const PanoramaFrame f = frame_page(result, leaders, options);
   PanoramaPage out;
   out.page.width = f.width;
   out.page.height = f.height;
@@ -122,6 +125,8 @@ PanoramaPage lay_out_panorama(const PanoramaResult& result, const DrawnParams& s
     if (result.rays.field.full_circle && s.azimuth_max > right_edge)
       add_stroke_paths(s, f, -1.0, depth, strokes, out.page.paths);
   }
+  for (const PeakLeader& l : leaders)
+    out.page.labels.push_back({f.at(l.top, 0.0), f.at(l.label, 0.0), l.peak.name});
   return out;
 }
 

@@ -16,8 +16,10 @@ struct PanoramaPage {
 // Lays the strokes of `result` out: the field of view across the page (a full circle's strokes
 // across the seam drawn at both ends), the strokes' elevation angles from top to bottom of it.
 // Drawn strokes (strokes.drawn()) are smoothed and tapered on the page; exact ones are polylines
-// through their samples. A page size (options.size) is taken landscape.
+// through their samples. A page size (options.size) is taken landscape. The peaks' `leaders`
+// are drawn with their names.
 PanoramaPage lay_out_panorama(const PanoramaResult& result, const DrawnParams& strokes,
-                              const PageOptions& options);
+                              const PageOptions& options,
+                              const std::vector<PeakLeader>& leaders = {});
 
 }  // namespace tsk::io

@@ -72,6 +72,8 @@ void write_png_preview(const std::string& path, SketchPage page) {
       for (StrokePoint& q : p.points) q.x *= px, q.y *= px;
       for (double& w : p.widths) w *= px;
     }
+    for (PageLabel& l : page.labels)
+      for (StrokePoint* q : {&l.from, &l.to}) q->x *= px, q->y *= px;
   }
   Canvas canvas(static_cast<int>(page.width), static_cast<int>(page.height));
   // Formulated first so factual strokes stay on top.
@@ -86,6 +88,8 @@ void write_png_preview(const std::string& path, SketchPage page) {
       }
     }
   }
+  // Labels' leaders: a picture has no text, so its peaks show as leaders alone.
+  for (const PageLabel& l : page.labels) canvas.line(l.from.x, l.from.y, l.to.x, l.to.y, 0.5, 0.5f);
   GDALAllRegister();
   GdalErrorCapture capture;
   std::vector<GByte> pixels = canvas.pixels();

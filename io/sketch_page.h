@@ -29,10 +29,18 @@ struct PagePath {
   double ink = 1.0;  // share of the class's colour over white: far panorama strokes are lighter
 };
 
+// A label with its leader: a line from `from` to `to`, the text on from `to`, in page units.
+struct PageLabel {
+  StrokePoint from, to;
+  std::string text;  // UTF-8
+};
+
 struct SketchPage {
   double width = 0.0, height = 0.0;  // page units: millimetres with a page size, else pixels
   bool millimetres = false;
-  std::vector<PagePath> paths;  // in the order of the strokes
+  std::vector<PagePath> paths;                                    // in the order of the strokes
+  std::vector<PageLabel> labels;                                  // a panorama's peaks
+  double label_size() const { return millimetres ? 3.0 : 13.0; }  // the text's height
 };
 
 // Lays the strokes of `result` out on the page. Exact strokes are drawn through their cells'

@@ -81,6 +81,64 @@ std::ostringstream number_stream() {
 
 }  // namespace
 
+// Text as XML holds it.
+std::string xml_text(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+// The labels' layer: grey leaders, names in a sans-serif face.
+void write_svg_labels(std::ostringstream& svg, const SketchPage& page) {
+  if (page.labels.empty()) return;
+  svg << "<g id=\"labels\" inkscape:label=\"Peaks\" inkscape:groupmode=\"layer\" "
+         "font-family=\"sans-serif\" font-size=\""
+      << page.label_size() << "\" fill=\"#333333\">\n";
+  for (const PageLabel& l : page.labels) {
+    svg << "<path d=\"M" << l.from.x << " " << l.from.y << " L" << l.to.x << " " << l.to.y
+        << "\" fill=\"none\" stroke=\"#777777\" stroke-width=\"" << page.label_size() / 16
+        << "\"/>\n<text x=\"" << l.to.x << "\" y=\"" << l.to.y << "\">" << xml_text(l.text)
+        << "</text>\n";
+  }
+  svg << "</g>\n";
+}
+
+// Text as a PDF string in WinAnsi (Latin-1 for the letters it shares): UTF-8 decoded, what
+// Latin-1 lacks as '?', and the string's special characters escaped.
+std::string pdf_text(const std::string& text) {
+  std::string out;
+  for (std::size_t k = 0; k < text.size(); ++k) {
+    unsigned code = static_cast<unsigned char>(text[k]);
+    if (code >= 0xc0 && code < 0xe0 && k + 1 < text.size()) {
+      code = ((code & 0x1fu) << 6) | (static_cast<unsigned char>(text[++k]) & 0x3fu);
+    } else if (code >= 0x80) {
+      while (k + 1 < text.size() && (static_cast<unsigned char>(text[k + 1]) & 0xc0u) == 0x80u) ++k;
+      code = '?';
+    }
+    if (code > 0xff) code = '?';
+    if (code == '(' || code == ')' || code == '\\') out += '\\';
+    out += static_cast<char>(code);
+  }
+  return out;
+}
+
 PlotterPage plan_plotter_page(const SketchPage& page) {
   PlotterPage plotter;
   // Ends closer than a fifth of a millimetre (or of a pixel's width, 0.75 px) meet.
@@ -127,6 +185,7 @@ void write_svg(const std::string& path, const SketchPage& page, const PlotterPag
                 });
     svg << "</g>\n";
   }
+  write_svg_labels(svg, page);
   svg << "</svg>\n";
   write_text_file(path, svg.str());
 }
@@ -195,6 +254,18 @@ void write_pdf(const std::string& path, const SketchPage& page, const PlotterPag
         });
     content << "EMC\n";
   }
+  if (!page.labels.empty()) {
+    content << "0.47 0.47 0.47 RG " << page.label_size() / 16 * to_pt << " w\n";
+    for (const PageLabel& l : page.labels) {
+      content << l.from.x * to_pt << " " << height - l.from.y * to_pt << " m " << l.to.x * to_pt
+              << " " << height - l.to.y * to_pt << " l S\n";
+    }
+    content << "0.2 0.2 0.2 rg\n";
+    for (const PageLabel& l : page.labels) {
+      content << "BT /F1 " << page.label_size() * to_pt << " Tf " << l.to.x * to_pt << " "
+              << height - l.to.y * to_pt << " Td (" << pdf_text(l.text) << ") Tj ET\n";
+    }
+  }
   const std::string stream = content.str();
   std::ostringstream media = number_stream();
   media << "[0 0 " << width << " " << height << "]";
@@ -204,10 +275,12 @@ void write_pdf(const std::string& path, const SketchPage& page, const PlotterPag
       "[5 0 R 6 0 R] >> >> >>");
   pdf.add("<< /Type /Pages /Kids [3 0 R] /Count 1 >>");
   pdf.add("<< /Type /Page /Parent 2 0 R /MediaBox " + media.str() +
-          " /Resources << /Properties << /L0 5 0 R /L1 6 0 R >> >> /Contents 4 0 R >>");
+          " /Resources << /Properties << /L0 5 0 R /L1 6 0 R >> /Font << /F1 7 0 R >> >> "
+          "/Contents 4 0 R >>");
   pdf.add("<< /Length " + std::to_string(stream.size()) + " >>\nstream\n" + stream + "\nendstream");
   pdf.add(std::string("<< /Type /OCG /Name (") + look(kClassOrder[0]).label + ") >>");
   pdf.add(std::string("<< /Type /OCG /Name (") + look(kClassOrder[1]).label + ") >>");
+  pdf.add("<< /Type /Font /Subtype /Type1 /BaseFont /Helvetica /Encoding /WinAnsiEncoding >>");
   write_text_file(path, pdf.text());
 }
 

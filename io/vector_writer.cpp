@@ -89,15 +89,16 @@ std::string check_vector_output(const std::string& path, const std::string& form
   std::size_t panorama_layers = 0;
   for (OGRLayer* layer : existing->GetLayers()) {
     const std::string name = layer->GetName();
-    const bool panorama = name == kPanoramaMapLayer || name == kPanoramaLayer;
+    const bool panorama =
+        name == kPanoramaMapLayer || name == kPanoramaLayer || name == kPanoramaPeakLayer;
     panorama_layers += panorama;
     if (name != kStrokeLayer && name != kProfileLayer && name != kPStrokeLayer && name != stem &&
         !panorama)
       refuse("the layer '" + name + "'");
   }
-  // A panorama's two layers are one earlier output.
+  // A panorama's two or three layers are one earlier output.
   const auto layers = static_cast<std::size_t>(existing->GetLayerCount());
-  if (layers > 1 && !(layers == 2 && panorama_layers == 2))
+  if (layers > 1 && !(layers == panorama_layers && layers <= 3))
     refuse(std::to_string(layers) + " layers");
   return driver;
 }
@@ -363,12 +364,13 @@ void write_pstrokes(const std::string& path, const std::string& format,
 
 void write_panorama_strokes(const std::string& path, const std::string& format,
                             const std::vector<PanoramaStroke>& strokes, const std::string& srs_wkt,
+                            const std::vector<PeakLeader>* peaks,
                             const std::function<void()>& before_commit) {
   std::vector<Field> fields = stroke_fields();
   const int azimuth_field = static_cast<int>(fields.size());
   fields.push_back({"azimuth_min", OFTReal});
   fields.push_back({"azimuth_max", OFTReal});
-  // Both layers carry the same attributes; they differ in geometry.
+  // Both stroke layers carry the same attributes; they differ in geometry.
   const auto layer = [&](bool panorama) {
     return [&strokes, azimuth_field, panorama](LineOutput& output) {
       for (const PanoramaStroke& s : strokes) {
@@ -379,10 +381,26 @@ void write_panorama_strokes(const std::string& path, const std::string& format,
       }
     };
   };
-  write_line_layers(path, format,
-                    {{kPanoramaMapLayer, srs_wkt, fields, layer(false)},
-                     {kPanoramaLayer, "", fields, layer(true)}},
-                    before_commit);
+  std::vector<LineLayer> layers = {{kPanoramaMapLayer, srs_wkt, fields, layer(false)},
+                                   {kPanoramaLayer, "", fields, layer(true)}};
+  if (peaks) {
+    // The peaks in sight, each a leader from its top up to where its name goes.
+    const auto add_peaks = [peaks](LineOutput& output) {
+      for (const PeakLeader& l : *peaks) {
+        output.set(0, l.peak.name.c_str());
+        output.set(1, l.peak.distance);
+        output.set(2, l.peak.azimuth_deg);
+        output.set(3, l.peak.elevation_deg);
+        output.add({l.top, l.label});
+      }
+    };
+    layers.push_back(
+        {kPanoramaPeakLayer,
+         "",
+         {{"name", OFTString}, {"distance", OFTReal}, {"azimuth", OFTReal}, {"elevation", OFTReal}},
+         add_peaks});
+  }
+  write_line_layers(path, format, layers, before_commit);
 }
 
 }  // namespace tsk::io

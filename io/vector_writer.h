@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "panorama_peaks.h"
 #include "panorama_strokes.h"
 #include "profile_plot.h"
 #include "pstrokes.h"
@@ -22,6 +23,7 @@ inline constexpr const char* kPStrokeLayer = "pstrokes";
 // A panorama's two layers: its strokes on the map and in the panorama (azimuth, elevation).
 inline constexpr const char* kPanoramaMapLayer = "map";
 inline constexpr const char* kPanoramaLayer = "panorama";
+inline constexpr const char* kPanoramaPeakLayer = "peaks";
 
 // Checks, before any work, that a line layer can be written to `path`: a vector format is known
 // for it, and no GeoPackage or SQLite file is there that holds more than an earlier output (one
@@ -56,10 +58,12 @@ void write_pstrokes(const std::string& path, const std::string& format,
 // Writes a panorama's strokes to `path`, whole or not at all, in two layers: `map`, in the DEM's
 // CRS (WKT, may be empty), and `panorama`, without a CRS, x the azimuth and y the elevation angle
 // in degrees. Both have the stroke fields with azimuth_min and azimuth_max; the file must hold
-// two layers (a GeoPackage or SQLite file). before_commit runs when the layers are filled and
-// not yet committed: what it throws leaves nothing written.
+// two layers (a GeoPackage or SQLite file). With `peaks`, a third layer `peaks` holds their
+// leaders in the panorama, with name, distance, azimuth and elevation. before_commit runs when the
+// layers are filled and not yet committed: what it throws leaves nothing written.
 void write_panorama_strokes(const std::string& path, const std::string& format,
                             const std::vector<PanoramaStroke>& strokes, const std::string& srs_wkt,
+                            const std::vector<PeakLeader>* peaks = nullptr,
                             const std::function<void()>& before_commit = {});
 
 }  // namespace tsk::io

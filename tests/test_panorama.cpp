@@ -186,3 +186,74 @@ TEST_CASE("a DEM turned a quarter about the observer turns the panorama a quarte
 }
 
 }  // namespace tsk
+
+namespace tsk {
+
+TEST_CASE("a peak is labelled when the eye reaches its top, and only then", "[panorama][peaks]") {
+  // The wall of the shadow test, 8 m high at 1000-1030 m east of the grid's west edge, seen
+  // from 12 m above the west edge: its shadow ends where the sight line over it meets the ground.
+  // Far off, a ridge 30 m high.
+  const std::size_t rows = 41, cols = 400;
+  const HeightGrid dem = terrain(rows, cols, [](double x, double) {
+    if (x > 1000 && x < 1030) return 8.0;
+    return std::max(0.0, 30.0 - 0.6 * std::fabs(x - 3555.0));  // a ridge, its crest at 3555 m
+  });
+  const GeoTransform gt = north_up(rows);
+  const StrokePoint eye_at = centre(gt, 20, 0);
+  PanoramaView view;
+  view.observer_x = eye_at.x, view.observer_y = eye_at.y;
+  view.observer_height = 12;
+  view.azimuth_from = 45, view.azimuth_to = 135;
+  const PanoramaRays rays = plan_rays(dem, gt, view);
+  const double shadow_end = eye_at.x + wall_shadow_end(1025.0 - eye_at.x, 8.0, 12.0, 0.13, 6371000);
+  const std::vector<NamedPoint> peaks = {
+      {"on the wall", 1015, eye_at.y},
+      {"in its shadow", 1500, eye_at.y},
+      {"past the shadow", shadow_end + 50, eye_at.y},
+      {"a hill far off", 3555, eye_at.y},
+      {"behind the viewer", 2000, eye_at.y + 2000 * 5},  // north: outside the field of view
+      {"off the DEM", 5000, eye_at.y}};
+  const std::vector<SeenPeak> seen = see_peaks(dem, gt, rays, peaks);
+  std::vector<std::string> names;
+  for (const SeenPeak& s : seen) names.push_back(s.name);
+  CHECK(names == std::vector<std::string>{"on the wall", "past the shadow", "a hill far off"});
+  REQUIRE(seen.size() == 3);
+  // Where they stand in the panorama: due east, at the elevation angle of their tops.
+  CHECK(seen[0].azimuth_deg == Approx(90.0));
+  const double d = 1015 - eye_at.x;
+  const double expected = std::atan((8.0 - 0.87 * d * d / (2 * 6371000.0) - 12.0) / d);
+  CHECK(seen[0].elevation_deg == Approx(expected * 180.0 / kPi).epsilon(1e-9));
+  CHECK(seen[2].distance == Approx(3555 - eye_at.x));
+}
+
+}  // namespace tsk
+
+namespace tsk {
+
+TEST_CASE("peak labels stand above the skyline, in rows where they would overlap",
+          "[panorama][peaks]") {
+  const auto peak = [](const char* name, double azimuth, double elevation) {
+    SeenPeak p;
+    p.name = name, p.azimuth_deg = azimuth, p.elevation_deg = elevation;
+    return p;
+  };
+  // Given out of azimuth order; labels 5 degrees wide, rows 0.5 degrees apart above 2 degrees.
+  const std::vector<PeakLeader> leaders = peak_leaders(
+      {peak("C", 30, 1.0), peak("A", 10, 1.5), peak("B", 12, 0.5), peak("D", 14, 0.2)}, 2.0, 0.5,
+      5.0);
+  REQUIRE(leaders.size() == 4);
+  std::string order;
+  for (const PeakLeader& l : leaders) {
+    order += l.peak.name;
+    CHECK(l.top.x == l.peak.azimuth_deg);  // straight up from the peak's top
+    CHECK(l.label.x == l.top.x);
+    CHECK(l.top.y == l.peak.elevation_deg);
+  }
+  CHECK(order == "ABDC");
+  CHECK(leaders[0].label.y == 2.5);  // A: the first row
+  CHECK(leaders[1].label.y == 3.0);  // B: 2 degrees after A, a row up
+  CHECK(leaders[2].label.y == 3.5);  // D: within both A's and B's labels
+  CHECK(leaders[3].label.y == 2.5);  // C: clear of them all, back on the first row
+}
+
+}  // namespace tsk

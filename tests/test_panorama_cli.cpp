@@ -3,9 +3,12 @@
 #include <gdal_alg.h>
 #include <ogrsf_frmts.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
+#include <memory>
 #include <set>
 
 #include "catch_compat.h"
@@ -233,4 +236,89 @@ TEST_CASE("panorama refuses a view it cannot draw, and writes nothing", "[cli][p
   CHECK(shp.code == 1);
   CHECK_THAT(shp.err, Catch::Contains(".gpkg"));
   CHECK(dir.file_count() == 1);  // holes.tif alone
+}
+
+namespace {
+
+// A GeoJSON of named points given in the DEM's CRS (EPSG:32616), written in longitude and
+// latitude, as a gazetteer's would be.
+void write_peaks(const std::string& path,
+                 const std::vector<std::pair<std::string, std::pair<double, double>>>& peaks,
+                 const char* geometry = "Point") {
+  OGRSpatialReference utm, wgs84;
+  utm.importFromEPSG(32616);
+  wgs84.importFromEPSG(4326);
+  utm.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  std::unique_ptr<OGRCoordinateTransformation> to_degrees(
+      OGRCreateCoordinateTransformation(&utm, &wgs84));
+  std::ofstream out(path);
+  out << std::setprecision(12) << R"({"type": "FeatureCollection", "features": [)";
+  for (std::size_t k = 0; k < peaks.size(); ++k) {
+    double x = peaks[k].second.first, y = peaks[k].second.second;
+    REQUIRE(to_degrees->Transform(1, &x, &y));
+    const bool point = std::string(geometry) == "Point";
+    out << (k ? "," : "") << R"({"type": "Feature", "properties": {"label": ")" << peaks[k].first
+        << R"("}, "geometry": {"type": ")" << geometry << R"(", "coordinates": )";
+    if (point) {
+      out << "[" << x << ", " << y << "]}}";
+    } else {  // a line from the point a little east
+      out << "[[" << x << ", " << y << "], [" << x + 0.001 << ", " << y << "]]}}";
+    }
+  }
+  out << "]}\n";
+}
+
+}  // namespace
+
+TEST_CASE("panorama labels the peaks in sight, from points in another CRS", "[cli][panorama]") {
+  ScratchDir dir("panorama-peaks");
+  // A wall 8 m high 1 km east of the observer, a ridge 30 m high 3.5 km east; 10 m cells.
+  const std::string dem = dir / "wall.tif";
+  test::write_tiff(
+      dem, 41, 400, 1,
+      [](int, int, int c) {
+        if (c >= 100 && c <= 102) return 8.0f;
+        return static_cast<float>(std::max(0.0, 30.0 - 6.0 * std::abs(c - 355)));
+      },
+      test::kNorthUp, 32616);
+  const auto at_col = [](int c) { return std::pair{500000.0 + 10 * c + 5, 4000000.0 - 205}; };
+  write_peaks(dir / "peaks.geojson",
+              {{"Wall top", at_col(101)}, {"In the shadow", at_col(150)}, {"Ridge", at_col(355)}});
+  const CliRun run =
+      run_cli({"panorama", dem, dir / "p.gpkg", "--observer", coordinates(at_col(0)),
+               "--observer-height", "12", "--azimuth-from", "45", "--azimuth-to", "135", "--peaks",
+               dir / "peaks.geojson", "--peak-names", "label", "--preview", dir / "p.svg"});
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  CHECK_THAT(run.out, Catch::Contains("2 of the 3 peaks are in sight"));
+  io::DatasetPtr ds(static_cast<GDALDataset*>(
+      GDALOpenEx((dir / "p.gpkg").c_str(), GDAL_OF_VECTOR, nullptr, nullptr, nullptr)));
+  REQUIRE(ds);
+  OGRLayer* peaks = ds->GetLayerByName("peaks");
+  REQUIRE(peaks != nullptr);
+  std::vector<std::string> names;
+  for (auto& feature : *peaks) {
+    names.push_back(feature->GetFieldAsString("name"));
+    CHECK(feature->GetFieldAsDouble("azimuth") == Approx(90.0).margin(1e-6));
+  }
+  std::sort(names.begin(), names.end());
+  CHECK(names == std::vector<std::string>{"Ridge", "Wall top"});
+  std::ifstream in(dir / "p.svg");
+  const std::string svg((std::istreambuf_iterator<char>(in)), {});
+  CHECK(svg.find(">Ridge</text>") != std::string::npos);
+  CHECK(svg.find("In the shadow") == std::string::npos);
+  // A name field that is not there, and lines where points belong, are refused.
+  const CliRun no_field = run_cli({"panorama", dem, dir / "q.gpkg", "--observer",
+                                   coordinates(at_col(0)), "--peaks", dir / "peaks.geojson"});
+  CHECK(no_field.code == 1);
+  CHECK_THAT(no_field.err, Catch::Contains("no field 'name'"));
+  CHECK_THAT(no_field.err, Catch::Contains("label"));
+  write_peaks(dir / "lines.geojson", {{"A", at_col(10)}}, "LineString");
+  const CliRun lines =
+      run_cli({"panorama", dem, dir / "q.gpkg", "--observer", coordinates(at_col(0)), "--peaks",
+               dir / "lines.geojson", "--peak-names", "label"});
+  CHECK(lines.code == 1);
+  CHECK_THAT(lines.err, Catch::Contains("must be points"));
+  CHECK_FALSE(test::fs::exists(dir / "q.gpkg"));
 }
