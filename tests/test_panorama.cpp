@@ -238,9 +238,9 @@ TEST_CASE("peak labels stand above the skyline, in rows where they would overlap
     return p;
   };
   // Given out of azimuth order; labels 5 degrees wide, rows 0.5 degrees apart above 2 degrees.
-  const std::vector<PeakLeader> leaders = peak_leaders(
-      {peak("C", 30, 1.0), peak("A", 10, 1.5), peak("B", 12, 0.5), peak("D", 14, 0.2)}, 2.0, 0.5,
-      5.0);
+  const std::vector<PeakLeader> leaders =
+      peak_leaders({peak("C", 30, 1.0), peak("A", 10, 1.5), peak("B", 12, 0.5), peak("D", 14, 0.2)},
+                   2.0, 0.5, 5.0);
   REQUIRE(leaders.size() == 4);
   std::string order;
   for (const PeakLeader& l : leaders) {
