@@ -477,6 +477,20 @@ GERMAN = {
         'Die Anpassung des Filters an jede Nachbarschaft ist für Panoramen noch nicht verfügbar: an das ganze DGM anpassen.',
     'The observer lies outside the DEM: choose a point on it.':
         'Der Beobachter liegt außerhalb des DGM: einen Punkt darauf wählen.',
+    'Peaks to label':
+        'Zu beschriftende Gipfel',
+    'Optional: named points, the summits of a gazetteer. Those whose top the observer sees are labelled in the panorama.':
+        'Optional: benannte Punkte, die Gipfel eines Ortsverzeichnisses. Die, deren Spitze der Beobachter sieht, werden im Panorama beschriftet.',
+    'Peak name field':
+        'Namensfeld der Gipfel',
+    'The field of the peaks holding their names.':
+        'Das Feld der Gipfel, das ihre Namen enthält.',
+    'Peak labels':
+        'Gipfelbeschriftungen',
+    'The peaks in sight as leaders in the panorama, from each top straight up to its label, with the name, distance, azimuth and elevation.':
+        'Die sichtbaren Gipfel als Hinweislinien im Panorama, von jeder Spitze senkrecht hinauf zu ihrer Beschriftung, mit Name, Entfernung, Azimut und Höhenwinkel.',
+    "The peaks have no field '%1' for their names.":
+        'Die Gipfel haben kein Feld „%1“ für ihre Namen.',
 }
 
 

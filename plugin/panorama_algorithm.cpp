@@ -1,7 +1,11 @@
 #include "panorama_algorithm.h"
 
+#include <qgsfeaturerequest.h>
+#include <qgsgeometry.h>
+#include <qgspoint.h>
 #include <qgsprocessingfeedback.h>
 #include <qgsprocessingparameters.h>
+#include <qgsprocessingutils.h>
 #include <qgsrasterlayer.h>
 
 #include "errors.h"
@@ -26,6 +30,9 @@ const QString kWindow = QStringLiteral("WINDOW");
 const QString kMapOutput = QStringLiteral("MAP_OUTPUT");
 const QString kPanoramaOutput = QStringLiteral("PANORAMA_OUTPUT");
 const QString kVisibility = QStringLiteral("VISIBILITY");
+const QString kPeaks = QStringLiteral("PEAKS");
+const QString kPeakNames = QStringLiteral("PEAK_NAMES");
+const QString kPeaksOutput = QStringLiteral("PEAKS_OUTPUT");
 
 }  // namespace
 
@@ -93,6 +100,18 @@ void PanoramaAlgorithm::initAlgorithm(const QVariantMap&) {
   addWithHelp(new QgsProcessingParameterFeatureSink(kPanoramaOutput, tr("Panorama"), kLineLayer),
               tr("The same strokes in the panorama: x the azimuth and y the elevation angle, in "
                  "degrees, without a CRS. Open it in a map of its own."));
+  addWithHelp(new QgsProcessingParameterFeatureSource(
+                  kPeaks, tr("Peaks to label"), {static_cast<int>(kPointLayer)}, QVariant(), true),
+              tr("Optional: named points, the summits of a gazetteer. Those whose top the "
+                 "observer sees are labelled in the panorama."));
+  addWithHelp(
+      new QgsProcessingParameterField(kPeakNames, tr("Peak name field"), QStringLiteral("name"),
+                                      kPeaks, kAnyField, false, true),
+      tr("The field of the peaks holding their names."));
+  addWithHelp(new QgsProcessingParameterFeatureSink(kPeaksOutput, tr("Peak labels"), kLineLayer,
+                                                    QVariant(), true, false),
+              tr("The peaks in sight as leaders in the panorama, from each top straight up to "
+                 "its label, with the name, distance, azimuth and elevation."));
   auto* visibility = new QgsProcessingParameterRasterDestination(kVisibility, tr("Visibility"),
                                                                  QVariant(), true, false);
   addWithHelp(visibility, tr("Optional: a raster on the DEM's grid, 1 where the ground is seen, "
@@ -172,11 +191,64 @@ void PanoramaAlgorithm::writeStrokes(const QVariantMap& parameters, QgsProcessin
   mPanoramaId = panorama.destination();
 }
 
+std::vector<NamedPoint> PanoramaAlgorithm::readPeaks(const QVariantMap& parameters,
+                                                     QgsProcessingContext& context) {
+  std::vector<NamedPoint> peaks;
+  const std::unique_ptr<QgsProcessingFeatureSource> source(
+      parameterAsSource(parameters, kPeaks, context));
+  if (!source) return peaks;
+  const QString field = parameterAsString(parameters, kPeakNames, context);
+  const int index = source->fields().lookupField(field);
+  if (index < 0)
+    throw QgsProcessingException(tr("The peaks have no field '%1' for their names.").arg(field));
+  // The points in the DEM's CRS.
+  QgsFeatureRequest request;
+  request.setDestinationCrs(preparedRaster().crs(), context.transformContext());
+  QgsFeature feature;
+  for (QgsFeatureIterator it = source->getFeatures(request); it.nextFeature(feature);) {
+    const QString name = feature.attribute(index).toString();
+    for (auto part = feature.geometry().const_parts_begin();
+         part != feature.geometry().const_parts_end(); ++part) {
+      const auto* point = qgsgeometry_cast<const QgsPoint*>(*part);
+      if (point) peaks.push_back({name.toStdString(), point->x(), point->y()});
+    }
+  }
+  return peaks;
+}
+
+void PanoramaAlgorithm::writePeaks(const QVariantMap& parameters, QgsProcessingContext& context,
+                                   const std::vector<PeakLeader>& leaders,
+                                   QgsProcessingFeedback* feedback) {
+  QgsFields fields;
+  fields.append(makeField(QStringLiteral("name"), FieldKind::Text));
+  for (const char* name : {"distance", "azimuth", "elevation"})
+    fields.append(makeField(QString::fromLatin1(name), FieldKind::Real));
+  LineOutput output(*this, parameters, kPeaksOutput, context, fields,
+                    QgsCoordinateReferenceSystem(), feedback);
+  for (const PeakLeader& l : leaders) {
+    QgsFeature feature(fields);
+    QgsAttributes attributes;
+    attributes << QString::fromStdString(l.peak.name) << l.peak.distance << l.peak.azimuth_deg
+               << l.peak.elevation_deg;
+    feature.setAttributes(attributes);
+    feature.setGeometry(lineGeometry({l.top, l.label}));
+    output.add(feature);
+  }
+  output.finish();
+  mPeaksId = output.destination();
+}
+
 QVariantMap PanoramaAlgorithm::processAlgorithm(const QVariantMap& parameters,
                                                 QgsProcessingContext& context,
                                                 QgsProcessingFeedback* feedback) {
   const PanoramaResult result = sketch(feedback);
   const RasterGrid& raster = preparedRaster();
+  const bool labelPeaks = parameters.value(kPeaksOutput).isValid() &&
+                          !parameters.value(kPeaksOutput).toString().isEmpty();
+  const std::vector<PeakLeader> leaders =
+      labelPeaks ? lead_peaks(result, see_peaks(raster.oriented(), raster.geotransform(),
+                                                result.rays, readPeaks(parameters, context)))
+                 : std::vector<PeakLeader>();
   // The raster first: the line outputs, once finished, are whole.
   if (!mVisibility.isEmpty()) {
     const Grid<std::uint8_t> seen = withCoreErrors([&] {
@@ -187,9 +259,11 @@ QVariantMap PanoramaAlgorithm::processAlgorithm(const QVariantMap& parameters,
   }
   if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
   writeStrokes(parameters, context, result, feedback);
+  if (labelPeaks) writePeaks(parameters, context, leaders, feedback);
   releaseRaster();
   QVariantMap outputs = {{kMapOutput, mMapId}, {kPanoramaOutput, mPanoramaId}};
   if (!mVisibility.isEmpty()) outputs.insert(kVisibility, mVisibility);
+  if (labelPeaks) outputs.insert(kPeaksOutput, mPeaksId);
   return outputs;
 }
 
@@ -197,6 +271,7 @@ QVariantMap PanoramaAlgorithm::postProcessAlgorithm(QgsProcessingContext& contex
                                                     QgsProcessingFeedback*) {
   styleOnCompletion(context, mMapId, QStringLiteral("panorama"));
   styleOnCompletion(context, mPanoramaId, QStringLiteral("panorama"));
+  styleOnCompletion(context, mPeaksId, QStringLiteral("panorama_peaks"));
   return {};
 }
 

@@ -31,9 +31,14 @@ class PanoramaAlgorithm : public DemViewAlgorithm {
   void writeStrokes(const QVariantMap& parameters, QgsProcessingContext& context,
                     const PanoramaResult& result, QgsProcessingFeedback* feedback);
 
+  // The named points to label, in the DEM's CRS (none when no layer is given).
+  std::vector<NamedPoint> readPeaks(const QVariantMap& parameters, QgsProcessingContext& context);
+  void writePeaks(const QVariantMap& parameters, QgsProcessingContext& context,
+                  const std::vector<PeakLeader>& leaders, QgsProcessingFeedback* feedback);
+
   SilhouetteParams mFilter;  // the slope filter and chaining, as the silhouettes take them
   PanoramaParams mParams;
-  QString mVisibility, mMapId, mPanoramaId;
+  QString mVisibility, mMapId, mPanoramaId, mPeaksId;
 };
 
 }  // namespace tsk::plugin

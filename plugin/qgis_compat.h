@@ -15,6 +15,8 @@ namespace tsk::plugin {
 inline const auto kRangeStatistics =
     Qgis::RasterBandStatistic::Min | Qgis::RasterBandStatistic::Max;
 constexpr auto kLineLayer = Qgis::ProcessingSourceType::VectorLine;
+constexpr auto kPointLayer = Qgis::ProcessingSourceType::VectorPoint;
+constexpr auto kAnyField = Qgis::ProcessingFieldParameterDataType::Any;
 constexpr auto kLineString = Qgis::WkbType::LineString;
 constexpr auto kLineStringM = Qgis::WkbType::LineStringM;
 constexpr auto kDoubleNumber = Qgis::ProcessingNumberParameterType::Double;
@@ -24,6 +26,8 @@ constexpr auto kOptional = Qgis::ProcessingParameterFlag::Optional;
 #else
 constexpr int kRangeStatistics = QgsRasterBandStats::Min | QgsRasterBandStats::Max;
 constexpr auto kLineLayer = QgsProcessing::TypeVectorLine;
+constexpr auto kPointLayer = QgsProcessing::TypeVectorPoint;
+constexpr auto kAnyField = QgsProcessingParameterField::Any;
 constexpr auto kLineString = QgsWkbTypes::LineString;
 constexpr auto kLineStringM = QgsWkbTypes::LineStringM;
 constexpr auto kDoubleNumber = QgsProcessingParameterNumber::Double;

@@ -8,7 +8,8 @@ import sys
 
 from osgeo import gdal
 from qgis.core import (QgsApplication, QgsContrastEnhancement, QgsLineSymbol,
-                       QgsPalettedRasterRenderer, QgsProperty, QgsRasterLayer,
+                       QgsPalettedRasterRenderer, QgsPalLayerSettings, QgsProperty,
+                       QgsRasterLayer, QgsTextFormat, QgsVectorLayerSimpleLabeling,
                        QgsSimpleLineSymbolLayer, QgsSingleBandGrayRenderer,
                        QgsSingleSymbolRenderer, QgsSymbolLayer, QgsUnitTypes, QgsVectorLayer,
                        QgsVectorSimplifyMethod)
@@ -110,6 +111,31 @@ def panorama_style():
     save(layer, "panorama")
 
 
+def peaks_style():
+    """The panorama's peaks: thin grey leaders, each name at its leader's upper end."""
+    layer = QgsVectorLayer("LineString?field=name:string&field=distance:double"
+                           "&field=azimuth:double&field=elevation:double", "peaks", "memory")
+    symbol = QgsLineSymbol.createSimple({"line_color": "119,119,119", "line_width": "0.15",
+                                         "line_width_unit": "MM"})
+    layer.setRenderer(QgsSingleSymbolRenderer(symbol))
+    settings = QgsPalLayerSettings()
+    settings.fieldName = "name"
+    text = QgsTextFormat()
+    text.setSize(8)
+    text.setColor(QColor(51, 51, 51))
+    settings.setFormat(text)
+    properties = settings.dataDefinedProperties()
+    for key, expression in ((QgsPalLayerSettings.PositionX, "x(end_point($geometry))"),
+                            (QgsPalLayerSettings.PositionY, "y(end_point($geometry))"),
+                            (QgsPalLayerSettings.Hali, "'Left'"),
+                            (QgsPalLayerSettings.Vali, "'Bottom'")):
+        properties.setProperty(key, QgsProperty.fromExpression(expression))
+    settings.setDataDefinedProperties(properties)
+    layer.setLabeling(QgsVectorLayerSimpleLabeling(settings))
+    layer.setLabelsEnabled(True)
+    save(layer, "panorama_peaks")
+
+
 # Stage classes as in the thesis's map views (same colours as the CLI's colour table).
 CLASSES = [(1, "visible", "#ffffff"), (2, "hidden", "#bed2eb"), (3, "occluding", "#dc1e1e"),
            (4, "c-set", "#d7d7d7"), (5, "f-set", "#787878"), (6, "t-set", "#141414")]
@@ -162,6 +188,7 @@ def main():
         save(layer, name)
     drawn_styles()
     panorama_style()
+    peaks_style()
     import tempfile
     with tempfile.TemporaryDirectory() as tmp:
         raster_styles(tmp)

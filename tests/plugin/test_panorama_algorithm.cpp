@@ -80,3 +80,65 @@ TEST_CASE("the panorama algorithm refuses an observer off the DEM", "[plugin][pa
   CHECK(run.error.contains(QStringLiteral("outside the DEM")));
   CHECK_FALSE(QFileInfo::exists(dir.filePath("map.gpkg")));
 }
+
+TEST_CASE("the panorama algorithm labels the peaks the core sees", "[plugin][panorama]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/jacksboro_utm16n.tif";
+  const io::Dem core = coreDem(dem);
+  // The DEM's cells over 900 m highest among their eight neighbours, as named points.
+  std::vector<NamedPoint> peaks;
+  QString json = QStringLiteral(R"({"type": "FeatureCollection", "crs": {"type": "name", )"
+                                R"("properties": {"name": "EPSG:32616"}}, "features": [)");
+  for (std::size_t r = 1; r + 1 < core.rows; ++r) {
+    for (std::size_t c = 1; c + 1 < core.cols; ++c) {
+      const float z = core.oriented(r, c);
+      bool highest = z > 900;
+      for (int dr = -1; dr <= 1; ++dr)
+        for (int dc = -1; dc <= 1; ++dc)
+          if (dr || dc) highest = highest && z > core.oriented(r + dr, c + dc);
+      if (!highest) continue;
+      double x, y;
+      core.geotransform.apply({c + 0.5, r + 0.5}, x, y);
+      const std::string name = "P" + std::to_string(peaks.size());
+      peaks.push_back({name, x, y});
+      json += QStringLiteral(R"(%1{"type": "Feature", "properties": {"label": "%2"}, )"
+                             R"("geometry": {"type": "Point", "coordinates": [%3, %4]}})")
+                  .arg(peaks.size() > 1 ? "," : "", QString::fromStdString(name))
+                  .arg(x, 0, 'f', 4)
+                  .arg(y, 0, 'f', 4);
+    }
+  }
+  json += "]}";
+  REQUIRE(peaks.size() > 5);
+  QFile file(dir.filePath("peaks.geojson"));
+  REQUIRE(file.open(QIODevice::WriteOnly));
+  file.write(json.toUtf8());
+  file.close();
+  const Run run = runOk(dem,
+                        {{"OBSERVER", kSummit},
+                         {"OBSERVER_HEIGHT", 2},
+                         {"PEAKS", dir.filePath("peaks.geojson")},
+                         {"PEAK_NAMES", "label"},
+                         {"MAP_OUTPUT", dir.filePath("map.gpkg")},
+                         {"PANORAMA_OUTPUT", dir.filePath("panorama.gpkg")},
+                         {"PEAKS_OUTPUT", dir.filePath("peaks.gpkg")}},
+                        dir, QStringLiteral("panorama"));
+  PanoramaView view;
+  view.observer_x = 749008.1394, view.observer_y = 4009477.9308;
+  view.observer_height = 2;
+  const std::vector<SeenPeak> seen = see_peaks(
+      core.oriented, core.geotransform, plan_rays(core.oriented, core.geotransform, view), peaks);
+  REQUIRE(!seen.empty());
+  REQUIRE(seen.size() < peaks.size());
+  QgsVectorLayer labels(run.results.value("PEAKS_OUTPUT").toString(), "peaks", "ogr");
+  REQUIRE(labels.isValid());
+  CHECK(labels.featureCount() == static_cast<long long>(seen.size()));
+  QStringList expected, got;
+  for (const SeenPeak& s : seen) expected << QString::fromStdString(s.name);
+  QgsFeature feature;
+  for (QgsFeatureIterator it = labels.getFeatures(); it.nextFeature(feature);)
+    got << feature.attribute("name").toString();
+  expected.sort();
+  got.sort();
+  CHECK(got == expected);
+}
