@@ -78,6 +78,7 @@ PanoramaParams panorama_params(const Options& o, const io::Dem& dem, FilterRepor
   params.chain = o.params.chain;
   params.threads = o.params.threads;
   params.record_visibility = !o.visibility.empty();
+  params.cut_leaps = o.params.strokes.drawn();
   return params;
 }
 

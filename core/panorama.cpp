@@ -41,8 +41,9 @@ PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotra
   const PanoramaRays& rays = result.rays;
   if (params.record_visibility) result.samples.assign(rays.rays * result.row_bytes(), 0);
   const bool full = rays.field.full_circle;
-  PanoramaLinker factual(true, 0, params.chain.min_cells, full);
-  PanoramaLinker formulated(false, params.chain.window, params.chain.min_cells, full);
+  PanoramaLinker factual(true, 0, params.chain.min_cells, full, params.cut_leaps);
+  PanoramaLinker formulated(false, params.chain.window, params.chain.min_cells, full,
+                            params.cut_leaps);
   const unsigned threads = resolve_threads(params.threads);
   using Batch = std::vector<RayChainCells>;
   const std::size_t size = batch_rays(rays.samples);

@@ -23,6 +23,9 @@ struct PanoramaParams {
   ChainParams chain;
   unsigned threads = 0;            // 0: one per hardware thread
   bool record_visibility = false;  // keep every sample's class for visibility_raster()
+  // Cut strokes where their chains leap along the rays (PanoramaLinker): the front ends' drawn
+  // strokes. Off, the strokes are the chains, as SPEC 1.8 makes them.
+  bool cut_leaps = false;
   void validate() const;
 };
 

@@ -1,12 +1,15 @@
 #include "panorama_strokes.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace tsk {
 
-PanoramaLinker::PanoramaLinker(bool factual, int window, int min_cells, bool full_circle)
+PanoramaLinker::PanoramaLinker(bool factual, int window, int min_cells, bool full_circle,
+                               bool cut_leaps)
     : factual_(factual),
       full_circle_(full_circle),
+      cut_leaps_(cut_leaps),
       window_(window),
       min_cells_(min_cells),
       linker_(factual, window) {}
@@ -18,11 +21,17 @@ void PanoramaLinker::add_ray(std::size_t r, const ProfileCandidates& candidates,
   if (open_.size() < linker_.slot_count()) open_.resize(linker_.slot_count());
   for (std::size_t k = 0; k < joined.size(); ++k) {
     Open& open = open_[joined[k].slot];
+    // A leap along the ray is no line on the terrain: the stroke so far ends, the chain goes on
+    // as a stroke of its own (as drawn strokes of the parallel view are cut).
+    if (cut_leaps_ && open.builder.cells() > 0 &&
+        std::abs(cells[k].cell.i - open.last_sample) > kLeapSamples)
+      close(open);
     if (open.builder.cells() == 0) {
       open.id = joined[k].id;
       open.from_first_ray = r == 0 && full_circle_;
     }
     open.builder.add(cells[k]);
+    open.last_sample = cells[k].cell.i;
     open.view.push_back(view[k]);
     if (open.from_first_ray) open.cells.push_back(cells[k]);
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -19,10 +20,12 @@ struct PanoramaStroke {
 };
 
 // Links one class's candidates ray after ray (SPEC 1.7), and hands out the strokes of at least
-// `min_cells` samples in the order their chains started.
+// `min_cells` samples in the order their chains started. With `cut_leaps`, a stroke ends where
+// its chain steps more than kLeapSamples along the next ray, and the chain goes on as another.
 class PanoramaLinker {
  public:
-  PanoramaLinker(bool factual, int window, int min_cells, bool full_circle);
+  static constexpr std::int32_t kLeapSamples = 4;
+  PanoramaLinker(bool factual, int window, int min_cells, bool full_circle, bool cut_leaps);
   void add_ray(std::size_t r, const ProfileCandidates& candidates,
                const std::vector<StrokeCell>& cells, const std::vector<StrokePoint>& view);
   // After the last ray: closes the seam of a full circle and returns every stroke kept.
@@ -34,13 +37,14 @@ class PanoramaLinker {
     std::vector<StrokePoint> view;
     std::vector<StrokeCell> cells;  // kept only for chains that start on the first ray
     std::size_t id = 0;
+    std::int32_t last_sample = 0;  // of its last cell
     bool from_first_ray = false;
   };
   void close(Open& open);
   void keep(std::size_t id, Open& open);
   void close_seam(const std::vector<ChainRef>& last_joined);
 
-  bool factual_, full_circle_;
+  bool factual_, full_circle_, cut_leaps_;
   int window_, min_cells_;
   ChainLinker linker_;
   std::vector<Open> open_;

@@ -157,6 +157,7 @@ PanoramaResult PanoramaAlgorithm::sketch(QgsProcessingFeedback* feedback) {
   mParams.chain = adapted.chain;
   mParams.threads = adapted.threads;
   mParams.record_visibility = !mVisibility.isEmpty();
+  mParams.cut_leaps = true;  // a leap along a ray draws no line on the terrain
   const ProgressFn progress = [feedback](double fraction) {
     if (!feedback) return true;
     feedback->setProgress(20 + 60 * fraction);
@@ -269,7 +270,7 @@ QVariantMap PanoramaAlgorithm::processAlgorithm(const QVariantMap& parameters,
 
 QVariantMap PanoramaAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
                                                     QgsProcessingFeedback*) {
-  styleOnCompletion(context, mMapId, QStringLiteral("panorama"));
+  styleOnCompletion(context, mMapId, QStringLiteral("panorama_map"));
   styleOnCompletion(context, mPanoramaId, QStringLiteral("panorama"));
   styleOnCompletion(context, mPeaksId, QStringLiteral("panorama_peaks"));
   return {};

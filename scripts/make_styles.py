@@ -97,18 +97,24 @@ PANORAMA_COLOUR = ("color_mix_rgb(if(\"class\" = 'factual', '17,17,17', '110,62,
 PANORAMA_WIDTH = "if(\"class\" = 'factual', 0.6, 0.35) * (1 - 0.5 * " + PANORAMA_FAR + ")"
 
 
-def panorama_style():
-    layer = QgsVectorLayer("LineString?crs=EPSG:32616&" + FIELDS, "panorama", "memory")
+# On the map, over a hillshade, the strokes keep their classes' full colours: lightened, the far
+# ones would vanish into the grey.
+PANORAMA_MAP_COLOUR = "if(\"class\" = 'factual', '17,17,17', '110,62,28')"
+PANORAMA_MAP_WIDTH = "if(\"class\" = 'factual', 0.6, 0.4)"
+
+
+def panorama_style(name, colour, width):
+    layer = QgsVectorLayer("LineString?crs=EPSG:32616&" + FIELDS, name, "memory")
     symbol = QgsLineSymbol.createSimple({"line_color": "17,17,17", "line_width": "0.5",
                                          "line_width_unit": "MM", "capstyle": "round",
                                          "joinstyle": "round"})
     line = symbol.symbolLayer(0)
     line.setDataDefinedProperty(QgsSymbolLayer.PropertyStrokeColor,
-                                QgsProperty.fromExpression(PANORAMA_COLOUR))
+                                QgsProperty.fromExpression(colour))
     line.setDataDefinedProperty(QgsSymbolLayer.PropertyStrokeWidth,
-                                QgsProperty.fromExpression(PANORAMA_WIDTH))
+                                QgsProperty.fromExpression(width))
     layer.setRenderer(QgsSingleSymbolRenderer(symbol))
-    save(layer, "panorama")
+    save(layer, name)
 
 
 def peaks_style():
@@ -187,7 +193,8 @@ def main():
         layer.setRenderer(QgsSingleSymbolRenderer(symbol))
         save(layer, name)
     drawn_styles()
-    panorama_style()
+    panorama_style("panorama", PANORAMA_COLOUR, PANORAMA_WIDTH)
+    panorama_style("panorama_map", PANORAMA_MAP_COLOUR, PANORAMA_MAP_WIDTH)
     peaks_style()
     import tempfile
     with tempfile.TemporaryDirectory() as tmp:

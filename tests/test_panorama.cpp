@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <set>
 #include <vector>
 
 #include "catch_compat.h"
@@ -254,6 +255,44 @@ TEST_CASE("peak labels stand above the skyline, in rows where they would overlap
   CHECK(leaders[1].label.y == 3.0);  // B: 2 degrees after A, a row up
   CHECK(leaders[2].label.y == 3.5);  // D: within both A's and B's labels
   CHECK(leaders[3].label.y == 2.5);  // C: clear of them all, back on the first row
+}
+
+}  // namespace tsk
+
+namespace tsk {
+
+TEST_CASE("drawn panorama strokes end where their chains leap along the rays",
+          "[panorama][strokes]") {
+  const std::size_t n = 121;
+  const HeightGrid dem = test::random_terrain(n, n, 9);
+  const GeoTransform gt = north_up(n);
+  PanoramaParams params = looking_from({605.0, 605.0}, 30.0);
+  params.chain.min_cells = 2;  // the least: one sample is noise
+  const PanoramaResult chains = sketch_panorama(dem, gt, params);
+  params.cut_leaps = true;
+  const PanoramaResult cut = sketch_panorama(dem, gt, params);
+  const auto leaps = [](const PanoramaStroke& s) {
+    std::size_t count = 0;
+    for (std::size_t k = 1; k < s.map.chain.size(); ++k)
+      count += std::abs(s.map.chain[k].i - s.map.chain[k - 1].i) > PanoramaLinker::kLeapSamples;
+    return count;
+  };
+  std::size_t leaps_in_chains = 0, leaps_in_cut = 0;
+  for (const PanoramaStroke& s : chains.strokes) leaps_in_chains += leaps(s);
+  for (const PanoramaStroke& s : cut.strokes) leaps_in_cut += leaps(s);
+  REQUIRE(leaps_in_chains > 0);
+  CHECK(leaps_in_cut == 0);
+  // Cut, not moved: the chains' cells, in at most one more stroke per leap (a piece of one
+  // sample is dropped as noise).
+  std::set<std::pair<std::int32_t, std::int32_t>> chain_cells;
+  for (const PanoramaStroke& s : chains.strokes)
+    for (const ChainCell& c : s.map.chain) chain_cells.insert({c.p, c.i});
+  for (const PanoramaStroke& s : cut.strokes)
+    for (const ChainCell& c : s.map.chain) CHECK(chain_cells.count({c.p, c.i}) == 1);
+  CHECK(cut.strokes.size() > chains.strokes.size());
+  CHECK(cut.strokes.size() <= chains.strokes.size() + leaps_in_chains);
+  CHECK(cut.stats.generalised <= chains.stats.generalised);
+  CHECK(cut.stats.thinned == chains.stats.thinned);
 }
 
 }  // namespace tsk
