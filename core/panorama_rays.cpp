@@ -11,6 +11,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadPerDeg = kPi / 180.0;
+// Samples any DEM may take, whatever its size.
+constexpr std::size_t kMostSamplesAlways = std::size_t{1} << 27;
 
 std::string number(double v) {
   std::string s = std::to_string(v);
@@ -136,6 +138,16 @@ PanoramaRays plan_rays(const HeightGrid& dem, const GeoTransform& gt, const Pano
   rays.rays = std::max<std::size_t>(4, static_cast<std::size_t>(needed));
   if (rays.field.full_circle) rays.rays = (rays.rays + 3) / 4 * 4;
   rays.samples = static_cast<std::size_t>(std::floor(reach));
+  // About 2 pi (range / step)^2 samples, a few for each cell in range; far more only where the
+  // cells are far from square or the DEM a thin strip. Refused before any work or allocation.
+  const double samples = static_cast<double>(rays.rays) * static_cast<double>(rays.samples);
+  const double budget =
+      std::max(static_cast<double>(kMostSamplesAlways), 64.0 * static_cast<double>(dem.size()));
+  require(samples <= budget,
+          "a panorama over this DEM would take " + number(samples) +
+              " samples, more than 64 for each of its cells: its cells are far from square or "
+              "it is a thin strip; resample it to square cells (gdalwarp -tr) or give a "
+              "shorter --max-distance");
   checked_cell_count(rays.rays, rays.samples);
   rays.drop.resize(rays.samples);
   rays.inverse_distance.resize(rays.samples);

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 
+#include "panorama.h"
 #include "terrain_sketch.h"
 
 namespace {
@@ -33,6 +34,52 @@ struct Reader {
     return static_cast<float>(b) * (byte() % 4 == 0 ? 100.f : 1.f);
   }
 };
+
+// The panorama over the same DEM (north-up, dx by dy cells) from an observer anywhere near it,
+// with a field of view, range, eye height and refraction from the input, some out of range.
+void fuzz_panorama(const tsk::HeightGrid& dem, double dx, double dy, Reader& in) {
+  tsk::PanoramaParams p;
+  const double width = dx * static_cast<double>(dem.cols());
+  const double height = dy * static_cast<double>(dem.rows());
+  p.view.observer_x = (1.2 * in.unit() - 0.1) * width;
+  p.view.observer_y = (1.2 * in.unit() - 0.1) * height;
+  p.view.observer_height = in.byte() % 32 == 0 ? -1.0 : 500 * in.unit();
+  p.view.max_distance = in.byte() % 4 == 0 ? 0.0 : 2 * width * in.unit();
+  p.view.azimuth_from = 720 * in.unit() - 360;
+  p.view.azimuth_to = in.byte() % 8 == 0 ? p.view.azimuth_from : 720 * in.unit() - 360;
+  p.view.refraction = 1.1 * in.unit();
+  p.chain.window = static_cast<int>(in.byte() % 6);
+  p.chain.min_cells = 2 + in.byte() % 4;
+  p.record_visibility = in.byte() & 1;
+  p.cut_leaps = in.byte() & 1;
+  p.threads = 1 + in.byte() % 2;
+  tsk::GeoTransform gt;
+  gt.a = {0.0, dx, 0.0, height, 0.0, -dy};
+  try {
+    const tsk::PanoramaResult r = tsk::sketch_panorama(dem, gt, p);
+    if (r.stats.filtered > r.stats.candidate || r.stats.thinned > r.stats.filtered)
+      __builtin_trap();
+    for (const tsk::PanoramaStroke& s : r.strokes) {
+      if (s.view.size() != s.map.points.size() || s.map.cells < p.chain.min_cells ||
+          !(s.azimuth_min <= s.azimuth_max))
+        __builtin_trap();
+      for (const tsk::StrokePoint& pt : s.view)
+        if (!std::isfinite(pt.x) || !std::isfinite(pt.y)) __builtin_trap();
+    }
+    if (p.record_visibility) {
+      const tsk::Grid<std::uint8_t> seen = tsk::visibility_raster(r, dem.rows(), dem.cols(), gt, 1);
+      if (seen.size() != dem.size()) __builtin_trap();
+    }
+    const std::vector<tsk::NamedPoint> peaks = {{"a", in.unit() * width, in.unit() * height},
+                                                {"b", in.unit() * width, in.unit() * height}};
+    const std::vector<tsk::PeakLeader> leaders =
+        tsk::lead_peaks(r, tsk::see_peaks(dem, gt, r.rays, peaks));
+    for (const tsk::PeakLeader& l : leaders)
+      if (!std::isfinite(l.label.y) || l.label.y < l.top.y) __builtin_trap();
+  } catch (const tsk::Error&) {
+    // Refused with a message: an observer off the DEM, an empty field, a bad parameter.
+  }
+}
 
 }  // namespace
 
@@ -113,5 +160,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const tsk::Error&) {
     // Refused with a message: the expected outcome for bad parameters.
   }
+  fuzz_panorama(dem, dx, dy, in);
   return 0;
 }
