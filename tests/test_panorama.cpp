@@ -296,3 +296,28 @@ TEST_CASE("drawn panorama strokes end where their chains leap along the rays",
 }
 
 }  // namespace tsk
+
+namespace tsk {
+
+TEST_CASE("a panorama that would take far more samples than the DEM has cells is refused",
+          "[panorama]") {
+  // 48 x 48 cells a metre wide and ten kilometres tall: the rays, a metre apart at a range of
+  // 480 km, would number three million, of 480 000 samples each.
+  const HeightGrid dem(48, 48, 100.0f);
+  GeoTransform gt;
+  gt.a = {0.0, 1.0, 0.0, 480000.0, 0.0, -10000.0};
+  PanoramaView view;
+  view.observer_x = 24.0, view.observer_y = 240000.0;
+  try {
+    plan_rays(dem, gt, view);
+    FAIL("not refused");
+  } catch (const Error& e) {
+    CHECK_THAT(e.what(), Catch::Contains("far from square"));
+  }
+  // Square cells of the same DEM are drawn.
+  gt.a = {0.0, 10.0, 0.0, 480.0, 0.0, -10.0};
+  view.observer_y = 240.0, view.observer_x = 240.0;
+  CHECK(plan_rays(dem, gt, view).rays > 0);
+}
+
+}  // namespace tsk
