@@ -19,6 +19,8 @@
 //   drape.h           [3] any raster on the DEM grid projected into plan-oblique space
 //   diagnostics.h     per-cell classification and row slope maps on the DEM grid
 //   filter_diagram.h  column against row slope scatter with the filter's removal region (HTML)
+//   panorama.h        the method from a point observer: rays all round, earth curvature, the
+//                     visibility raster and peak labels (docs/PANORAMA.md)
 //
 // Support: grid.h (the grid type, NaN nodata), flags.h (per-cell classification bits),
 // params.h (every parameter with its default), parallel.h (threads, progress, cancellation).
