@@ -50,7 +50,9 @@ void shift_plan_oblique(Stroke& stroke, const DrawingSetup& setup) {
 void finish_stroke(Stroke& stroke, const DrawingSetup& setup) {
   const DrawnParams& p = setup.drawn;
   // The exact places: each point's cell centre, the sub-cell offset along the profile undone.
-  std::vector<StrokePoint> centres(stroke.points.size());
+  // Storage kept from stroke to stroke (one drawing thread at a time per drawer).
+  thread_local std::vector<StrokePoint> centres;
+  centres.resize(stroke.points.size());
   for (std::size_t k = 0; k < centres.size(); ++k) {
     const double offset = stroke.vertices[k].offset;
     centres[k] = {stroke.points[k].x - setup.cell_step.x * offset,
@@ -73,9 +75,9 @@ StrokeDrawer::StrokeDrawer(const DrawingSetup& setup)
       groups_(rule_) {}
 
 void StrokeDrawer::add(Stroke&& chain) {
-  std::vector<Stroke> pieces;
-  split_at_leaps(std::move(chain), kLeapCells * setup_.cell, pieces);
-  for (Stroke& piece : pieces) {
+  pieces_.clear();
+  split_at_leaps(std::move(chain), kLeapCells * setup_.cell, pieces_);
+  for (Stroke& piece : pieces_) {
     // A single cell has no direction to join by; alone, the generalisation drops it anyway.
     if (piece.cells < 2) continue;
     if (rule_.gap > 0.0) groups_.add(piece);

@@ -61,6 +61,7 @@ class StrokeDrawer {
   StrokeGrouper groups_;
   std::deque<Stroke> pending_;  // pieces from id first_pending_ on; those drawn left empty
   std::deque<bool> drawn_;
+  std::vector<Stroke> pieces_;  // of the chain being added, its storage reused
   std::size_t first_pending_ = 0;
 };
 

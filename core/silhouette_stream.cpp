@@ -55,10 +55,17 @@ struct SilhouetteStream::State {
   Strokes factual{true, 0}, formulated;
   CellFlags flags;  // the current strip's classification, its memory reused by the next strip
   SilhouetteResult result;
-  // Drawn strokes are joined, smoothed, weighed and handed on on a thread of their own, while
-  // the stages go on; declared last, it is stopped first.
-  using Settled = std::vector<std::pair<Strokes*, std::vector<std::vector<Stroke>>>>;
-  Settled settled;  // taken from the drawers, not yet drawn
+  // Drawn strokes are grouped, joined, smoothed, weighed and handed on on a thread of their own,
+  // while the stages go on; declared last, it is stopped first. The linking gives it its steps
+  // in the order of the scan: a class's next piece, or where the chains still open begin (the
+  // frontier) once a profile is linked.
+  struct DrawingStep {
+    Strokes* strokes;
+    Stroke piece;     // a step that adds a piece
+    double frontier;  // a step that settles groups
+    bool settle;
+  };
+  std::vector<DrawingStep> steps;  // not given to the drawing thread yet
   std::atomic<bool> abandoned{false};
   std::deque<std::future<void>> drawings;
   std::unique_ptr<Worker> drawing;
@@ -129,28 +136,32 @@ struct SilhouetteStream::State {
     hand_on(strokes, strokes.linker.oldest_open());
   }
 
-  // Takes the groups of drawn strokes that no chain still open or to come can join (after the
-  // last profile, all of them) into `settled`, to be drawn in that order.
+  // Asks the drawing for the groups of drawn strokes that no chain still open or to come can
+  // join (after the last profile, all of them), to be drawn in that order.
   void take_settled(Strokes& strokes, bool last = false) {
     const ChainRef* oldest = strokes.linker.oldest_open_chain();
     const double frontier = last     ? std::numeric_limits<double>::infinity()
                             : oldest ? strokes.open[oldest->slot].first_profile()
                                      : static_cast<double>(next_linked);
-    std::vector<std::vector<Stroke>> groups = strokes.drawer->take_settled(frontier);
-    if (!groups.empty()) settled.emplace_back(&strokes, std::move(groups));
+    steps.push_back({&strokes, Stroke(), frontier, true});
   }
 
-  // Draws the groups taken so far, on the drawing thread if there is one, and hands them on.
+  // Gives the drawing its steps so far: on the drawing thread if there is one, which alone
+  // touches the drawers; it hands the strokes drawn on.
   void draw_settled() {
-    if (settled.empty()) return;
-    auto taken = std::make_shared<Settled>(std::move(settled));
-    settled.clear();
+    if (steps.empty()) return;
+    auto taken = std::make_shared<std::vector<DrawingStep>>(std::move(steps));
+    steps.clear();
     auto draw = [this, taken] {
-      for (auto& entry : *taken) {
+      for (DrawingStep& step : *taken) {
         if (abandoned) return;
-        Strokes& strokes = *entry.first;
-        strokes.drawer->draw(entry.second,
-                             [&](Stroke&& stroke) { deliver(strokes, std::move(stroke)); });
+        Strokes& strokes = *step.strokes;
+        if (!step.settle) {
+          strokes.drawer->add(std::move(step.piece));
+          continue;
+        }
+        std::vector<std::vector<Stroke>> groups = strokes.drawer->take_settled(step.frontier);
+        strokes.drawer->draw(groups, [&](Stroke&& stroke) { deliver(strokes, std::move(stroke)); });
       }
     };
     if (!drawing) return draw();
@@ -194,7 +205,7 @@ struct SilhouetteStream::State {
       Stroke stroke = std::move(waiting.back().second);
       waiting.pop_back();
       if (strokes.drawer) {
-        strokes.drawer->add(std::move(stroke));
+        steps.push_back({&strokes, std::move(stroke), 0.0, false});
       } else {
         deliver(strokes, std::move(stroke));
       }

@@ -18,14 +18,13 @@ double polyline_length(const std::vector<StrokePoint>& points) {
 
 namespace {
 
-// The Gaussian's weights at 0, 1, 2, ... points away, out to three sigma.
-std::vector<double> kernel(double sigma_points, std::size_t n) {
+// The Gaussian's weights at 0, 1, 2, ... points away, out to three sigma, into `w`.
+void kernel(double sigma_points, std::size_t n, std::vector<double>& w) {
   const std::size_t reach =
       std::min<std::size_t>(n, static_cast<std::size_t>(std::ceil(3.0 * sigma_points)));
-  std::vector<double> w(reach + 1);
+  w.resize(reach + 1);
   for (std::size_t j = 0; j <= reach; ++j)
     w[j] = std::exp(-0.5 * static_cast<double>(j * j) / (sigma_points * sigma_points));
-  return w;
 }
 
 // One pass: the Gaussian mean about each inner point (of heights too, if `vertices` are given),
@@ -88,12 +87,13 @@ void smooth_stroke(Stroke& stroke, double sigma, double tolerance, bool heights,
   // arc length is one over point indices, sigma taken in points at the stroke's mean spacing.
   const double spacing = polyline_length(stroke.points) / static_cast<double>(n - 1);
   if (!(spacing > 0.0)) return;
-  const std::vector<double> w = kernel(sigma / spacing, n);
+  // Storage kept from stroke to stroke (smoothing runs on one thread at a time per drawer).
+  thread_local std::vector<double> w;
+  kernel(sigma / spacing, n, w);
   // Points are held near their anchors, or near where they were when no anchors are given.
   std::vector<StrokePoint> where_they_were;
   if (!anchors || anchors->size() != n) where_they_were = stroke.points;
   const std::vector<StrokePoint>& held = where_they_were.empty() ? *anchors : where_they_were;
-  // Storage kept from stroke to stroke (smoothing runs on one thread at a time per drawer).
   thread_local std::vector<StrokePoint> scratch;
   thread_local std::vector<double> z;
   // Where a pass pulls a point back within the tolerance, it leaves a kink; the next passes
