@@ -186,10 +186,9 @@ struct SilhouetteStream::State {
     for (const ChainRef& chain : chains) {
       StrokeBuilder& builder = strokes.open[chain.slot];
       if (builder.cells() >= min_cells) {
-        // A drawn piece takes the builder's vectors: it is reshaped anyway.
-        strokes.waiting.emplace_back(chain.id, params.strokes.drawn()
-                                                   ? builder.take(strokes.cls)
-                                                   : builder.stroke(strokes.cls));
+        // A copy sized to fit: the builder keeps its storage for the slot's next chain (taking
+        // its vectors left them to grow anew, allocation after allocation).
+        strokes.waiting.emplace_back(chain.id, builder.stroke(strokes.cls));
         std::push_heap(strokes.waiting.begin(), strokes.waiting.end(), later_chain);
       }
       builder.clear();
