@@ -27,6 +27,9 @@ std::size_t batch_profiles(std::size_t length) {
                                  16384);
 }
 
+// Batches the drawing thread may have still to draw before the linking waits for it.
+constexpr std::size_t kBatchesDrawnBehind = 2;
+
 }  // namespace
 
 struct SilhouetteStream::State {
@@ -166,9 +169,12 @@ struct SilhouetteStream::State {
     };
     if (!drawing) return draw();
     drawings.push_back(drawing->run(draw));
-    // A failed drawing (a sink that could not write) ends the run as soon as it is seen.
+    // A failed drawing (a sink that could not write) ends the run as soon as it is seen. The
+    // linking waits when the drawing falls behind by more than a few batches, whose pieces it
+    // would otherwise hold.
     while (!drawings.empty() &&
-           drawings.front().wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+           (drawings.size() > kBatchesDrawnBehind ||
+            drawings.front().wait_for(std::chrono::seconds(0)) == std::future_status::ready)) {
       drawings.front().get();
       drawings.pop_front();
     }
