@@ -273,6 +273,7 @@ QVariantMap PanoramaAlgorithm::postProcessAlgorithm(QgsProcessingContext& contex
   styleOnCompletion(context, mMapId, QStringLiteral("panorama_map"));
   styleOnCompletion(context, mPanoramaId, QStringLiteral("panorama"));
   styleOnCompletion(context, mPeaksId, QStringLiteral("panorama_peaks"));
+  styleOnCompletion(context, mVisibility, QStringLiteral("visibility"));
   return {};
 }
 

@@ -164,6 +164,15 @@ def raster_styles(tmp):
     classes = [QgsPalettedRasterRenderer.Class(v, QColor(c), label) for v, label, c in CLASSES]
     layer.setRenderer(QgsPalettedRasterRenderer(layer.dataProvider(), 1, classes))
     save(layer, "classification")
+    # A panorama's visibility: hidden ground under a half-clear grey, seen ground clear, so that
+    # the strokes and a hillshade show through.
+    hidden, seen = QColor("#3c3c3c"), QColor(255, 255, 255, 0)
+    visibility = QgsPalettedRasterRenderer(
+        layer.dataProvider(), 1, [QgsPalettedRasterRenderer.Class(0, hidden, "hidden"),
+                                  QgsPalettedRasterRenderer.Class(1, seen, "visible")])
+    visibility.setOpacity(0.45)
+    layer.setRenderer(visibility)
+    save(layer, "visibility")
     # Row slope: white where flat across the view, black from 60 %.
     gray = QgsSingleBandGrayRenderer(layer.dataProvider(), 1)
     gray.setGradient(QgsSingleBandGrayRenderer.WhiteToBlack)

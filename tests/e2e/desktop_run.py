@@ -81,7 +81,8 @@ SHOTS = [("qgis_desktop.png", STROKES | {"profiles.gpkg"}, -90),
          ("qgis_drape.png", STROKES | {"draped.tif"}, -90),
          ("qgis_pstrokes.png", STROKES | {"pstrokes.gpkg"}, -90),
          ("qgis_classification.png", {"classes.tif"}, 0),
-         ("qgis_rowslope.png", {"rowslope.tif"}, 0)]
+         ("qgis_rowslope.png", {"rowslope.tif"}, 0),
+         ("qgis_panorama_map.png", {"panorama_map.gpkg", "seen.tif"}, 0)]
 
 
 def take(index):
@@ -138,7 +139,14 @@ def run():
                 ("terrainsketch:classification", {"OUTPUT": os.path.join(OUT, "classes.tif")}),
                 ("terrainsketch:rowslope", {"OUTPUT": os.path.join(OUT, "rowslope.tif")}),
                 ("terrainsketch:pstrokes", {"GEOMETRY": 1,
-                                            "OUTPUT": os.path.join(OUT, "pstrokes.gpkg")})]
+                                            "OUTPUT": os.path.join(OUT, "pstrokes.gpkg")}),
+                # The panorama from the sample's summit, the observer a point as the canvas
+                # gives it.
+                ("terrainsketch:panorama", {
+                    "OBSERVER": "749008.1394,4009477.9308 [EPSG:32616]", "OBSERVER_HEIGHT": 2,
+                    "MAP_OUTPUT": os.path.join(OUT, "panorama_map.gpkg"),
+                    "PANORAMA_OUTPUT": os.path.join(OUT, "panorama.gpkg"),
+                    "VISIBILITY": os.path.join(OUT, "seen.tif")})]
         report["results"] = {}
         for alg, params in runs:
             run_and_load(alg, dict(common, **params))
@@ -157,7 +165,9 @@ def run():
         node = root.findLayer(draped.id())
         root.insertChildNode(-1, node.clone())
         node.parent().removeChildNode(node)
-        take(0)
+        # QGIS gives an empty project the CRS of its first layer once the event loop runs, which
+        # these runs held up: an extent given before then would be read in EPSG:4326.
+        QTimer.singleShot(1000, lambda: take(0))
     except Exception:
         report["error"] = traceback.format_exc()
         finish()

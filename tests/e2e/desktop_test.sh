@@ -37,7 +37,7 @@ check(r.get("provider"), "provider registered")
 check(r.get("plugin_active"), "plugin active in the plugin manager")
 check(not r.get("not_loaded"), "outputs not loaded: %s" % r.get("not_loaded"))
 layers = {l["file"]: l for l in r.get("layers", [])}
-check(len(layers) == 7, "seven layers loaded, got %s" % list(layers))
+check(len(layers) == 10, "ten layers loaded, got %s" % list(layers))
 # The default strokes are drawn ones: LineString M, styled as tapered steps whose widths follow
 # each stroke's weight (its depth cue, the M values).
 for path, colour in (("factual.gpkg", "#111111"), ("formulated.gpkg", "#6e3e1c")):
@@ -57,8 +57,17 @@ ramp = layers.get("rowslope.tif", {}).get("ramp_max", 60)
 check(0 < ramp != 60, "row slope ramp from the data, up to %s" % ramp)
 check(layers.get("pstrokes.gpkg", {}).get("features", 0) > 100, "P-strokes drawn")
 check("draped.tif" in layers, "draped raster loaded")
+# The panorama: its strokes on the map in the DEM's CRS, the same strokes in the panorama, both
+# styled, and the visibility raster with its colour table.
+pmap, pano = layers.get("panorama_map.gpkg", {}), layers.get("panorama.gpkg", {})
+check(pmap.get("features", 0) > 100, "panorama strokes on the map")
+check(pmap.get("crs") == "EPSG:32616", "panorama map CRS")
+check(pano.get("features") == pmap.get("features"), "panorama strokes in the panorama")
+for l in (pmap, pano):
+    check(l.get("renderer") == "singleSymbol" and l.get("colour") == "#111111", "panorama styled")
+check(layers.get("seen.tif", {}).get("renderer") == "paletted", "visibility paletted")
 shots = r.get("screenshots", [])
-check(len(shots) == 5, "five screenshots")
+check(len(shots) == 6, "six screenshots")
 for shot in shots:
     check(os.path.exists(shot) and os.path.getsize(shot) > 10000, "screenshot " + shot)
 if errors:
