@@ -321,3 +321,26 @@ TEST_CASE("a panorama that would take far more samples than the DEM has cells is
 }
 
 }  // namespace tsk
+
+namespace tsk {
+
+TEST_CASE("a panorama reports its progress and stops when told to", "[panorama]") {
+  // Enough rays (3 560 of 566 samples) for more than one batch of about a million samples.
+  const std::size_t n = 801;
+  const HeightGrid dem = test::random_terrain(n, n, 3);
+  const PanoramaParams params = looking_from({4005.0, 4005.0}, 30.0);
+  std::vector<double> seen;
+  sketch_panorama(dem, north_up(n), params, [&](double fraction) {
+    seen.push_back(fraction);
+    return true;
+  });
+  REQUIRE(seen.size() > 1);
+  CHECK(std::is_sorted(seen.begin(), seen.end()));
+  CHECK(seen.back() == 1.0);
+  std::size_t calls = 0;
+  CHECK_THROWS_AS(sketch_panorama(dem, north_up(n), params, [&](double) { return ++calls < 2; }),
+                  Cancelled);
+  CHECK(calls == 2);  // stopped at once
+}
+
+}  // namespace tsk
