@@ -19,12 +19,13 @@ constexpr std::int32_t kLeapSamples = 4;
 // The page's frame: its size and margins, and how degrees map onto it.
 struct PanoramaFrame {
   double width = 0, height = 0, margin = 0;
+  double top = 0;  // where the highest elevation is drawn
   bool millimetres = false;
   double from_deg = 0, top_deg = 0;  // the left edge's azimuth, the top edge's elevation
   double per_deg_x = 1, per_deg_y = 1;
   StrokePoint at(const StrokePoint& view, double turns) const {
     return {margin + (view.x + 360.0 * turns - from_deg) * per_deg_x,
-            margin + (top_deg - view.y) * per_deg_y};
+            top + (top_deg - view.y) * per_deg_y};
   }
 };
 
@@ -58,8 +59,9 @@ PanoramaFrame frame_page(const PanoramaResult& result, const std::vector<PeakLea
   // azimuths are wide: panorama boards exaggerate gently. A picture without a page is as tall
   // as that needs.
   f.per_deg_y = std::min((f.height - 2 * f.margin) / (high - low), kMostExaggeration * f.per_deg_x);
-  if (options.size.empty())
-    f.height = std::max(200.0, std::ceil(2 * f.margin + (high - low) * f.per_deg_y));
+  const double drawn_height = (high - low) * f.per_deg_y;
+  if (options.size.empty()) f.height = std::max(200.0, std::ceil(2 * f.margin + drawn_height));
+  f.top = 0.5 * (f.height - drawn_height);  // centred on a page taller than the panorama
   return f;
 }
 
