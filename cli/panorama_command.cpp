@@ -37,9 +37,6 @@ void check_before_work(const Options& o) {
   if (!o.visibility.empty()) require_geotiff(o.visibility);
   if (o.page.scale > 0.0)
     throw Error("--page-scale sets a map scale, which a panorama has not: leave it out");
-  if (o.params.adaptive.mode == FilterMode::adaptive &&
-      o.params.adaptive.adapt == Adaptivity::local)
-    throw Error("--adapt local is not available for panoramas yet: use --adapt whole");
 }
 
 // The DEM as it lies, read whole: the view from the west is its own grid, unturned.
@@ -75,6 +72,7 @@ PanoramaParams panorama_params(const Options& o, const io::Dem& dem, FilterRepor
   params.view = o.panorama;
   params.view.metres_per_unit = dem.ground_scale;
   params.rules = {adapted.filter, adapted.height_tolerance, o.params.placement};
+  params.local_scale = adapted.local_scale;
   params.chain = o.params.chain;
   params.threads = o.params.threads;
   params.record_visibility = !o.visibility.empty();

@@ -45,6 +45,8 @@ PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotra
   PanoramaLinker formulated(false, params.chain.window, params.chain.min_cells, full,
                             params.cut_leaps);
   const unsigned threads = resolve_threads(params.threads);
+  RayRules rules = params.rules;
+  rules.local_scale = params.local_scale.get();
   using Batch = std::vector<RayChainCells>;
   const std::size_t size = batch_rays(rays.samples);
   const auto collect = [&](std::size_t first, Batch& batch) {
@@ -55,7 +57,7 @@ PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotra
         const std::size_t r = first + k;
         std::uint8_t* record =
             params.record_visibility ? result.samples.data() + r * result.row_bytes() : nullptr;
-        classify_ray(dem, rays, params.rules, r, scratch, batch[k], record);
+        classify_ray(dem, rays, rules, r, scratch, batch[k], record);
       }
     });
   };

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "panorama_peaks.h"
@@ -19,7 +20,8 @@ namespace tsk {
 
 struct PanoramaParams {
   PanoramaView view;
-  RayRules rules;
+  RayRules rules;  // its local_scale is set from local_scale below
+  std::shared_ptr<const SlopeScaleMap> local_scale;  // local adaptivity (adapt_filter's), or null
   ChainParams chain;
   unsigned threads = 0;            // 0: one per hardware thread
   bool record_visibility = false;  // keep every sample's class for visibility_raster()

@@ -136,14 +136,16 @@ double along_slope(const RayScratch& s, std::size_t k, double step_m) {
   return (static_cast<double>(s.apparent[k + 1]) - static_cast<double>(s.apparent[k])) / step_m;
 }
 
-// SPEC 1.5 on the visible c-set.
+// SPEC 1.5 on the visible c-set; with local scales, each sample's slopes are divided by its
+// neighbourhood's scale first.
 void filter_samples(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace& place,
-                    const FilterRule& rule, RayScratch& s) {
+                    const FilterRule& rule, const SlopeScaleMap* local_scale, RayScratch& s) {
   const double step_m = rays.step_metres();
   for (std::size_t k = 0; k < s.end; ++k) {
     if ((s.flags[k] & (cell::candidate | cell::hidden)) != cell::candidate) continue;
-    const double col_pct = std::fabs(along_slope(s, k, step_m)) * 100.0;
-    const double row_pct = std::fabs(across_slope(dem, place, k, step_m)) * 100.0;
+    const double unscale = local_scale ? 1.0 / local_scale->scale_at(place.at(k)) : 1.0;
+    const double col_pct = std::fabs(along_slope(s, k, step_m)) * 100.0 * unscale;
+    const double row_pct = std::fabs(across_slope(dem, place, k, step_m)) * 100.0 * unscale;
     s.flags[k] |= static_cast<std::uint8_t>(rule.accepts(col_pct, row_pct) * cell::filtered);
   }
 }
@@ -207,7 +209,7 @@ void classify_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayRule
   const RayPlace place(rays, r);
   sample_ray(dem, rays, place, scratch);
   select_candidates(rays, rules.height_tolerance, scratch);
-  filter_samples(dem, rays, place, FilterRule(rules.filter), scratch);
+  filter_samples(dem, rays, place, FilterRule(rules.filter), rules.local_scale, scratch);
   const std::size_t n = scratch.end;  // the samples after it have no data
   thin_profile(scratch.flags.data(), n, rules.placement);
   out.counts = StageStats{};

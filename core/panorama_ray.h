@@ -10,6 +10,7 @@
 #include "chaining.h"
 #include "panorama_rays.h"
 #include "params.h"
+#include "slope_scale_map.h"
 #include "stage_stats.h"
 #include "strokes.h"
 
@@ -20,6 +21,9 @@ struct RayRules {
   FilterParams filter;
   double height_tolerance = 0.0;  // the adaptive filter's: steps within it count as flat
   Placement placement = Placement::far;
+  // Local adaptivity: each sample's slopes are divided by its neighbourhood's scale first
+  // (null: none). It must outlive the run.
+  const SlopeScaleMap* local_scale = nullptr;
 };
 
 // The samples' classes in the visibility record: two bits each, four to a byte.

@@ -545,22 +545,17 @@
         <translation>Optional: ein Raster auf dem Gitter des DGM, 1 wo der Boden gesehen wird, 0 wo er verdeckt ist, NoData außerhalb der Reichweite.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="128" />
-        <source>Adapting the filter to each neighbourhood is not available for panoramas yet: adapt it to the whole DEM.</source>
-        <translation>Die Anpassung des Filters an jede Nachbarschaft ist für Panoramen noch nicht verfügbar: an das ganze DGM anpassen.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="135" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="131" />
         <source>The observer lies outside the DEM: choose a point on it.</source>
         <translation>Der Beobachter liegt außerhalb des DGM: einen Punkt darauf wählen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="203" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="201" />
         <source>The peaks have no field '%1' for their names.</source>
         <translation>Die Gipfel haben kein Feld „%1“ für ihre Namen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="260" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="258" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>

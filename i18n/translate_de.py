@@ -473,8 +473,6 @@ GERMAN = {
         'Sichtbarkeit',
     "Optional: a raster on the DEM's grid, 1 where the ground is seen, 0 where it is hidden, nodata out of range.":
         'Optional: ein Raster auf dem Gitter des DGM, 1 wo der Boden gesehen wird, 0 wo er verdeckt ist, NoData außerhalb der Reichweite.',
-    'Adapting the filter to each neighbourhood is not available for panoramas yet: adapt it to the whole DEM.':
-        'Die Anpassung des Filters an jede Nachbarschaft ist für Panoramen noch nicht verfügbar: an das ganze DGM anpassen.',
     'The observer lies outside the DEM: choose a point on it.':
         'Der Beobachter liegt außerhalb des DGM: einen Punkt darauf wählen.',
     'Peaks to label':

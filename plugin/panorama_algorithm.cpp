@@ -124,10 +124,6 @@ double PanoramaAlgorithm::readParameters(const QVariantMap& parameters,
   mFilter.chain.min_cells = parameterAsInt(parameters, kMinCells, context);
   mFilter.chain.window = parameterAsInt(parameters, kWindow, context);
   mFilter.validate();
-  if (mFilter.adaptive.mode == FilterMode::adaptive && mFilter.adaptive.adapt == Adaptivity::local)
-    throw Error(tr("Adapting the filter to each neighbourhood is not available for panoramas "
-                   "yet: adapt it to the whole DEM.")
-                    .toStdString());
   QgsRasterLayer* dem = parameterAsRasterLayer(parameters, QStringLiteral("INPUT"), context);
   const QgsCoordinateReferenceSystem crs = dem ? dem->crs() : QgsCoordinateReferenceSystem();
   const QgsPointXY observer = parameterAsPoint(parameters, kObserver, context, crs);
@@ -154,6 +150,7 @@ PanoramaResult PanoramaAlgorithm::sketch(QgsProcessingFeedback* feedback) {
   FilterReport report;
   const SilhouetteParams adapted = adaptFilter(mFilter, feedback, report);
   mParams.rules = {adapted.filter, adapted.height_tolerance, adapted.placement};
+  mParams.local_scale = adapted.local_scale;
   mParams.chain = adapted.chain;
   mParams.threads = adapted.threads;
   mParams.record_visibility = !mVisibility.isEmpty();

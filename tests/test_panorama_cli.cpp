@@ -322,3 +322,23 @@ TEST_CASE("panorama labels the peaks in sight, from points in another CRS", "[cl
   CHECK_THAT(lines.err, Catch::Contains("must be points"));
   CHECK_FALSE(test::fs::exists(dir / "q.gpkg"));
 }
+
+TEST_CASE("panorama adapts its filter to each neighbourhood with --adapt local",
+          "[cli][panorama]") {
+  ScratchDir dir("panorama-local");
+  const auto fset = [&](const std::string& adapt) {
+    const CliRun run = run_cli({"panorama", kSample, dir / (adapt + ".gpkg"), "--observer", kSummit,
+                                "--adapt", adapt, "--stats-json", dir / (adapt + ".json")});
+    INFO(run.err);
+    REQUIRE(run.code == 0);
+    std::ifstream in(dir / (adapt + ".json"));
+    const std::string json((std::istreambuf_iterator<char>(in)), {});
+    const std::size_t at = json.find("\"fset_pct\": ");
+    REQUIRE(at != std::string::npos);
+    return std::stod(json.substr(at + 12));
+  };
+  const double whole = fset("whole"), local = fset("local");
+  CHECK(whole > 0.0);
+  // The summit's rugged neighbourhoods get lower cut-offs than the whole DEM's: more f-set.
+  CHECK(local > 1.5 * whole);
+}
