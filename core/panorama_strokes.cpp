@@ -79,6 +79,9 @@ void PanoramaLinker::close_seam(const std::vector<ChainRef>& last_joined) {
     const auto held =
         std::find_if(held_.begin(), held_.end(), [id](const Open& h) { return h.id == id; });
     if (held == held_.end()) continue;
+    // Across the seam as along the rays: a leap joins nothing.
+    if (cut_leaps_ && std::abs(held->cells.front().cell.i - before.last_sample) > kLeapSamples)
+      continue;
     for (std::size_t c = 0; c < held->cells.size(); ++c) {
       before.builder.add(held->cells[c]);
       before.view.push_back({held->view[c].x + 360.0, held->view[c].y});
