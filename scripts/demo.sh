@@ -6,6 +6,8 @@
 #   with the CLI:          out/jacksboro_silhouettes.gpkg, out/jacksboro_stats.json,
 #                          out/jacksboro_sketch.png (a picture of the oblique sketch)
 #                          out/jacksboro_sketch.pdf (the sketch as vector art on an A3 page)
+#                          out/jacksboro_panorama.gpkg, out/jacksboro_panorama.svg (the panorama
+#                          from the sample's summit, looking north)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh qgis
@@ -25,6 +27,10 @@ build/cli/terrain-sketch silhouettes "$dem" out/jacksboro_silhouettes.gpkg --geo
   --stats-json out/jacksboro_stats.json --preview out/jacksboro_sketch.png
 build/cli/terrain-sketch silhouettes "$dem" out/jacksboro_page.gpkg --preview out/jacksboro_sketch.pdf \
   --page A3
+build/cli/terrain-sketch panorama "$dem" out/jacksboro_panorama.gpkg \
+  --observer 749008.1394,4009477.9308 --observer-height 2 --azimuth-from 300 --azimuth-to 30 \
+  --visibility out/jacksboro_seen.tif --preview out/jacksboro_panorama.svg
 echo "wrote out/jacksboro_factual.gpkg, out/jacksboro_formulated.gpkg (qgis_process),"
 echo "      out/jacksboro_silhouettes.gpkg, out/jacksboro_stats.json, out/jacksboro_sketch.png,"
-echo "      out/jacksboro_sketch.pdf (an A3 page of vector art) (CLI)"
+echo "      out/jacksboro_sketch.pdf (an A3 page of vector art),"
+echo "      out/jacksboro_panorama.gpkg, out/jacksboro_seen.tif, out/jacksboro_panorama.svg (CLI)"
