@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "resample.h"
+
 namespace tsk {
 namespace {
 
@@ -19,7 +21,7 @@ double drop_at(const PanoramaRays& rays, double d) {
 double tangent_at(const HeightGrid& dem, const GeoTransform& gt, const PanoramaRays& rays, double x,
                   double y, double d) {
   const PixelPoint px = gt.to_pixel(x, y);
-  const double z = bilinear_height(dem, px.col, px.row);
+  const double z = sample_bilinear(dem, px);
   return (z - drop_at(rays, d) - rays.eye) / (d * rays.metres_per_unit);
 }
 

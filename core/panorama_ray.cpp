@@ -5,7 +5,9 @@
 #include <cstring>
 #include <limits>
 
+#include "candidates.h"
 #include "profile_stages.h"
+#include "resample.h"
 #include "slope_filter.h"
 #include "thinning.h"
 
@@ -59,39 +61,18 @@ void sample_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace&
   s.tangent.resize(n);
   s.flags.assign(n, 0);
   const double cols = static_cast<double>(dem.cols()), rows = static_cast<double>(dem.rows());
-  const auto uv = [&place](std::size_t k) {
-    const PixelPoint px = place.at(k);
-    return PixelPoint{px.col - 0.5, px.row - 0.5};
-  };
-  // Off the DEM (all four cells outside it), and off its interior (a cell outside it): O lies
-  // on the DEM, so a ray leaves each for good; it may start off the interior, at the edge.
+  // Off the DEM, all four cells outside it: O lies on the DEM, so a ray leaves it for good.
   const auto off_dem = [&](std::size_t k) {
-    const PixelPoint p = uv(k);
-    return p.col < -1.0 || p.row < -1.0 || p.col >= cols || p.row >= rows;
-  };
-  const auto off_interior = [&](std::size_t k) {
-    const PixelPoint p = uv(k);
-    return p.col < 0.0 || p.row < 0.0 || p.col >= cols - 1.0 || p.row >= rows - 1.0;
+    const PixelPoint p = place.at(k);
+    return p.col < -0.5 || p.row < -0.5 || p.col >= cols + 0.5 || p.row >= rows + 0.5;
   };
   s.end = first_leaving(0, n, off_dem);
-  std::size_t interior = 0;
-  while (interior < s.end && off_interior(interior)) ++interior;
-  const std::size_t interior_end = first_leaving(interior, s.end, off_interior);
   std::fill(s.apparent.begin() + static_cast<std::ptrdiff_t>(s.end), s.apparent.end(), kNoData);
+  sample_line(dem, place.at(0), place.along, s.end, s.apparent.data());
   double running_max = -std::numeric_limits<double>::infinity();
   std::size_t last_visible = n;  // the last visible sample, waiting for the next valid one
   for (std::size_t k = 0; k < s.end; ++k) {
-    const PixelPoint p = uv(k);
-    float z;
-    if (k >= interior && k < interior_end) {  // nearly every sample: no bounds checks
-      // Both are at least 0 here, where truncating is flooring, and cheaper.
-      const std::size_t c0 = static_cast<std::size_t>(p.col), r0 = static_cast<std::size_t>(p.row);
-      z = bilinear_weighing(dem.data() + r0 * dem.cols() + c0, dem.cols(),
-                            p.col - static_cast<double>(c0), p.row - static_cast<double>(r0));
-    } else {
-      z = bilinear_height(dem, p.col + 0.5, p.row + 0.5);
-    }
-    const double apparent = static_cast<double>(z) - rays.drop[k];
+    const double apparent = static_cast<double>(s.apparent[k]) - rays.drop[k];
     const double tangent = (apparent - rays.eye) * rays.inverse_distance[k];
     s.apparent[k] = static_cast<float>(apparent);
     s.tangent[k] = tangent;
@@ -121,19 +102,15 @@ void select_candidates(const PanoramaRays& rays, double tolerance, RayScratch& s
 // The slope across the ray at sample k, over two steps, one-sided beside nodata (SPEC 1.3).
 double across_slope(const HeightGrid& dem, const RayPlace& place, std::size_t k, double step_m) {
   const PixelPoint p = place.at(k);
-  const double centre = bilinear_height(dem, p.col, p.row);
-  const double right = bilinear_height(dem, p.col + place.across.col, p.row + place.across.row);
-  const double left = bilinear_height(dem, p.col - place.across.col, p.row - place.across.row);
-  const bool has_left = std::isfinite(left), has_right = std::isfinite(right);
-  if (has_left && has_right) return (right - left) / (2.0 * step_m);
-  if (has_right) return (right - centre) / step_m;
-  if (has_left) return (centre - left) / step_m;
-  return 0.0;
+  const float centre = sample_bilinear(dem, p);
+  const float right = sample_bilinear(dem, {p.col + place.across.col, p.row + place.across.row});
+  const float left = sample_bilinear(dem, {p.col - place.across.col, p.row - place.across.row});
+  return row_slope(ProfileRows{&left, &centre, &right}, 0, step_m);
 }
 
+// The slope along the ray at sample k (SPEC 1.3), on the heights lowered by the curvature drop.
 double along_slope(const RayScratch& s, std::size_t k, double step_m) {
-  if (k + 1 >= s.apparent.size()) return std::numeric_limits<double>::quiet_NaN();
-  return (static_cast<double>(s.apparent[k + 1]) - static_cast<double>(s.apparent[k])) / step_m;
+  return column_slope(s.apparent.data(), s.apparent.size(), k, step_m);
 }
 
 // SPEC 1.5 on the visible c-set; with local scales, each sample's slopes are divided by its

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "errors.h"
+#include "resample.h"
 
 namespace tsk {
 namespace {
@@ -28,7 +29,7 @@ void require(bool ok, const std::string& message) {
 // The height under O: bilinear, or the cell O stands in where bilinear reaches past the DEM's
 // edge or onto nodata beside it.
 double ground_at_observer(const HeightGrid& dem, const PixelPoint& o, double x, double y) {
-  float ground = bilinear_height(dem, o.col, o.row);
+  float ground = sample_bilinear(dem, o);
   if (!is_data(ground))
     ground = dem(static_cast<std::size_t>(o.row), static_cast<std::size_t>(o.col));
   require(is_data(ground), "the observer at " + number(x) + ", " + number(y) +
@@ -159,24 +160,6 @@ PanoramaRays plan_rays(const HeightGrid& dem, const GeoTransform& gt, const Pano
     rays.inverse_distance[k] = 1.0 / metres;
   }
   return rays;
-}
-
-float bilinear_height(const HeightGrid& dem, double col, double row) {
-  const double u = col - 0.5, v = row - 0.5;
-  const double c0 = std::floor(u), r0 = std::floor(v);
-  const double fu = u - c0, fv = v - r0;
-  const double rows = static_cast<double>(dem.rows()), cols = static_cast<double>(dem.cols());
-  if (c0 >= 0.0 && r0 >= 0.0 && c0 + 1.0 < cols && r0 + 1.0 < rows)
-    return bilinear_weighing(&dem(static_cast<std::size_t>(r0), static_cast<std::size_t>(c0)),
-                             dem.cols(), fu, fv);
-  // At the DEM's edge: the four cells copied, those outside it nodata.
-  float cells[4];
-  for (int k = 0; k < 4; ++k) {
-    const double r = r0 + (k / 2), c = c0 + (k % 2);
-    const bool inside = r >= 0.0 && c >= 0.0 && r < rows && c < cols;
-    cells[k] = inside ? dem(static_cast<std::size_t>(r), static_cast<std::size_t>(c)) : kNoData;
-  }
-  return bilinear_weighing(cells, 2, fu, fv);
 }
 
 }  // namespace tsk

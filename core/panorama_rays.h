@@ -64,22 +64,4 @@ struct PanoramaRays {
 PanoramaRays plan_rays(const HeightGrid& dem, const GeoTransform& geotransform,
                        const PanoramaView& view);
 
-// Bilinear height at DEM pixel position (col, row) (cell centres at +0.5), NaN when a cell it
-// weighs is nodata or outside the DEM.
-float bilinear_height(const HeightGrid& dem, double col, double row);
-
-// The bilinear weighing itself, of the cell at `cell` and its neighbours right (+1) and below
-// (+stride) at fractions fu, fv: a neighbour of weight 0 is not read, so that a point on a cell
-// centre needs only that cell. Callers that know all four cells lie inside the DEM use it
-// without bounds checks.
-inline float bilinear_weighing(const float* cell, std::size_t stride, double fu, double fv) {
-  const double z00 = cell[0];
-  const double z01 = fu > 0.0 ? cell[1] : z00;
-  const double z10 = fv > 0.0 ? cell[stride] : z00;
-  const double z11 = fu > 0.0 ? (fv > 0.0 ? cell[stride + 1] : z01) : z10;
-  const double top = z00 * (1.0 - fu) + z01 * fu;
-  const double bottom = z10 * (1.0 - fu) + z11 * fu;
-  return static_cast<float>(top * (1.0 - fv) + bottom * fv);
-}
-
 }  // namespace tsk

@@ -351,6 +351,12 @@ float sample_bilinear(const HeightGrid& dem, PixelPoint px) {
   return BilinearSampler<GridCells>(GridCells(dem), dem.rows(), dem.cols())(px.col, px.row);
 }
 
+void sample_line(const HeightGrid& dem, PixelPoint start, PixelPoint step, std::size_t count,
+                 float* out) {
+  BilinearSampler<GridCells>(GridCells(dem), dem.rows(), dem.cols())
+      .run(start.col, start.row, step.col, step.row, 0, count, out);
+}
+
 void resample_profiles(const HeightGrid& dem, const OrientedFrame& frame, std::size_t first,
                        std::size_t count, HeightGrid& out, unsigned threads) {
   if (dem.rows() != frame.dem_rows || dem.cols() != frame.dem_cols) {
