@@ -102,6 +102,7 @@ class LowestHeight {
     for (std::size_t k = 0; k < n; ++k)
       if (is_data(z[k])) lowest_ = std::min(lowest_, z[k]);
   }
+  void add(const LowestHeight& other) { lowest_ = std::min(lowest_, other.lowest_); }
   double value() const { return std::isfinite(lowest_) ? static_cast<double>(lowest_) : 0.0; }
 
  private:

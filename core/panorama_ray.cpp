@@ -52,13 +52,15 @@ std::size_t first_leaving(std::size_t from, std::size_t end, Leaves&& leaves) {
 }
 
 // Heights along the ray, lowered by the curvature drop, the tangents of their elevation angles,
-// and SPEC 1.2 on them: hidden below the running maximum, occluding before a hidden one. Sets
-// s.end: the samples from there on lie off the DEM.
+// and SPEC 1.2 on them: hidden below the running maximum, occluding before a hidden one; with
+// each hidden zone's depth below the sight line grazing its occluder. Sets s.end: the samples
+// from there on lie off the DEM.
 void sample_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace& place,
                 RayScratch& s) {
   const std::size_t n = rays.samples;
   s.apparent.resize(n);
   s.tangent.resize(n);
+  s.zone_depth.resize(n);
   s.flags.assign(n, 0);
   const double cols = static_cast<double>(dem.cols()), rows = static_cast<double>(dem.rows());
   // Off the DEM, all four cells outside it: O lies on the DEM, so a ray leaves it for good.
@@ -69,33 +71,56 @@ void sample_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace&
   s.end = first_leaving(0, n, off_dem);
   std::fill(s.apparent.begin() + static_cast<std::ptrdiff_t>(s.end), s.apparent.end(), kNoData);
   sample_line(dem, place.at(0), place.along, s.end, s.apparent.data());
+  // The hot loop of a panorama: the arrays as plain pointers, which a flag's store cannot move.
+  float* apparent = s.apparent.data();
+  double* tangents = s.tangent.data();
+  std::uint8_t* flags = s.flags.data();
+  const double* drop = rays.drop.data();
+  const double* inverse_distance = rays.inverse_distance.data();
+  const double eye = rays.eye, step_m = rays.step_metres();
   double running_max = -std::numeric_limits<double>::infinity();
   std::size_t last_visible = n;  // the last visible sample, waiting for the next valid one
+  std::size_t occluder = n;      // the occluding sample of the hidden zone under way
+  double deepest = 0.0;          // its depth so far
   for (std::size_t k = 0; k < s.end; ++k) {
-    const double apparent = static_cast<double>(s.apparent[k]) - rays.drop[k];
-    const double tangent = (apparent - rays.eye) * rays.inverse_distance[k];
-    s.apparent[k] = static_cast<float>(apparent);
-    s.tangent[k] = tangent;
-    if (!is_data(s.apparent[k])) continue;  // nodata: the maximum carries over it
+    const double height = static_cast<double>(apparent[k]) - drop[k];
+    const double tangent = (height - eye) * inverse_distance[k];
+    apparent[k] = static_cast<float>(height);
+    tangents[k] = tangent;
+    if (!is_data(apparent[k])) continue;  // nodata: the maximum carries over it
     const bool hidden = tangent < running_max;
-    s.flags[k] = static_cast<std::uint8_t>(cell::valid | (hidden ? cell::hidden : 0));
-    if (hidden && last_visible != n) s.flags[last_visible] |= cell::occluding;
+    flags[k] = static_cast<std::uint8_t>(cell::valid | (hidden ? cell::hidden : 0));
+    if (hidden) {
+      if (last_visible != n) {
+        flags[last_visible] |= cell::occluding;
+        occluder = last_visible;
+        deepest = 0.0;
+      }
+      // The sight line grazing the occluder, whose tangent is the running maximum.
+      const double sight = eye + running_max * static_cast<double>(k + 1) * step_m;
+      deepest = std::max(deepest, sight - static_cast<double>(apparent[k]));
+    } else if (occluder != n) {
+      s.zone_depth[occluder] = deepest;
+      occluder = n;
+    }
     running_max = hidden ? running_max : tangent;
     last_visible = hidden ? n : k;
   }
+  if (occluder != n) s.zone_depth[occluder] = deepest;
 }
 
 // The c-set (docs/PANORAMA.md 1.4): the slope along the ray falls away less steeply than the
 // sight line descends onto it, -B < gc < 0 with B = -tangent, each bound moved in by the
-// height tolerance.
+// height tolerance. Compared as height steps (gc times the step), without a division.
 void select_candidates(const PanoramaRays& rays, double tolerance, RayScratch& s) {
   const double step_m = rays.step_metres();
-  const double inset = tolerance / step_m;
+  const float* apparent = s.apparent.data();
+  const double* tangents = s.tangent.data();
+  std::uint8_t* flags = s.flags.data();
   for (std::size_t k = 0; k + 1 < s.end; ++k) {
-    const double gc =
-        (static_cast<double>(s.apparent[k + 1]) - static_cast<double>(s.apparent[k])) / step_m;
-    const bool candidate = (gc > s.tangent[k] + inset) & (gc < -inset);
-    s.flags[k] |= static_cast<std::uint8_t>(candidate * cell::candidate);
+    const double rise = static_cast<double>(apparent[k + 1]) - static_cast<double>(apparent[k]);
+    const bool candidate = (rise > tangents[k] * step_m + tolerance) & (rise < -tolerance);
+    flags[k] |= static_cast<std::uint8_t>(candidate * cell::candidate);
   }
 }
 
@@ -127,20 +152,6 @@ void filter_samples(const HeightGrid& dem, const PanoramaRays& rays, const RayPl
   }
 }
 
-// How far, in metres, the terrain of the hidden zone after occluding sample k lies below the
-// sight line that grazes it, at its deepest.
-double zone_depth(const PanoramaRays& rays, const RayScratch& s, std::size_t k) {
-  const double step_m = rays.step_metres();
-  double deepest = 0.0;
-  for (std::size_t j = k + 1; j < s.end; ++j) {
-    if (!(s.flags[j] & cell::valid)) continue;
-    if (!(s.flags[j] & cell::hidden)) break;
-    const double sight = rays.eye + s.tangent[k] * static_cast<double>(j + 1) * step_m;
-    deepest = std::max(deepest, sight - static_cast<double>(s.apparent[j]));
-  }
-  return deepest;
-}
-
 // The stroke cells of one class's candidates.
 void collect_cells(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace& place,
                    std::size_t r, const RayScratch& s, bool factual, RayChainCells& out) {
@@ -161,7 +172,7 @@ void collect_cells(const HeightGrid& dem, const PanoramaRays& rays, const RayPla
     c.z = static_cast<double>(s.apparent[k]) + rays.drop[k];
     c.slope_pct = std::fabs(along_slope(s, k, step_m)) * 100.0;
     c.row_slope_pct = std::fabs(across_slope(dem, place, k, step_m)) * 100.0;
-    c.depth_m = factual ? zone_depth(rays, s, k) : std::numeric_limits<double>::quiet_NaN();
+    c.depth_m = factual ? s.zone_depth[k] : std::numeric_limits<double>::quiet_NaN();
     cells.push_back(c);
     view.push_back({azimuth, std::atan(s.tangent[k]) * kDegPerRad});
   }

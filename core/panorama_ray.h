@@ -36,6 +36,9 @@ struct RayScratch {
   std::vector<float> apparent;      // z' = z - drop, metres; NaN for nodata
   std::vector<double> tangent;      // (z' - h0) / d: the tangent of the elevation angle
   std::vector<std::uint8_t> flags;  // the cell:: bits, per sample
+  // At an occluding sample: how far, in metres, the terrain of the hidden zone after it lies
+  // below the sight line that grazes it, at its deepest (unset at other samples).
+  std::vector<double> zone_depth;
   std::size_t end = 0;              // the samples from here on lie off the DEM
 };
 

@@ -3,9 +3,12 @@
 #include <gdal_priv.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <future>
 #include <memory>
 #include <new>
+#include <thread>
 #include <vector>
 
 #include "dem_description.h"
@@ -64,8 +67,67 @@ WindowReader stopping(WindowReader read, std::function<void()> stop) {
   };
 }
 
+// True when the oriented grid is the DEM as it lies (the view from the west): no turn, no flip.
+bool as_it_lies(const OrientedFrame& f) {
+  return !f.resampled && f.row_per_p == 1 && f.col_per_i == 1 && f.row0 == 0 && f.col0 == 0;
+}
+
+// Reads rows [from, to) of the DEM through `read` straight into `grid`, a few MB at a time,
+// noting their lowest height; gives up quietly once `given_up` is set (by the other half).
+void read_rows_into(const WindowReader& read, std::size_t from, std::size_t to,
+                    const std::atomic<bool>& given_up, HeightGrid& grid, LowestHeight& lowest) {
+  const std::size_t cols = grid.cols();
+  const std::size_t step = std::max<std::size_t>(1, (std::size_t{1} << 22) / cols);
+  for (std::size_t top = from; top < to && !given_up; top += step) {
+    const std::size_t count = std::min(step, to - top);
+    read({top, 0, count, cols}, grid.row(top));
+    lowest.add(grid.row(top), count * cols);
+  }
+}
+
+// A DEM that needs no turning is read straight into its grid, its two halves at once, each
+// through a dataset of its own (a GDAL dataset is not to be shared between threads): the first
+// touch of a DEM-sized grid's pages and the decoding of its blocks are most of a read.
+void read_as_it_lies(const std::string& path, GDALRasterBand& band, const DemOptions& options,
+                     Dem& dem) {
+  HeightGrid grid(dem.rows, dem.cols, kUnset);
+  const std::size_t half = dem.rows >= 512 && std::thread::hardware_concurrency() > 1
+                               ? dem.rows / 2
+                               : dem.rows;
+  std::atomic<bool> given_up{false};
+  LowestHeight upper, lower;
+  std::future<void> second;
+  if (half < dem.rows) {
+    second = std::async(std::launch::async, [&] {
+      try {
+        GdalErrorCapture capture;
+        auto dataset = open_raster(path);
+        read_rows_into(stopping(band_reader(*dataset->GetRasterBand(options.band), path),
+                                options.stop),
+                       half, dem.rows, given_up, grid, lower);
+      } catch (...) {
+        given_up = true;
+        throw;
+      }
+    });
+  }
+  try {
+    read_rows_into(stopping(band_reader(band, path), options.stop), 0, half, given_up, grid,
+                   upper);
+  } catch (...) {
+    given_up = true;
+    if (second.valid()) second.wait();
+    throw;
+  }
+  if (second.valid()) second.get();
+  upper.add(lower);
+  dem.lowest_height = upper.value();
+  dem.oriented = std::move(grid);
+}
+
 // Reads the band in blocks of rows into dem.oriented.
 void read_band(const std::string& path, GDALRasterBand& band, const DemOptions& options, Dem& dem) {
+  if (as_it_lies(dem.frame)) return read_as_it_lies(path, band, options, dem);
   OrientedGridBuilder builder(dem.frame);
   read_row_blocks(dem.rows, dem.cols, stopping(band_reader(band, path), options.stop),
                   [&builder](std::size_t first_row, std::size_t count, const float* heights) {
