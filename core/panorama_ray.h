@@ -39,7 +39,7 @@ struct RayScratch {
   // At an occluding sample: how far, in metres, the terrain of the hidden zone after it lies
   // below the sight line that grazes it, at its deepest (unset at other samples).
   std::vector<double> zone_depth;
-  std::size_t end = 0;              // the samples from here on lie off the DEM
+  std::size_t end = 0;  // the samples from here on lie off the DEM
 };
 
 // One ray's chain candidates (SPEC 1.7) with their stroke cells (map geometry) and points in the

@@ -91,9 +91,8 @@ void read_rows_into(const WindowReader& read, std::size_t from, std::size_t to,
 void read_as_it_lies(const std::string& path, GDALRasterBand& band, const DemOptions& options,
                      Dem& dem) {
   HeightGrid grid(dem.rows, dem.cols, kUnset);
-  const std::size_t half = dem.rows >= 512 && std::thread::hardware_concurrency() > 1
-                               ? dem.rows / 2
-                               : dem.rows;
+  const std::size_t half =
+      dem.rows >= 512 && std::thread::hardware_concurrency() > 1 ? dem.rows / 2 : dem.rows;
   std::atomic<bool> given_up{false};
   LowestHeight upper, lower;
   std::future<void> second;
@@ -102,9 +101,9 @@ void read_as_it_lies(const std::string& path, GDALRasterBand& band, const DemOpt
       try {
         GdalErrorCapture capture;
         auto dataset = open_raster(path);
-        read_rows_into(stopping(band_reader(*dataset->GetRasterBand(options.band), path),
-                                options.stop),
-                       half, dem.rows, given_up, grid, lower);
+        read_rows_into(
+            stopping(band_reader(*dataset->GetRasterBand(options.band), path), options.stop), half,
+            dem.rows, given_up, grid, lower);
       } catch (...) {
         given_up = true;
         throw;
@@ -112,8 +111,7 @@ void read_as_it_lies(const std::string& path, GDALRasterBand& band, const DemOpt
     });
   }
   try {
-    read_rows_into(stopping(band_reader(band, path), options.stop), 0, half, given_up, grid,
-                   upper);
+    read_rows_into(stopping(band_reader(band, path), options.stop), 0, half, given_up, grid, upper);
   } catch (...) {
     given_up = true;
     if (second.valid()) second.wait();
