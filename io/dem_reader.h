@@ -19,7 +19,8 @@ struct DemOptions {
   double azimuth_deg = 90.0;
   double cell_size = 0.0;  // > 0: use this cell size when the raster has no georeferencing
   // Called before every read of the DEM's cells (a few rows at a time); throws to stop a read
-  // in any phase (the command line's Ctrl-C and SIGTERM).
+  // in any phase (the command line's Ctrl-C and SIGTERM). A DEM read whole on its own grid is
+  // read on two threads, each calling it.
   std::function<void()> stop;
 };
 

@@ -3,6 +3,7 @@
 #include <gdal_priv.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <vector>
 
@@ -91,7 +92,7 @@ TEST_CASE("a stop asked for ends every read of a DEM, whole or window by window"
   // The command line's Ctrl-C and SIGTERM: the lowest-height pass of a plan-oblique run and the
   // whole-DEM reads used to run to their end before the first check.
   const std::string sample = TSK_SAMPLE_DEM;
-  int reads = 0, allowed = 0;
+  std::atomic<int> reads{0}, allowed{0};  // the halves of a whole DEM are read at once
   io::DemOptions options;
   options.stop = [&reads, &allowed] {
     if (++reads > allowed) throw Cancelled();
@@ -108,4 +109,47 @@ TEST_CASE("a stop asked for ends every read of a DEM, whole or window by window"
   const io::DemFile unstopped(sample, options);
   const DemSource whole = unstopped.source();
   CHECK(dem_lowest_height(whole.frame.dem_rows, whole.frame.dem_cols, whole.read) > 0);
+}
+
+TEST_CASE("a DEM on its own grid is read whole in two halves, as a turned one is", "[io]") {
+  ScratchDir dir("halves");
+  const std::string path = dir / "halves.tif";
+  constexpr int kRows = 1100, kCols = 300;
+  std::vector<float> values(static_cast<std::size_t>(kRows) * kCols);
+  for (int r = 0; r < kRows; ++r)
+    for (int c = 0; c < kCols; ++c)
+      values[static_cast<std::size_t>(r) * kCols + c] = 500.0f + r * 0.5f - c * 0.25f;
+  values[3 * kCols + 4] = -9999;      // nodata in the upper half
+  values[900 * kCols + 299] = -9999;  // and in the lower
+  values[1000 * kCols + 10] = 12.5f;  // the lowest height, in the lower half
+  {
+    GDALAllRegister();
+    GDALDataset* ds = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
+        path.c_str(), kCols, kRows, 1, GDT_Float32, nullptr);
+    REQUIRE(ds != nullptr);
+    const double gt[6] = {1000, 10, 0, 9000, 0, -10};
+    ds->SetGeoTransform(const_cast<double*>(gt));
+    ds->GetRasterBand(1)->SetNoDataValue(-9999);
+    REQUIRE(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, kCols, kRows, values.data(), kCols,
+                                           kRows, GDT_Float32, 0, 0) == CE_None);
+    GDALClose(ds);
+  }
+  io::DemOptions options;
+  options.azimuth_deg = 90.0;  // the DEM as it lies
+  const io::Dem as_it_lies = io::read_dem(path, options);
+  REQUIRE(as_it_lies.oriented.rows() == kRows);
+  REQUIRE(as_it_lies.oriented.cols() == kCols);
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const float z = as_it_lies.oriented.data()[k];
+    if (values[k] == -9999) {
+      REQUIRE(std::isnan(z));
+    } else {
+      REQUIRE(z == values[k]);
+    }
+  }
+  CHECK(as_it_lies.lowest_height == 12.5);
+  options.azimuth_deg = 270.0;  // turned: block by block through the builder
+  const io::Dem turned = io::read_dem(path, options);
+  CHECK(turned.lowest_height == 12.5);
+  CHECK(turned.oriented(kRows - 1 - 1000, kCols - 1 - 10) == 12.5f);
 }
