@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "errors.h"
 #include "profile_stages.h"
@@ -111,11 +112,15 @@ Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t r
   const double spacing = rays.ray_spacing_deg();
   const auto code_of = [&](double x, double y) -> std::uint8_t {
     const double dx = x - rays.observer_x, dy = y - rays.observer_y;
-    const double i = std::round(std::hypot(dx, dy) / rays.step);
+    // The nearest sample (rounded half up, without libm's calls: this runs for every cell).
+    const double i = static_cast<double>(
+        static_cast<std::int64_t>(std::sqrt(dx * dx + dy * dy) / rays.step + 0.5));
     if (i < 1.0) return visibility_code::visible;  // the cell under O
     if (i > static_cast<double>(rays.samples)) return visibility_code::out_of_range;
-    const double azimuth = std::atan2(dx, dy) * kDegPerRad;
-    const double offset = std::fmod(azimuth - rays.field.from_deg + 720.0, 360.0);
+    const double azimuth = std::atan2(dx, dy) * kDegPerRad;  // -180..180
+    double offset = azimuth - rays.field.from_deg;           // from_deg is in 0..360
+    while (offset < 0.0) offset += 360.0;
+    if (offset >= 360.0) offset -= 360.0;
     if (offset >= rays.field.width_deg) return visibility_code::out_of_range;
     const std::size_t r = std::min(rays.rays - 1, static_cast<std::size_t>(offset / spacing));
     const std::size_t k = static_cast<std::size_t>(i) - 1;
