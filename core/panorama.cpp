@@ -10,12 +10,10 @@
 namespace tsk {
 namespace {
 
-// Rays to a batch: about a million samples, at least 16 rays, whole groups of sharing rays.
+// Rays to a batch: about a million samples, at least 16 rays.
 std::size_t batch_rays(std::size_t samples) {
-  const std::size_t group = PanoramaRays::kSharingRays;
-  const std::size_t rays =
-      std::clamp<std::size_t>((std::size_t{1} << 20) / std::max<std::size_t>(1, samples), 16, 4096);
-  return (rays + group - 1) / group * group;
+  return std::clamp<std::size_t>((std::size_t{1} << 20) / std::max<std::size_t>(1, samples), 16,
+                                 4096);
 }
 
 void add_strokes(std::vector<PanoramaStroke>&& strokes, PanoramaResult& result, bool factual) {
@@ -54,15 +52,13 @@ PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotra
   const std::size_t size = batch_rays(rays.samples);
   const auto collect = [&](std::size_t first, Batch& batch) {
     batch.resize(std::min(size, rays.rays - first));
-    const std::size_t group = PanoramaRays::kSharingRays;
-    parallel_for(batch.size() / group, threads, [&](std::size_t lo, std::size_t hi) {
-      RayGroupScratch scratch;
-      for (std::size_t g = lo; g < hi; ++g) {
-        const std::size_t r = first + g * group;
-        std::uint8_t* records =
+    parallel_for(batch.size(), threads, [&](std::size_t lo, std::size_t hi) {
+      RayScratch scratch;
+      for (std::size_t k = lo; k < hi; ++k) {
+        const std::size_t r = first + k;
+        std::uint8_t* record =
             params.record_visibility ? result.samples.data() + r * result.row_bytes() : nullptr;
-        classify_ray_group(dem, rays, rules, r, scratch, batch.data() + g * group, records,
-                           result.row_bytes());
+        classify_ray(dem, rays, rules, r, scratch, batch[k], record);
       }
     });
   };

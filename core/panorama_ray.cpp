@@ -22,7 +22,8 @@ struct RayPlace {
   PixelPoint origin, along, across;
   PixelPoint direction;  // unit vector in map units (east, north)
 
-  RayPlace(const PanoramaRays& rays, PixelPoint unit) : origin(rays.observer), direction(unit) {
+  RayPlace(const PanoramaRays& rays, std::size_t r)
+      : origin(rays.observer), direction(rays.direction(r)) {
     along = {direction.col * rays.step * rays.col_per_x,
              direction.row * rays.step * rays.row_per_y};
     // The right of the ray, (north, -east), a step long.
@@ -50,37 +51,26 @@ std::size_t first_leaving(std::size_t from, std::size_t end, Leaves&& leaves) {
   return from;
 }
 
-// The first sample of a ray off the DEM (all four cells outside it): O lies on the DEM, so a
-// ray leaves it for good.
-std::size_t ray_end(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace& place) {
+// Heights along the ray, lowered by the curvature drop, the tangents of their elevation angles,
+// and SPEC 1.2 on them: hidden below the running maximum, occluding before a hidden one; with
+// each hidden zone's depth below the sight line grazing its occluder. Sets s.end: the samples
+// from there on lie off the DEM.
+void sample_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace& place,
+                RayScratch& s) {
+  const std::size_t n = rays.samples;
+  s.apparent.resize(n);
+  s.tangent.resize(n);
+  s.zone_depth.resize(n);
+  s.flags.assign(n, 0);
   const double cols = static_cast<double>(dem.cols()), rows = static_cast<double>(dem.rows());
-  return first_leaving(0, rays.samples, [&](std::size_t k) {
+  // Off the DEM, all four cells outside it: O lies on the DEM, so a ray leaves it for good.
+  const auto off_dem = [&](std::size_t k) {
     const PixelPoint p = place.at(k);
     return p.col < -0.5 || p.row < -0.5 || p.col >= cols + 0.5 || p.row >= rows + 0.5;
-  });
-}
-
-// SPEC 1.2 along a ray as it stands after the samples so far: carried from a shared segment into
-// each ray that goes on from it.
-struct SightState {
-  double running_max = -std::numeric_limits<double>::infinity();
-  std::size_t last_visible;  // the last visible sample, waiting for the next valid one (or none)
-  std::size_t occluder;      // the occluding sample of the hidden zone under way (or none)
-  double deepest = 0.0;      // that zone's depth so far
-  explicit SightState(std::size_t none) : last_visible(none), occluder(none) {}
-};
-
-// Samples [begin, stop) along `place`: heights lowered by the curvature drop, the tangents of
-// their elevation angles, and SPEC 1.2 on them, going on from `sight`: hidden below the running
-// maximum, occluding before a hidden one, each hidden zone's depth below the sight line grazing
-// its occluder.
-void sample_segment(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace& place,
-                    std::size_t begin, std::size_t stop, RayScratch& s, SightState& sight) {
-  if (begin >= stop) return;
-  const std::size_t none = rays.samples;
-  sample_line(dem, place.at(begin), place.along, stop - begin, s.apparent.data() + begin);
-  std::fill(s.flags.begin() + static_cast<std::ptrdiff_t>(begin),
-            s.flags.begin() + static_cast<std::ptrdiff_t>(stop), std::uint8_t{0});
+  };
+  s.end = first_leaving(0, n, off_dem);
+  std::fill(s.apparent.begin() + static_cast<std::ptrdiff_t>(s.end), s.apparent.end(), kNoData);
+  sample_line(dem, place.at(0), place.along, s.end, s.apparent.data());
   // The hot loop of a panorama: the arrays as plain pointers, which a flag's store cannot move.
   float* apparent = s.apparent.data();
   double* tangents = s.tangent.data();
@@ -88,40 +78,35 @@ void sample_segment(const HeightGrid& dem, const PanoramaRays& rays, const RayPl
   const double* drop = rays.drop.data();
   const double* inverse_distance = rays.inverse_distance.data();
   const double eye = rays.eye, step_m = rays.step_metres();
-  SightState v = sight;
-  for (std::size_t k = begin; k < stop; ++k) {
+  double running_max = -std::numeric_limits<double>::infinity();
+  std::size_t last_visible = n;  // the last visible sample, waiting for the next valid one
+  std::size_t occluder = n;      // the occluding sample of the hidden zone under way
+  double deepest = 0.0;          // its depth so far
+  for (std::size_t k = 0; k < s.end; ++k) {
     const double height = static_cast<double>(apparent[k]) - drop[k];
     const double tangent = (height - eye) * inverse_distance[k];
     apparent[k] = static_cast<float>(height);
     tangents[k] = tangent;
     if (!is_data(apparent[k])) continue;  // nodata: the maximum carries over it
-    const bool hidden = tangent < v.running_max;
+    const bool hidden = tangent < running_max;
     flags[k] = static_cast<std::uint8_t>(cell::valid | (hidden ? cell::hidden : 0));
     if (hidden) {
-      if (v.last_visible != none) {
-        flags[v.last_visible] |= cell::occluding;
-        v.occluder = v.last_visible;
-        v.deepest = 0.0;
+      if (last_visible != n) {
+        flags[last_visible] |= cell::occluding;
+        occluder = last_visible;
+        deepest = 0.0;
       }
       // The sight line grazing the occluder, whose tangent is the running maximum.
-      const double sight_line = eye + v.running_max * static_cast<double>(k + 1) * step_m;
-      v.deepest = std::max(v.deepest, sight_line - static_cast<double>(apparent[k]));
-    } else if (v.occluder != none) {
-      s.zone_depth[v.occluder] = v.deepest;
-      v.occluder = none;
+      const double sight = eye + running_max * static_cast<double>(k + 1) * step_m;
+      deepest = std::max(deepest, sight - static_cast<double>(apparent[k]));
+    } else if (occluder != n) {
+      s.zone_depth[occluder] = deepest;
+      occluder = n;
     }
-    v.running_max = hidden ? v.running_max : tangent;
-    v.last_visible = hidden ? none : k;
+    running_max = hidden ? running_max : tangent;
+    last_visible = hidden ? n : k;
   }
-  sight = v;
-}
-
-// Makes `s`'s first `count` samples those of `from`, which the rays of `s` share.
-void copy_shared(const RayScratch& from, std::size_t count, RayScratch& s) {
-  std::copy_n(from.apparent.begin(), count, s.apparent.begin());
-  std::copy_n(from.tangent.begin(), count, s.tangent.begin());
-  std::copy_n(from.flags.begin(), count, s.flags.begin());
-  std::copy_n(from.zone_depth.begin(), count, s.zone_depth.begin());
+  if (occluder != n) s.zone_depth[occluder] = deepest;
 }
 
 // The c-set (docs/PANORAMA.md 1.4): the slope along the ray falls away less steeply than the
@@ -204,105 +189,24 @@ void record_visibility(const RayScratch& s, std::uint8_t* out) {
   }
 }
 
-// The stages after SPEC 1.2 on ray r, whose samples `s` holds: SPEC 1.3-1.7 and the stroke cells.
-void classify_samples(const HeightGrid& dem, const PanoramaRays& rays, const RayRules& rules,
-                      std::size_t r, const RayPlace& place, RayScratch& s, RayChainCells& out,
-                      std::uint8_t* visibility) {
-  select_candidates(rays, rules.height_tolerance, s);
-  filter_samples(dem, rays, place, FilterRule(rules.filter), rules.local_scale, s);
-  const std::size_t n = s.end;  // the samples after it have no data
-  thin_profile(s.flags.data(), n, rules.placement);
-  out.counts = StageStats{};
-  count_profile(s.flags.data(), n, out.counts);
-  profile_candidates(s.flags.data(), n, true, out.factual);
-  profile_candidates(s.flags.data(), n, false, out.formulated);
-  collect_cells(dem, rays, place, r, s, true, out);
-  collect_cells(dem, rays, place, r, s, false, out);
-  if (visibility) record_visibility(s, visibility);
-}
-
-// One group of sharing rays, classified node by node: a node of m rays samples along its middle
-// direction from where its parent stopped, then each half goes on from there.
-class RayGroup {
- public:
-  RayGroup(const HeightGrid& dem, const PanoramaRays& rays, const RayRules& rules,
-           std::size_t first, RayGroupScratch& scratch, RayChainCells* out,
-           std::uint8_t* visibility, std::size_t record_bytes)
-      : dem_(dem),
-        rays_(rays),
-        rules_(rules),
-        first_(first),
-        scratch_(scratch),
-        out_(out),
-        visibility_(visibility),
-        record_bytes_(record_bytes) {
-    std::size_t levels = 0;
-    while ((std::size_t{1} << levels) < PanoramaRays::kSharingRays) ++levels;
-    scratch_.levels.resize(levels + 1);
-    for (RayScratch& s : scratch_.levels) {
-      s.apparent.resize(rays.samples);
-      s.tangent.resize(rays.samples);
-      s.flags.resize(rays.samples);
-      s.zone_depth.resize(rays.samples);
-    }
-    scratch_.ends.resize(PanoramaRays::kSharingRays);
-    for (std::size_t k = 0; k < scratch_.ends.size(); ++k)
-      scratch_.ends[k] = ray_end(dem, rays, RayPlace(rays, rays.direction(first + k)));
-  }
-
-  void classify() {
-    SightState sight(rays_.samples);
-    node(0, PanoramaRays::kSharingRays, scratch_.levels.size() - 1, 0, sight);
-  }
-
- private:
-  // Rays [a, a + m) of the group (m a power of two, aligned), their samples before `begin` in
-  // the scratch a level up, SPEC 1.2 standing at `sight` there.
-  void node(std::size_t a, std::size_t m, std::size_t level, std::size_t begin, SightState sight) {
-    RayScratch& s = scratch_.levels[level];
-    if (level + 1 < scratch_.levels.size()) copy_shared(scratch_.levels[level + 1], begin, s);
-    const std::size_t r = first_ + a;
-    if (m == 1) {
-      const RayPlace place(rays_, rays_.direction(r));
-      s.end = scratch_.ends[a];
-      sample_segment(dem_, rays_, place, begin, s.end, s, sight);
-      if (sight.occluder != rays_.samples) s.zone_depth[sight.occluder] = sight.deepest;
-      std::fill(s.apparent.begin() + static_cast<std::ptrdiff_t>(s.end), s.apparent.end(), kNoData);
-      std::fill(s.flags.begin() + static_cast<std::ptrdiff_t>(s.end), s.flags.end(),
-                std::uint8_t{0});
-      classify_samples(dem_, rays_, rules_, r, place, s, out_[a],
-                       visibility_ ? visibility_ + a * record_bytes_ : nullptr);
-      return;
-    }
-    // Shared while every ray of the node is still on the DEM.
-    const auto ends = scratch_.ends.begin() + static_cast<std::ptrdiff_t>(a);
-    const std::size_t stop =
-        std::max(begin, std::min(rays_.shared_samples(m),
-                                 *std::min_element(ends, ends + static_cast<std::ptrdiff_t>(m))));
-    sample_segment(dem_, rays_, RayPlace(rays_, rays_.middle_direction(r, m)), begin, stop, s,
-                   sight);
-    node(a, m / 2, level - 1, stop, sight);
-    node(a + m / 2, m / 2, level - 1, stop, sight);
-  }
-
-  const HeightGrid& dem_;
-  const PanoramaRays& rays_;
-  const RayRules& rules_;
-  std::size_t first_;
-  RayGroupScratch& scratch_;
-  RayChainCells* out_;
-  std::uint8_t* visibility_;
-  std::size_t record_bytes_;
-};
-
 }  // namespace
 
-void classify_ray_group(const HeightGrid& dem, const PanoramaRays& rays, const RayRules& rules,
-                        std::size_t first, RayGroupScratch& scratch, RayChainCells* out,
-                        std::uint8_t* visibility, std::size_t record_bytes) {
-  if (first % PanoramaRays::kSharingRays != 0 || first + PanoramaRays::kSharingRays > rays.rays)
-    throw Error("internal: a group of panorama rays must be whole and aligned");
-  RayGroup(dem, rays, rules, first, scratch, out, visibility, record_bytes).classify();
+void classify_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayRules& rules,
+                  std::size_t r, RayScratch& scratch, RayChainCells& out,
+                  std::uint8_t* visibility) {
+  const RayPlace place(rays, r);
+  sample_ray(dem, rays, place, scratch);
+  select_candidates(rays, rules.height_tolerance, scratch);
+  filter_samples(dem, rays, place, FilterRule(rules.filter), rules.local_scale, scratch);
+  const std::size_t n = scratch.end;  // the samples after it have no data
+  thin_profile(scratch.flags.data(), n, rules.placement);
+  out.counts = StageStats{};
+  count_profile(scratch.flags.data(), n, out.counts);
+  profile_candidates(scratch.flags.data(), n, true, out.factual);
+  profile_candidates(scratch.flags.data(), n, false, out.formulated);
+  collect_cells(dem, rays, place, r, scratch, true, out);
+  collect_cells(dem, rays, place, r, scratch, false, out);
+  if (visibility) record_visibility(scratch, visibility);
 }
 
 }  // namespace tsk

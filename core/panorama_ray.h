@@ -51,18 +51,9 @@ struct RayChainCells {
   StageStats counts;
 };
 
-// Per thread storage for groups of sharing rays, reused group after group: a scratch for each
-// size of node (the rays' own first), and where each ray of the group leaves the DEM.
-struct RayGroupScratch {
-  std::vector<RayScratch> levels;
-  std::vector<std::size_t> ends;
-};
-
-// Classifies the aligned group of PanoramaRays::kSharingRays rays from `first` into out[0..]:
-// near O they share samples (docs/PANORAMA.md 1.1). With `visibility`, writes ray k's samples'
-// classes at visibility + k * record_bytes (rays.samples two-bit codes).
-void classify_ray_group(const HeightGrid& dem, const PanoramaRays& rays, const RayRules& rules,
-                        std::size_t first, RayGroupScratch& scratch, RayChainCells* out,
-                        std::uint8_t* visibility, std::size_t record_bytes);
+// Classifies ray r of `rays` over `dem` into `out`. With `visibility`, writes its samples'
+// classes there (rays.samples two-bit codes).
+void classify_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayRules& rules,
+                  std::size_t r, RayScratch& scratch, RayChainCells& out, std::uint8_t* visibility);
 
 }  // namespace tsk

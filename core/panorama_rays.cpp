@@ -91,17 +91,12 @@ double PanoramaRays::azimuth_deg(std::size_t r) const {
 }
 
 PixelPoint PanoramaRays::direction(std::size_t r) const {
-  return middle_direction(r, 1);
-}
-
-PixelPoint PanoramaRays::middle_direction(std::size_t first, std::size_t count) const {
   // In a full circle the rays come in four quarters of equal count (plan_rays): a ray's vector is
-  // its first quarter's turned by whole quarter turns, which is exact. A group of sharing rays
-  // lies within one quarter.
+  // its first quarter's turned by whole quarter turns, which is exact.
   const std::size_t quarter = field.full_circle ? rays / 4 : rays;
-  const std::size_t turns = first / quarter;
-  const double middle = static_cast<double>(first % quarter) + 0.5 * static_cast<double>(count);
-  const double angle = (field.from_deg + middle * ray_spacing_deg()) * kRadPerDeg;
+  const std::size_t turns = r / quarter;
+  const double angle =
+      (field.from_deg + (static_cast<double>(r % quarter) + 0.5) * ray_spacing_deg()) * kRadPerDeg;
   double east = std::sin(angle), north = std::cos(angle);
   for (std::size_t t = 0; t < turns; ++t) {
     const double turned_east = north;  // a quarter turn clockwise: (e, n) -> (n, -e)
@@ -109,13 +104,6 @@ PixelPoint PanoramaRays::middle_direction(std::size_t first, std::size_t count) 
     east = turned_east;
   }
   return {east, north};
-}
-
-std::size_t PanoramaRays::shared_samples(std::size_t count) const {
-  // The outermost of `count` rays lies count / 2 spacings from their middle: half a step away at
-  // 1 / (count * spacing) steps from O.
-  const double steps = 1.0 / (static_cast<double>(count) * ray_spacing_deg() * kRadPerDeg);
-  return static_cast<std::size_t>(std::min(steps, static_cast<double>(samples)));
 }
 
 PanoramaRays plan_rays(const HeightGrid& dem, const GeoTransform& gt, const PanoramaView& view) {
@@ -148,11 +136,8 @@ PanoramaRays plan_rays(const HeightGrid& dem, const GeoTransform& gt, const Pano
   const double needed = std::ceil(rays.field.width_deg * kRadPerDeg * reach);
   require(needed < 1e9 && reach < 1e9, "the panorama would need " + number(needed) +
                                            " rays: the range is too long for the cell size");
-  // Whole groups of sharing rays; in a full circle, four quarters of whole groups.
-  const std::size_t whole =
-      rays.field.full_circle ? 4 * PanoramaRays::kSharingRays : PanoramaRays::kSharingRays;
-  rays.rays =
-      (std::max<std::size_t>(1, static_cast<std::size_t>(needed)) + whole - 1) / whole * whole;
+  rays.rays = std::max<std::size_t>(4, static_cast<std::size_t>(needed));
+  if (rays.field.full_circle) rays.rays = (rays.rays + 3) / 4 * 4;
   rays.samples = static_cast<std::size_t>(std::floor(reach));
   // About 2 pi (range / step)^2 samples, a few for each cell in range; far more only where the
   // cells are far from square or the DEM a thin strip. Refused before any work or allocation.

@@ -53,14 +53,6 @@ struct PanoramaRays {
   // The unit vector of ray r in map coordinates (east, north). In a full circle, rays a quarter
   // turn apart have exactly turned vectors, so a DEM turned about O meets the same samples.
   PixelPoint direction(std::size_t r) const;
-  // Near O, neighbouring rays lie far closer than a cell: aligned groups of 2, 4, ...
-  // kSharingRays rays share the samples of their middle direction out to where their outermost
-  // ray lies half a step from it (docs/PANORAMA.md 1.1). Rays come in whole groups.
-  static constexpr std::size_t kSharingRays = 16;
-  // The unit vector midway across rays [first, first + count), an aligned group of sharing rays.
-  PixelPoint middle_direction(std::size_t first, std::size_t count) const;
-  // How many samples a group of `count` sharing rays shares.
-  std::size_t shared_samples(std::size_t count) const;
   // Distance of sample i (1-based) from O, map units.
   double distance(std::size_t i) const { return static_cast<double>(i) * step; }
   double step_metres() const { return step * metres_per_unit; }
