@@ -78,8 +78,7 @@ void StrokeDrawer::add(Stroke&& chain) {
   pieces_.clear();
   split_at_leaps(std::move(chain), kLeapCells * setup_.cell, pieces_);
   for (Stroke& piece : pieces_) {
-    // A single cell has no direction to join by; alone, the generalisation drops it anyway.
-    if (piece.cells < 2) continue;
+    if (piece.cells < kLeastDrawnCells) continue;
     if (rule_.gap > 0.0) groups_.add(piece);
     pending_.push_back(std::move(piece));
     drawn_.push_back(false);

@@ -16,6 +16,10 @@
 
 namespace tsk {
 
+// The fewest cells a chain needs to be drawn: a single cell has no direction to join by, and
+// alone the generalisation drops it anyway.
+constexpr int kLeastDrawnCells = 2;
+
 // What drawing needs of a run: its parameters in map units.
 struct DrawingSetup {
   DrawnParams drawn;

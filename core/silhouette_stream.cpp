@@ -185,10 +185,10 @@ struct SilhouetteStream::State {
     for (; !drawings.empty(); drawings.pop_front()) drawings.front().get();
   }
 
-  // Keeps the strokes of closed chains long enough to draw (every one for drawn strokes, which are
-  // generalised after joining); their slots' storage is reused.
+  // Keeps the strokes of closed chains long enough to draw (every one the drawing can use for
+  // drawn strokes, which are generalised after joining); their slots' storage is reused.
   void close(Strokes& strokes, const std::vector<ChainRef>& chains) {
-    const int min_cells = params.strokes.drawn() ? 1 : params.chain.min_cells;
+    const int min_cells = params.strokes.drawn() ? kLeastDrawnCells : params.chain.min_cells;
     for (const ChainRef& chain : chains) {
       StrokeBuilder& builder = strokes.open[chain.slot];
       if (builder.cells() >= min_cells) {
