@@ -104,7 +104,6 @@ Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t r
   if (result.samples.size() != rays.rays * result.row_bytes())
     throw Error("the panorama did not record its samples' visibility");
   Grid<std::uint8_t> raster(rows, cols, kUnset);
-  constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
   const double spacing = rays.ray_spacing_deg();
   const auto code_of = [&](double x, double y) -> std::uint8_t {
     const double dx = x - rays.observer_x, dy = y - rays.observer_y;
@@ -113,10 +112,7 @@ Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t r
         static_cast<std::int64_t>(std::sqrt(dx * dx + dy * dy) / rays.step + 0.5));
     if (i < 1.0) return visibility_code::visible;  // the cell under O
     if (i > static_cast<double>(rays.samples)) return visibility_code::out_of_range;
-    const double azimuth = std::atan2(dx, dy) * kDegPerRad;  // -180..180
-    double offset = azimuth - rays.field.from_deg;           // from_deg is in 0..360
-    while (offset < 0.0) offset += 360.0;
-    if (offset >= 360.0) offset -= 360.0;
+    const double offset = rays.field.offset_deg(std::atan2(dx, dy) * kDegPerRad);
     if (offset >= rays.field.width_deg) return visibility_code::out_of_range;
     const std::size_t r = std::min(rays.rays - 1, static_cast<std::size_t>(offset / spacing));
     const std::size_t k = static_cast<std::size_t>(i) - 1;

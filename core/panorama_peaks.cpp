@@ -8,8 +8,6 @@
 namespace tsk {
 namespace {
 
-constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
-
 // The curvature drop at `d` map units, as the rays lower their samples.
 double drop_at(const PanoramaRays& rays, double d) {
   const double metres = d * rays.metres_per_unit;
@@ -25,12 +23,6 @@ double tangent_at(const HeightGrid& dem, const GeoTransform& gt, const PanoramaR
   return (z - drop_at(rays, d) - rays.eye) / (d * rays.metres_per_unit);
 }
 
-// Whether the azimuth lies in the field of view; its offset from the field's start in `offset`.
-bool in_field(const FieldOfView& field, double azimuth_deg, double& offset) {
-  offset = std::fmod(azimuth_deg - field.from_deg + 720.0, 360.0);
-  return offset < field.width_deg;
-}
-
 }  // namespace
 
 std::vector<SeenPeak> see_peaks(const HeightGrid& dem, const GeoTransform& gt,
@@ -39,9 +31,9 @@ std::vector<SeenPeak> see_peaks(const HeightGrid& dem, const GeoTransform& gt,
   for (const NamedPoint& peak : peaks) {
     const double dx = peak.x - rays.observer_x, dy = peak.y - rays.observer_y;
     const double d = std::hypot(dx, dy);
-    double offset = 0.0;
     if (!(d >= rays.step && d <= rays.max_distance)) continue;
-    if (!in_field(rays.field, std::atan2(dx, dy) * kDegPerRad, offset)) continue;
+    const double offset = rays.field.offset_deg(std::atan2(dx, dy) * kDegPerRad);
+    if (!(offset < rays.field.width_deg)) continue;
     const double top = tangent_at(dem, gt, rays, peak.x, peak.y, d);
     if (!std::isfinite(top)) continue;
     // Samples at the rays' step up to half a step before the peak, which must not hide it.

@@ -14,8 +14,6 @@
 namespace tsk {
 namespace {
 
-constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
-
 // Where ray r's samples lie on the DEM: sample i (1-based) at pixel origin + i * along, and the
 // points a step to either side of it at -/+ across.
 struct RayPlace {

@@ -21,10 +21,21 @@ struct PanoramaView {
   void validate() const;
 };
 
+// Degrees in a radian.
+inline constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
+
 // The field of view: from `from_deg`, `width_deg` clockwise; a full circle joins its ends.
 struct FieldOfView {
-  double from_deg = 0.0, width_deg = 360.0;
+  double from_deg = 0.0, width_deg = 360.0;  // from_deg in [0, 360)
   bool full_circle = true;
+  // How far clockwise `azimuth_deg` (-360..360, as atan2 gives it in degrees) lies from the
+  // field's start, in [0, 360); it is in the field when that is below width_deg.
+  double offset_deg(double azimuth_deg) const {
+    double offset = azimuth_deg - from_deg;  // without fmod: this runs for every cell
+    while (offset < 0.0) offset += 360.0;
+    while (offset >= 360.0) offset -= 360.0;
+    return offset;
+  }
 };
 
 // Throws Error when the azimuths are not finite or the field between them is empty (equal
