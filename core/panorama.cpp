@@ -104,7 +104,7 @@ Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t r
   if (result.samples.size() != rays.rays * result.row_bytes())
     throw Error("the panorama did not record its samples' visibility");
   Grid<std::uint8_t> raster(rows, cols, kUnset);
-  const double spacing = rays.ray_spacing_deg();
+  const RayLocator locator(rays);
   const auto code_of = [&](double x, double y) -> std::uint8_t {
     const double dx = x - rays.observer_x, dy = y - rays.observer_y;
     // The nearest sample (rounded half up, without libm's calls: this runs for every cell).
@@ -112,9 +112,8 @@ Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t r
         static_cast<std::int64_t>(std::sqrt(dx * dx + dy * dy) / rays.step + 0.5));
     if (i < 1.0) return visibility_code::visible;  // the cell under O
     if (i > static_cast<double>(rays.samples)) return visibility_code::out_of_range;
-    const double offset = rays.field.offset_deg(std::atan2(dx, dy) * kDegPerRad);
-    if (offset >= rays.field.width_deg) return visibility_code::out_of_range;
-    const std::size_t r = std::min(rays.rays - 1, static_cast<std::size_t>(offset / spacing));
+    const std::size_t r = locator.ray_of(dx, dy);
+    if (r == rays.rays) return visibility_code::out_of_range;
     const std::size_t k = static_cast<std::size_t>(i) - 1;
     const std::uint8_t bits =
         (result.samples[r * result.row_bytes() + k / 4] >> (2 * (k % 4))) & 3u;

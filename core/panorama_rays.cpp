@@ -106,6 +106,60 @@ PixelPoint PanoramaRays::direction(std::size_t r) const {
   return {east, north};
 }
 
+namespace {
+
+// The bearing of (east, north) in degrees, -180..180, within 1e-6 degrees: atan on [0, 1] by
+// Abramowitz and Stegun's polynomial 4.4.49 (error under 2e-8 radians).
+double close_bearing_deg(double east, double north) {
+  const double ax = std::fabs(east), ay = std::fabs(north);
+  const bool steep = ax <= ay;  // within 45 degrees of north or south
+  const double z = steep ? ax / ay : ay / ax;
+  const double z2 = z * z;
+  double p = 0.0028662257;
+  for (double c : {-0.0161657367, 0.0429096138, -0.0752896400, 0.1065626393, -0.1420889944,
+                   0.1999355085, -0.3333314528, 1.0})
+    p = p * z2 + c;
+  const double from_axis = z * p * kDegPerRad;
+  const double from_north = steep ? from_axis : 90.0 - from_axis;
+  const double unsigned_bearing = north >= 0.0 ? from_north : 180.0 - from_north;
+  return east >= 0.0 ? unsigned_bearing : -unsigned_bearing;
+}
+
+// Whether (east, north) lies clockwise of the unit vector `edge` (or on it), within half a turn.
+bool clockwise_of(PixelPoint edge, double east, double north) {
+  return east * edge.row - north * edge.col >= 0.0;
+}
+
+}  // namespace
+
+RayLocator::RayLocator(const PanoramaRays& rays) : rays_(rays), bounds_(rays.rays + 1) {
+  for (std::size_t j = 0; j <= rays.rays; ++j) {
+    const double azimuth =
+        (rays.field.from_deg + static_cast<double>(j) * rays.ray_spacing_deg()) * kRadPerDeg;
+    bounds_[j] = {std::sin(azimuth), std::cos(azimuth)};
+  }
+}
+
+std::size_t RayLocator::ray_of(double east, double north) const {
+  const FieldOfView& field = rays_.field;
+  const std::size_t n = rays_.rays;
+  const double spacing = rays_.ray_spacing_deg();
+  const auto band = [&](double offset) {
+    return offset < field.width_deg ? std::min(n - 1, static_cast<std::size_t>(offset / spacing))
+                                    : n;
+  };
+  const double close = field.offset_deg(close_bearing_deg(east, north));
+  // Near the field's ends, and the full circle's seam, the exact bearing decides.
+  constexpr double kMargin = 1e-3;  // degrees, far above the close bearing's error
+  if (close < kMargin || close > 360.0 - kMargin || std::fabs(close - field.width_deg) < kMargin)
+    return band(field.offset_deg(std::atan2(east, north) * kDegPerRad));
+  std::size_t r = band(close);
+  if (r == n) return n;
+  while (r > 0 && !clockwise_of(bounds_[r], east, north)) --r;
+  while (r + 1 < n && clockwise_of(bounds_[r + 1], east, north)) ++r;
+  return r;
+}
+
 PanoramaRays plan_rays(const HeightGrid& dem, const GeoTransform& gt, const PanoramaView& view) {
   view.validate();
   const auto& a = gt.a;

@@ -344,3 +344,46 @@ TEST_CASE("a panorama reports its progress and stops when told to", "[panorama]"
 }
 
 }  // namespace tsk
+
+namespace tsk {
+
+TEST_CASE("the ray locator finds the band that the exact bearing falls in", "[panorama]") {
+  // Brute force: libm's atan2, the band floor(offset / spacing), for directions all round O,
+  // near the bands' edges and the field's ends too.
+  const HeightGrid dem(200, 200, 100.0f);
+  GeoTransform gt;
+  gt.a = {0.0, 10.0, 0.0, 2000.0, 0.0, -10.0};
+  for (const auto& [from, to] : {std::pair{0.0, 360.0}, {300.0, 30.0}, {10.0, 200.0}}) {
+    CAPTURE(from, to);
+    PanoramaView view;
+    view.observer_x = 1000.0, view.observer_y = 1000.0;
+    view.azimuth_from = from, view.azimuth_to = to;
+    const PanoramaRays rays = plan_rays(dem, gt, view);
+    const RayLocator locator(rays);
+    const double spacing = rays.ray_spacing_deg();
+    std::size_t checked = 0, inside = 0;
+    for (int k = 0; k < 200000; ++k) {
+      // Bearings on a fine irregular spread, some 3e-8 degrees from a band edge (the close
+      // bearing alone would miss them).
+      double bearing = std::fmod(k * 0.0137 + (k % 7) * 1e-7, 360.0);
+      if (k % 5 == 0) bearing = std::fmod(from + (k % 997) * spacing + 3e-8 * (k % 3 - 1), 360.0);
+      const double radians = bearing * kPi / 180.0;
+      const double east = std::sin(radians) * (1 + k % 13),
+                   north = std::cos(radians) * (1 + k % 13);
+      const double offset = rays.field.offset_deg(std::atan2(east, north) * 180.0 / kPi);
+      const double in_band = offset / spacing;
+      // Directions within 1e-9 of a band's edge may go either way.
+      if (std::fabs(in_band - std::round(in_band)) * spacing < 1e-9) continue;
+      const std::size_t expected = offset < rays.field.width_deg
+                                       ? std::min(rays.rays - 1, static_cast<std::size_t>(in_band))
+                                       : rays.rays;
+      REQUIRE(locator.ray_of(east, north) == expected);
+      ++checked;
+      inside += expected < rays.rays;
+    }
+    CHECK(checked > 150000);
+    CHECK(inside > 0);
+  }
+}
+
+}  // namespace tsk
