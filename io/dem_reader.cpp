@@ -72,12 +72,11 @@ bool as_it_lies(const OrientedFrame& f) {
   return !f.resampled && f.row_per_p == 1 && f.col_per_i == 1 && f.row0 == 0 && f.col0 == 0;
 }
 
-// Reads rows [from, to) of the DEM through `read` straight into `grid`, a few MB at a time,
+// Reads rows [from, to) of the DEM through `read` straight into `grid`, `step` rows at a time,
 // noting their lowest height; gives up quietly once `given_up` is set (by the other half).
-void read_rows_into(const WindowReader& read, std::size_t from, std::size_t to,
+void read_rows_into(const WindowReader& read, std::size_t from, std::size_t to, std::size_t step,
                     const std::atomic<bool>& given_up, HeightGrid& grid, LowestHeight& lowest) {
   const std::size_t cols = grid.cols();
-  const std::size_t step = std::max<std::size_t>(1, (std::size_t{1} << 22) / cols);
   for (std::size_t top = from; top < to && !given_up; top += step) {
     const std::size_t count = std::min(step, to - top);
     read({top, 0, count, cols}, grid.row(top));
@@ -91,8 +90,17 @@ void read_rows_into(const WindowReader& read, std::size_t from, std::size_t to,
 void read_as_it_lies(const std::string& path, GDALRasterBand& band, const DemOptions& options,
                      Dem& dem) {
   HeightGrid grid(dem.rows, dem.cols, kUnset);
+  // Reads of whole block rows, a few MB each, and halves that share no block: each block is
+  // decoded once, whatever GDAL's cache holds.
+  int block_width = 0, block_height = 0;
+  band.GetBlockSize(&block_width, &block_height);
+  const std::size_t block_rows = static_cast<std::size_t>(std::max(1, block_height));
+  const std::size_t step =
+      std::max<std::size_t>(1, (std::size_t{1} << 22) / dem.cols / block_rows) * block_rows;
   const std::size_t half =
-      dem.rows >= 512 && std::thread::hardware_concurrency() > 1 ? dem.rows / 2 : dem.rows;
+      dem.rows >= 512 && std::thread::hardware_concurrency() > 1
+          ? std::min(dem.rows, (dem.rows / 2 + block_rows - 1) / block_rows * block_rows)
+          : dem.rows;
   std::atomic<bool> given_up{false};
   LowestHeight upper, lower;
   std::future<void> second;
@@ -103,7 +111,7 @@ void read_as_it_lies(const std::string& path, GDALRasterBand& band, const DemOpt
         auto dataset = open_raster(path);
         read_rows_into(
             stopping(band_reader(*dataset->GetRasterBand(options.band), path), options.stop), half,
-            dem.rows, given_up, grid, lower);
+            dem.rows, step, given_up, grid, lower);
       } catch (...) {
         given_up = true;
         throw;
@@ -111,7 +119,8 @@ void read_as_it_lies(const std::string& path, GDALRasterBand& band, const DemOpt
     });
   }
   try {
-    read_rows_into(stopping(band_reader(band, path), options.stop), 0, half, given_up, grid, upper);
+    read_rows_into(stopping(band_reader(band, path), options.stop), 0, half, step, given_up, grid,
+                   upper);
   } catch (...) {
     given_up = true;
     if (second.valid()) second.wait();
