@@ -50,9 +50,7 @@ io::Dem read_whole_dem(const Options& o, std::ostream& err) {
   io::refuse_too_large_to_turn(o.input, file.info());
   io::Dem dem = io::read_dem(o.input, options);
   print_notes(dem.notes, err);
-  const OrientedFrame& f = dem.frame;
-  if (f.resampled || f.row_per_p != 1 || f.col_per_i != 1 || f.row0 != 0 || f.col0 != 0)
-    throw Error("internal: the DEM was not read on its own grid");
+  if (!dem.frame.as_it_lies()) throw Error("internal: the DEM was not read on its own grid");
   return dem;
 }
 

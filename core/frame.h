@@ -35,6 +35,12 @@ struct OrientedFrame {
   double px_col0 = 0, px_col_per_p = 0, px_col_per_i = 0;
   double px_row0 = 0, px_row_per_p = 0, px_row_per_i = 0;
 
+  // True when the oriented grid is the DEM as it lies (the view from the west): profile p is DEM
+  // row p and cell i its column i, no turn, no flip.
+  bool as_it_lies() const {
+    return !resampled && row_per_p == 1 && col_per_i == 1 && row0 == 0 && col0 == 0;
+  }
+
   std::size_t dem_row(std::size_t p, std::size_t i) const {
     return static_cast<std::size_t>(row0 + row_per_p * static_cast<std::int64_t>(p) +
                                     row_per_i * static_cast<std::int64_t>(i));

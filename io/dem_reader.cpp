@@ -67,11 +67,6 @@ WindowReader stopping(WindowReader read, std::function<void()> stop) {
   };
 }
 
-// True when the oriented grid is the DEM as it lies (the view from the west): no turn, no flip.
-bool as_it_lies(const OrientedFrame& f) {
-  return !f.resampled && f.row_per_p == 1 && f.col_per_i == 1 && f.row0 == 0 && f.col0 == 0;
-}
-
 // Reads rows [from, to) of the DEM through `read` straight into `grid`, `step` rows at a time,
 // noting their lowest height; gives up quietly once `given_up` is set (by the other half).
 void read_rows_into(const WindowReader& read, std::size_t from, std::size_t to, std::size_t step,
@@ -134,7 +129,7 @@ void read_as_it_lies(const std::string& path, GDALRasterBand& band, const DemOpt
 
 // Reads the band in blocks of rows into dem.oriented.
 void read_band(const std::string& path, GDALRasterBand& band, const DemOptions& options, Dem& dem) {
-  if (as_it_lies(dem.frame)) return read_as_it_lies(path, band, options, dem);
+  if (dem.frame.as_it_lies()) return read_as_it_lies(path, band, options, dem);
   OrientedGridBuilder builder(dem.frame);
   read_row_blocks(dem.rows, dem.cols, stopping(band_reader(band, path), options.stop),
                   [&builder](std::size_t first_row, std::size_t count, const float* heights) {
