@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -99,6 +100,35 @@ void Worker::serve() {
       tasks_.pop_front();
     }
     task();  // what it throws goes to its future
+  }
+}
+
+TasksBehind::~TasksBehind() {
+  for (std::future<void>& task : unfinished_)
+    if (task.valid()) task.wait();
+}
+
+void TasksBehind::run(std::function<void()> task) {
+  std::future<void> done = worker_.run(std::move(task));
+  if (!done.valid() || done.wait_for(std::chrono::seconds(0)) == std::future_status::deferred) {
+    done.get();  // no thread of its own: the task runs here and now
+    return;
+  }
+  unfinished_.push_back(std::move(done));
+  while (!unfinished_.empty() &&
+         (unfinished_.size() > most_behind_ ||
+          unfinished_.front().wait_for(std::chrono::seconds(0)) == std::future_status::ready)) {
+    std::future<void> first = std::move(unfinished_.front());
+    unfinished_.pop_front();
+    first.get();
+  }
+}
+
+void TasksBehind::finish() {
+  while (!unfinished_.empty()) {
+    std::future<void> first = std::move(unfinished_.front());
+    unfinished_.pop_front();
+    first.get();
   }
 }
 

@@ -51,6 +51,27 @@ class Worker {
   std::thread thread_;  // not started without threads
 };
 
+// Tasks run in order on a Worker of their own (or, without one, at once on the caller's thread),
+// with at most `most_behind` of them unfinished: the caller waits when they fall further behind,
+// and what a task threw is rethrown to the caller as soon as it is seen. Used from one thread at a
+// time.
+class TasksBehind {
+ public:
+  TasksBehind(std::size_t most_behind, bool on_own_thread)
+      : most_behind_(most_behind), worker_(on_own_thread) {}
+  // Waits for the tasks given (their failures are dropped: the run is ending anyway).
+  ~TasksBehind();
+
+  void run(std::function<void()> task);
+  // Waits for every task given; rethrows the first failure.
+  void finish();
+
+ private:
+  std::size_t most_behind_;
+  std::deque<std::future<void>> unfinished_;
+  Worker worker_;  // declared last: stopped first, its tasks done
+};
+
 // Runs the batches [0, size), [size, 2 size), ... of `count` items through two steps in order:
 // collect(first, batch) fills a Batch (in parallel, as it likes), then link(batch) takes it, on a
 // thread of its own when `overlap`, while the next batch is collected; after(done) follows each

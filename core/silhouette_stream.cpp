@@ -2,9 +2,6 @@
 // cache, the chains linked in the order of the scan as the next profiles are classified.
 #include <algorithm>
 #include <atomic>
-#include <chrono>
-#include <deque>
-#include <future>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -27,12 +24,18 @@ std::size_t batch_profiles(std::size_t length) {
                                  16384);
 }
 
-// Batches the drawing thread may have still to draw before the linking waits for it.
-constexpr std::size_t kBatchesDrawnBehind = 2;
+// Batches each step of the drawing may have still to do before the step before it waits.
+constexpr std::size_t kBatchesBehind = 2;
+
+// Whether drawn strokes are drawn, and handed on, on threads of their own.
+bool draws_alongside(const SilhouetteParams& p) {
+  return p.strokes.drawn() && resolve_threads(p.threads) > 1;
+}
 
 }  // namespace
 
 struct SilhouetteStream::State {
+  using Groups = std::vector<std::vector<Stroke>>;
   // One class of strokes: its linker, the strokes of its open chains by slot, and its complete
   // strokes waiting until every chain started before theirs is complete too.
   struct Strokes {
@@ -58,8 +61,8 @@ struct SilhouetteStream::State {
   Strokes factual{true, 0}, formulated;
   CellFlags flags;  // the current strip's classification, its memory reused by the next strip
   SilhouetteResult result;
-  // Drawn strokes are grouped, joined, smoothed, weighed and handed on on a thread of their own,
-  // while the stages go on; declared last, it is stopped first. The linking gives it its steps
+  // Drawn strokes are drawn while the stages go on, in three steps on three threads: grouped,
+  // then joined, smoothed and weighed, then handed on. The linking gives the grouping its steps
   // in the order of the scan: a class's next piece, or where the chains still open begin (the
   // frontier) once a profile is linked.
   struct DrawingStep {
@@ -70,8 +73,10 @@ struct SilhouetteStream::State {
   };
   std::vector<DrawingStep> steps;  // not given to the drawing thread yet
   std::atomic<bool> abandoned{false};
-  std::deque<std::future<void>> drawings;
-  std::unique_ptr<Worker> drawing;
+  // Declared last, in reverse order: each is stopped before the one it gives its work to.
+  TasksBehind writing;
+  TasksBehind finishing;
+  TasksBehind grouping;
 
   State(const OrientedFrame& f, const GeoTransform& gt, const SilhouetteParams& p, double z,
         const ProgressFn& pr, StrokeSink sk)
@@ -81,12 +86,14 @@ struct SilhouetteStream::State {
         z_ref(z),
         progress(pr),
         sink(std::move(sk)),
-        formulated(false, p.chain.window) {
+        formulated(false, p.chain.window),
+        writing(kBatchesBehind, draws_alongside(p)),
+        finishing(kBatchesBehind, draws_alongside(p)),
+        grouping(kBatchesBehind, draws_alongside(p)) {
     if (p.strokes.drawn()) {
       const DrawingSetup setup = drawing_setup(f, gt, p, z);
       factual.drawer = std::make_unique<StrokeDrawer>(setup);
       formulated.drawer = std::make_unique<StrokeDrawer>(setup);
-      if (resolve_threads(p.threads) > 1) drawing = std::make_unique<Worker>();
     }
   }
   // A run that ends early (cancelled, failed) leaves what is still to draw undrawn.
@@ -149,40 +156,53 @@ struct SilhouetteStream::State {
     steps.push_back({&strokes, Stroke(), frontier, true});
   }
 
-  // Gives the drawing its steps so far: on the drawing thread if there is one, which alone
-  // touches the drawers; it hands the strokes drawn on.
+  // Gives the drawing its steps so far: the grouping alone touches the drawers' pieces and
+  // groups, the finishing draws the groups taken and the writing hands the strokes on, each on a
+  // thread of its own if there are threads. A failed step (a sink that could not write) ends the
+  // run as soon as it is seen; the linking waits when the drawing falls behind by more than a few
+  // batches, whose pieces it would otherwise hold.
   void draw_settled() {
     if (steps.empty()) return;
     auto taken = std::make_shared<std::vector<DrawingStep>>(std::move(steps));
     steps.clear();
-    auto draw = [this, taken] {
+    steps.reserve(taken->size());
+    grouping.run([this, taken] {
+      auto settled = std::make_shared<std::vector<std::pair<Strokes*, Groups>>>();
       for (DrawingStep& step : *taken) {
         if (abandoned) return;
         Strokes& strokes = *step.strokes;
-        if (!step.settle) {
+        if (step.settle) {
+          settled->emplace_back(&strokes, strokes.drawer->take_settled(step.frontier));
+        } else {
           strokes.drawer->add(std::move(step.piece));
-          continue;
         }
-        std::vector<std::vector<Stroke>> groups = strokes.drawer->take_settled(step.frontier);
-        strokes.drawer->draw(groups, [&](Stroke&& stroke) { deliver(strokes, std::move(stroke)); });
       }
-    };
-    if (!drawing) return draw();
-    drawings.push_back(drawing->run(draw));
-    // A failed drawing (a sink that could not write) ends the run as soon as it is seen. The
-    // linking waits when the drawing falls behind by more than a few batches, whose pieces it
-    // would otherwise hold.
-    while (!drawings.empty() &&
-           (drawings.size() > kBatchesDrawnBehind ||
-            drawings.front().wait_for(std::chrono::seconds(0)) == std::future_status::ready)) {
-      drawings.front().get();
-      drawings.pop_front();
-    }
+      finishing.run([this, settled] { finish_groups(*settled); });
+    });
   }
 
-  // Waits for every drawing given to the drawing thread.
+  // Draws groups taken, in order, and gives the strokes to the writing.
+  void finish_groups(std::vector<std::pair<Strokes*, Groups>>& settled) {
+    auto drawn = std::make_shared<std::vector<std::pair<Strokes*, Stroke>>>();
+    for (auto& [strokes, groups] : settled) {
+      if (abandoned) return;
+      Strokes* of = strokes;
+      of->drawer->draw(groups,
+                       [&](Stroke&& stroke) { drawn->emplace_back(of, std::move(stroke)); });
+    }
+    writing.run([this, drawn] {
+      for (auto& [strokes, stroke] : *drawn) {
+        if (abandoned) return;
+        deliver(*strokes, std::move(stroke));
+      }
+    });
+  }
+
+  // Waits for every step of the drawing given, in order.
   void finish_drawing() {
-    for (; !drawings.empty(); drawings.pop_front()) drawings.front().get();
+    grouping.finish();
+    finishing.finish();
+    writing.finish();
   }
 
   // Keeps the strokes of closed chains long enough to draw (every one the drawing can use for

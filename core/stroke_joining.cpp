@@ -97,6 +97,23 @@ class BucketHeads {
     const Slot& slot = slots_[find_slot(key)];
     return slot.key == kEmpty ? kNone : slot.head;
   }
+  // Forgets bucket `key` (emptied), so that the table holds only the buckets in use: a stream
+  // of strokes passes over ever new buckets.
+  void erase(std::uint64_t key) {
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t hole = find_slot(key);
+    if (slots_[hole].key == kEmpty) return;
+    --used_;
+    // Backward shift: each key after the hole that may sit there (its home slot does not lie
+    // between the hole and where it sits) moves into it, and leaves the next hole.
+    for (std::size_t k = (hole + 1) & mask; slots_[k].key != kEmpty; k = (k + 1) & mask) {
+      if (((k - home(slots_[k].key)) & mask) >= ((k - hole) & mask)) {
+        slots_[hole] = slots_[k];
+        hole = k;
+      }
+    }
+    slots_[hole] = {kEmpty, kNone};
+  }
 
  private:
   static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
@@ -104,9 +121,14 @@ class BucketHeads {
     std::uint64_t key;
     std::uint32_t head;
   };
+  // The slot a key is looked for from: the product's high half, which every bit of the key
+  // moves (its low bits left out the bucket's column, and a row of buckets probed as one run).
+  std::size_t home(std::uint64_t key) const {
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & (slots_.size() - 1);
+  }
   std::size_t find_slot(std::uint64_t key) const {
     const std::size_t mask = slots_.size() - 1;
-    std::size_t k = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+    std::size_t k = home(key);
     while (slots_[k].key != key && slots_[k].key != kEmpty) k = (k + 1) & mask;
     return k;
   }
@@ -134,9 +156,12 @@ class EndIndex {
     head = end;
   }
   void remove(std::uint32_t end, StrokePoint at) {
-    for (std::uint32_t* link = &heads_[key(at)]; *link != kNone; link = &next_[*link]) {
+    const std::uint64_t k = key(at);
+    std::uint32_t& head = heads_[k];
+    for (std::uint32_t* link = &head; *link != kNone; link = &next_[*link]) {
       if (*link == end) {
         *link = next_[end];
+        if (head == kNone) heads_.erase(k);
         return;
       }
     }
@@ -311,7 +336,7 @@ struct StrokeGrouper::Index : EndIndex {
 };
 
 StrokeGrouper::StrokeGrouper(const JoinRule& rule)
-    : rule_(rule), index_(std::make_unique<Index>(rule.gap, std::size_t{1} << 16)) {}
+    : rule_(rule), index_(std::make_unique<Index>(rule.gap, std::size_t{1} << 12)) {}
 
 StrokeGrouper::~StrokeGrouper() = default;
 

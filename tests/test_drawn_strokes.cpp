@@ -106,6 +106,70 @@ TEST_CASE("an end joins at most one other end and no loop closes", "[drawn][join
   CHECK(ring[0].points.size() == 84);
 }
 
+// A stroke's points as a comparable list, read from its lesser end.
+std::vector<std::pair<double, double>> canonical(const Stroke& s) {
+  std::vector<std::pair<double, double>> pts;
+  for (const StrokePoint& p : s.points) pts.emplace_back(p.x, p.y);
+  if (pts.back() < pts.front()) std::reverse(pts.begin(), pts.end());
+  return pts;
+}
+
+TEST_CASE("strokes grouped as they stream join as they do all together", "[drawn][joining]") {
+  // Thousands of short wandering strokes, in the order of their first profile (x), many within
+  // the gap of others: groups are taken as soon as no stroke to come can reach them, so that the
+  // grouper's index loses ends all along while it gains new ones.
+  std::uint32_t seed = 12345;
+  const auto random = [&seed] {  // in [0, 1)
+    seed = seed * 1664525u + 1013904223u;
+    return static_cast<double>(seed >> 8) / 16777216.0;
+  };
+  std::vector<Stroke> strokes;
+  for (int first = 0; first < 3000; ++first) {
+    for (int k = 0; k < 3; ++k) {
+      Stroke s;
+      double y = std::floor(random() * 20.0);
+      const int cells = 2 + static_cast<int>(random() * 5.0);
+      for (int p = first; p < first + cells; ++p) {
+        s.points.push_back({static_cast<double>(p), y});
+        s.chain.push_back({p, static_cast<std::int32_t>(y)});
+        const double turn = random();
+        y += turn < 0.1 ? -1.0 : turn > 0.9 ? 1.0 : 0.0;
+      }
+      s.cells = cells;
+      s.length = polyline_length(s.points);
+      strokes.push_back(std::move(s));
+    }
+  }
+  StrokeGrouper grouper(kRule);
+  std::vector<std::vector<std::pair<double, double>>> streamed;
+  std::vector<std::size_t> roots;  // of groups not taken yet
+  const auto take_settled = [&](double frontier) {
+    std::vector<std::size_t> open;
+    for (std::size_t root : roots) {
+      if (grouper.group_of(root) != root) continue;  // united into another since
+      if (!(grouper.reach(root) < frontier - kRule.gap - 1.0)) {
+        open.push_back(root);
+        continue;
+      }
+      std::vector<Stroke> members;
+      for (std::size_t id : grouper.take_group(root)) members.push_back(strokes[id]);
+      for (const Stroke& j : join_strokes(members, kRule)) streamed.push_back(canonical(j));
+    }
+    roots = open;
+  };
+  for (const Stroke& s : strokes) {
+    take_settled(s.points.front().x);
+    roots.push_back(grouper.add(s));
+  }
+  take_settled(1e9);
+  std::vector<std::vector<std::pair<double, double>>> together;
+  for (const Stroke& j : join_strokes(strokes, kRule)) together.push_back(canonical(j));
+  REQUIRE(together.size() < strokes.size() * 3 / 4);  // many joins
+  std::sort(streamed.begin(), streamed.end());
+  std::sort(together.begin(), together.end());
+  CHECK(streamed == together);
+}
+
 TEST_CASE("drawn strokes never join across classes and are generalised after joining",
           "[drawn][joining]") {
   const HeightGrid dem = test::random_terrain(90, 110, 7);
