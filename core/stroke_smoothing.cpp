@@ -27,6 +27,29 @@ void kernel(double sigma_points, std::size_t n, std::vector<double>& w) {
     w[j] = std::exp(-0.5 * static_cast<double>(j * j) / (sigma_points * sigma_points));
 }
 
+// The Gaussian mean about point k where the kernel runs past an end of the stroke: the weights
+// of the points it covers, renormalised; of heights too if `z` is given. (Summed in order from the
+// first point covered, the left side's weights read backwards: no branch per point.)
+template <bool kHeights>
+StrokePoint truncated_mean(const std::vector<StrokePoint>& points, const std::vector<double>& w,
+                           std::ptrdiff_t k, std::ptrdiff_t last,
+                           const std::vector<StrokeVertex>* vertices, double* z) {
+  const auto reach = static_cast<std::ptrdiff_t>(w.size() - 1);
+  const std::ptrdiff_t lo = std::max<std::ptrdiff_t>(0, k - reach), hi = std::min(last, k + reach);
+  double sw = 0.0, sx = 0.0, sy = 0.0, sz = 0.0;
+  const auto add = [&](std::ptrdiff_t j, double wj) {
+    const auto v = static_cast<std::size_t>(j);
+    sw += wj;
+    sx += wj * points[v].x;
+    sy += wj * points[v].y;
+    if constexpr (kHeights) sz += wj * (*vertices)[v].z;
+  };
+  for (std::ptrdiff_t j = lo; j < k; ++j) add(j, w[static_cast<std::size_t>(k - j)]);
+  for (std::ptrdiff_t j = k; j <= hi; ++j) add(j, w[static_cast<std::size_t>(j - k)]);
+  if constexpr (kHeights) *z = sz / sw;
+  return {sx / sw, sy / sw};
+}
+
 // One pass: the Gaussian mean about each inner point (of heights too, if `vertices` are given),
 // then each point held within `tolerance` of its anchor.
 void smoothing_pass(std::vector<StrokePoint>& points, const std::vector<double>& w,
@@ -35,13 +58,17 @@ void smoothing_pass(std::vector<StrokePoint>& points, const std::vector<double>&
                     std::vector<StrokeVertex>* vertices) {
   const auto last = static_cast<std::ptrdiff_t>(points.size() - 1);
   const auto reach = static_cast<std::ptrdiff_t>(w.size() - 1);
-  scratch = points;
+  scratch.resize(points.size());  // every inner point is written; the ends stay
+  scratch.front() = points.front();
+  scratch.back() = points.back();
   z.resize(vertices ? points.size() : 0);
   double total = w[0];
   for (std::size_t j = 1; j < w.size(); ++j) total += 2.0 * w[j];
   for (std::ptrdiff_t k = 1; k < last; ++k) {
     const auto u = static_cast<std::size_t>(k);
-    if (k >= reach && k + reach <= last && !vertices) {
+    if (vertices) {
+      scratch[u] = truncated_mean<true>(points, w, k, last, vertices, &z[u]);
+    } else if (k >= reach && k + reach <= last) {
       // Inside the stroke the kernel is whole: pairs of points either side, one normaliser.
       double sx = w[0] * points[u].x, sy = w[0] * points[u].y;
       for (std::size_t j = 1; j < w.size(); ++j) {
@@ -49,20 +76,9 @@ void smoothing_pass(std::vector<StrokePoint>& points, const std::vector<double>&
         sy += w[j] * (points[u - j].y + points[u + j].y);
       }
       scratch[u] = {sx / total, sy / total};
-      continue;
+    } else {
+      scratch[u] = truncated_mean<false>(points, w, k, last, nullptr, nullptr);
     }
-    double sw = 0.0, sx = 0.0, sy = 0.0, sz = 0.0;
-    for (std::ptrdiff_t j = std::max<std::ptrdiff_t>(0, k - reach); j <= std::min(last, k + reach);
-         ++j) {
-      const double wj = w[static_cast<std::size_t>(std::abs(j - k))];
-      const auto v = static_cast<std::size_t>(j);
-      sw += wj;
-      sx += wj * points[v].x;
-      sy += wj * points[v].y;
-      if (vertices) sz += wj * (*vertices)[v].z;
-    }
-    scratch[u] = {sx / sw, sy / sw};
-    if (vertices) z[u] = sz / sw;
   }
   for (std::size_t k = 0; k < points.size(); ++k) {
     const StrokePoint anchor = anchors[k];
