@@ -1,5 +1,8 @@
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <set>
+#include <thread>
 
 #include "catch_compat.h"
 #include "spec_oracle.h"
@@ -367,14 +370,59 @@ TEST_CASE("what a stroke sink throws ends the run", "[pipeline][strips]") {
   const HeightGrid dem = test::random_terrain(60, 60, 4);
   const OrientedFrame frame = make_frame(60, 60, 10, 10, 90);
   const HeightGrid z = orient(dem, frame);
-  SilhouetteStream stream(frame, GeoTransform{}, {}, 0.0, {},
-                          [](Stroke&&) { throw Error("disk full"); });
+  // Drawn strokes are handed on from a thread of their own when there are threads.
+  for (const StrokeMode mode : {StrokeMode::exact, StrokeMode::drawn}) {
+    for (const unsigned threads : {1u, 2u}) {
+      CAPTURE(mode == StrokeMode::drawn, threads);
+      SilhouetteParams params;
+      params.strokes.mode = mode;
+      params.threads = threads;
+      SilhouetteStream stream(frame, GeoTransform{}, params, 0.0, {},
+                              [](Stroke&&) { throw Error("disk full"); });
+      CHECK_THROWS_WITH(
+          [&] {
+            stream.add_strip(z, 0, frame.profiles);
+            stream.finish();
+          }(),
+          "disk full");
+    }
+  }
+}
+
+TEST_CASE("tasks behind run in turn, fall at most so far behind, and pass on a failure",
+          "[pipeline]") {
+  std::atomic<int> done{0};
+  std::vector<int> order;
+  {
+    TasksBehind tasks(2, true);
+    for (int k = 0; k < 20; ++k) {
+      tasks.run([&, k] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        order.push_back(k);
+        ++done;
+      });
+      // The task just given and at most two before it may be unfinished.
+      CHECK(done.load() >= k - 2);
+    }
+    tasks.finish();
+  }
+  REQUIRE(order.size() == 20);
+  for (int k = 0; k < 20; ++k) CHECK(order[static_cast<std::size_t>(k)] == k);
+  // A failure comes out of a later run() or of finish().
+  TasksBehind failing(1, true);
   CHECK_THROWS_WITH(
       [&] {
-        stream.add_strip(z, 0, frame.profiles);
-        stream.finish();
+        failing.run([] { throw Error("write failed"); });
+        for (int k = 0; k < 3; ++k) failing.run([] {});
+        failing.finish();
       }(),
-      "disk full");
+      "write failed");
+  // Without a thread of its own, a task runs at once and throws there.
+  TasksBehind in_turn(2, false);
+  bool ran = false;
+  in_turn.run([&ran] { ran = true; });
+  CHECK(ran);
+  CHECK_THROWS_WITH(in_turn.run([] { throw Error("at once"); }), "at once");
 }
 
 TEST_CASE("strips too wide for the machine's memory are refused before any read",
