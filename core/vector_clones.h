@@ -5,7 +5,9 @@
 // same IEEE operations, and neither clone may fuse multiplies and adds (AVX2 alone brings no FMA).
 #pragma once
 
-#if defined(__x86_64__) && defined(__ELF__) && \
+// Not under ThreadSanitizer, whose instrumented ifunc resolvers run before it is set up and crash
+// the program as it loads.
+#if defined(__x86_64__) && defined(__ELF__) && !defined(__SANITIZE_THREAD__) && \
     (defined(__clang__) ? __clang_major__ >= 14 : defined(__GNUC__))
 #define TSK_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
 // Code written for AVX2 by hand may be built (with TSK_AVX2 on its functions) and run where
