@@ -6,7 +6,6 @@
 
 #include "plan_oblique.h"
 #include "stroke_smoothing.h"
-#include "stroke_splitting.h"
 #include "stroke_weights.h"
 
 namespace tsk {
@@ -32,10 +31,6 @@ DrawingSetup drawing_setup(const OrientedFrame& frame, const GeoTransform& geotr
 }
 
 namespace {
-
-// A step between neighbouring profiles longer than this many cells is a leap along the line of
-// sight (formulated chaining looks at most 3 cells along; factual chaining follows hidden zones).
-constexpr double kLeapCells = 4.0;
 
 // Moves each point of a stroke in map geometry to where plan-oblique geometry draws it.
 void shift_plan_oblique(Stroke& stroke, const DrawingSetup& setup) {
@@ -74,15 +69,15 @@ StrokeDrawer::StrokeDrawer(const DrawingSetup& setup)
       rule_{setup.drawn.join_gap_cells * setup.cell, setup.drawn.join_angle_deg},
       groups_(rule_) {}
 
-void StrokeDrawer::add(Stroke&& chain) {
-  pieces_.clear();
-  split_at_leaps(std::move(chain), kLeapCells * setup_.cell, pieces_);
-  for (Stroke& piece : pieces_) {
-    if (piece.cells < kLeastDrawnCells) continue;
-    if (rule_.gap > 0.0) groups_.add(piece);
-    pending_.push_back(std::move(piece));
-    drawn_.push_back(false);
-  }
+double StrokeDrawer::longest_step() const {
+  return kLeapCells * setup_.cell;
+}
+
+void StrokeDrawer::add(Stroke&& piece) {
+  if (piece.cells < kLeastDrawnCells) return;
+  if (rule_.gap > 0.0) groups_.add(piece);
+  pending_.push_back(std::move(piece));
+  drawn_.push_back(false);
 }
 
 std::vector<std::vector<Stroke>> StrokeDrawer::take_settled(double frontier) {

@@ -20,6 +20,13 @@ namespace tsk {
 // alone the generalisation drops it anyway.
 constexpr int kLeastDrawnCells = 2;
 
+// A step between neighbouring profiles longer than this many cells is a leap along the line of
+// sight (formulated chaining looks at most 3 cells along; factual chaining follows hidden zones).
+// Factual chaining links occluding cells whose hidden zones overlap, so a chain may step from one
+// ridge to another far behind it: the exact stroke draws that step as a long straight line, which
+// no cartographer would draw. Drawn strokes are cut there (StrokeBuilder::drawn_pieces).
+constexpr double kLeapCells = 4.0;
+
 // What drawing needs of a run: its parameters in map units.
 struct DrawingSetup {
   DrawnParams drawn;
@@ -39,18 +46,20 @@ DrawingSetup drawing_setup(const OrientedFrame& frame, const GeoTransform& geotr
                            const SilhouetteParams& params, double z_ref);
 
 // Draws the strokes of one class as their chains complete, so that drawing and writing go on
-// alongside the stages. Pieces (the strokes of complete chains, every one, with their points in
-// map geometry at sub-cell places and their vertices kept) come in the order of SPEC 1.7's scan;
-// a group of pieces that may join is drawn once no piece still to come can join it. Drawn strokes
-// come out in the order of their first pieces, each with its weights and without its vertices,
-// whatever the moments draw_settled is called at.
+// alongside the stages. Pieces (the strokes of complete chains, every one, cut where they leap,
+// with their points in map geometry at sub-cell places and their vertices) come in the order of
+// SPEC 1.7's scan; a group of pieces that may join is drawn once no piece still to come can join
+// it. Drawn strokes come out in the order of their first pieces, each with its weights and without
+// its vertices, whatever the moments draw_settled is called at.
 class StrokeDrawer {
  public:
   using Out = std::function<void(Stroke&& stroke)>;
   explicit StrokeDrawer(const DrawingSetup& setup);
 
-  // A complete chain's stroke, cut into pieces where it leaps (split_at_leaps).
-  void add(Stroke&& chain);
+  // The longest step between neighbouring points of a piece, map units.
+  double longest_step() const;
+  // A piece of a complete chain's stroke (StrokeBuilder::drawn_pieces with longest_step()).
+  void add(Stroke&& piece);
   // Takes the groups whose every end lies more than the join gap before profile `frontier`, the
   // first profile a piece still to come may reach, up to the first group that does not; after the
   // last profile, with an infinite frontier, every group left.
@@ -65,7 +74,6 @@ class StrokeDrawer {
   StrokeGrouper groups_;
   std::deque<Stroke> pending_;  // pieces from id first_pending_ on; those drawn left empty
   std::deque<bool> drawn_;
-  std::vector<Stroke> pieces_;  // of the chain being added, its storage reused
   std::size_t first_pending_ = 0;
 };
 

@@ -36,6 +36,12 @@ bool draws_alongside(const SilhouetteParams& p) {
 
 struct SilhouetteStream::State {
   using Groups = std::vector<std::vector<Stroke>>;
+  // A complete stroke, or a piece of one (drawn strokes), and its chain's place in the scan.
+  struct Waiting {
+    std::size_t chain;
+    std::size_t piece;
+    Stroke stroke;
+  };
   // One class of strokes: its linker, the strokes of its open chains by slot, and its complete
   // strokes waiting until every chain started before theirs is complete too.
   struct Strokes {
@@ -44,10 +50,11 @@ struct SilhouetteStream::State {
     ChainLinker linker;
     StrokeClass cls;
     std::vector<StrokeBuilder> open;
-    std::vector<std::pair<std::size_t, Stroke>> waiting;  // a heap, the oldest chain on top
-    std::vector<Stroke> handed_on;                        // without a sink
-    std::unique_ptr<StrokeDrawer> drawer;                 // drawn strokes
-    std::size_t count = 0, cells = 0;                     // of the strokes handed on
+    std::vector<Waiting> waiting;          // a heap, the oldest chain on top
+    std::vector<Stroke> pieces;            // of the drawn chain closing, its storage reused
+    std::vector<Stroke> handed_on;         // without a sink
+    std::unique_ptr<StrokeDrawer> drawer;  // drawn strokes
+    std::size_t count = 0, cells = 0;      // of the strokes handed on
   };
 
   OrientedFrame frame;
@@ -212,22 +219,33 @@ struct SilhouetteStream::State {
     for (const ChainRef& chain : chains) {
       StrokeBuilder& builder = strokes.open[chain.slot];
       if (builder.cells() >= min_cells) {
-        // A copy sized to fit: the builder keeps its storage for the slot's next chain (taking
+        // Copies sized to fit: the builder keeps its storage for the slot's next chain (taking
         // its vectors left them to grow anew, allocation after allocation).
-        strokes.waiting.emplace_back(chain.id, builder.stroke(strokes.cls));
-        std::push_heap(strokes.waiting.begin(), strokes.waiting.end(), later_chain);
+        if (strokes.drawer) {
+          strokes.pieces.clear();
+          builder.drawn_pieces(strokes.cls, strokes.drawer->longest_step(), strokes.pieces);
+          for (std::size_t k = 0; k < strokes.pieces.size(); ++k)
+            wait(strokes, {chain.id, k, std::move(strokes.pieces[k])});
+        } else {
+          wait(strokes, {chain.id, 0, builder.stroke(strokes.cls)});
+        }
       }
       builder.clear();
     }
+  }
+
+  void wait(Strokes& strokes, Waiting&& stroke) {
+    strokes.waiting.push_back(std::move(stroke));
+    std::push_heap(strokes.waiting.begin(), strokes.waiting.end(), later_chain);
   }
 
   // Hands on the waiting strokes of chains started before chain `id`, oldest first: to the
   // drawer for drawn strokes.
   void hand_on(Strokes& strokes, std::size_t id) {
     auto& waiting = strokes.waiting;
-    while (!waiting.empty() && waiting.front().first < id) {
+    while (!waiting.empty() && waiting.front().chain < id) {
       std::pop_heap(waiting.begin(), waiting.end(), later_chain);
-      Stroke stroke = std::move(waiting.back().second);
+      Stroke stroke = std::move(waiting.back().stroke);
       waiting.pop_back();
       if (strokes.drawer) {
         steps.push_back({&strokes, std::move(stroke), 0.0, false});
@@ -247,9 +265,8 @@ struct SilhouetteStream::State {
     }
   }
 
-  static bool later_chain(const std::pair<std::size_t, Stroke>& a,
-                          const std::pair<std::size_t, Stroke>& b) {
-    return a.first > b.first;
+  static bool later_chain(const Waiting& a, const Waiting& b) {
+    return a.chain != b.chain ? a.chain > b.chain : a.piece > b.piece;
   }
 };
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vector_clones.h"
+
 namespace tsk {
 
 constexpr int kSmoothingPasses = 3;
@@ -50,6 +52,23 @@ StrokePoint truncated_mean(const std::vector<StrokePoint>& points, const std::ve
   return {sx / sw, sy / sw};
 }
 
+// The Gaussian means about points [from, to), where the kernel lies whole inside the stroke:
+// pairs of points either side, one normaliser. Taps outermost, so that the loops run along the
+// points and vectorise; each point's sum still adds its pairs in order from the nearest.
+TSK_VECTOR_CLONES
+void whole_kernel_means(const StrokePoint* points, const double* w, std::size_t taps, double total,
+                        std::size_t from, std::size_t to, StrokePoint* out) {
+  for (std::size_t k = from; k < to; ++k) out[k] = {w[0] * points[k].x, w[0] * points[k].y};
+  for (std::size_t j = 1; j < taps; ++j) {
+    const double wj = w[j];
+    for (std::size_t k = from; k < to; ++k) {
+      out[k].x += wj * (points[k - j].x + points[k + j].x);
+      out[k].y += wj * (points[k - j].y + points[k + j].y);
+    }
+  }
+  for (std::size_t k = from; k < to; ++k) out[k] = {out[k].x / total, out[k].y / total};
+}
+
 // One pass: the Gaussian mean about each inner point (of heights too, if `vertices` are given),
 // then each point held within `tolerance` of its anchor.
 void smoothing_pass(std::vector<StrokePoint>& points, const std::vector<double>& w,
@@ -62,24 +81,24 @@ void smoothing_pass(std::vector<StrokePoint>& points, const std::vector<double>&
   scratch.front() = points.front();
   scratch.back() = points.back();
   z.resize(vertices ? points.size() : 0);
-  double total = w[0];
-  for (std::size_t j = 1; j < w.size(); ++j) total += 2.0 * w[j];
-  for (std::ptrdiff_t k = 1; k < last; ++k) {
+  const auto near_an_end = [&](std::ptrdiff_t k) {
     const auto u = static_cast<std::size_t>(k);
-    if (vertices) {
-      scratch[u] = truncated_mean<true>(points, w, k, last, vertices, &z[u]);
-    } else if (k >= reach && k + reach <= last) {
-      // Inside the stroke the kernel is whole: pairs of points either side, one normaliser.
-      double sx = w[0] * points[u].x, sy = w[0] * points[u].y;
-      for (std::size_t j = 1; j < w.size(); ++j) {
-        sx += w[j] * (points[u - j].x + points[u + j].x);
-        sy += w[j] * (points[u - j].y + points[u + j].y);
-      }
-      scratch[u] = {sx / total, sy / total};
-    } else {
-      scratch[u] = truncated_mean<false>(points, w, k, last, nullptr, nullptr);
-    }
+    scratch[u] = vertices ? truncated_mean<true>(points, w, k, last, vertices, &z[u])
+                          : truncated_mean<false>(points, w, k, last, nullptr, nullptr);
+  };
+  // Points [whole_from, whole_to) have the whole kernel inside the stroke (heights are smoothed
+  // point by point).
+  const std::ptrdiff_t whole_from = vertices ? last : std::clamp<std::ptrdiff_t>(reach, 1, last);
+  const std::ptrdiff_t whole_to = std::max(whole_from, last - reach + 1);
+  for (std::ptrdiff_t k = 1; k < whole_from; ++k) near_an_end(k);
+  if (whole_from < whole_to) {
+    double total = w[0];
+    for (std::size_t j = 1; j < w.size(); ++j) total += 2.0 * w[j];
+    whole_kernel_means(points.data(), w.data(), w.size(), total,
+                       static_cast<std::size_t>(whole_from), static_cast<std::size_t>(whole_to),
+                       scratch.data());
   }
+  for (std::ptrdiff_t k = whole_to; k < last; ++k) near_an_end(k);
   for (std::size_t k = 0; k < points.size(); ++k) {
     const StrokePoint anchor = anchors[k];
     double dx = scratch[k].x - anchor.x, dy = scratch[k].y - anchor.y;

@@ -16,11 +16,6 @@ namespace tsk {
 void smooth_stroke(Stroke& stroke, double sigma, double tolerance, bool heights = false,
                    const std::vector<StrokePoint>* anchors = nullptr);
 
-inline double distance(StrokePoint a, StrokePoint b) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  return std::sqrt(dx * dx + dy * dy);
-}
-
 // The length of a polyline.
 double polyline_length(const std::vector<StrokePoint>& points);
 

@@ -100,60 +100,98 @@ double StrokeBuilder::Mean::value() const {
   return count ? sum / count : kNaN;
 }
 
-void StrokeBuilder::add(const StrokeCell& c, bool keep_vertices) {
-  if (keep_vertices)
-    vertices_.push_back({c.dist, c.z, c.slope_pct, c.row_slope_pct, c.depth_m, c.offset});
-  if (!chain_.empty()) length_ += std::hypot(c.map.x - last_map_.x, c.map.y - last_map_.y);
-  last_map_ = c.map;
+void StrokeBuilder::Sums::add(double slope_pct, double row_slope_pct, double depth_m, double dist_,
+                              double z_) {
+  slope.add(slope_pct);
+  row_slope.add(row_slope_pct);
+  dist.add(dist_);
+  z.add(z_);
+  // Formulated cells have no hidden zone: their NaN depths count in neither.
+  depth.add(depth_m);
+  max_depth = std::max(max_depth, depth_m);
+}
+
+void StrokeBuilder::add(const StrokeCell& c, bool drawn) {
+  if (drawn) {
+    drawn_.push_back({{c.dist, c.z, c.offset}, c.slope_pct, c.row_slope_pct, c.depth_m});
+  } else {
+    if (!chain_.empty()) length_ += std::hypot(c.map.x - last_map_.x, c.map.y - last_map_.y);
+    last_map_ = c.map;
+    sums_.add(c.slope_pct, c.row_slope_pct, c.depth_m, c.dist, c.z);
+  }
   chain_.push_back(c.cell);
   points_.push_back(c.point);
-  slope_.add(c.slope_pct);
-  row_slope_.add(c.row_slope_pct);
-  dist_.add(c.dist);
-  z_.add(c.z);
-  // Formulated cells have no hidden zone: their NaN depths count in neither.
-  depth_.add(c.depth_m);
-  max_depth_ = std::max(max_depth_, c.depth_m);
 }
 
 Stroke StrokeBuilder::stroke(StrokeClass cls) const {
-  Stroke s = attributes(cls);
+  Stroke s = attributes(cls, cells(), length_, sums_);
   s.chain = chain_;
   s.points = points_;
-  s.vertices = vertices_;
   return s;
 }
 
 Stroke StrokeBuilder::take(StrokeClass cls) {
-  Stroke s = attributes(cls);
+  Stroke s = attributes(cls, cells(), length_, sums_);
   s.chain = std::move(chain_);
   s.points = std::move(points_);
-  s.vertices = std::move(vertices_);
   clear();
   return s;
 }
 
-Stroke StrokeBuilder::attributes(StrokeClass cls) const {
+void StrokeBuilder::drawn_pieces(StrokeClass cls, double max_step,
+                                 std::vector<Stroke>& pieces) const {
+  const std::size_t n = points_.size();
+  std::size_t from = 0;
+  double length = 0.0;
+  for (std::size_t k = 1; k <= n; ++k) {
+    const double step = k < n ? distance(points_[k - 1], points_[k]) : 0.0;
+    if (k < n && step <= max_step) {
+      length += step;
+      continue;
+    }
+    pieces.push_back(drawn_piece(cls, from, k, length));
+    from = k;
+    length = 0.0;
+  }
+}
+
+Stroke StrokeBuilder::drawn_piece(StrokeClass cls, std::size_t from, std::size_t to,
+                                  double length) const {
+  Sums sums;
+  for (std::size_t k = from; k < to; ++k) {
+    const DrawnCell& c = drawn_[k];
+    sums.add(c.slope_pct, c.row_slope_pct, c.depth_m, c.vertex.dist, c.vertex.z);
+  }
+  Stroke s = attributes(cls, static_cast<int>(to - from), length, sums);
+  const auto first = static_cast<std::ptrdiff_t>(from), last = static_cast<std::ptrdiff_t>(to);
+  s.chain.assign(chain_.begin() + first, chain_.begin() + last);
+  s.points.assign(points_.begin() + first, points_.begin() + last);
+  s.vertices.reserve(to - from);
+  for (std::size_t k = from; k < to; ++k) s.vertices.push_back(drawn_[k].vertex);
+  return s;
+}
+
+Stroke StrokeBuilder::attributes(StrokeClass cls, int cells, double length, const Sums& sums) {
   const bool factual = cls == StrokeClass::factual;
   Stroke s;
   s.cls = cls;
-  s.cells = cells();
-  s.length = length_;
-  s.mean_slope_pct = slope_.value();
-  s.mean_row_slope_pct = row_slope_.value();
-  s.mean_depth_m = factual ? depth_.value() : kNaN;
-  s.max_depth_m = factual ? max_depth_ : kNaN;
-  s.mean_dist = dist_.value();
-  s.mean_z = z_.value();
+  s.cells = cells;
+  s.length = length;
+  s.mean_slope_pct = sums.slope.value();
+  s.mean_row_slope_pct = sums.row_slope.value();
+  s.mean_depth_m = factual ? sums.depth.value() : kNaN;
+  s.max_depth_m = factual ? sums.max_depth : kNaN;
+  s.mean_dist = sums.dist.value();
+  s.mean_z = sums.z.value();
   return s;
 }
 
 void StrokeBuilder::clear() {
   chain_.clear();
   points_.clear();
-  vertices_.clear();
-  length_ = 0.0, max_depth_ = 0.0;
-  slope_ = row_slope_ = depth_ = dist_ = z_ = Mean();
+  drawn_.clear();
+  length_ = 0.0;
+  sums_ = Sums();
 }
 
 }  // namespace tsk

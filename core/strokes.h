@@ -20,11 +20,15 @@ struct StrokePoint {
   double y;
 };
 
+inline double distance(StrokePoint a, StrokePoint b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return std::sqrt(dx * dx + dy * dy);
+}
+
 // What drawing a stroke needs of each of its points beyond its place (see drawn_strokes.h).
 struct StrokeVertex {
-  double dist;  // distance from the front of the view, ground units
-  double z;     // height, metres
-  double slope_pct = 0.0, row_slope_pct = 0.0, depth_m = 0.0;  // the cell's (StrokeCell)
+  double dist;          // distance from the front of the view, ground units
+  double z;             // height, metres
   double offset = 0.0;  // of the point from its cell's centre along the profile, cells
 };
 
@@ -111,15 +115,19 @@ StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, b
 // running sums of its attributes, so that the records of its cells need not be kept.
 class StrokeBuilder {
  public:
-  // keep_vertices: record the cell's distance and height for drawing (drawn strokes).
-  void add(const StrokeCell& c, bool keep_vertices = false);
+  // drawn: keep what drawing needs of the cell instead, the attributes left to drawn_pieces.
+  void add(const StrokeCell& c, bool drawn = false);
   int cells() const { return static_cast<int>(chain_.size()); }
   // The profile of the first cell (the builder must hold one).
   std::int32_t first_profile() const { return chain_.front().p; }
-  // The stroke so far with its attributes, its vectors sized to fit.
+  // The stroke so far with its attributes, its vectors sized to fit (cells added not drawn).
   Stroke stroke(StrokeClass cls) const;
   // The stroke so far, its vectors moved out of the builder, which is left empty.
   Stroke take(StrokeClass cls);
+  // Drawn strokes (cells added drawn): appends to `pieces` the stroke so far cut where it leaps, a
+  // step between neighbouring points longer than `max_step` map units; each piece with its
+  // vertices, its length and its attributes worked out from its own cells.
+  void drawn_pieces(StrokeClass cls, double max_step, std::vector<Stroke>& pieces) const;
   // Empties the builder for the next chain, keeping its storage.
   void clear();
 
@@ -133,14 +141,27 @@ class StrokeBuilder {
     }
     double value() const;
   };
-  // The stroke's attributes from the running sums, without its vectors.
-  Stroke attributes(StrokeClass cls) const;
+  // What the attributes of cells are worked out from.
+  struct Sums {
+    Mean slope, row_slope, depth, dist, z;
+    double max_depth = 0.0;
+    void add(double slope_pct, double row_slope_pct, double depth_m, double dist_, double z_);
+  };
+  // A cell added drawn.
+  struct DrawnCell {
+    StrokeVertex vertex;
+    double slope_pct, row_slope_pct, depth_m;
+  };
+  // A stroke's attributes, without its vectors.
+  static Stroke attributes(StrokeClass cls, int cells, double length, const Sums& sums);
+  // The drawn piece of cells [from, to).
+  Stroke drawn_piece(StrokeClass cls, std::size_t from, std::size_t to, double length) const;
   Chain chain_;
   std::vector<StrokePoint> points_;
-  std::vector<StrokeVertex> vertices_;
+  std::vector<DrawnCell> drawn_;
   StrokePoint last_map_{};
-  double length_ = 0.0, max_depth_ = 0.0;
-  Mean slope_, row_slope_, depth_, dist_, z_;
+  double length_ = 0.0;
+  Sums sums_;
 };
 
 }  // namespace tsk

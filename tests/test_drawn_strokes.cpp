@@ -9,7 +9,6 @@
 #include "plan_oblique.h"
 #include "stroke_joining.h"
 #include "stroke_smoothing.h"
-#include "stroke_splitting.h"
 #include "stroke_weights.h"
 #include "support/analytic_terrain.h"
 #include "test_support.h"
@@ -360,7 +359,7 @@ TEST_CASE("a chain that leaps along the line of sight is cut there", "[drawn][sp
     builder.add(c, true);
   }
   std::vector<Stroke> pieces;
-  split_at_leaps(builder.stroke(StrokeClass::factual), 4.0, pieces);
+  builder.drawn_pieces(StrokeClass::factual, 4.0, pieces);
   REQUIRE(pieces.size() == 2);
   CHECK(pieces[0].cells == 3);
   CHECK(pieces[1].cells == 2);
@@ -370,9 +369,15 @@ TEST_CASE("a chain that leaps along the line of sight is cut there", "[drawn][sp
   CHECK(pieces[1].mean_slope_pct == Approx(45.0));  // 40, 50
   CHECK(pieces[1].max_depth_m == Approx(8.0));
   CHECK(pieces[1].chain.front().p == 3);
-  CHECK(pieces[1].vertices.size() == 2);
-  // Without a leap the stroke stays whole.
+  REQUIRE(pieces[1].vertices.size() == 2);
+  CHECK(pieces[1].vertices[0].dist == 110.0);
+  CHECK(pieces[1].vertices[1].z == 104.0);
+  // Without a leap the stroke stays whole, its attributes those of all its cells.
   std::vector<Stroke> whole;
-  split_at_leaps(builder.stroke(StrokeClass::factual), 20.0, whole);
-  CHECK(whole.size() == 1);
+  builder.drawn_pieces(StrokeClass::factual, 20.0, whole);
+  REQUIRE(whole.size() == 1);
+  CHECK(whole[0].cells == 5);
+  CHECK(whole[0].mean_slope_pct == Approx(30.0));
+  CHECK(whole[0].mean_dist == Approx(50.0));  // 0, 10, 10, 110, 120
+  CHECK(whole[0].points.size() == 5);
 }
