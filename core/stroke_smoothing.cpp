@@ -20,34 +20,43 @@ double polyline_length(const std::vector<StrokePoint>& points) {
 
 namespace {
 
-// The Gaussian's weights at 0, 1, 2, ... points away, out to three sigma, into `w`.
-void kernel(double sigma_points, std::size_t n, std::vector<double>& w) {
-  const std::size_t reach =
-      std::min<std::size_t>(n, static_cast<std::size_t>(std::ceil(3.0 * sigma_points)));
-  w.resize(reach + 1);
-  for (std::size_t j = 0; j <= reach; ++j)
-    w[j] = std::exp(-0.5 * static_cast<double>(j * j) / (sigma_points * sigma_points));
-}
+// The Gaussian's weights from `reach` points before a point to `reach` points after it, out to
+// three sigma; the same weights either side, so that a sum over points reads them in turn.
+struct Kernel {
+  std::vector<double> weights;
+  std::ptrdiff_t reach = 0;
+  // The weight of a point `j` points after the centre (before it if negative).
+  const double* centre() const { return weights.data() + reach; }
+  void make(double sigma_points, std::size_t n) {
+    reach = static_cast<std::ptrdiff_t>(
+        std::min<std::size_t>(n, static_cast<std::size_t>(std::ceil(3.0 * sigma_points))));
+    weights.resize(static_cast<std::size_t>(2 * reach + 1));
+    for (std::ptrdiff_t j = 0; j <= reach; ++j) {
+      const auto jj = static_cast<double>(j * j);
+      weights[static_cast<std::size_t>(reach + j)] = weights[static_cast<std::size_t>(reach - j)] =
+          std::exp(-0.5 * jj / (sigma_points * sigma_points));
+    }
+  }
+};
 
 // The Gaussian mean about point k where the kernel runs past an end of the stroke: the weights
 // of the points it covers, renormalised; of heights too if `z` is given. (Summed in order from the
-// first point covered, the left side's weights read backwards: no branch per point.)
+// first point covered.)
 template <bool kHeights>
-StrokePoint truncated_mean(const std::vector<StrokePoint>& points, const std::vector<double>& w,
+StrokePoint truncated_mean(const std::vector<StrokePoint>& points, const Kernel& kernel,
                            std::ptrdiff_t k, std::ptrdiff_t last,
                            const std::vector<StrokeVertex>* vertices, double* z) {
-  const auto reach = static_cast<std::ptrdiff_t>(w.size() - 1);
-  const std::ptrdiff_t lo = std::max<std::ptrdiff_t>(0, k - reach), hi = std::min(last, k + reach);
+  const std::ptrdiff_t lo = std::max<std::ptrdiff_t>(0, k - kernel.reach);
+  const std::ptrdiff_t hi = std::min(last, k + kernel.reach);
+  const double* w = kernel.centre() - k;  // w[j]: the weight of point j
   double sw = 0.0, sx = 0.0, sy = 0.0, sz = 0.0;
-  const auto add = [&](std::ptrdiff_t j, double wj) {
+  for (std::ptrdiff_t j = lo; j <= hi; ++j) {
     const auto v = static_cast<std::size_t>(j);
-    sw += wj;
-    sx += wj * points[v].x;
-    sy += wj * points[v].y;
-    if constexpr (kHeights) sz += wj * (*vertices)[v].z;
-  };
-  for (std::ptrdiff_t j = lo; j < k; ++j) add(j, w[static_cast<std::size_t>(k - j)]);
-  for (std::ptrdiff_t j = k; j <= hi; ++j) add(j, w[static_cast<std::size_t>(j - k)]);
+    sw += w[j];
+    sx += w[j] * points[v].x;
+    sy += w[j] * points[v].y;
+    if constexpr (kHeights) sz += w[j] * (*vertices)[v].z;
+  }
   if constexpr (kHeights) *z = sz / sw;
   return {sx / sw, sy / sw};
 }
@@ -71,20 +80,20 @@ void whole_kernel_means(const StrokePoint* points, const double* w, std::size_t 
 
 // One pass: the Gaussian mean about each inner point (of heights too, if `vertices` are given),
 // then each point held within `tolerance` of its anchor.
-void smoothing_pass(std::vector<StrokePoint>& points, const std::vector<double>& w,
+void smoothing_pass(std::vector<StrokePoint>& points, const Kernel& kernel,
                     const std::vector<StrokePoint>& anchors, double tolerance,
                     std::vector<StrokePoint>& scratch, std::vector<double>& z,
                     std::vector<StrokeVertex>* vertices) {
   const auto last = static_cast<std::ptrdiff_t>(points.size() - 1);
-  const auto reach = static_cast<std::ptrdiff_t>(w.size() - 1);
+  const std::ptrdiff_t reach = kernel.reach;
   scratch.resize(points.size());  // every inner point is written; the ends stay
   scratch.front() = points.front();
   scratch.back() = points.back();
   z.resize(vertices ? points.size() : 0);
   const auto near_an_end = [&](std::ptrdiff_t k) {
     const auto u = static_cast<std::size_t>(k);
-    scratch[u] = vertices ? truncated_mean<true>(points, w, k, last, vertices, &z[u])
-                          : truncated_mean<false>(points, w, k, last, nullptr, nullptr);
+    scratch[u] = vertices ? truncated_mean<true>(points, kernel, k, last, vertices, &z[u])
+                          : truncated_mean<false>(points, kernel, k, last, nullptr, nullptr);
   };
   // Points [whole_from, whole_to) have the whole kernel inside the stroke (heights are smoothed
   // point by point).
@@ -92,9 +101,10 @@ void smoothing_pass(std::vector<StrokePoint>& points, const std::vector<double>&
   const std::ptrdiff_t whole_to = std::max(whole_from, last - reach + 1);
   for (std::ptrdiff_t k = 1; k < whole_from; ++k) near_an_end(k);
   if (whole_from < whole_to) {
+    const double* w = kernel.centre();
     double total = w[0];
-    for (std::size_t j = 1; j < w.size(); ++j) total += 2.0 * w[j];
-    whole_kernel_means(points.data(), w.data(), w.size(), total,
+    for (std::ptrdiff_t j = 1; j <= reach; ++j) total += 2.0 * w[j];
+    whole_kernel_means(points.data(), w, static_cast<std::size_t>(reach + 1), total,
                        static_cast<std::size_t>(whole_from), static_cast<std::size_t>(whole_to),
                        scratch.data());
   }
@@ -123,8 +133,8 @@ void smooth_stroke(Stroke& stroke, double sigma, double tolerance, bool heights,
   const double spacing = polyline_length(stroke.points) / static_cast<double>(n - 1);
   if (!(spacing > 0.0)) return;
   // Storage kept from stroke to stroke (smoothing runs on one thread at a time per drawer).
-  thread_local std::vector<double> w;
-  kernel(sigma / spacing, n, w);
+  thread_local Kernel kernel;
+  kernel.make(sigma / spacing, n);
   // Points are held near their anchors, or near where they were when no anchors are given.
   std::vector<StrokePoint> where_they_were;
   if (!anchors || anchors->size() != n) where_they_were = stroke.points;
@@ -135,7 +145,7 @@ void smooth_stroke(Stroke& stroke, double sigma, double tolerance, bool heights,
   // smooth the kinks out within the same band.
   for (int pass = 0; pass < kSmoothingPasses; ++pass) {
     const bool first = pass == 0;
-    smoothing_pass(stroke.points, w, held, tolerance, scratch, z,
+    smoothing_pass(stroke.points, kernel, held, tolerance, scratch, z,
                    first && heights && stroke.vertices.size() == n ? &stroke.vertices : nullptr);
   }
 }
