@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "plan_oblique.h"
@@ -80,25 +81,26 @@ void StrokeDrawer::add(Stroke&& piece) {
   drawn_.push_back(false);
 }
 
-std::vector<std::vector<Stroke>> StrokeDrawer::take_settled(double frontier) {
+StrokeGroups StrokeDrawer::take_settled(double frontier) {
   // Groups are taken in the order of their first pieces, up to the first one still open to
   // pieces to come: its ends must lie farther than the gap from the frontier.
   const double settled_before = frontier - rule_.gap / std::max(setup_.across, 1e-300) - 1.0;
-  std::vector<std::vector<Stroke>> groups;
+  StrokeGroups groups;
   while (!pending_.empty()) {
     const std::size_t first = first_pending_;
-    std::vector<std::size_t> members{first};
     if (rule_.gap > 0.0) {
       if (!(static_cast<double>(groups_.reach(first)) < settled_before)) break;
-      members = groups_.take_group(first);
+      groups_.take_group(first, members_);
     } else if (!(static_cast<double>(pending_.front().chain.back().p) < settled_before)) {
       break;
+    } else {
+      members_.assign(1, first);
     }
-    std::vector<Stroke>& group = groups.emplace_back();
-    for (std::size_t id : members) {
-      group.push_back(std::move(pending_[id - first_pending_]));
+    for (std::size_t id : members_) {
+      groups.pieces.push_back(std::move(pending_[id - first_pending_]));
       drawn_[id - first_pending_] = true;
     }
+    groups.ends.push_back(groups.pieces.size());
     while (!drawn_.empty() && drawn_.front()) {
       pending_.pop_front();
       drawn_.pop_front();
@@ -108,15 +110,24 @@ std::vector<std::vector<Stroke>> StrokeDrawer::take_settled(double frontier) {
   return groups;
 }
 
-void StrokeDrawer::draw(std::vector<std::vector<Stroke>>& groups, const Out& out) const {
-  for (std::vector<Stroke>& group : groups) {
-    if (rule_.gap > 0.0) group = join_strokes(std::move(group), rule_);
-    for (Stroke& stroke : group) {
-      // The generalisation comes after joining: only pieces still short and alone are dropped.
-      if (stroke.cells < setup_.min_cells) continue;
-      finish_stroke(stroke, setup_);
-      out(std::move(stroke));
+void StrokeDrawer::draw(StrokeGroups& groups, const Out& out) const {
+  const auto finish = [&](Stroke& stroke) {
+    // The generalisation comes after joining: only pieces still short and alone are dropped.
+    if (stroke.cells < setup_.min_cells) return;
+    finish_stroke(stroke, setup_);
+    out(std::move(stroke));
+  };
+  std::size_t begin = 0;
+  for (std::size_t end : groups.ends) {
+    const auto first = groups.pieces.begin() + static_cast<std::ptrdiff_t>(begin);
+    if (end - begin > 1) {
+      std::vector<Stroke> members(std::make_move_iterator(first),
+                                  std::make_move_iterator(first + (end - begin)));
+      for (Stroke& stroke : join_strokes(std::move(members), rule_)) finish(stroke);
+    } else {
+      finish(*first);
     }
+    begin = end;
   }
 }
 

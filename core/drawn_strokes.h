@@ -45,6 +45,12 @@ struct DrawingSetup {
 DrawingSetup drawing_setup(const OrientedFrame& frame, const GeoTransform& geotransform,
                            const SilhouetteParams& params, double z_ref);
 
+// Groups of pieces taken to draw: their pieces one group after another.
+struct StrokeGroups {
+  std::vector<Stroke> pieces;
+  std::vector<std::size_t> ends;  // one past each group's last piece
+};
+
 // Draws the strokes of one class as their chains complete, so that drawing and writing go on
 // alongside the stages. Pieces (the strokes of complete chains, every one, cut where they leap,
 // with their points in map geometry at sub-cell places and their vertices) come in the order of
@@ -63,10 +69,10 @@ class StrokeDrawer {
   // Takes the groups whose every end lies more than the join gap before profile `frontier`, the
   // first profile a piece still to come may reach, up to the first group that does not; after the
   // last profile, with an infinite frontier, every group left.
-  std::vector<std::vector<Stroke>> take_settled(double frontier);
+  StrokeGroups take_settled(double frontier);
   // Draws groups taken, in order, and hands the strokes the generalisation keeps to `out`. May
   // run on another thread than the other calls.
-  void draw(std::vector<std::vector<Stroke>>& groups, const Out& out) const;
+  void draw(StrokeGroups& groups, const Out& out) const;
 
  private:
   DrawingSetup setup_;
@@ -74,6 +80,7 @@ class StrokeDrawer {
   StrokeGrouper groups_;
   std::deque<Stroke> pending_;  // pieces from id first_pending_ on; those drawn left empty
   std::deque<bool> drawn_;
+  std::vector<std::size_t> members_;  // of the group being taken, its storage reused
   std::size_t first_pending_ = 0;
 };
 

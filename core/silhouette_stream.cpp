@@ -35,7 +35,6 @@ bool draws_alongside(const SilhouetteParams& p) {
 }  // namespace
 
 struct SilhouetteStream::State {
-  using Groups = std::vector<std::vector<Stroke>>;
   // A complete stroke, or a piece of one (drawn strokes), and its chain's place in the scan.
   struct Waiting {
     std::size_t chain;
@@ -174,7 +173,7 @@ struct SilhouetteStream::State {
     steps.clear();
     steps.reserve(taken->size());
     grouping.run([this, taken] {
-      auto settled = std::make_shared<std::vector<std::pair<Strokes*, Groups>>>();
+      auto settled = std::make_shared<std::vector<std::pair<Strokes*, StrokeGroups>>>();
       for (DrawingStep& step : *taken) {
         if (abandoned) return;
         Strokes& strokes = *step.strokes;
@@ -189,8 +188,11 @@ struct SilhouetteStream::State {
   }
 
   // Draws groups taken, in order, and gives the strokes to the writing.
-  void finish_groups(std::vector<std::pair<Strokes*, Groups>>& settled) {
+  void finish_groups(std::vector<std::pair<Strokes*, StrokeGroups>>& settled) {
     auto drawn = std::make_shared<std::vector<std::pair<Strokes*, Stroke>>>();
+    std::size_t pieces = 0;
+    for (const auto& taken : settled) pieces += taken.second.pieces.size();
+    drawn->reserve(pieces);  // as many strokes at most
     for (auto& [strokes, groups] : settled) {
       if (abandoned) return;
       Strokes* of = strokes;

@@ -376,15 +376,14 @@ std::size_t StrokeGrouper::group_of(std::size_t id) {
   return id;
 }
 
-std::vector<std::size_t> StrokeGrouper::take_group(std::size_t root) {
-  std::vector<std::size_t> members;
+void StrokeGrouper::take_group(std::size_t root, std::vector<std::size_t>& members) {
+  members.clear();
   for (std::size_t m = root; m != kNone; m = next_[m]) members.push_back(m);
   if (members.size() > 1) std::sort(members.begin(), members.end());
   for (std::size_t m : members) {
     for (std::size_t e : {2 * m, 2 * m + 1})
       index_->remove(static_cast<std::uint32_t>(e), ends_[e].at);
   }
-  return members;
 }
 
 }  // namespace tsk

@@ -44,8 +44,8 @@ class StrokeGrouper {
   std::size_t group_of(std::size_t id);
   // The last profile any stroke of group `root` reaches.
   std::int32_t reach(std::size_t root) const { return reach_[root]; }
-  // The ids of group `root`'s strokes in order; they join no stroke added later.
-  std::vector<std::size_t> take_group(std::size_t root);
+  // The ids of group `root`'s strokes in order, into `members`; they join no stroke added later.
+  void take_group(std::size_t root, std::vector<std::size_t>& members);
 
  private:
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
