@@ -56,10 +56,14 @@ void finish_stroke(Stroke& stroke, const DrawingSetup& setup) {
   }
   smooth_stroke(stroke, p.smooth_cells * setup.cell, p.tolerance_cells * setup.cell,
                 setup.geometry == Geometry::oblique, &centres);
-  stroke.length = polyline_length(stroke.points);  // the drawn line's ground length
+  // The length attribute is the ground length of the line drawn in map geometry, without its
+  // run-on: the line weighed, unless it moves or grows after smoothing.
+  const bool moves = setup.geometry == Geometry::oblique || p.extend_cells > 0.0;
+  if (moves) stroke.length = polyline_length(stroke.points);
   if (setup.geometry == Geometry::oblique) shift_plan_oblique(stroke, setup);
   extend_stroke(stroke, p.extend_cells * setup.cell, 3.0 * setup.cell);
-  weigh_stroke(stroke, {p.taper, p.depth_cue, setup.depth});
+  const double weighed_length = weigh_stroke(stroke, {p.taper, p.depth_cue, setup.depth});
+  if (!moves) stroke.length = weighed_length;
   stroke.vertices = {};
 }
 

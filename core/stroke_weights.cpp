@@ -17,7 +17,7 @@ double taper_rise(double u) {
 
 }  // namespace
 
-void weigh_stroke(Stroke& stroke, const WeightRule& rule) {
+double weigh_stroke(Stroke& stroke, const WeightRule& rule) {
   const std::size_t n = stroke.points.size();
   stroke.weights.assign(n, 1.0);
   double total = 0.0;
@@ -38,6 +38,7 @@ void weigh_stroke(Stroke& stroke, const WeightRule& rule) {
         rule.depth > 0.0 ? 1.0 - rule.depth_cue * std::clamp(dist / rule.depth, 0.0, 1.0) : 1.0;
     w[k] = taper * depth;
   }
+  return total;
 }
 
 namespace {

@@ -18,8 +18,9 @@ struct WeightRule {
 
 // Sets stroke.weights: at each point the taper (kTipWeight at a tip rising to 1 at `taper` of the
 // length from it, easing out as a pen does) times the depth cue (1 at the front, 1 - depth_cue at
-// the back), from the points' arc length and their vertices' distances.
-void weigh_stroke(Stroke& stroke, const WeightRule& rule);
+// the back), from the points' arc length and their vertices' distances. Returns the length of the
+// line the points draw (as polyline_length).
+double weigh_stroke(Stroke& stroke, const WeightRule& rule);
 
 // Extends both ends of a stroke of two or more points by `length` along the direction of its
 // last `reach` of length, as a hand-drawn stroke runs on; the new points repeat their ends'

@@ -244,7 +244,12 @@ TEST_CASE("smoothing rounds stair steps without moving a point beyond the tolera
 TEST_CASE("weights taper both ends and fall off towards the back", "[drawn][weights]") {
   Stroke s = row_stroke(0, 40, 0.0);
   for (int k = 0; k <= 40; ++k) s.vertices.push_back({0.0, 0.0});
-  weigh_stroke(s, {0.25, 0.5, 100.0});
+  // The length weighed is the line's (here with a kink, longer than the row).
+  Stroke kinked = s;
+  kinked.points[20].y = 3.0;
+  CHECK(weigh_stroke(kinked, {0.25, 0.5, 100.0}) == polyline_length(kinked.points));
+  CHECK(polyline_length(kinked.points) == Approx(38.0 + 2.0 * std::sqrt(10.0)));
+  CHECK(weigh_stroke(s, {0.25, 0.5, 100.0}) == Approx(40.0));
   REQUIRE(s.weights.size() == 41);
   CHECK(s.weights.front() == Approx(kTipWeight));
   CHECK(s.weights.back() == Approx(kTipWeight));
