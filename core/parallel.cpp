@@ -118,18 +118,18 @@ void TasksBehind::run(std::function<void()> task) {
   while (!unfinished_.empty() &&
          (unfinished_.size() > most_behind_ ||
           unfinished_.front().wait_for(std::chrono::seconds(0)) == std::future_status::ready)) {
-    std::future<void> first = std::move(unfinished_.front());
-    unfinished_.pop_front();
-    first.get();
+    finish_oldest();
   }
 }
 
 void TasksBehind::finish() {
-  while (!unfinished_.empty()) {
-    std::future<void> first = std::move(unfinished_.front());
-    unfinished_.pop_front();
-    first.get();
-  }
+  while (!unfinished_.empty()) finish_oldest();
+}
+
+void TasksBehind::finish_oldest() {
+  std::future<void> oldest = std::move(unfinished_.front());
+  unfinished_.pop_front();
+  oldest.get();
 }
 
 }  // namespace tsk

@@ -67,6 +67,8 @@ class TasksBehind {
   void finish();
 
  private:
+  // Waits for the oldest task still listed and forgets it; rethrows its failure.
+  void finish_oldest();
   std::size_t most_behind_;
   std::deque<std::future<void>> unfinished_;
   Worker worker_;  // declared last: stopped first, its tasks done

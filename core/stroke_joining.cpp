@@ -97,6 +97,11 @@ class BucketHeads {
     const Slot& slot = slots_[find_slot(key)];
     return slot.key == kEmpty ? kNone : slot.head;
   }
+  // The head of bucket `key`, or null if it has none; the table is left as it is.
+  std::uint32_t* find(std::uint64_t key) {
+    Slot& slot = slots_[find_slot(key)];
+    return slot.key == kEmpty ? nullptr : &slot.head;
+  }
   // Forgets bucket `key` (emptied), so that the table holds only the buckets in use: a stream
   // of strokes passes over ever new buckets.
   void erase(std::uint64_t key) {
@@ -157,11 +162,12 @@ class EndIndex {
   }
   void remove(std::uint32_t end, StrokePoint at) {
     const std::uint64_t k = key(at);
-    std::uint32_t& head = heads_[k];
-    for (std::uint32_t* link = &head; *link != kNone; link = &next_[*link]) {
+    std::uint32_t* head = heads_.find(k);
+    if (!head) return;
+    for (std::uint32_t* link = head; *link != kNone; link = &next_[*link]) {
       if (*link == end) {
         *link = next_[end];
-        if (head == kNone) heads_.erase(k);
+        if (*head == kNone) heads_.erase(k);
         return;
       }
     }
