@@ -111,6 +111,7 @@ StrokeGroups StrokeDrawer::take_settled(double frontier) {
       ++first_pending_;
     }
   }
+  if (rule_.gap > 0.0) groups_.forget_before(first_pending_);
   return groups;
 }
 

@@ -155,18 +155,25 @@ class EndIndex {
   explicit EndIndex(double radius, std::size_t expected = 0)
       : size_(std::max(2.0 * radius, 1e-9)), heads_(expected) {}
   void insert(std::uint32_t end, StrokePoint at) {
-    if (next_.size() <= end) next_.resize(std::max<std::size_t>(end + 1, 2 * next_.size()), kNone);
+    const std::size_t k = end - first_held_;
+    if (next_.size() <= k) next_.resize(std::max<std::size_t>(k + 1, 2 * next_.size()), kNone);
     std::uint32_t& head = heads_[key(at)];
-    next_[end] = head;
+    next_[k] = head;
     head = end;
+  }
+  // Forgets the links of the ends before `end`, all removed.
+  void forget_before(std::uint32_t end) {
+    const std::size_t gone = std::min<std::size_t>(end - first_held_, next_.size());
+    next_.erase(next_.begin(), next_.begin() + static_cast<std::ptrdiff_t>(gone));
+    first_held_ = end;
   }
   void remove(std::uint32_t end, StrokePoint at) {
     const std::uint64_t k = key(at);
     std::uint32_t* head = heads_.find(k);
     if (!head) return;
-    for (std::uint32_t* link = head; *link != kNone; link = &next_[*link]) {
+    for (std::uint32_t* link = head; *link != kNone; link = &next(*link)) {
       if (*link == end) {
-        *link = next_[end];
+        *link = next(end);
         if (*head == kNone) heads_.erase(k);
         return;
       }
@@ -183,13 +190,15 @@ class EndIndex {
     const std::int64_t sy = uy - static_cast<double>(by) < 0.5 ? -1 : 1;
     for (std::int64_t cy : {by, by + sy}) {
       for (std::int64_t cx : {bx, bx + sx}) {
-        for (std::uint32_t e = heads_.head(key(cx, cy)); e != kNone; e = next_[e]) f(e);
+        for (std::uint32_t e = heads_.head(key(cx, cy)); e != kNone; e = next(e)) f(e);
       }
     }
   }
 
  private:
   static constexpr std::uint32_t kNone = BucketHeads::kNone;
+  std::uint32_t& next(std::uint32_t end) { return next_[end - first_held_]; }
+  std::uint32_t next(std::uint32_t end) const { return next_[end - first_held_]; }
   std::int64_t bucket(double v) const { return static_cast<std::int64_t>(std::floor(v / size_)); }
   std::uint64_t key(StrokePoint at) const { return key(bucket(at.x), bucket(at.y)); }
   static std::uint64_t key(std::int64_t bx, std::int64_t by) {
@@ -197,7 +206,8 @@ class EndIndex {
   }
   double size_;
   BucketHeads heads_;
-  std::vector<std::uint32_t> next_;  // by end: the next end in its bucket
+  std::vector<std::uint32_t> next_;  // by end from first_held_ on: the next end in its bucket
+  std::uint32_t first_held_ = 0;
 };
 
 // Every pair of ends of different strokes that may join, best first. Most groups are a few
@@ -347,17 +357,14 @@ StrokeGrouper::StrokeGrouper(const JoinRule& rule)
 StrokeGrouper::~StrokeGrouper() = default;
 
 std::size_t StrokeGrouper::add(const Stroke& stroke) {
-  const std::size_t id = parent_.size();
-  parent_.push_back(id);
-  reach_.push_back(stroke.chain.empty() ? 0 : stroke.chain.back().p);
-  next_.push_back(kNone);
-  tail_.push_back(id);
+  const std::size_t id = first_held_ + records_.size();
+  records_.push_back({id, kNone, id, stroke.chain.empty() ? 0 : stroke.chain.back().p, {}});
   for (bool start : {true, false}) {
     const StrokeEnd end = stroke_end(stroke.points, start, 2.0 * rule_.gap);
-    ends_.push_back({end.at, end.dx, end.dy});
+    record(id).ends[start ? 0 : 1] = {end.at, end.dx, end.dy};
     const auto end_id = static_cast<std::uint32_t>(2 * id + (start ? 0 : 1));
     index_->near(end.at, [&](std::uint32_t other) {
-      const EndRecord& o = ends_[other];
+      const EndRecord& o = record(stroke_of(other)).ends[other % 2];
       if (stroke_of(other) != id && join_cost(end, {o.at, o.dx, o.dy}, rule_) >= 0.0)
         unite(id, stroke_of(other));
     });
@@ -371,25 +378,36 @@ void StrokeGrouper::unite(std::size_t a, std::size_t b) {
   if (a == b) return;
   if (b < a) std::swap(a, b);
   // The group's root is its first stroke; its members stay listed from there.
-  parent_[b] = a;
-  reach_[a] = std::max(reach_[a], reach_[b]);
-  next_[tail_[a]] = b;
-  tail_[a] = tail_[b];
+  Record &first = record(a), &second = record(b);
+  second.parent = a;
+  first.reach = std::max(first.reach, second.reach);
+  record(first.tail).next = b;
+  first.tail = second.tail;
 }
 
 std::size_t StrokeGrouper::group_of(std::size_t id) {
-  while (parent_[id] != id) id = parent_[id] = parent_[parent_[id]];
+  while (record(id).parent != id) id = record(id).parent = record(record(id).parent).parent;
   return id;
 }
 
 void StrokeGrouper::take_group(std::size_t root, std::vector<std::size_t>& members) {
   members.clear();
-  for (std::size_t m = root; m != kNone; m = next_[m]) members.push_back(m);
+  for (std::size_t m = root; m != kNone; m = record(m).next) members.push_back(m);
   if (members.size() > 1) std::sort(members.begin(), members.end());
   for (std::size_t m : members) {
     for (std::size_t e : {2 * m, 2 * m + 1})
-      index_->remove(static_cast<std::uint32_t>(e), ends_[e].at);
+      index_->remove(static_cast<std::uint32_t>(e), record(m).ends[e % 2].at);
   }
+}
+
+void StrokeGrouper::forget_before(std::size_t id) {
+  // Groups are taken whole and named by their first strokes, so no stroke still held points to
+  // one before `id`. The records go once they are most of those held, to move few.
+  const std::size_t taken = std::min(id, first_held_ + records_.size()) - first_held_;
+  if (taken < kForgetAtLeast || 2 * taken < records_.size()) return;
+  records_.erase(records_.begin(), records_.begin() + static_cast<std::ptrdiff_t>(taken));
+  first_held_ += taken;
+  index_->forget_before(static_cast<std::uint32_t>(2 * first_held_));
 }
 
 }  // namespace tsk

@@ -43,24 +43,37 @@ class StrokeGrouper {
   // A stroke's group, named by its first stroke.
   std::size_t group_of(std::size_t id);
   // The last profile any stroke of group `root` reaches.
-  std::int32_t reach(std::size_t root) const { return reach_[root]; }
+  std::int32_t reach(std::size_t root) const { return record(root).reach; }
   // The ids of group `root`'s strokes in order, into `members`; they join no stroke added later.
   void take_group(std::size_t root, std::vector<std::size_t>& members);
+  // Tells the grouper that every stroke before `id` has been taken, so that it may forget them:
+  // what it holds follows the strokes in flight, not all the strokes of a run.
+  void forget_before(std::size_t id);
+  // How many strokes' records it holds.
+  std::size_t strokes_held() const { return records_.size(); }
 
  private:
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  static constexpr std::size_t kForgetAtLeast = 1024;  // strokes' records, to forget at once
   struct EndRecord {
     StrokePoint at;
     double dx, dy;
   };
+  // A stroke's place in its group (ids), its group's reach if it is the root, and its ends.
+  struct Record {
+    std::size_t parent, next, tail;
+    std::int32_t reach;
+    EndRecord ends[2];  // its start, its last point
+  };
   struct Index;
+  Record& record(std::size_t id) { return records_[id - first_held_]; }
+  const Record& record(std::size_t id) const { return records_[id - first_held_]; }
   void unite(std::size_t a, std::size_t b);
 
   JoinRule rule_;
   std::unique_ptr<Index> index_;
-  std::vector<EndRecord> ends_;  // stroke k's start at 2k, its last point at 2k + 1
-  std::vector<std::size_t> parent_, next_, tail_;
-  std::vector<std::int32_t> reach_;
+  std::vector<Record> records_;  // of strokes first_held_, first_held_ + 1, ...
+  std::size_t first_held_ = 0;
 };
 
 }  // namespace tsk

@@ -141,7 +141,8 @@ TEST_CASE("strokes grouped as they stream join as they do all together", "[drawn
   }
   StrokeGrouper grouper(kRule);
   std::vector<std::vector<std::pair<double, double>>> streamed;
-  std::vector<std::size_t> roots;  // of groups not taken yet
+  std::vector<std::size_t> roots;  // of groups not taken yet, in order
+  std::size_t added = 0, most_held = 0;
   const auto take_settled = [&](double frontier) {
     std::vector<std::size_t> open;
     for (std::size_t root : roots) {
@@ -157,12 +158,17 @@ TEST_CASE("strokes grouped as they stream join as they do all together", "[drawn
       for (const Stroke& j : join_strokes(members, kRule)) streamed.push_back(canonical(j));
     }
     roots = open;
+    // Every stroke before the first group still open has been taken.
+    grouper.forget_before(roots.empty() ? added : roots.front());
+    most_held = std::max(most_held, grouper.strokes_held());
   };
   for (const Stroke& s : strokes) {
     take_settled(s.points.front().x);
     roots.push_back(grouper.add(s));
+    ++added;
   }
   take_settled(1e9);
+  CHECK(most_held < strokes.size() / 2);  // what it holds follows the strokes in flight
   std::vector<std::vector<std::pair<double, double>>> together;
   for (const Stroke& j : join_strokes(strokes, kRule)) together.push_back(canonical(j));
   REQUIRE(together.size() < strokes.size() * 3 / 4);  // many joins
