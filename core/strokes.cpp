@@ -100,12 +100,12 @@ double StrokeBuilder::Mean::value() const {
   return count ? sum / count : kNaN;
 }
 
-void StrokeBuilder::Sums::add(double slope_pct, double row_slope_pct, double depth_m, double dist_,
-                              double z_) {
+void StrokeBuilder::Sums::add(double slope_pct, double row_slope_pct, double depth_m,
+                              double from_front, double height) {
   slope.add(slope_pct);
   row_slope.add(row_slope_pct);
-  dist.add(dist_);
-  z.add(z_);
+  dist.add(from_front);
+  z.add(height);
   // Formulated cells have no hidden zone: their NaN depths count in neither.
   depth.add(depth_m);
   max_depth = std::max(max_depth, depth_m);

@@ -145,7 +145,8 @@ class StrokeBuilder {
   struct Sums {
     Mean slope, row_slope, depth, dist, z;
     double max_depth = 0.0;
-    void add(double slope_pct, double row_slope_pct, double depth_m, double dist_, double z_);
+    void add(double slope_pct, double row_slope_pct, double depth_m, double from_front,
+             double height);
   };
   // A cell added drawn.
   struct DrawnCell {
