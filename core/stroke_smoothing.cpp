@@ -25,6 +25,7 @@ namespace {
 struct Kernel {
   std::vector<double> weights;
   std::ptrdiff_t reach = 0;
+  double whole_sum = 0.0;  // of the weights, for a point with the whole kernel inside the stroke
   // The weight of a point `j` points after the centre (before it if negative).
   const double* centre() const { return weights.data() + reach; }
   void make(double sigma_points, std::size_t n) {
@@ -36,6 +37,9 @@ struct Kernel {
       weights[static_cast<std::size_t>(reach + j)] = weights[static_cast<std::size_t>(reach - j)] =
           std::exp(-0.5 * jj / (sigma_points * sigma_points));
     }
+    whole_sum = weights[static_cast<std::size_t>(reach)];
+    for (std::ptrdiff_t j = 1; j <= reach; ++j)
+      whole_sum += 2.0 * weights[static_cast<std::size_t>(reach + j)];
   }
 };
 
@@ -101,12 +105,9 @@ void smoothing_pass(std::vector<StrokePoint>& points, const Kernel& kernel,
   const std::ptrdiff_t whole_to = std::max(whole_from, last - reach + 1);
   for (std::ptrdiff_t k = 1; k < whole_from; ++k) near_an_end(k);
   if (whole_from < whole_to) {
-    const double* w = kernel.centre();
-    double total = w[0];
-    for (std::ptrdiff_t j = 1; j <= reach; ++j) total += 2.0 * w[j];
-    whole_kernel_means(points.data(), w, static_cast<std::size_t>(reach + 1), total,
-                       static_cast<std::size_t>(whole_from), static_cast<std::size_t>(whole_to),
-                       scratch.data());
+    whole_kernel_means(points.data(), kernel.centre(), static_cast<std::size_t>(reach + 1),
+                       kernel.whole_sum, static_cast<std::size_t>(whole_from),
+                       static_cast<std::size_t>(whole_to), scratch.data());
   }
   for (std::ptrdiff_t k = whole_to; k < last; ++k) near_an_end(k);
   for (std::size_t k = 0; k < points.size(); ++k) {
