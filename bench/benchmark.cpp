@@ -188,11 +188,12 @@ tsk::SilhouetteResult run_once(const tsk::HeightGrid& dem, double azimuth, unsig
     orient_s = r.timings.resampling;
     return r;
   }
-  if (frame.azimuth_deg == 90) return tsk::run_silhouettes(dem, frame, {}, params);
+  if (frame.azimuth_deg == 90)
+    return tsk::run_silhouettes(dem, frame, {}, tsk::ResolvedParams(params));
   const auto t_orient = Clock::now();
   const tsk::HeightGrid oriented = tsk::orient(dem, frame, threads);
   orient_s = seconds_since(t_orient);
-  return tsk::run_silhouettes(oriented, frame, {}, params);
+  return tsk::run_silhouettes(oriented, frame, {}, tsk::ResolvedParams(params));
 }
 
 // Runs the pipeline three times (this shared machine varies by 10-30 % from run to run),

@@ -13,15 +13,14 @@ namespace tsk::cli {
 int classify(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress) {
   const Options o = parse(args);
   require_geotiff(o.output);
-  const io::Dem dem = load_dem(o, err);
-  FilterReport filter;
-  const SilhouetteParams params = adapt_filter_to(o, dem, filter, err);
-  const SilhouetteResult result =
-      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, params, progress);
+  const io::HeldDemFile held = load_dem(o, err);
+  const io::Dem& dem = held.dem;
+  const SilhouetteResult result = sketch_whole(o, held, progress, err);
   stop_if_interrupted();
   io::write_classification(o.output, classification_map(result.flags, dem.frame), dem.geotransform,
                            dem.srs_wkt);
-  if (!o.stats_json.empty()) io::write_text_file(o.stats_json, stats_json(result.stats, filter));
+  if (!o.stats_json.empty())
+    io::write_text_file(o.stats_json, stats_json(result.stats, result.filter));
   const StageStats& s = result.stats;
   out << o.output << ": hidden " << s.pct(s.hidden) << " %, occluding " << s.pct(s.occluding)
       << " %, c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered) << " %, t-set "

@@ -10,18 +10,17 @@
 
 namespace tsk::cli {
 
-io::Dem load_dem(const Options& o, std::ostream& err) {
-  io::Dem dem = io::read_dem(o.input, o.dem);
-  print_notes(dem.notes, err);
+io::HeldDemFile load_dem(const Options& o, std::ostream& err) {
+  io::HeldDemFile dem = io::hold_dem(o.input, o.dem);
+  print_notes(dem.dem.notes, err);
   return dem;
 }
 
-SilhouetteParams adapt_filter_to(const Options& o, const io::Dem& dem, FilterReport& report,
-                                 std::ostream& err) {
-  const io::DemFile file(o.input, o.dem);
-  const SilhouetteParams params = adapt_filter(o.params, dem.frame, file.source().read, report);
-  print_filter(report, err);
-  return params;
+SilhouetteResult sketch_whole(const Options& o, const io::HeldDemFile& dem,
+                              const ProgressFn& progress, std::ostream& err) {
+  SilhouetteResult result = sketch_held_dem(dem.held(), o.params, progress);
+  print_filter(result.filter, err);
+  return result;
 }
 
 void print_filter(const FilterReport& r, std::ostream& err) {

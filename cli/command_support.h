@@ -10,13 +10,13 @@
 
 namespace tsk::cli {
 
-// Reads the DEM for the view and tells the user, on `err`, what they should know about it.
-io::Dem load_dem(const Options& o, std::ostream& err);
+// Reads the DEM whole for the view (io::hold_dem) and tells the user, on `err`, what they should
+// know about it.
+io::HeldDemFile load_dem(const Options& o, std::ostream& err);
 
-// The parameters for a run on a DEM read whole by load_dem: the filter adapted to the DEM (read
-// once more, window by window), told on `err`, with what it used in `report`.
-SilhouetteParams adapt_filter_to(const Options& o, const io::Dem& dem, FilterReport& report,
-                                 std::ostream& err);
+// Every stage on the DEM held whole (sketch_held_dem), the filter it used told on `err`.
+SilhouetteResult sketch_whole(const Options& o, const io::HeldDemFile& dem,
+                              const ProgressFn& progress, std::ostream& err);
 
 // Tells on `err` which cut-offs an adaptive filter chose, and why.
 void print_filter(const FilterReport& report, std::ostream& err);

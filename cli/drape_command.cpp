@@ -9,27 +9,17 @@
 #include "drape.h"
 #include "interrupt.h"
 #include "raster_writer.h"
-#include "visibility.h"
 
 namespace tsk::cli {
-namespace {
-
-PlanObliqueDrape lay_out(const io::Dem& dem, const SilhouetteParams& params) {
-  CellFlags flags;
-  classify_visibility(dem.oriented, dem.frame.d, params.view, flags, params.threads);
-  return PlanObliqueDrape(dem.oriented, flags, dem.frame, params.view, dem.lowest_height);
-}
-
-}  // namespace
-
 int drape(const Args& args, std::ostream& out, std::ostream& err,
           const ProgressFn& /* their steps report no progress */) {
   const Options o = parse(args);
   require_geotiff(o.output);
   if (o.source.empty()) throw Error("drape needs --source RASTER, the raster to drape");
-  io::Dem dem = load_dem(o, err);
-  const PlanObliqueDrape drape = lay_out(dem, o.params);
-  dem.oriented = HeightGrid();  // the DEM goes before the bands are read and draped
+  io::HeldDemFile held = load_dem(o, err);
+  const io::Dem& dem = held.dem;
+  const PlanObliqueDrape drape = lay_out_drape(held.held(), o.params.view, o.params.threads);
+  held.dem.oriented = HeightGrid();  // the DEM goes before the bands are read and draped
   std::vector<HeightGrid> source = io::read_bands(o.source);
   std::vector<HeightGrid> bands;
   for (HeightGrid& band : source) bands.push_back(drape.drape(std::move(band)));

@@ -13,11 +13,10 @@ namespace tsk::cli {
 int filter_plot(const Args& args, std::ostream& out, std::ostream& err,
                 const ProgressFn& progress) {
   const Options o = parse(args);
-  const io::Dem dem = load_dem(o, err);
-  FilterReport filter;
-  const SilhouetteParams params = adapt_filter_to(o, dem, filter, err);
-  const SilhouetteResult result =
-      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, params, progress);
+  const io::HeldDemFile held = load_dem(o, err);
+  const io::Dem& dem = held.dem;
+  const SilhouetteResult result = sketch_whole(o, held, progress, err);
+  const FilterReport& filter = result.filter;
   stop_if_interrupted();
   const double range = diagram_range_pct(filter.cutoffs);
   const SlopeScatter scatter =

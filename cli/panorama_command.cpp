@@ -3,15 +3,12 @@
 #include <cpl_conv.h>
 #include <gdal.h>
 
-#include <algorithm>
 #include <ostream>
 #include <string>
 
-#include "adaptive_filter.h"
 #include "command_support.h"
 #include "commands.h"
 #include "dem_note_text.h"
-#include "dem_windows.h"
 #include "errors.h"
 #include "interrupt.h"
 #include "named_points.h"
@@ -40,42 +37,15 @@ void check_before_work(const Options& o) {
 }
 
 // The DEM as it lies, read whole: the view from the west is its own grid, unturned.
-io::Dem read_whole_dem(const Options& o, std::ostream& err) {
+io::HeldDemFile read_whole_dem(const Options& o, std::ostream& err) {
   io::DemOptions options = o.dem;
   options.azimuth_deg = 90.0;
   // Read once, block row after block row, into a grid held whole: GDAL's cache would only hold
   // a second copy of some of it, at the peak of memory. Keep it small unless the user chose one.
   if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(16 << 20);
-  const io::DemFile file(o.input, options);
-  io::refuse_too_large_to_turn(o.input, file.info());
-  io::Dem dem = io::read_dem(o.input, options);
-  print_notes(dem.notes, err);
-  if (!dem.frame.as_it_lies()) throw Error("internal: the DEM was not read on its own grid");
+  io::HeldDemFile dem = io::hold_dem(o.input, options);
+  print_notes(dem.dem.notes, err);
   return dem;
-}
-
-PanoramaParams panorama_params(const Options& o, const io::Dem& dem, FilterReport& report,
-                               std::ostream& err) {
-  // The DEM is held whole already: the filter's survey reads it from memory, not from the file.
-  const HeightGrid& grid = dem.oriented;
-  const WindowReader from_memory = [&grid](const DemWindow& w, float* heights) {
-    for (std::size_t r = 0; r < w.rows; ++r) {
-      const float* row = grid.row(w.row0 + r) + w.col0;
-      std::copy(row, row + w.cols, heights + r * w.cols);
-    }
-  };
-  const SilhouetteParams adapted = adapt_filter(o.params, dem.frame, from_memory, report);
-  print_filter(report, err);
-  PanoramaParams params;
-  params.view = o.panorama;
-  params.view.metres_per_unit = dem.ground_scale;
-  params.rules = {adapted.filter, adapted.height_tolerance, o.params.placement};
-  params.local_scale = adapted.local_scale;
-  params.chain = o.params.chain;
-  params.threads = o.params.threads;
-  params.record_visibility = !o.visibility.empty();
-  params.cut_leaps = o.params.strokes.drawn();
-  return params;
 }
 
 void write_outputs(const Options& o, const io::Dem& dem, const PanoramaResult& result,
@@ -106,20 +76,22 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaResult& r
 int panorama(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress) {
   const Options o = parse(args);
   check_before_work(o);
-  io::Dem dem = read_whole_dem(o, err);
+  io::HeldDemFile held = read_whole_dem(o, err);
+  const io::Dem& dem = held.dem;
   // The peaks are read before the work, so that a bad file is refused first.
   const std::vector<NamedPoint> peaks =
       o.peaks.empty() ? std::vector<NamedPoint>()
                       : io::read_named_points(o.peaks, o.peak_names, dem.srs_wkt);
-  FilterReport report;
-  const PanoramaParams params = panorama_params(o, dem, report, err);
-  const PanoramaResult result = sketch_panorama(dem.oriented, dem.geotransform, params, progress);
+  const PanoramaChoice choice{o.panorama, o.params, !o.visibility.empty()};
+  const PanoramaRun run = sketch_panorama_on(held.held(), choice, progress);
+  const PanoramaResult& result = run.result;
+  print_filter(run.filter, err);
   const std::vector<PeakLeader> leaders =
       lead_peaks(result, see_peaks(dem.oriented, dem.geotransform, result.rays, peaks));
   // The outputs need the DEM's grid and georeferencing, not its heights: freed, they make room
   // for the visibility raster.
-  dem.oriented = HeightGrid();
-  write_outputs(o, dem, result, leaders, report, err);
+  held.dem.oriented = HeightGrid();
+  write_outputs(o, dem, result, leaders, run.filter, err);
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes
       << " formulated strokes from " << result.rays.rays << " rays of " << result.rays.samples

@@ -14,7 +14,8 @@ int profiles(const Args& args, std::ostream& out, std::ostream& err,
              const ProgressFn& /* their steps report no progress */) {
   const Options o = parse(args);
   io::check_vector_output(o.output, o.format);
-  const io::Dem dem = load_dem(o, err);
+  const io::HeldDemFile held = load_dem(o, err);
+  const io::Dem& dem = held.dem;
   CellFlags flags;
   classify_visibility(dem.oriented, dem.frame.d, o.params.view, flags, o.params.threads);
   const auto lines = profile_plot(dem.oriented, flags, dem.frame, o.params.view, dem.geotransform,

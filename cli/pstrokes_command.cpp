@@ -13,11 +13,9 @@ int pstrokes(const Args& args, std::ostream& out, std::ostream& err, const Progr
   const Options o = parse(args);
   o.pstrokes.validate();
   io::check_vector_output(o.output, o.format);
-  const io::Dem dem = load_dem(o, err);
-  FilterReport filter;
-  const SilhouetteParams params = adapt_filter_to(o, dem, filter, err);
-  const SilhouetteResult result =
-      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, params, progress);
+  const io::HeldDemFile held = load_dem(o, err);
+  const io::Dem& dem = held.dem;
+  const SilhouetteResult result = sketch_whole(o, held, progress, err);
   stop_if_interrupted();
   const auto strokes =
       pstroke_sketch(dem.oriented, result.flags, dem.frame, o.params.view, dem.geotransform,

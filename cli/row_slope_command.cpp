@@ -13,7 +13,8 @@ int row_slope(const Args& args, std::ostream& out, std::ostream& err,
               const ProgressFn& /* their steps report no progress */) {
   const Options o = parse(args);
   require_geotiff(o.output);
-  const io::Dem dem = load_dem(o, err);
+  const io::HeldDemFile held = load_dem(o, err);
+  const io::Dem& dem = held.dem;
   const HeightGrid slope = row_slope_map(dem.oriented, dem.frame);
   stop_if_interrupted();
   io::write_float_raster(o.output, {slope}, dem.geotransform, dem.srs_wkt);

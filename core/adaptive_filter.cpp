@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "errors.h"
 #include "slope_scale_map.h"
 
 namespace tsk {
@@ -24,35 +25,46 @@ FilterParams scaled(const FilterParams& filter, double scale) {
 
 }  // namespace
 
-SilhouetteParams adapt_filter(const SilhouetteParams& params, const OrientedFrame& frame,
-                              const WindowReader& read, FilterReport& report) {
-  report = FilterReport();
-  report.choice = params.adaptive;
-  report.cutoffs = params.filter;
-  if (params.adaptive.mode == FilterMode::fixed) return params;
+ResolvedParams::ResolvedParams(const SilhouetteParams& fixed) : params_(fixed) {
+  fixed.validate();
+  if (fixed.adaptive.mode != FilterMode::fixed)
+    throw Error("an adaptive filter is resolved on the DEM it runs on (adapt_filter)");
+  filter_.choice = fixed.adaptive;
+  filter_.cutoffs = fixed.filter;
+  filter_.heights.tolerance = fixed.height_tolerance;
+}
+
+ResolvedParams adapt_filter(const SilhouetteParams& choice, const OrientedFrame& frame,
+                            const WindowReader& read) {
+  choice.validate();
+  FilterReport report;
+  report.choice = choice.adaptive;
+  report.cutoffs = choice.filter;
+  if (choice.adaptive.mode == FilterMode::fixed) return ResolvedParams(choice);
+  if (!read) throw Error("an adaptive filter needs the DEM to survey");
   const SlopeSurvey survey =
       survey_slopes(frame.dem_rows, frame.dem_cols, frame.dem_dx, frame.dem_dy, read);
   report.median_slope_pct = survey.median_slope_pct;
   report.heights = survey.heights;
   report.scale = filter_scale(survey.median_slope_pct);
-  report.cutoffs = scaled(params.filter, report.scale);
-  SilhouetteParams out = params;
+  report.cutoffs = scaled(choice.filter, report.scale);
+  SilhouetteParams out = choice;
   out.adaptive.mode = FilterMode::fixed;  // resolved: the stages take the cut-offs as they are
   out.height_tolerance = survey.heights.tolerance;
-  if (params.adaptive.adapt == Adaptivity::whole) {
+  if (choice.adaptive.adapt == Adaptivity::whole) {
     out.filter = report.cutoffs;
-    return out;
+    return ResolvedParams(std::move(out), std::move(report));
   }
   // Local: the stages divide each cell's slopes by its neighbourhood's scale and keep the
   // cut-offs asked for.
   auto map = std::make_shared<SlopeScaleMap>(
       map_slope_scales(frame.dem_rows, frame.dem_cols, frame.dem_dx, frame.dem_dy,
-                       static_cast<std::size_t>(params.adaptive.window), survey.heights.tolerance,
+                       static_cast<std::size_t>(choice.adaptive.window), survey.heights.tolerance,
                        filter_scale, report.scale, read));
   report.local_lowest = map->lowest();
   report.local_highest = map->highest();
   out.local_scale = std::move(map);
-  return out;
+  return ResolvedParams(std::move(out), std::move(report));
 }
 
 }  // namespace tsk

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <limits>
+#include <utility>
 
 #include "dem_windows.h"
 #include "frame.h"
@@ -32,11 +33,33 @@ struct FilterReport {
   double local_lowest = 1.0, local_highest = 1.0;  // the range of the local scales
 };
 
-// The parameters one run of the stages takes: for an adaptive filter, the cut-offs scaled to the
-// DEM read through `read` (on its own grid: frame.dem_rows x dem_cols), the height tolerance and,
-// with local adaptivity, the map of local scales (which reads the whole DEM once); a fixed filter
-// as it is. Throws what `read` throws.
-SilhouetteParams adapt_filter(const SilhouetteParams& params, const OrientedFrame& frame,
-                              const WindowReader& read, FilterReport& report);
+// The parameters one run of the stages takes, the filter resolved to the cut-offs the stages
+// use, with the report of how. Only resolving makes them: adapt_filter() from any choice on the
+// DEM, or the constructor from a fixed filter's (which refuses an adaptive one), so that no run
+// starts with a filter it would not apply.
+class ResolvedParams {
+ public:
+  ResolvedParams() : ResolvedParams(SilhouetteParams()) {}
+  // Throws Error when `fixed` asks for an adaptive filter: that needs the DEM (adapt_filter).
+  explicit ResolvedParams(const SilhouetteParams& fixed);
+  const SilhouetteParams& params() const { return params_; }
+  const SilhouetteParams* operator->() const { return &params_; }
+  const FilterReport& filter() const { return filter_; }
+
+ private:
+  ResolvedParams(SilhouetteParams params, FilterReport filter)
+      : params_(std::move(params)), filter_(std::move(filter)) {}
+  friend ResolvedParams adapt_filter(const SilhouetteParams& choice, const OrientedFrame& frame,
+                                     const WindowReader& read);
+  SilhouetteParams params_;
+  FilterReport filter_;
+};
+
+// Resolves the user's choice for one run: an adaptive filter's cut-offs scaled to the DEM read
+// through `read` (on its own grid: frame.dem_rows x dem_cols), its height tolerance and, with
+// local adaptivity, the map of local scales (which reads the whole DEM once); a fixed filter as it
+// is (`read` is not called). Throws Error on bad parameters, and what `read` throws.
+ResolvedParams adapt_filter(const SilhouetteParams& choice, const OrientedFrame& frame,
+                            const WindowReader& read);
 
 }  // namespace tsk

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "choice_names.h"
 #include "errors.h"
 
 namespace tsk {
@@ -72,33 +73,23 @@ void SilhouetteParams::validate() const {
 }
 
 Geometry parse_geometry(const std::string& name) {
-  if (name == "map") return Geometry::map;
-  if (name == "oblique") return Geometry::oblique;
-  throw Error("geometry must be 'map' or 'oblique', got '" + name + "'");
+  return parse_choice(kGeometryNames, name, "geometry");
 }
 
 Placement parse_placement(const std::string& name) {
-  if (name == "far") return Placement::far;
-  if (name == "near_and_far") return Placement::near_and_far;
-  throw Error("placement must be 'far' or 'near_and_far', got '" + name + "'");
+  return parse_choice(kPlacementNames, name, "placement");
 }
 
 FilterMode parse_filter_mode(const std::string& name) {
-  if (name == "adaptive") return FilterMode::adaptive;
-  if (name == "fixed") return FilterMode::fixed;
-  throw Error("filter must be 'adaptive' or 'fixed', got '" + name + "'");
+  return parse_choice(kFilterModeNames, name, "filter");
 }
 
 Adaptivity parse_adaptivity(const std::string& name) {
-  if (name == "whole") return Adaptivity::whole;
-  if (name == "local") return Adaptivity::local;
-  throw Error("adaptivity must be 'whole' or 'local', got '" + name + "'");
+  return parse_choice(kAdaptivityNames, name, "adaptivity");
 }
 
 StrokeMode parse_stroke_mode(const std::string& name) {
-  if (name == "drawn") return StrokeMode::drawn;
-  if (name == "exact") return StrokeMode::exact;
-  throw Error("strokes must be 'drawn' or 'exact', got '" + name + "'");
+  return parse_choice(kStrokeModeNames, name, "strokes");
 }
 
 }  // namespace tsk

@@ -273,11 +273,11 @@ struct SilhouetteStream::State {
 };
 
 SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransform& geotransform,
-                                   const SilhouetteParams& params, double z_ref,
+                                   const ResolvedParams& params, double z_ref,
                                    const ProgressFn& progress, StrokeSink sink)
-    : state_(
-          std::make_unique<State>(frame, geotransform, params, z_ref, progress, std::move(sink))) {
-  params.validate();
+    : state_(std::make_unique<State>(frame, geotransform, params.params(), z_ref, progress,
+                                     std::move(sink))) {
+  state_->result.filter = params.filter();
 }
 
 SilhouetteStream::~SilhouetteStream() = default;
@@ -357,10 +357,6 @@ SilhouetteResult SilhouetteStream::finish() {
   stats.generalised = st.factual.cells + st.formulated.cells;
   stats.factual_strokes = st.factual.count;
   stats.formulated_strokes = st.formulated.count;
-  // The filter as the stages took it; sketch_silhouettes replaces it with what it adapted.
-  result.filter.choice = st.params.adaptive;
-  result.filter.cutoffs = st.params.filter;
-  result.filter.heights.tolerance = st.params.height_tolerance;
   result.z_ref = st.z_ref;
   // Without a sink: factual strokes first, then formulated, each in the order of the scan.
   result.strokes = std::move(st.factual.handed_on);

@@ -20,7 +20,7 @@ std::vector<StageFigure> stage_figures(const StageStats& s) {
 }
 
 SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& geotransform,
-                               const SilhouetteParams& params, double z_ref, std::size_t strip,
+                               const ResolvedParams& params, double z_ref, std::size_t strip,
                                const ProfileReader& read, const ProgressFn& progress,
                                StrokeSink sink) {
   check_strip_fits(frame, strip);
@@ -34,7 +34,7 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
   // The next strip is read while this one is processed, into memory of its own, by a reader of
   // its own.
   HeightGrid current, next;
-  Worker reader(resolve_threads(params.threads) > 1);
+  Worker reader(resolve_threads(params->threads) > 1);
   reader.run([&] { read_strip(0, current); }).get();
   for (std::size_t first = 0; first < frame.profiles; first += strip) {
     std::future<void> reading;
@@ -53,16 +53,15 @@ SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams
                                     StrokeSink sink) {
   params.validate();
   const OrientedFrame& frame = dem.frame;
-  FilterReport filter;
-  const SilhouetteParams run = adapt_filter(params, frame, dem.read, filter);
+  const ResolvedParams run = adapt_filter(params, frame, dem.read);
   // Plan-oblique geometry needs the DEM's lowest height before the first stroke: a pass of its
   // own over the DEM.
-  const double z_ref = run.geometry == Geometry::oblique
+  const double z_ref = run->geometry == Geometry::oblique
                            ? dem_lowest_height(frame.dem_rows, frame.dem_cols, dem.read)
                            : 0.0;
   // Strips bound the memory, and they are faster than the whole DEM: the next strip is read while
   // the stages work on this one, into memory reused from strip to strip.
-  StripLoader loader(frame, dem.read, run.threads);
+  StripLoader loader(frame, dem.read, run->threads);
   double reading = 0;
   SilhouetteResult result = run_in_strips(
       frame, dem.geotransform, run, z_ref, strip > 0 ? strip : strip_profiles(frame),
@@ -73,19 +72,18 @@ SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams
       },
       progress, std::move(sink));
   result.timings.reading = reading;
-  result.filter = filter;
   return result;
 }
 
 SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,
-                                 const GeoTransform& geotransform, const SilhouetteParams& params,
+                                 const GeoTransform& geotransform, const ResolvedParams& params,
                                  const ProgressFn& progress, std::optional<double> z_ref) {
-  params.validate();
   if (oriented.rows() != frame.profiles || oriented.cols() != frame.length) {
     throw Error("oriented grid does not match its frame");
   }
   SilhouetteStream stream(frame, geotransform, params,
-                          z_ref ? *z_ref : plan_oblique_reference(oriented, params), progress);
+                          z_ref ? *z_ref : plan_oblique_reference(oriented, params.params()),
+                          progress);
   stream.add_strip(oriented, 0, frame.profiles, true);
   return stream.finish();
 }

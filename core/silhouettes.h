@@ -25,7 +25,7 @@ struct SilhouetteResult {
   StageStats stats;
   StageTimings timings;
   CellFlags flags;      // the per-cell classification, for diagnostics and tests
-  FilterReport filter;  // the slope filter used
+  FilterReport filter;  // the slope filter used (ResolvedParams::filter)
   double z_ref = 0.0;   // the height plan-oblique geometry kept in place
 };
 
@@ -43,7 +43,7 @@ class SilhouetteStream {
   // z_ref: the DEM's lowest height (plan-oblique geometry needs it before the first strip).
   // With a sink, strokes go to it and the result holds none.
   SilhouetteStream(const OrientedFrame& frame, const GeoTransform& geotransform,
-                   const SilhouetteParams& params, double z_ref, const ProgressFn& progress = {},
+                   const ResolvedParams& params, double z_ref, const ProgressFn& progress = {},
                    StrokeSink sink = {});
   ~SilhouetteStream();
 
@@ -68,7 +68,7 @@ using ProfileReader = std::function<void(std::size_t first, std::size_t count, H
 // the neighbouring profiles the row slope needs. Equal to run_silhouettes on the whole grid.
 // With a sink, strokes go to it as they complete and the result holds none.
 SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& geotransform,
-                               const SilhouetteParams& params, double z_ref, std::size_t strip,
+                               const ResolvedParams& params, double z_ref, std::size_t strip,
                                const ProfileReader& read, const ProgressFn& progress = {},
                                StrokeSink sink = {});
 
@@ -96,7 +96,7 @@ SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams
 // which is the DEM's for a cardinal view but may lie above it for a resampled one. Throws Error on
 // bad parameters or a grid that does not match the frame, Cancelled when `progress` returns false.
 SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,
-                                 const GeoTransform& geotransform, const SilhouetteParams& params,
+                                 const GeoTransform& geotransform, const ResolvedParams& params,
                                  const ProgressFn& progress = {},
                                  std::optional<double> z_ref = std::nullopt);
 

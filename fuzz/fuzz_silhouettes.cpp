@@ -110,8 +110,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::size_t k = 0; k < dem.size(); ++k) dem.data()[k] = in.height();
   try {
     const tsk::OrientedFrame frame = tsk::make_frame(rows, cols, dx, dy, p.view.azimuth_deg);
-    const tsk::SilhouetteResult r =
-        tsk::run_silhouettes(tsk::orient(dem, frame), frame, tsk::GeoTransform{}, p);
+    const tsk::SilhouetteResult r = tsk::run_silhouettes(
+        tsk::orient(dem, frame), frame, tsk::GeoTransform{}, tsk::ResolvedParams(p));
     // Invariants that must hold for any input.
     if (r.stats.filtered > r.stats.candidate || r.stats.thinned > r.stats.filtered ||
         r.stats.valid > frame.profiles * frame.length) {
@@ -145,7 +145,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         1);
     tsk::HeightGrid whole;
     const tsk::SilhouetteResult streamed = tsk::run_in_strips(
-        frame, tsk::GeoTransform{}, in_turn, tsk::lowest_height(tsk::orient(dem, frame)), strip,
+        frame, tsk::GeoTransform{}, tsk::ResolvedParams(in_turn),
+        tsk::lowest_height(tsk::orient(dem, frame)), strip,
         [&](std::size_t first, std::size_t count, tsk::HeightGrid& heights) {
           loader.load(first, count, heights);
           if (frame.resampled) {

@@ -250,4 +250,15 @@ DemSource DemFile::source() const {
                    stop_)};
 }
 
+HeldDem HeldDemFile::held() const {
+  DemSource source{dem.frame, dem.geotransform, windows ? windows->source().read : WindowReader()};
+  return {dem.oriented, std::move(source), dem.lowest_height, dem.ground_scale};
+}
+
+HeldDemFile hold_dem(const std::string& path, const DemOptions& options) {
+  HeldDemFile held{read_dem(path, options), nullptr};
+  if (!held.dem.frame.as_it_lies()) held.windows = std::make_unique<DemFile>(path, options);
+  return held;
+}
+
 }  // namespace tsk::io

@@ -9,6 +9,7 @@
 #include "dem_notes.h"
 #include "gdal_util.h"
 #include "orient.h"
+#include "run_recipes.h"
 #include "silhouettes.h"
 #include "strokes.h"
 
@@ -110,6 +111,16 @@ class DemFile {
   std::unique_ptr<BandWindows> file_;
   std::function<void()> stop_;
 };
+
+// A DEM read whole for its view (read_dem), with its file open for the filter's survey when the
+// view turns the grid (as it lies, the survey reads the grid): what the recipes of
+// run_recipes.h take, through held().
+struct HeldDemFile {
+  Dem dem;
+  std::unique_ptr<DemFile> windows;  // null when the grid is the DEM as it lies
+  HeldDem held() const;
+};
+HeldDemFile hold_dem(const std::string& path, const DemOptions& options);
 
 // Throws Error when the DEM of `path` described by `dem` could not be turned whole for its view
 // (too_large_to_turn_whole): what every command but `silhouettes` needs.

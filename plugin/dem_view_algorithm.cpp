@@ -12,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+#include "choice_parameter.h"
 #include "errors.h"
 #include "gdal_util.h"
 #include "line_output.h"
@@ -80,22 +81,30 @@ void DemViewAlgorithm::addDemParameters() {
 
 void DemViewAlgorithm::addFilterParameters() {
   const FilterParams defaults;
-  addWithHelp(new QgsProcessingParameterEnum(
-                  QStringLiteral("FILTER"), tr("Slope filter"),
-                  {tr("Adapted to the DEM"), tr("Fixed (the thesis's cut-offs)")}, false, 0),
+  addWithHelp(choiceParameter(
+                  QStringLiteral("FILTER"), tr("Slope filter"), kFilterModeNames,
+                  [](FilterMode mode) {
+                    return mode == FilterMode::adaptive ? tr("Adapted to the DEM")
+                                                        : tr("Fixed (the thesis's cut-offs)");
+                  },
+                  FilterMode::adaptive),
               tr("Adapted to the DEM (the default): the cut-offs below are scaled by the DEM's "
                  "median slope over 24 %, that of the terrain the thesis tuned them on at 75 m "
                  "cells (from 1/16 to 4 times), so that coarse, fine, flat and steep DEMs all "
                  "give a balanced sketch; height steps within half the DEM's height unit count "
                  "as flat, so the sketch holds still as the view turns. Fixed: the cut-offs as "
                  "given, the thesis's filter."));
-  addWithHelp(
-      new QgsProcessingParameterEnum(QStringLiteral("ADAPT"), tr("Adapt the filter to"),
-                                     {tr("The whole DEM"), tr("Each neighbourhood")}, false, 0),
-      tr("With the adapted filter: one scale for the whole DEM, or a scale for each "
-         "neighbourhood, so that a plain beside mountains keeps its subtle breaks of "
-         "slope (this reads the DEM once more)."),
-      true);
+  addWithHelp(choiceParameter(
+                  QStringLiteral("ADAPT"), tr("Adapt the filter to"), kAdaptivityNames,
+                  [](Adaptivity adapt) {
+                    return adapt == Adaptivity::whole ? tr("The whole DEM")
+                                                      : tr("Each neighbourhood");
+                  },
+                  Adaptivity::whole),
+              tr("With the adapted filter: one scale for the whole DEM, or a scale for each "
+                 "neighbourhood, so that a plain beside mountains keeps its subtle breaks of "
+                 "slope (this reads the DEM once more)."),
+              true);
   auto* window =
       new QgsProcessingParameterNumber(QStringLiteral("ADAPT_WINDOW"), tr("Neighbourhood (cells)"),
                                        kIntegerNumber, AdaptiveParams().window, false, 8, 100000);
@@ -122,6 +131,22 @@ void DemViewAlgorithm::addFilterParameters() {
                  "not, the whole rectangle below both cut-offs is removed."));
 }
 
+void DemViewAlgorithm::addStrokeModeParameter(const QString& help) {
+  addWithHelp(choiceParameter(
+                  QStringLiteral("STROKES"), tr("Strokes"), kStrokeModeNames,
+                  [](StrokeMode mode) {
+                    return mode == StrokeMode::drawn ? tr("Drawn (joined, smoothed, tapered)")
+                                                     : tr("Exact (the thesis's, a point per cell)");
+                  },
+                  StrokeMode::drawn),
+              help, true);
+}
+
+StrokeMode DemViewAlgorithm::readStrokeMode(const QVariantMap& parameters,
+                                            QgsProcessingContext& context) const {
+  return parameterAsChoice(*this, parameters, QStringLiteral("STROKES"), context, kStrokeModeNames);
+}
+
 ViewParams DemViewAlgorithm::readView(const QVariantMap& parameters,
                                       QgsProcessingContext& context) const {
   ViewParams view;
@@ -136,12 +161,10 @@ ViewParams DemViewAlgorithm::readView(const QVariantMap& parameters,
 void DemViewAlgorithm::readFilter(const QVariantMap& parameters, QgsProcessingContext& context,
                                   SilhouetteParams& params) const {
   AdaptiveParams& adaptive = params.adaptive;
-  adaptive.mode = parameterAsEnum(parameters, QStringLiteral("FILTER"), context) == 1
-                      ? FilterMode::fixed
-                      : FilterMode::adaptive;
-  adaptive.adapt = parameterAsEnum(parameters, QStringLiteral("ADAPT"), context) == 1
-                       ? Adaptivity::local
-                       : Adaptivity::whole;
+  adaptive.mode =
+      parameterAsChoice(*this, parameters, QStringLiteral("FILTER"), context, kFilterModeNames);
+  adaptive.adapt =
+      parameterAsChoice(*this, parameters, QStringLiteral("ADAPT"), context, kAdaptivityNames);
   adaptive.window = parameterAsInt(parameters, QStringLiteral("ADAPT_WINDOW"), context);
   FilterParams& filter = params.filter;
   filter.row_cut_pct = parameterAsDouble(parameters, QStringLiteral("ROW_CUT"), context);
@@ -290,25 +313,10 @@ SilhouetteResult DemViewAlgorithm::runSilhouettes(const SilhouetteParams& params
     feedback->setProgress(from + (to - from) * fraction);
     return !feedback->isCanceled();
   };
-  FilterReport filter;
-  const SilhouetteParams run = adaptFilter(params, feedback, filter);
   return withCoreErrors([&] {
-    SilhouetteResult result =
-        run_silhouettes(mRaster->oriented(), mRaster->frame(), mRaster->geotransform(), run,
-                        progress, mRaster->lowestHeight());
-    result.filter = filter;
+    SilhouetteResult result = sketch_held_dem(mRaster->held(), params, progress);
+    logFilter(result.filter, feedback);
     return result;
-  });
-}
-
-SilhouetteParams DemViewAlgorithm::adaptFilter(const SilhouetteParams& params,
-                                               QgsProcessingFeedback* feedback,
-                                               FilterReport& report) {
-  return withCoreErrors([&] {
-    const SilhouetteParams run =
-        adapt_filter(params, mRaster->frame(), mRaster->source(mAzimuth).read, report);
-    logFilter(report, feedback);
-    return run;
   });
 }
 

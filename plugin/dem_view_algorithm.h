@@ -38,6 +38,9 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   void addDemParameters();
   // FILTER, ADAPT, ADAPT_WINDOW, ROW_CUT, COL_CUT, CTRL_COL, DIAGONALS.
   void addFilterParameters();
+  // STROKES, advanced: drawn (the default) or exact strokes, explained by `help`.
+  void addStrokeModeParameter(const QString& help);
+  StrokeMode readStrokeMode(const QVariantMap& parameters, QgsProcessingContext& context) const;
   ViewParams readView(const QVariantMap& parameters, QgsProcessingContext& context) const;
   // The filter's parameters into `params`: its cut-offs and whether they adapt to the DEM.
   void readFilter(const QVariantMap& parameters, QgsProcessingContext& context,
@@ -71,10 +74,6 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   // errors become QgsProcessingException.
   SilhouetteResult runSilhouettes(const SilhouetteParams& params, QgsProcessingFeedback* feedback,
                                   double from, double to);
-  // The slope filter of `params` adapted to the raster read by readRaster() (and logged), with
-  // what it used in `report`; the core's errors become QgsProcessingException.
-  SilhouetteParams adaptFilter(const SilhouetteParams& params, QgsProcessingFeedback* feedback,
-                               FilterReport& report);
   // The prepared raster, not read yet (for reading strip by strip).
   RasterGrid& preparedRaster() { return *mRaster; }
 

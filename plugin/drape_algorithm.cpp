@@ -81,16 +81,13 @@ bool DrapeAlgorithm::prepareAlgorithm(const QVariantMap& parameters, QgsProcessi
 
 PlanObliqueDrape DrapeAlgorithm::layOut(const RasterGrid& raster,
                                         QgsProcessingFeedback* feedback) const {
-  CellFlags flags;
-  classify_visibility(raster.oriented(), raster.frame().d, mView, flags);
   // Laying out the drape takes as long as reading the DEM: progress from 30 to 60 %, and Cancel
   // heard within a few hundred profiles.
-  return PlanObliqueDrape(raster.oriented(), flags, raster.frame(), mView, raster.lowestHeight(),
-                          [feedback](double done) {
-                            if (!feedback) return true;
-                            feedback->setProgress(30 + 30 * done);
-                            return !feedback->isCanceled();
-                          });
+  return lay_out_drape(raster.held(), mView, 0, [feedback](double done) {
+    if (!feedback) return true;
+    feedback->setProgress(30 + 30 * done);
+    return !feedback->isCanceled();
+  });
 }
 
 HeightGrid DrapeAlgorithm::readSourceBand(int band, std::size_t rows, std::size_t cols,

@@ -94,6 +94,9 @@ void PanoramaAlgorithm::initAlgorithm(const QVariantMap&) {
   addWithHelp(new QgsProcessingParameterNumber(kWindow, tr("Formulated chaining window (samples)"),
                                                kIntegerNumber, chain.window, false, 0, 1000),
               tr("How far along the next ray a formulated chain may step."), true);
+  addStrokeModeParameter(
+      tr("Drawn (the default): a stroke is cut where its chain leaps along the rays, since a "
+         "leap draws no line on the terrain. Exact: the thesis's strokes, each chain whole."));
   addWithHelp(new QgsProcessingParameterFeatureSink(kMapOutput, tr("Panorama strokes on the map"),
                                                     kLineLayer),
               tr("The strokes in the DEM's CRS, with their class, distance and azimuths."));
@@ -123,13 +126,14 @@ double PanoramaAlgorithm::readParameters(const QVariantMap& parameters,
   readFilter(parameters, context, mFilter);
   mFilter.chain.min_cells = parameterAsInt(parameters, kMinCells, context);
   mFilter.chain.window = parameterAsInt(parameters, kWindow, context);
+  mFilter.strokes.mode = readStrokeMode(parameters, context);
   mFilter.validate();
   QgsRasterLayer* dem = parameterAsRasterLayer(parameters, QStringLiteral("INPUT"), context);
   const QgsCoordinateReferenceSystem crs = dem ? dem->crs() : QgsCoordinateReferenceSystem();
   const QgsPointXY observer = parameterAsPoint(parameters, kObserver, context, crs);
   if (dem && !dem->extent().contains(observer))
     throw Error(tr("The observer lies outside the DEM: choose a point on it.").toStdString());
-  PanoramaView& view = mParams.view;
+  PanoramaView& view = mView;
   view.observer_x = observer.x();
   view.observer_y = observer.y();
   view.observer_height = parameterAsDouble(parameters, kObserverHeight, context);
@@ -146,22 +150,18 @@ double PanoramaAlgorithm::readParameters(const QVariantMap& parameters,
 }
 
 PanoramaResult PanoramaAlgorithm::sketch(QgsProcessingFeedback* feedback) {
-  const RasterGrid& raster = readRaster(feedback, 20);
-  FilterReport report;
-  const SilhouetteParams adapted = adaptFilter(mFilter, feedback, report);
-  mParams.rules = {adapted.filter, adapted.height_tolerance, adapted.placement};
-  mParams.local_scale = adapted.local_scale;
-  mParams.chain = adapted.chain;
-  mParams.threads = adapted.threads;
-  mParams.record_visibility = !mVisibility.isEmpty();
-  mParams.cut_leaps = true;  // a leap along a ray draws no line on the terrain
+  readRaster(feedback, 20);
   const ProgressFn progress = [feedback](double fraction) {
     if (!feedback) return true;
     feedback->setProgress(20 + 60 * fraction);
     return !feedback->isCanceled();
   };
-  return withCoreErrors(
-      [&] { return sketch_panorama(raster.oriented(), raster.geotransform(), mParams, progress); });
+  const PanoramaChoice choice{mView, mFilter, !mVisibility.isEmpty()};
+  return withCoreErrors([&] {
+    PanoramaRun run = sketch_panorama_on(preparedRaster().held(), choice, progress);
+    logFilter(run.filter, feedback);
+    return std::move(run.result);
+  });
 }
 
 void PanoramaAlgorithm::writeStrokes(const QVariantMap& parameters, QgsProcessingContext& context,

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "dem_view_algorithm.h"
-#include "panorama.h"
+#include "run_recipes.h"
 
 namespace tsk::plugin {
 
@@ -36,8 +36,8 @@ class PanoramaAlgorithm : public DemViewAlgorithm {
   void writePeaks(const QVariantMap& parameters, QgsProcessingContext& context,
                   const std::vector<PeakLeader>& leaders, QgsProcessingFeedback* feedback);
 
-  SilhouetteParams mFilter;  // the slope filter and chaining, as the silhouettes take them
-  PanoramaParams mParams;
+  SilhouetteParams mFilter;  // the slope filter, chaining and strokes, as the silhouettes take them
+  PanoramaView mView;
   QString mVisibility, mMapId, mPanoramaId, mPeaksId;
 };
 

@@ -2,6 +2,7 @@
 
 #include <qgsprocessingfeedback.h>
 
+#include "choice_parameter.h"
 #include "errors.h"
 #include "layer_style.h"
 #include "line_output.h"
@@ -54,9 +55,13 @@ void PStrokeAlgorithm::initAlgorithm(const QVariantMap&) {
                                                tr("Stroke half length (cells)"), kIntegerNumber,
                                                defaults.half_length, false, 1, 100),
               tr("Cells drawn on each side of a seed along the cross-section."));
-  addWithHelp(new QgsProcessingParameterEnum(
-                  QStringLiteral("GEOMETRY"), tr("Geometry"),
-                  {tr("Map (cell centres)"), tr("Plan oblique (the sketch)")}, false, 1),
+  addWithHelp(choiceParameter(
+                  QStringLiteral("GEOMETRY"), tr("Geometry"), kGeometryNames,
+                  [](Geometry g) {
+                    return g == Geometry::map ? tr("Map (cell centres)")
+                                              : tr("Plan oblique (the sketch)");
+                  },
+                  Geometry::oblique),
               tr("Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point "
                  "moved along the view azimuth by (exaggeration / base slope) x (height - lowest "
                  "height), so the strokes draw the oblique sketch in the same CRS."));
@@ -78,9 +83,8 @@ double PStrokeAlgorithm::readParameters(const QVariantMap& parameters,
   mPStrokes.concave_row_m2 = parameterAsDouble(parameters, QStringLiteral("CONCAVE_ROW"), context);
   mPStrokes.half_length = parameterAsInt(parameters, QStringLiteral("HALF_LENGTH"), context);
   mPStrokes.validate();
-  mParams.geometry = parameterAsEnum(parameters, QStringLiteral("GEOMETRY"), context) == 1
-                         ? Geometry::oblique
-                         : Geometry::map;
+  mParams.geometry =
+      parameterAsChoice(*this, parameters, QStringLiteral("GEOMETRY"), context, kGeometryNames);
   return mParams.view.azimuth_deg;
 }
 

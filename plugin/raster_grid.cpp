@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <new>
+#include <utility>
 #include <vector>
 
 #include "core_errors.h"
@@ -248,6 +249,12 @@ DemSource RasterGrid::source(double azimuthDeg) {
   setView(azimuthDeg);
   return {mFrame, mGeoTransform,
           [this](const DemWindow& w, float* heights) { readWindow(w, heights); }};
+}
+
+HeldDem RasterGrid::held() const {
+  DemSource source{mFrame, mGeoTransform,
+                   [this](const DemWindow& w, float* heights) { readWindow(w, heights); }};
+  return {mOriented, std::move(source), lowestHeight(), mGroundScale};
 }
 
 void RasterGrid::readWindow(const DemWindow& w, float* heights) const {

@@ -13,6 +13,7 @@
 
 #include "dem_notes.h"
 #include "orient.h"
+#include "run_recipes.h"
 #include "silhouettes.h"
 #include "strokes.h"
 
@@ -54,6 +55,9 @@ class RasterGrid {
   DemSource source(double azimuthDeg);
   // The DEM's lowest height, the plan-oblique reference (SPEC 1.9), once read() has read it.
   double lowestHeight() const;
+  // Worker thread, once read(): the DEM held whole for the recipes (run_recipes.h), its windows
+  // read through this object, which must outlive it.
+  HeldDem held() const;
 
   const HeightGrid& oriented() const { return mOriented; }
   const OrientedFrame& frame() const { return mFrame; }

@@ -6,6 +6,7 @@
 
 #include <new>
 
+#include "choice_parameter.h"
 #include "errors.h"
 #include "layer_style.h"
 #include "line_output.h"
@@ -24,7 +25,6 @@ const QString kGeometry = QStringLiteral("GEOMETRY");
 const QString kPlacement = QStringLiteral("PLACEMENT");
 const QString kSubcell = QStringLiteral("SUBCELL");
 const QString kStrips = QStringLiteral("STRIPS");
-const QString kStrokes = QStringLiteral("STROKES");
 const QString kJoinGap = QStringLiteral("JOIN_GAP");
 const QString kJoinAngle = QStringLiteral("JOIN_ANGLE");
 const QString kSmooth = QStringLiteral("SMOOTH");
@@ -111,15 +111,21 @@ void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
       tr("Formulated strokes link cells on neighbouring profiles at most this many cells apart."));
   add(integer(kMinCells, tr("Minimum stroke cells"), defaults.chain.min_cells, 2, 1000000),
       tr("Strokes with fewer cells are dropped (generalisation)."));
-  add(new QgsProcessingParameterEnum(kGeometry, tr("Geometry"),
-                                     {tr("Map (cell centres)"), tr("Plan oblique (the sketch)")},
-                                     false, 0),
+  add(choiceParameter(
+          kGeometry, tr("Geometry"), kGeometryNames,
+          [](Geometry g) {
+            return g == Geometry::map ? tr("Map (cell centres)") : tr("Plan oblique (the sketch)");
+          },
+          Geometry::map),
       tr("Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved "
          "along the view azimuth by (exaggeration / base slope) x (height - lowest height), so "
          "the strokes draw the oblique sketch in the same CRS."));
-  add(new QgsProcessingParameterEnum(kPlacement, tr("Formulated stroke placement"),
-                                     {tr("Far end of each zone"), tr("Near and far ends")}, false,
-                                     0),
+  add(choiceParameter(
+          kPlacement, tr("Formulated stroke placement"), kPlacementNames,
+          [](Placement p) {
+            return p == Placement::far ? tr("Far end of each zone") : tr("Near and far ends");
+          },
+          Placement::far),
       tr("Which cells of a filtered zone become formulated silhouette points."), true);
   add(new QgsProcessingParameterBoolean(kSubcell, tr("Sub-cell occluding points"), false),
       tr("Place factual points where the transformed profile peaks between cells instead of at "
@@ -149,18 +155,13 @@ void SilhouettesAlgorithm::addStrokeParameters() {
                     const QString& help) {
     addWithHelp(number(key, label, value, min, max), help, true);
   };
-  addWithHelp(
-      new QgsProcessingParameterEnum(
-          kStrokes, tr("Strokes"),
-          {tr("Drawn (joined, smoothed, tapered)"), tr("Exact (the thesis's, a point per cell)")},
-          false, 0),
+  addStrokeModeParameter(
       tr("Drawn (the default): strokes a cartographer would publish. Pieces of one class that "
          "continue each other across a small gap are joined before short strokes are dropped; "
          "points lie between cells where the profile peaks or the slope breaks, and are smoothed "
          "along the stroke; every point carries a weight (its M value) that tapers the ends and "
          "thins the strokes towards the back of the view, which the layers' styles draw. Exact: "
-         "the thesis's strokes, a point at each cell centre."),
-      true);
+         "the thesis's strokes, a point at each cell centre."));
   add(kJoinGap, tr("Join gap (cells)"), defaults.join_gap_cells, 0, 20,
       tr("Drawn strokes: ends of two strokes this close (in cells) are joined when their "
          "directions agree. 0 joins none."));
@@ -186,8 +187,7 @@ void SilhouettesAlgorithm::addStrokeParameters() {
 void SilhouettesAlgorithm::readStrokes(const QVariantMap& parameters,
                                        QgsProcessingContext& context) {
   DrawnParams& d = mParams.strokes;
-  d.mode =
-      parameterAsEnum(parameters, kStrokes, context) == 1 ? StrokeMode::exact : StrokeMode::drawn;
+  d.mode = readStrokeMode(parameters, context);
   d.join_gap_cells = parameterAsDouble(parameters, kJoinGap, context);
   d.join_angle_deg = parameterAsDouble(parameters, kJoinAngle, context);
   d.smooth_cells = parameterAsDouble(parameters, kSmooth, context);
@@ -204,10 +204,8 @@ double SilhouettesAlgorithm::readParameters(const QVariantMap& parameters,
   readFilter(parameters, context, p);
   p.chain.window = parameterAsInt(parameters, kWindow, context);
   p.chain.min_cells = parameterAsInt(parameters, kMinCells, context);
-  p.geometry =
-      parameterAsEnum(parameters, kGeometry, context) == 1 ? Geometry::oblique : Geometry::map;
-  p.placement = parameterAsEnum(parameters, kPlacement, context) == 1 ? Placement::near_and_far
-                                                                      : Placement::far;
+  p.geometry = parameterAsChoice(*this, parameters, kGeometry, context, kGeometryNames);
+  p.placement = parameterAsChoice(*this, parameters, kPlacement, context, kPlacementNames);
   p.subcell = parameterAsBool(parameters, kSubcell, context);
   mStrips = parameterAsInt(parameters, kStrips, context);
   readStrokes(parameters, context);

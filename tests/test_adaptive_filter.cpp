@@ -95,12 +95,30 @@ TEST_CASE("a fixed filter is left as it is", "[adaptive]") {
   const DemSource dem = memory_source(z, 10.0, 90);
   SilhouetteParams fixed;
   fixed.filter.row_cut_pct = 30;
-  FilterReport report;
-  const SilhouetteParams run = adapt_filter(fixed, dem.frame, dem.read, report);
-  CHECK(run.filter.row_cut_pct == 30);
-  CHECK(run.height_tolerance == 0.0);
-  CHECK(run.local_scale == nullptr);
-  CHECK(report.scale == 1.0);
+  const ResolvedParams run = adapt_filter(fixed, dem.frame, dem.read);
+  CHECK(run->filter.row_cut_pct == 30);
+  CHECK(run->height_tolerance == 0.0);
+  CHECK(run->local_scale == nullptr);
+  CHECK(run.filter().scale == 1.0);
+  CHECK(run.filter().choice.mode == FilterMode::fixed);
+}
+
+TEST_CASE("an adaptive filter cannot run unresolved, and reports what it ran", "[adaptive]") {
+  const HeightGrid z = rolling(60, 70);
+  const DemSource dem = memory_source(z, 10.0, 90);
+  SilhouetteParams asked;
+  asked.adaptive.mode = FilterMode::adaptive;
+  // Taken as fixed, the run would apply the thesis's cut-offs while reporting "adaptive".
+  CHECK_THROWS_AS(ResolvedParams(asked), Error);
+  CHECK_THROWS_AS(adapt_filter(asked, dem.frame, WindowReader()), Error);
+  const ResolvedParams run = adapt_filter(asked, dem.frame, dem.read);
+  const SilhouetteResult result = run_silhouettes(z, dem.frame, {}, run);
+  // The stages took the scaled cut-offs, and the result says so: the report is the resolving's.
+  CHECK(run->filter.row_cut_pct == Approx(asked.filter.row_cut_pct * run.filter().scale));
+  CHECK(result.filter.choice.mode == FilterMode::adaptive);
+  CHECK(result.filter.scale == run.filter().scale);
+  CHECK(result.filter.cutoffs.row_cut_pct == run->filter.row_cut_pct);
+  CHECK(result.filter.scale != 1.0);
 }
 
 TEST_CASE("doubling the relief and halving the exaggeration gives the same sketch", "[adaptive]") {
@@ -162,11 +180,11 @@ TEST_CASE("local adaptivity keeps a plain's breaks of slope beside mountains", "
   local.adaptive.adapt = Adaptivity::local;
   local.adaptive.window = 40;
   const DemSource dem = memory_source(z, 10.0, 90);
-  FilterReport report;
   const SilhouetteResult w =
-      run_silhouettes(z, dem.frame, {}, adapt_filter(whole, dem.frame, dem.read, report));
-  const SilhouetteParams run = adapt_filter(local, dem.frame, dem.read, report);
-  REQUIRE(run.local_scale);
+      run_silhouettes(z, dem.frame, {}, adapt_filter(whole, dem.frame, dem.read));
+  const ResolvedParams run = adapt_filter(local, dem.frame, dem.read);
+  const FilterReport& report = run.filter();
+  REQUIRE(run->local_scale);
   CHECK(report.local_lowest < report.scale);
   CHECK(report.local_highest > report.scale);
   const SilhouetteResult l = run_silhouettes(z, dem.frame, {}, run);

@@ -55,7 +55,7 @@ Run run(const HeightGrid& dem, double azimuth, const GeoTransform& gt) {
   params.view.azimuth_deg = azimuth;
   Run r;
   r.frame = make_frame(dem.rows(), dem.cols(), kCell, kCell, azimuth);
-  r.result = run_silhouettes(orient(dem, r.frame), r.frame, gt, params);
+  r.result = run_silhouettes(orient(dem, r.frame), r.frame, gt, ResolvedParams(params));
   return r;
 }
 
@@ -284,7 +284,7 @@ TEST_CASE("resampling strip by strip gives the strokes of the whole resampled gr
       const OrientedFrame frame = make_frame(dem.rows(), dem.cols(), kCell, kCell, az);
       REQUIRE(frame.profiles > 1024);
       // The whole grid at once, with the DEM's lowest height as the plan-oblique reference.
-      SilhouetteStream whole_stream(frame, gt, params, lowest_height(dem));
+      SilhouetteStream whole_stream(frame, gt, ResolvedParams(params), lowest_height(dem));
       whole_stream.add_strip(orient(dem, frame), 0, frame.profiles);
       const SilhouetteResult whole = whole_stream.finish();
       const SilhouetteResult strips = run_resampled_silhouettes(dem, frame, gt, params);
@@ -392,15 +392,15 @@ TEST_CASE("a DEM read window by window in strips gives the strokes of the one-pi
     params.geometry = Geometry::oblique;
     params.subcell = true;
     const OrientedFrame frame = make_frame(dem.rows(), dem.cols(), kCell, kCell, az);
-    const SilhouetteResult whole = frame.resampled
-                                       ? run_resampled_silhouettes(dem, frame, gt, params)
-                                       : run_silhouettes(orient(dem, frame), frame, gt, params);
+    const SilhouetteResult whole =
+        frame.resampled ? run_resampled_silhouettes(dem, frame, gt, params)
+                        : run_silhouettes(orient(dem, frame), frame, gt, ResolvedParams(params));
     REQUIRE(whole.strokes.size() > 20);
     for (std::size_t width : {std::size_t{16}, std::size_t{100}}) {
       CAPTURE(az, width);
       StripLoader loader(frame, window_reader(dem), params.threads);
       const SilhouetteResult strips =
-          run_in_strips(frame, gt, params, lowest_height(dem), width,
+          run_in_strips(frame, gt, ResolvedParams(params), lowest_height(dem), width,
                         [&loader](std::size_t first, std::size_t count, HeightGrid& strip) {
                           loader.load(first, count, strip);
                         });

@@ -20,7 +20,7 @@ Oriented run_view(const HeightGrid& dem, double azimuth, double cell = 10) {
   o.z = orient(dem, o.frame);
   SilhouetteParams params;
   params.view.azimuth_deg = azimuth;
-  o.result = run_silhouettes(o.z, o.frame, GeoTransform{}, params);
+  o.result = run_silhouettes(o.z, o.frame, GeoTransform{}, ResolvedParams(params));
   return o;
 }
 

@@ -130,7 +130,8 @@ TEST_CASE("drawn strokes go out as LineString M with their weights, exact ones a
   const io::Dem dem = io::read_dem(kSample, options);
   SilhouetteParams params;
   params.strokes.mode = StrokeMode::drawn;
-  const SilhouetteResult core = run_silhouettes(dem.oriented, dem.frame, dem.geotransform, params);
+  const SilhouetteResult core =
+      run_silhouettes(dem.oriented, dem.frame, dem.geotransform, ResolvedParams(params));
   GDALAllRegister();
   for (const char* name : {"drawn.gpkg", "exact.gpkg"}) {
     const bool weighted = std::string(name) == "drawn.gpkg";
@@ -714,9 +715,9 @@ TEST_CASE("strips give byte-identical output to the whole DEM", "[cli][strips]")
     asked.geometry = Geometry::oblique;
     asked.adaptive.mode = FilterMode::adaptive;  // the command line's defaults
     asked.strokes.mode = StrokeMode::drawn;
-    FilterReport filter;
-    const SilhouetteParams params =
-        adapt_filter(asked, whole.frame, io::DemFile(kSample, options).source().read, filter);
+    const ResolvedParams params =
+        adapt_filter(asked, whole.frame, io::DemFile(kSample, options).source().read);
+    const FilterReport& filter = params.filter();
     StageStats reference;
     io::write_strokes(
         dir / "whole.geojson", "", whole.srs_wkt,

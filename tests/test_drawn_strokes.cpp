@@ -316,7 +316,7 @@ TEST_CASE("drawn strokes are drawn as chains complete and do not depend on the s
   params.strokes.mode = StrokeMode::drawn;
   params.geometry = Geometry::oblique;
   const SilhouetteResult whole =
-      run_silhouettes(z, frame, GeoTransform{}, params, {}, lowest_height(z));
+      run_silhouettes(z, frame, GeoTransform{}, ResolvedParams(params), {}, lowest_height(z));
   REQUIRE(whole.strokes.size() > 20);
   // With one thread the drawing runs on the scanning thread, so the strokes handed on before
   // finish() can be counted; with two, a drawing thread hands them on at its own pace.
@@ -326,7 +326,7 @@ TEST_CASE("drawn strokes are drawn as chains complete and do not depend on the s
     params.threads = threads;
     std::size_t before_finish = 0;
     std::vector<Stroke> got;
-    SilhouetteStream streamed(frame, GeoTransform{}, params, lowest_height(z), {},
+    SilhouetteStream streamed(frame, GeoTransform{}, ResolvedParams(params), lowest_height(z), {},
                               [&](Stroke&& s) { got.push_back(std::move(s)); });
     for (std::size_t first = 0; first < frame.profiles; first += strip) {
       const std::size_t count = std::min(strip, frame.profiles - first);

@@ -255,10 +255,11 @@ TEST_CASE("strips of any width give exactly the result of the whole grid", "[pip
     params.subcell = true;
     const OrientedFrame frame = make_frame(90, 70, 10, 10, az);
     const HeightGrid z = orient(dem, frame);
-    const SilhouetteResult whole = run_silhouettes(z, frame, GeoTransform{}, params);
+    const SilhouetteResult whole =
+        run_silhouettes(z, frame, GeoTransform{}, ResolvedParams(params));
     for (std::size_t width : {1u, 7u, 64u}) {
       CAPTURE(az, width);
-      SilhouetteStream stream(frame, GeoTransform{}, params, lowest_height(z));
+      SilhouetteStream stream(frame, GeoTransform{}, ResolvedParams(params), lowest_height(z));
       for (std::size_t first = 0; first < frame.profiles; first += width) {
         const std::size_t count = std::min(width, frame.profiles - first);
         stream.add_strip(strip_of(z, first, count), first, count);
@@ -337,11 +338,11 @@ TEST_CASE("a stroke sink gets every stroke as its chain completes, each class in
     params.subcell = true;
     const OrientedFrame frame = make_frame(dem.rows(), dem.cols(), 10, 10, az);
     const HeightGrid z = orient(dem, frame);
-    const SilhouetteResult held = run_silhouettes(z, frame, GeoTransform{}, params);
+    const SilhouetteResult held = run_silhouettes(z, frame, GeoTransform{}, ResolvedParams(params));
     REQUIRE(held.strokes.size() > 50);
     std::vector<Stroke> received;
     std::size_t received_before_finish = 0;
-    SilhouetteStream stream(frame, GeoTransform{}, params, lowest_height(z), {},
+    SilhouetteStream stream(frame, GeoTransform{}, ResolvedParams(params), lowest_height(z), {},
                             [&](Stroke&& s) { received.push_back(std::move(s)); });
     const std::size_t width = 20;
     for (std::size_t first = 0; first < frame.profiles; first += width) {
@@ -377,7 +378,7 @@ TEST_CASE("what a stroke sink throws ends the run", "[pipeline][strips]") {
       SilhouetteParams params;
       params.strokes.mode = mode;
       params.threads = threads;
-      SilhouetteStream stream(frame, GeoTransform{}, params, 0.0, {},
+      SilhouetteStream stream(frame, GeoTransform{}, ResolvedParams(params), 0.0, {},
                               [](Stroke&&) { throw Error("disk full"); });
       CHECK_THROWS_WITH(
           [&] {
@@ -488,7 +489,7 @@ TEST_CASE("the pipeline classifies every cell as SPEC 1.2-1.6 say, nodata includ
   params.filter.diagonals = seed != 22u;
   params.placement = seed == 23u ? Placement::near_and_far : Placement::far;
   const OrientedFrame frame = make_frame(dem.rows(), dem.cols(), 10, 12, 90);  // from the west
-  const SilhouetteResult r = run_silhouettes(dem, frame, GeoTransform{}, params);
+  const SilhouetteResult r = run_silhouettes(dem, frame, GeoTransform{}, ResolvedParams(params));
   const CellFlags expected = oracle::classify(dem, frame.d, frame.w, params);
   std::size_t counts[6] = {};
   for (std::size_t p = 0; p < dem.rows(); ++p)

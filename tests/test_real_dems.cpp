@@ -47,7 +47,7 @@ SilhouetteResult run_case(const Case& c) {
   const io::Dem dem = io::read_dem(kData + "/" + c.file, options);
   SilhouetteParams params;
   params.view.azimuth_deg = c.azimuth;
-  return run_silhouettes(dem.oriented, dem.frame, dem.geotransform, params);
+  return run_silhouettes(dem.oriented, dem.frame, dem.geotransform, ResolvedParams(params));
 }
 
 std::map<std::string, std::string> read_golden() {

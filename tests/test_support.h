@@ -38,7 +38,7 @@ inline HeightGrid random_terrain(std::size_t rows, std::size_t cols, std::uint32
 inline SilhouetteResult run_on_dem(const HeightGrid& dem, SilhouetteParams params, double dx = 10,
                                    double dy = 10) {
   const OrientedFrame frame = make_frame(dem.rows(), dem.cols(), dx, dy, params.view.azimuth_deg);
-  return run_silhouettes(orient(dem, frame), frame, GeoTransform{}, params);
+  return run_silhouettes(orient(dem, frame), frame, GeoTransform{}, ResolvedParams(params));
 }
 
 // The DEM turned a quarter clockwise: what was east is south.

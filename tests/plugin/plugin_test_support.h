@@ -182,9 +182,8 @@ inline SilhouetteResult coreResult(const QString& file, double azimuth, Geometry
   params.strokes.mode = StrokeMode::drawn;
   io::DemOptions options;
   options.azimuth_deg = azimuth;
-  FilterReport filter;
-  const SilhouetteParams run = adapt_filter(
-      params, dem.frame, io::DemFile(file.toStdString(), options).source().read, filter);
+  const ResolvedParams run =
+      adapt_filter(params, dem.frame, io::DemFile(file.toStdString(), options).source().read);
   return run_silhouettes(dem.oriented, dem.frame, dem.geotransform, run, {}, dem.lowest_height);
 }
 

@@ -17,7 +17,7 @@ SilhouetteResult run_resampled_silhouettes(const HeightGrid& dem, const Oriented
   constexpr std::size_t kStrip = 1024;
   double resampling = 0;
   SilhouetteResult result = run_in_strips(
-      frame, geotransform, params, plan_oblique_reference(dem, params), kStrip,
+      frame, geotransform, ResolvedParams(params), plan_oblique_reference(dem, params), kStrip,
       [&](std::size_t first, std::size_t count, HeightGrid& strip) {
         const auto start = Clock::now();
         resample_profiles(dem, frame, first, count, strip, params.threads);
