@@ -489,6 +489,11 @@ GERMAN = {
         'Die sichtbaren Gipfel als Hinweislinien im Panorama, von jeder Spitze senkrecht hinauf zu ihrer Beschriftung, mit Name, Entfernung, Azimut und Höhenwinkel.',
     "The peaks have no field '%1' for their names.":
         'Die Gipfel haben kein Feld „%1“ für ihre Namen.',
+    "Drawn (the default): a stroke is cut where its chain leaps along the rays, since a leap "
+    "draws no line on the terrain. Exact: the thesis's strokes, each chain whole.":
+        "Gezeichnet (Standard): ein Strich wird getrennt, wo seine Kette entlang der Strahlen "
+        "springt, denn ein Sprung zeichnet keine Linie im Gelände. Exakt: die Striche der "
+        "Dissertation, jede Kette ganz.",
 }
 
 

@@ -71,7 +71,10 @@ QVariantMap ProfilePlotAlgorithm::processAlgorithm(const QVariantMap& parameters
                     feedback);
   for (const ProfileLine& line : lines) {
     QgsFeature feature(fields);
-    feature.setAttributes({static_cast<int>(line.cross_section), line.distance});
+    // Not a braced list: QgsAttributes{n, value} is n copies of the value (QVector's constructor).
+    QgsAttributes attributes;
+    attributes << static_cast<int>(line.cross_section) << line.distance;
+    feature.setAttributes(attributes);
     feature.setGeometry(lineGeometry(line.points));
     addWithProgress(output, feature, feedback, lines.size(), 50);
   }

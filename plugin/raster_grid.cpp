@@ -236,9 +236,14 @@ bool RasterGrid::SourceCells::cover(double x, double y) const {
 }
 
 void RasterGrid::setView(double azimuthDeg) {
-  const double dx = mExtent.width() / mCols;
-  const double dy = mExtent.height() / mRows;
-  mGeoTransform.a = {mExtent.xMinimum(), dx, 0.0, mExtent.yMaximum(), 0.0, -dy};
+  // A file read straight through GDAL keeps its own geotransform, as the command line does: the
+  // layer's extent divided by its size may differ from it in the last digits.
+  if (!mFile || !mFile->geotransform(mGeoTransform)) {
+    mGeoTransform.a = {
+        mExtent.xMinimum(),       mExtent.width() / mCols, 0.0, mExtent.yMaximum(), 0.0,
+        -mExtent.height() / mRows};
+  }
+  const double dx = mGeoTransform.a[1], dy = -mGeoTransform.a[5];
   mFrame = withCoreErrors([&] {
     return make_frame(static_cast<std::size_t>(mRows), static_cast<std::size_t>(mCols),
                       dx * mGroundScale, dy * mGroundScale, azimuthDeg);

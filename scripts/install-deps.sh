@@ -9,7 +9,8 @@ packages=(build-essential cmake catch2 libgdal-dev libsqlite3-dev gdal-bin clang
 if [ "$what" = qgis ]; then
   # mmdebstrap: the chroots of the newer QGIS releases; qt6-*: the Qt6 readiness build;
   # dpkg-dev and file: the Debian package (CPack).
-  packages+=(libqgis-dev qgis qgis-providers qttools5-dev-tools qttools5-dev xvfb xauth mmdebstrap
+  # python3-gdal (with numpy): the front-end parity test reads and makes rasters.
+  packages+=(libqgis-dev qgis qgis-providers python3-gdal qttools5-dev-tools qttools5-dev xvfb xauth mmdebstrap
     qt6-base-dev qt6-tools-dev qt6-l10n-tools dpkg-dev file)
 fi
 missing=()
