@@ -11,7 +11,7 @@
 namespace tsk::cli {
 
 int classify(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress) {
-  const Options o = parse(args);
+  const Options o = parse("classify", args);
   require_geotiff(o.output);
   const io::HeldDemFile held = load_dem(o, err);
   const io::Dem& dem = held.dem;

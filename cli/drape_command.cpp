@@ -13,7 +13,7 @@
 namespace tsk::cli {
 int drape(const Args& args, std::ostream& out, std::ostream& err,
           const ProgressFn& /* their steps report no progress */) {
-  const Options o = parse(args);
+  const Options o = parse("drape", args);
   require_geotiff(o.output);
   if (o.source.empty()) throw Error("drape needs --source RASTER, the raster to drape");
   io::HeldDemFile held = load_dem(o, err);

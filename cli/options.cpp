@@ -1,87 +1,18 @@
 #include "options.h"
 
 #include <cctype>
-#include <cmath>
 #include <filesystem>
-#include <functional>
 #include <iterator>
-#include <map>
-#include <stdexcept>
 #include <utility>
 
 #include "errors.h"
 #include "gdal_util.h"
 #include "interrupt.h"
+#include "option_table.h"
 #include "output_files.h"
 
 namespace tsk::cli {
 namespace {
-
-// Parses a whole number or a finite decimal, refusing trailing junk.
-double parse_number(const std::string& option, const std::string& text) {
-  // Decimal numbers only: std::stod also reads hexadecimal (0x5A is 90), "inf" and "nan".
-  if (text.find_first_not_of("0123456789+-.eE") != std::string::npos)
-    throw Error(option + " needs a number, got '" + text + "' (decimal digits only)");
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::out_of_range&) {
-    throw Error(option + " got '" + text + "', too large or too small a number");
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || used == 0) throw Error(option + " needs a number, got '" + text + "'");
-  return value;
-}
-
-int parse_int(const std::string& option, const std::string& text) {
-  // Digits after an optional sign (not 1e0, 0x5A or 2.5), then within range: converting a double
-  // beyond an integer's range is undefined.
-  const std::size_t digits = text.find_first_not_of("+-") == 1 ? 1 : 0;
-  const bool whole =
-      !text.empty() && text.find_first_not_of("0123456789", digits) == std::string::npos;
-  const double value = whole ? parse_number(option, text) : 0.0;
-  if (!whole || !(value >= -1e9 && value <= 1e9)) {
-    throw Error(option + " needs a whole number from -1000000000 to 1000000000, got '" + text +
-                "'");
-  }
-  return static_cast<int>(value);
-}
-
-double parse_cell_size(const std::string& option, const std::string& text) {
-  const double size = parse_number(option, text);
-  if (!(size > 0 && std::isfinite(size)))
-    throw Error(option + " must be positive, a number of metres; got '" + text + "'");
-  return size;
-}
-
-// "X,Y": the observer's position in the DEM's CRS.
-void parse_observer(const std::string& option, const std::string& text, Options& o) {
-  const std::size_t comma = text.find(',');
-  if (comma == std::string::npos)
-    throw Error(option + " needs X,Y in the DEM's CRS, got '" + text + "'");
-  o.panorama.observer_x = parse_number(option, text.substr(0, comma));
-  o.panorama.observer_y = parse_number(option, text.substr(comma + 1));
-  o.observer_given = true;
-}
-
-// A panorama's range: a positive distance in map units.
-double parse_range(const std::string& option, const std::string& text) {
-  const double range = parse_number(option, text);
-  if (!(range > 0.0))
-    throw Error(option + " must be a positive distance in the DEM's map units; got '" + text + "'");
-  return range;
-}
-
-// The preview's extension names its format: another would name one it cannot write.
-std::string parse_preview_name(const std::string& option, const std::string& path) {
-  const std::string ext = io::lowercase_extension(path);
-  if (ext != ".png" && ext != ".svg" && ext != ".pdf")
-    throw Error(option + " draws a PNG picture or SVG or PDF vector art: give it a .png, .svg or " +
-                ".pdf name");
-  return path;
-}
 
 // The page's options make sense only with a preview to put on it, and are checked before work.
 void check_page(const Options& o) {
@@ -147,103 +78,47 @@ void refuse_clashing_paths(const Options& o) {
 
 }  // namespace
 
-Options parse(const std::vector<std::string>& args) {
+namespace {
+
+bool looks_like_option(const std::string& arg) {
+  return arg.size() > 1 && arg[0] == '-' && !std::isdigit(static_cast<unsigned char>(arg[1]));
+}
+
+const OptionSpec& find_option(const std::string& name, const CommandSpec& command) {
+  for (const OptionSpec& option : option_table()) {
+    if (name != option.name) continue;
+    if (option.commands & command.bit) return option;
+    std::string takers;
+    for (const CommandSpec& other : command_table()) {
+      if (option.commands & other.bit)
+        takers += std::string(takers.empty() ? "" : ", ") + other.name;
+    }
+    throw Error(std::string(command.name) + " does not take " + name + " (an option of " + takers +
+                "); `terrain-sketch " + command.name + " --help` lists the options it takes");
+  }
+  throw Error("unknown option '" + name + "'; `terrain-sketch " + command.name +
+              " --help` lists the options it takes");
+}
+
+}  // namespace
+
+Options parse(const std::string& command_name, const std::vector<std::string>& args) {
+  const CommandSpec* command = find_command(command_name);
+  if (!command) throw Error("internal: no command '" + command_name + "'");
   Options o;
   o.params.adaptive.mode = FilterMode::adaptive;  // the command line's default; SPEC's is fixed
   o.params.strokes.mode = StrokeMode::drawn;      // likewise; SPEC's strokes are exact
   std::vector<std::string> positional;
-  using Setter = std::function<void(const std::string&, const std::string&)>;
-  const std::map<std::string, Setter> with_value = {
-      {"--azimuth", [&](auto& n, auto& v) { o.params.view.azimuth_deg = parse_number(n, v); }},
-      {"--ve", [&](auto& n, auto& v) { o.params.view.ve = parse_number(n, v); }},
-      {"--base-slope",
-       [&](auto& n, auto& v) { o.params.view.base_slope_pct = parse_number(n, v); }},
-      {"--row-cut", [&](auto& n, auto& v) { o.params.filter.row_cut_pct = parse_number(n, v); }},
-      {"--col-cut", [&](auto& n, auto& v) { o.params.filter.col_cut_pct = parse_number(n, v); }},
-      {"--ctrl", [&](auto& n, auto& v) { o.params.filter.ctrl_col_pct = parse_number(n, v); }},
-      {"--filter", [&](auto&, auto& v) { o.params.adaptive.mode = parse_filter_mode(v); }},
-      {"--adapt", [&](auto&, auto& v) { o.params.adaptive.adapt = parse_adaptivity(v); }},
-      {"--adapt-window", [&](auto& n, auto& v) { o.params.adaptive.window = parse_int(n, v); }},
-      {"--window", [&](auto& n, auto& v) { o.params.chain.window = parse_int(n, v); }},
-      {"--min-cells", [&](auto& n, auto& v) { o.params.chain.min_cells = parse_int(n, v); }},
-      {"--strokes", [&](auto&, auto& v) { o.params.strokes.mode = parse_stroke_mode(v); }},
-      {"--smooth", [&](auto& n, auto& v) { o.params.strokes.smooth_cells = parse_number(n, v); }},
-      {"--smooth-tolerance",
-       [&](auto& n, auto& v) { o.params.strokes.tolerance_cells = parse_number(n, v); }},
-      {"--join-gap",
-       [&](auto& n, auto& v) { o.params.strokes.join_gap_cells = parse_number(n, v); }},
-      {"--join-angle",
-       [&](auto& n, auto& v) { o.params.strokes.join_angle_deg = parse_number(n, v); }},
-      {"--taper", [&](auto& n, auto& v) { o.params.strokes.taper = parse_number(n, v); }},
-      {"--depth-cue", [&](auto& n, auto& v) { o.params.strokes.depth_cue = parse_number(n, v); }},
-      {"--extend", [&](auto& n, auto& v) { o.params.strokes.extend_cells = parse_number(n, v); }},
-      {"--placement", [&](auto&, auto& v) { o.params.placement = parse_placement(v); }},
-      {"--geometry", [&](auto&, auto& v) { o.params.geometry = parse_geometry(v); }},
-      {"--band", [&](auto& n, auto& v) { o.dem.band = parse_int(n, v); }},
-      {"--cell-size", [&](auto& n, auto& v) { o.dem.cell_size = parse_cell_size(n, v); }},
-      {"--threads",
-       [&](auto& n, auto& v) {
-         const int t = parse_int(n, v);
-         if (t < 0) throw Error("--threads must be 0 or more");
-         o.params.threads = static_cast<unsigned>(t);
-       }},
-      {"--format", [&](auto&, auto& v) { o.format = v; }},
-      {"--strips",
-       [&](auto& n, auto& v) {
-         o.strips = parse_int(n, v);
-         if (o.strips < 1) throw Error("--strips needs at least 1 profile per strip");
-       }},
-      {"--source", [&](auto&, auto& v) { o.source = v; }},
-      {"--convex-column",
-       [&](auto& n, auto& v) { o.pstrokes.convex_column_m2 = parse_number(n, v); }},
-      {"--concave-column",
-       [&](auto& n, auto& v) { o.pstrokes.concave_column_m2 = parse_number(n, v); }},
-      {"--convex-row", [&](auto& n, auto& v) { o.pstrokes.convex_row_m2 = parse_number(n, v); }},
-      {"--concave-row", [&](auto& n, auto& v) { o.pstrokes.concave_row_m2 = parse_number(n, v); }},
-      {"--half-length", [&](auto& n, auto& v) { o.pstrokes.half_length = parse_int(n, v); }},
-      {"--every",
-       [&](auto& n, auto& v) {
-         o.every = parse_int(n, v);
-         if (o.every < 1) throw Error("--every must be at least 1");
-       }},
-      {"--stats-json", [&](auto&, auto& v) { o.stats_json = v; }},
-      {"--observer", [&](auto& n, auto& v) { parse_observer(n, v, o); }},
-      {"--observer-height",
-       [&](auto& n, auto& v) { o.panorama.observer_height = parse_number(n, v); }},
-      {"--max-distance", [&](auto& n, auto& v) { o.panorama.max_distance = parse_range(n, v); }},
-      {"--azimuth-from", [&](auto& n, auto& v) { o.panorama.azimuth_from = parse_number(n, v); }},
-      {"--azimuth-to", [&](auto& n, auto& v) { o.panorama.azimuth_to = parse_number(n, v); }},
-      {"--refraction", [&](auto& n, auto& v) { o.panorama.refraction = parse_number(n, v); }},
-      {"--visibility", [&](auto&, auto& v) { o.visibility = v; }},
-      {"--peaks", [&](auto&, auto& v) { o.peaks = v; }},
-      {"--peak-names", [&](auto&, auto& v) { o.peak_names = v; }},
-      {"--preview", [&](auto& n, auto& v) { o.preview = parse_preview_name(n, v); }},
-      {"--page", [&](auto&, auto& v) { o.page.size = v; }},
-      {"--page-scale",
-       [&](auto& n, auto& v) {
-         o.page.scale = parse_number(n, v);
-         if (!(o.page.scale >= 1.0 && o.page.scale <= 1e9))
-           throw Error(n + " is the N of 1:N, from 1 to 1000000000; got '" + v + "'");
-       }},
-  };
   for (std::size_t k = 0; k < args.size(); ++k) {
-    const std::string& a = args[k];
-    if (a == "--no-diagonals") {
-      o.params.filter.diagonals = false;
-    } else if (a == "--subcell") {
-      o.params.subcell = true;
-    } else if (a == "--timings") {
-      o.timings = true;
-    } else if (a == "--plotter") {
-      o.page.plotter = true;
-    } else if (auto it = with_value.find(a); it != with_value.end()) {
-      if (k + 1 >= args.size()) throw Error(a + " needs a value");
-      it->second(a, args[++k]);
-    } else if (a.size() > 1 && a[0] == '-' && !std::isdigit(static_cast<unsigned char>(a[1]))) {
-      throw Error("unknown option '" + a + "'");
-    } else {
-      positional.push_back(a);
+    if (!looks_like_option(args[k])) {
+      positional.push_back(args[k]);
+      continue;
     }
+    const std::string& name = args[k];
+    const OptionSpec& option = find_option(name, *command);
+    if (option.value && k + 1 >= args.size()) throw Error(name + " needs a value");
+    const std::string value = option.value ? args[++k] : std::string();
+    option.set(o, name, value);
   }
   if (positional.size() != 2) throw Error("expected INPUT and OUTPUT");
   o.input = positional[0];

@@ -27,9 +27,9 @@ struct Options {
   PStrokeParams pstrokes;
 };
 
-// Parses a command's arguments (without the command's name). Throws Error naming the option on
-// anything it cannot take, and when an output would replace an input or another output, or
-// could not be written.
-Options parse(const std::vector<std::string>& args);
+// Parses the arguments of the command `command` (option_table.h) without its name. Throws Error
+// naming the option on anything it cannot take (an option of another command too), and when an
+// output would replace an input or another output, or could not be written.
+Options parse(const std::string& command, const std::vector<std::string>& args);
 
 }  // namespace tsk::cli

@@ -32,8 +32,6 @@ void check_before_work(const Options& o) {
         "a panorama's strokes go in two layers (map and panorama): name OUTPUT .gpkg or "
         ".sqlite");
   if (!o.visibility.empty()) require_geotiff(o.visibility);
-  if (o.page.scale > 0.0)
-    throw Error("--page-scale sets a map scale, which a panorama has not: leave it out");
 }
 
 // The DEM as it lies, read whole: the view from the west is its own grid, unturned.
@@ -74,7 +72,7 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaResult& r
 }  // namespace
 
 int panorama(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress) {
-  const Options o = parse(args);
+  const Options o = parse("panorama", args);
   check_before_work(o);
   io::HeldDemFile held = read_whole_dem(o, err);
   const io::Dem& dem = held.dem;

@@ -12,7 +12,7 @@ namespace tsk::cli {
 
 int profiles(const Args& args, std::ostream& out, std::ostream& err,
              const ProgressFn& /* their steps report no progress */) {
-  const Options o = parse(args);
+  const Options o = parse("profiles", args);
   io::check_vector_output(o.output, o.format);
   const io::HeldDemFile held = load_dem(o, err);
   const io::Dem& dem = held.dem;

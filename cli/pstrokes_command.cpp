@@ -10,7 +10,7 @@
 namespace tsk::cli {
 
 int pstrokes(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress) {
-  const Options o = parse(args);
+  const Options o = parse("pstrokes", args);
   o.pstrokes.validate();
   io::check_vector_output(o.output, o.format);
   const io::HeldDemFile held = load_dem(o, err);

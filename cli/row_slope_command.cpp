@@ -11,7 +11,7 @@ namespace tsk::cli {
 
 int row_slope(const Args& args, std::ostream& out, std::ostream& err,
               const ProgressFn& /* their steps report no progress */) {
-  const Options o = parse(args);
+  const Options o = parse("row-slope", args);
   require_geotiff(o.output);
   const io::HeldDemFile held = load_dem(o, err);
   const io::Dem& dem = held.dem;

@@ -49,7 +49,7 @@ void print_plotter(const io::PlotterReport& r, bool millimetres, std::ostream& e
 
 int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
                 const ProgressFn& progress) {
-  const Options o = parse(args);
+  const Options o = parse("silhouettes", args);
   io::check_vector_output(o.output, o.format);  // before any work
   const io::DemFile dem(o.input, o.dem);
   print_notes(dem.info().notes, err);

@@ -6,6 +6,7 @@
 
 #include "adaptive_filter.h"
 #include "catch_compat.h"
+#include "choice_names.h"
 #include "slope_scale_map.h"
 #include "test_support.h"
 
@@ -195,4 +196,21 @@ TEST_CASE("local adaptivity keeps a plain's breaks of slope beside mountains", "
     return n;
   };
   CHECK(plain_fset(l) > 2 * plain_fset(w));
+}
+
+TEST_CASE("the choices' names and order are pinned: saved models keep their meaning", "[params]") {
+  // QGIS saves an enum parameter's position: a model saved with STROKES=1 asked for exact strokes
+  // and must go on getting them. The command line's names are the same tables'.
+  CHECK(choice_at(kStrokeModeNames, 0, "strokes") == StrokeMode::drawn);
+  CHECK(choice_at(kStrokeModeNames, 1, "strokes") == StrokeMode::exact);
+  CHECK(choice_at(kFilterModeNames, 0, "filter") == FilterMode::adaptive);
+  CHECK(choice_at(kFilterModeNames, 1, "filter") == FilterMode::fixed);
+  CHECK(choice_at(kAdaptivityNames, 1, "adapt") == Adaptivity::local);
+  CHECK(choice_at(kGeometryNames, 1, "geometry") == Geometry::oblique);
+  CHECK(choice_at(kPlacementNames, 1, "placement") == Placement::near_and_far);
+  CHECK_THROWS_WITH(choice_at(kStrokeModeNames, 2, "STROKES"), "STROKES has no option 2");
+  CHECK(parse_stroke_mode("exact") == StrokeMode::exact);
+  CHECK_THROWS_WITH(parse_stroke_mode("sketchy"),
+                    "strokes must be 'drawn' or 'exact', got 'sketchy'");
+  CHECK(choice_list(kPlacementNames) == "'far' or 'near_and_far'");
 }

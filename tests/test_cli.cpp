@@ -932,3 +932,74 @@ TEST_CASE("what runs killed outright left in a folder is removed by the next run
   CHECK_FALSE(std::filesystem::exists(other));  // another output's, of a run gone too
   CHECK(summarise(dir / "strokes.gpkg").features > 100);
 }
+
+TEST_CASE("each command takes its own options, and refuses the others by name", "[cli]") {
+  ScratchDir dir("per_command");
+  struct Refused {
+    std::vector<std::string> args;  // after the command, INPUT and OUTPUT
+    std::string command, output, message;
+  };
+  const std::vector<Refused> cases = {
+      {{"--observer", "1,2"}, "classify", "c.tif", "classify does not take --observer"},
+      {{"--strokes", "exact"}, "profiles", "p.gpkg", "profiles does not take --strokes"},
+      {{"--every", "3"}, "silhouettes", "s.gpkg", "silhouettes does not take --every"},
+      {{"--azimuth", "45"}, "panorama", "o.gpkg", "panorama does not take --azimuth"},
+      {{"--ve", "3"}, "row-slope", "r.tif", "row-slope does not take --ve"},
+      {{"--source", kSample}, "classify", "c.tif", "classify does not take --source"},
+      {{"--page-scale", "5000"}, "panorama", "o.gpkg", "panorama does not take --page-scale"},
+  };
+  for (const Refused& r : cases) {
+    std::vector<std::string> args = {r.command, kSample, dir / r.output};
+    args.insert(args.end(), r.args.begin(), r.args.end());
+    const CliRun run = run_cli(args);
+    CAPTURE(r.command, r.args.front(), run.err);
+    CHECK(run.code == 1);
+    CHECK_THAT(run.err, Catch::Contains(r.message));
+    CHECK_THAT(run.err, Catch::Contains("terrain-sketch " + r.command + " --help"));
+    CHECK(!std::filesystem::exists(dir / r.output));
+  }
+  // An option no command takes is unknown, as before.
+  CHECK_THAT(run_cli({"classify", kSample, dir / "c.tif", "--bogus"}).err,
+             Catch::Contains("unknown option '--bogus'"));
+}
+
+TEST_CASE("COMMAND --help lists that command's options only", "[cli]") {
+  struct Expect {
+    std::string command;
+    std::vector<std::string> listed, unlisted;
+  };
+  // Each option as it starts a line of the help: "  --azimuth DEG" is not "  --azimuth-from".
+  const std::vector<Expect> cases = {
+      {"classify",
+       {"  --azimuth DEG", "  --filter F", "  --stats-json"},
+       {"--observer", "--every"}},
+      {"panorama",
+       {"  --observer X,Y", "  --filter F", "  --preview", "  --visibility"},
+       {"  --azimuth DEG", "  --ve ", "--every", "--page-scale", "--subcell"}},
+      {"row-slope",
+       {"  --azimuth DEG", "  --band"},
+       {"--ve", "--filter", "--strokes", "--threads"}},
+      {"profiles", {"  --every N", "  --ve X"}, {"--filter", "--strokes", "--observer"}},
+      {"drape", {"  --source RASTER"}, {"--filter", "--every", "--preview"}},
+      {"silhouettes",
+       {"  --strokes S", "  --join-gap", "  --preview", "  --strips", "  --subcell"},
+       {"--observer", "--every", "--source", "--convex-row"}},
+  };
+  for (const Expect& e : cases) {
+    const CliRun run = run_cli({e.command, "--help"});
+    CAPTURE(e.command);
+    CHECK(run.code == 0);
+    CHECK_THAT(run.out, Catch::StartsWith("usage: terrain-sketch " + e.command + " INPUT OUTPUT"));
+    for (const std::string& option : e.listed) CHECK_THAT(run.out, Catch::Contains(option));
+    for (const std::string& option : e.unlisted) {
+      CAPTURE(option);
+      CHECK(run.out.find(option) == std::string::npos);
+    }
+  }
+  // The program's usage names every command and sends to their own help.
+  const CliRun usage = run_cli({"--help"});
+  for (const char* command : {"silhouettes", "profiles", "classify", "row-slope", "pstrokes",
+                              "drape", "panorama", "filter-plot"})
+    CHECK_THAT(usage.out, Catch::Contains(std::string("  ") + command + " "));
+  CHECK_THAT(usage.out, Catch::Contains("COMMAND --help"));
+}

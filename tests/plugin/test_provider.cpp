@@ -1,4 +1,6 @@
 // The provider: help for every algorithm and parameter, the German translation.
+#include <map>
+
 #include "plugin_test_support.h"
 
 using namespace tsk::plugin_test;
@@ -30,6 +32,34 @@ TEST_CASE("every algorithm and parameter has help, and numbers show what they ca
         CHECK(std::round(value * scale) / scale == Approx(value).margin(1e-12));
     }
   }
+}
+
+TEST_CASE("every enum lists the core's choices in their order, wherever it appears", "[plugin]") {
+  algorithm();  // registers the provider
+  const QgsProcessingProvider* provider =
+      QgsApplication::processingRegistry()->providerById(QStringLiteral("terrainsketch"));
+  REQUIRE(provider != nullptr);
+  // The first words of each choice's label, in the tables' order (core/choice_names.h).
+  const std::map<QString, QStringList> starts = {
+      {QStringLiteral("FILTER"), {QStringLiteral("Adapted"), QStringLiteral("Fixed")}},
+      {QStringLiteral("ADAPT"), {QStringLiteral("The whole"), QStringLiteral("Each")}},
+      {QStringLiteral("STROKES"), {QStringLiteral("Drawn"), QStringLiteral("Exact")}},
+      {QStringLiteral("GEOMETRY"), {QStringLiteral("Map"), QStringLiteral("Plan oblique")}},
+      {QStringLiteral("PLACEMENT"), {QStringLiteral("Far end"), QStringLiteral("Near and far")}}};
+  int seen = 0;
+  for (const QgsProcessingAlgorithm* alg : provider->algorithms()) {
+    for (const QgsProcessingParameterDefinition* parameter : alg->parameterDefinitions()) {
+      const auto* choice = dynamic_cast<const QgsProcessingParameterEnum*>(parameter);
+      if (!choice) continue;
+      CAPTURE(alg->id().toStdString(), parameter->name().toStdString());
+      REQUIRE(starts.count(parameter->name()) == 1);
+      const QStringList& expected = starts.at(parameter->name());
+      REQUIRE(choice->options().size() == expected.size());
+      for (int k = 0; k < expected.size(); ++k) CHECK(choice->options()[k].startsWith(expected[k]));
+      ++seen;
+    }
+  }
+  CHECK(seen >= 12);  // the filter's two in six algorithms, strokes, geometry and placement
 }
 
 TEST_CASE("the German translation loads for the de locale", "[plugin][i18n]") {
