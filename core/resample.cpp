@@ -237,6 +237,17 @@ class BilinearSampler {
   }
 
 #if TSK_HAS_AVX2_CODE
+  // What fetching ahead needs: the offset of the cells 16 samples on from a sample's, and how
+  // many cells there are (both 0 for cells not fetched ahead).
+  std::pair<std::int64_t, std::int64_t> fetch_ahead(double dcol, double drow) const {
+    if constexpr (Cells::kFetchAhead) {
+      return {static_cast<std::int64_t>(std::llround(16.0 * drow)) * cells_.row_stride() +
+                  static_cast<std::int64_t>(std::llround(16.0 * dcol)),
+              static_cast<std::int64_t>(cells_.cell_count())};
+    }
+    return {0, 0};
+  }
+
   // operator() on four positions at once, operation for operation in its order, so that each
   // lane gives the same float; returns where it stopped (fewer than four positions left).
   // kInterior: every position is well_inside(), so the checks and clamps are left out.
@@ -257,12 +268,7 @@ class BilinearSampler {
     const __m128 nodata = _mm_set1_ps(kNoData);
     const __m256d lanes = _mm256_setr_pd(0, 1, 2, 3);
     const float* base = cells_.base();
-    std::int64_t ahead = 0, cell_count = 0;  // the cells 16 samples on, from a sample's
-    if constexpr (Cells::kFetchAhead) {
-      ahead = static_cast<std::int64_t>(std::llround(16.0 * drow)) * cells_.row_stride() +
-              static_cast<std::int64_t>(std::llround(16.0 * dcol));
-      cell_count = cells_.cell_count();
-    }
+    [[maybe_unused]] const auto [ahead, cell_count] = fetch_ahead(dcol, drow);
     for (; i + 4 <= end; i += 4) {
       const __m256d s = _mm256_add_pd(_mm256_set1_pd(static_cast<double>(i)), lanes);
       const __m256d u = _mm256_sub_pd(

@@ -66,6 +66,8 @@ fuzz() {
 }
 
 stage "format (clang-format, the repo's .clang-format)" bash scripts/check_format.sh
+stage "no function over 80 lines in core/, io/, cli/, plugin/" \
+  python3 scripts/check_function_length.py
 stage "QGIS 3.22 (host): release build and tests (core, CLI, plugin headless, qgis_process, desktop)" \
   host_release
 stage "Qt6 readiness: the plugin's Qt code and translations against Qt6" qt6_readiness
