@@ -357,7 +357,7 @@ void bench_real_dems() {
     const std::string path = std::string(TSK_BENCH_DATA) + "/" + name;
     tsk::io::DemOptions options;
     const auto t_read = Clock::now();
-    const tsk::io::Dem dem = tsk::io::read_dem(path, options);
+    const tsk::io::Dem dem = tsk::io::read_dem(path, options, 90.0);
     const double read_s = seconds_since(t_read);
     const auto t = Clock::now();
     const tsk::SilhouetteResult r =

@@ -11,7 +11,7 @@
 namespace tsk::cli {
 
 io::HeldDemFile load_dem(const Options& o, std::ostream& err) {
-  io::HeldDemFile dem = io::hold_dem(o.input, o.dem);
+  io::HeldDemFile dem = io::hold_dem(o.input, o.dem, o.params.view.azimuth_deg);
   print_notes(dem.dem.notes, err);
   return dem;
 }

@@ -123,7 +123,6 @@ Options parse(const std::string& command_name, const std::vector<std::string>& a
   if (positional.size() != 2) throw Error("expected INPUT and OUTPUT");
   o.input = positional[0];
   o.output = positional[1];
-  o.dem.azimuth_deg = o.params.view.azimuth_deg;
   o.dem.stop = stop_if_interrupted;  // Ctrl-C and SIGTERM stop the reading too
   o.params.validate();
   o.panorama.validate();

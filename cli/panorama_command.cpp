@@ -36,12 +36,10 @@ void check_before_work(const Options& o) {
 
 // The DEM as it lies, read whole: the view from the west is its own grid, unturned.
 io::HeldDemFile read_whole_dem(const Options& o, std::ostream& err) {
-  io::DemOptions options = o.dem;
-  options.azimuth_deg = 90.0;
   // Read once, block row after block row, into a grid held whole: GDAL's cache would only hold
   // a second copy of some of it, at the peak of memory. Keep it small unless the user chose one.
   if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(16 << 20);
-  io::HeldDemFile dem = io::hold_dem(o.input, options);
+  io::HeldDemFile dem = io::hold_dem(o.input, o.dem, 90.0);
   print_notes(dem.dem.notes, err);
   return dem;
 }

@@ -33,7 +33,7 @@ void print_timings(const StageTimings& t, double write_s, double commit_s, std::
 io::PlotterReport write_preview(const Options& o, SilhouetteResult& result,
                                 std::vector<Stroke>&& drawn) {
   result.strokes = std::move(drawn);
-  const io::Dem whole = io::read_dem(o.input, o.dem);
+  const io::Dem whole = io::read_dem(o.input, o.dem, o.params.view.azimuth_deg);
   return io::write_preview(o.preview, result, whole.oriented, whole.frame, whole.geotransform,
                            o.params.view, o.params.geometry, o.page);
 }
@@ -54,7 +54,8 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
   const io::DemFile dem(o.input, o.dem);
   print_notes(dem.info().notes, err);
   const bool preview = !o.preview.empty();
-  if (preview) io::refuse_too_large_to_turn(o.input, dem.info());  // before any work too
+  if (preview)  // before any work too
+    io::refuse_too_large_to_turn(o.input, dem.info(), o.params.view.azimuth_deg);
   // Strokes are written as they complete, so they are never all held (but for the preview).
   SilhouetteResult result;
   io::PlotterReport plotter;

@@ -34,7 +34,7 @@ ResolvedParams::ResolvedParams(const SilhouetteParams& fixed) : params_(fixed) {
   filter_.heights.tolerance = fixed.height_tolerance;
 }
 
-ResolvedParams adapt_filter(const SilhouetteParams& choice, const OrientedFrame& frame,
+ResolvedParams adapt_filter(const SilhouetteParams& choice, const DemGrid& grid,
                             const WindowReader& read) {
   choice.validate();
   FilterReport report;
@@ -42,8 +42,7 @@ ResolvedParams adapt_filter(const SilhouetteParams& choice, const OrientedFrame&
   report.cutoffs = choice.filter;
   if (choice.adaptive.mode == FilterMode::fixed) return ResolvedParams(choice);
   if (!read) throw Error("an adaptive filter needs the DEM to survey");
-  const SlopeSurvey survey =
-      survey_slopes(frame.dem_rows, frame.dem_cols, frame.dem_dx, frame.dem_dy, read);
+  const SlopeSurvey survey = survey_slopes(grid.rows, grid.cols, grid.dx, grid.dy, read);
   report.median_slope_pct = survey.median_slope_pct;
   report.heights = survey.heights;
   report.scale = filter_scale(survey.median_slope_pct);
@@ -57,10 +56,9 @@ ResolvedParams adapt_filter(const SilhouetteParams& choice, const OrientedFrame&
   }
   // Local: the stages divide each cell's slopes by its neighbourhood's scale and keep the
   // cut-offs asked for.
-  auto map = std::make_shared<SlopeScaleMap>(
-      map_slope_scales(frame.dem_rows, frame.dem_cols, frame.dem_dx, frame.dem_dy,
-                       static_cast<std::size_t>(choice.adaptive.window), survey.heights.tolerance,
-                       filter_scale, report.scale, read));
+  auto map = std::make_shared<SlopeScaleMap>(map_slope_scales(
+      grid.rows, grid.cols, grid.dx, grid.dy, static_cast<std::size_t>(choice.adaptive.window),
+      survey.heights.tolerance, filter_scale, report.scale, read));
   report.local_lowest = map->lowest();
   report.local_highest = map->highest();
   out.local_scale = std::move(map);

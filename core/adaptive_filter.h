@@ -49,17 +49,17 @@ class ResolvedParams {
  private:
   ResolvedParams(SilhouetteParams params, FilterReport filter)
       : params_(std::move(params)), filter_(std::move(filter)) {}
-  friend ResolvedParams adapt_filter(const SilhouetteParams& choice, const OrientedFrame& frame,
+  friend ResolvedParams adapt_filter(const SilhouetteParams& choice, const DemGrid& grid,
                                      const WindowReader& read);
   SilhouetteParams params_;
   FilterReport filter_;
 };
 
 // Resolves the user's choice for one run: an adaptive filter's cut-offs scaled to the DEM read
-// through `read` (on its own grid: frame.dem_rows x dem_cols), its height tolerance and, with
-// local adaptivity, the map of local scales (which reads the whole DEM once); a fixed filter as it
-// is (`read` is not called). Throws Error on bad parameters, and what `read` throws.
-ResolvedParams adapt_filter(const SilhouetteParams& choice, const OrientedFrame& frame,
+// through `read` on its own `grid`, its height tolerance and, with local adaptivity, the map of
+// local scales (which reads the whole DEM once); a fixed filter as it is (`read` is not called).
+// Throws Error on bad parameters, and what `read` throws.
+ResolvedParams adapt_filter(const SilhouetteParams& choice, const DemGrid& grid,
                             const WindowReader& read);
 
 }  // namespace tsk

@@ -129,6 +129,10 @@ bool is_cardinal(double azimuth_deg) {
   return std::fabs(azimuth - 90.0 * std::round(azimuth / 90.0)) <= 1e-9;
 }
 
+OrientedFrame make_frame(const DemGrid& grid, double azimuth_deg) {
+  return make_frame(grid.rows, grid.cols, grid.dx, grid.dy, azimuth_deg);
+}
+
 OrientedFrame make_frame(std::size_t rows, std::size_t cols, double dx, double dy,
                          double azimuth_deg) {
   check_dem(rows, cols, dx, dy);

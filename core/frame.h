@@ -13,6 +13,13 @@ struct PixelPoint {
   double row;
 };
 
+// A DEM's own grid: rows x cols cells, dx east-west and dy north-south in ground units, row 0
+// north. What a view turns (make_frame); it knows no azimuth.
+struct DemGrid {
+  std::size_t rows = 0, cols = 0;
+  double dx = 1.0, dy = 1.0;
+};
+
 // How oriented cells sit on the DEM. Cardinal views (0, 90, 180, 270) are exact flips: an integer
 // map dem_row = row0 + row_per_p * p + row_per_i * i (likewise the column). Any other azimuth
 // resamples the DEM onto a grid aligned with the line of sight (spacing min(dx, dy), bilinear).
@@ -34,6 +41,9 @@ struct OrientedFrame {
   // Affine map of oriented positions to DEM pixels, every view.
   double px_col0 = 0, px_col_per_p = 0, px_col_per_i = 0;
   double px_row0 = 0, px_row_per_p = 0, px_row_per_i = 0;
+
+  // The DEM's own grid, which the frame turns.
+  DemGrid dem_grid() const { return {dem_rows, dem_cols, dem_dx, dem_dy}; }
 
   // True when the oriented grid is the DEM as it lies (the view from the west): profile p is DEM
   // row p and cell i its column i, no turn, no flip.
@@ -72,6 +82,9 @@ bool is_cardinal(double azimuth_deg);
 // for an empty grid, bad cell sizes or an oriented grid too large to address.
 OrientedFrame make_frame(std::size_t rows, std::size_t cols, double dx, double dy,
                          double azimuth_deg);
+
+// The frame of `grid` seen facing `azimuth_deg`: make_frame above.
+OrientedFrame make_frame(const DemGrid& grid, double azimuth_deg);
 
 // The resampled frame even at a cardinal azimuth (to compare the two paths).
 OrientedFrame make_resampled_frame(std::size_t rows, std::size_t cols, double dx, double dy,

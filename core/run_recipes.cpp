@@ -8,8 +8,22 @@
 
 namespace tsk {
 
+namespace {
+
+// Refuses a run whose view is not the one the DEM was turned for.
+void require_view(const HeldDem& dem, const ViewParams& view) {
+  view.validate();
+  const OrientedFrame asked = make_frame(dem.frame.dem_grid(), view.azimuth_deg);
+  if (asked.azimuth_deg != dem.frame.azimuth_deg || asked.resampled != dem.frame.resampled) {
+    throw Error("internal: the DEM was turned for azimuth " + number_text(dem.frame.azimuth_deg) +
+                ", the run asks for " + number_text(view.azimuth_deg));
+  }
+}
+
+}  // namespace
+
 WindowReader dem_windows(const HeldDem& dem) {
-  if (!dem.source.frame.as_it_lies()) {
+  if (!dem.frame.as_it_lies()) {
     if (!dem.source.read) throw Error("internal: a turned DEM needs its windows to survey");
     return dem.source.read;
   }
@@ -26,27 +40,28 @@ WindowReader dem_windows(const HeldDem& dem) {
 
 ResolvedParams resolve_on(const HeldDem& dem, const SilhouetteParams& choice) {
   if (choice.adaptive.mode == FilterMode::fixed) return ResolvedParams(choice);
-  return adapt_filter(choice, dem.source.frame, dem_windows(dem));
+  return adapt_filter(choice, dem.source.grid, dem_windows(dem));
 }
 
 SilhouetteResult sketch_held_dem(const HeldDem& dem, const SilhouetteParams& choice,
                                  const ProgressFn& progress) {
+  require_view(dem, choice.view);
   const ResolvedParams params = resolve_on(dem, choice);
-  return run_silhouettes(dem.oriented, dem.source.frame, dem.source.geotransform, params, progress,
+  return run_silhouettes(dem.oriented, dem.frame, dem.source.geotransform, params, progress,
                          dem.lowest_height);
 }
 
 PlanObliqueDrape lay_out_drape(const HeldDem& dem, const ViewParams& view, unsigned threads,
                                const ProgressFn& progress) {
-  view.validate();
+  require_view(dem, view);
   CellFlags flags;
-  classify_visibility(dem.oriented, dem.source.frame.d, view, flags, threads);
-  return PlanObliqueDrape(dem.oriented, flags, dem.source.frame, view, dem.lowest_height, progress);
+  classify_visibility(dem.oriented, dem.frame.d, view, flags, threads);
+  return PlanObliqueDrape(dem.oriented, flags, dem.frame, view, dem.lowest_height, progress);
 }
 
 PanoramaRun sketch_panorama_on(const HeldDem& dem, const PanoramaChoice& choice,
                                const ProgressFn& progress) {
-  if (!dem.source.frame.as_it_lies())
+  if (!dem.frame.as_it_lies())
     throw Error("internal: a panorama needs the DEM as it lies, unturned");
   const ResolvedParams resolved = resolve_on(dem, choice.method);
   const SilhouetteParams& method = resolved.params();

@@ -12,11 +12,12 @@
 
 namespace tsk {
 
-// A DEM held whole, turned to the view, as a front end read it.
+// A DEM held whole, turned to a view, as a front end read it.
 struct HeldDem {
-  const HeightGrid& oriented;  // the view's grid: source.frame's profiles x length
-  // The frame, the georeferencing, and windows of the DEM on its own grid for the filter's survey.
-  // When the grid is the DEM as it lies the survey reads the grid, and `source.read` may be empty.
+  const HeightGrid& oriented;  // turned as `frame` says: its profiles x length
+  OrientedFrame frame;         // the view it was turned for; a run must ask for the same azimuth
+  // The georeferencing, and windows of the DEM on its own grid for the filter's survey. When the
+  // grid is the DEM as it lies the survey reads the grid, and `source.read` may be empty.
   DemSource source;
   double lowest_height = 0.0;  // the DEM's lowest height, the plan-oblique reference (SPEC 1.9)
   double ground_scale = 1.0;   // ground metres per map unit of the DEM's CRS
@@ -30,13 +31,13 @@ WindowReader dem_windows(const HeldDem& dem);
 ResolvedParams resolve_on(const HeldDem& dem, const SilhouetteParams& choice);
 
 // Every stage on a DEM held whole, with every cell's class kept: what the classification, the
-// filter diagram and the P-strokes start from. Throws Error on bad parameters, Cancelled when
-// `progress` says stop.
+// filter diagram and the P-strokes start from. Throws Error on bad parameters or a DEM turned for
+// another azimuth than the choice's, Cancelled when `progress` says stop.
 SilhouetteResult sketch_held_dem(const HeldDem& dem, const SilhouetteParams& choice,
                                  const ProgressFn& progress = {});
 
 // The drape's lattice for a DEM held whole: its visibility for the view, laid out in plan-oblique
-// space about the DEM's lowest height.
+// space about the DEM's lowest height. Throws Error as sketch_held_dem does.
 PlanObliqueDrape lay_out_drape(const HeldDem& dem, const ViewParams& view, unsigned threads,
                                const ProgressFn& progress = {});
 

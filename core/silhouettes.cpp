@@ -52,8 +52,8 @@ SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams
                                     std::size_t strip, const ProgressFn& progress,
                                     StrokeSink sink) {
   params.validate();
-  const OrientedFrame& frame = dem.frame;
-  const ResolvedParams run = adapt_filter(params, frame, dem.read);
+  const OrientedFrame frame = make_frame(dem.grid, params.view.azimuth_deg);
+  const ResolvedParams run = adapt_filter(params, dem.grid, dem.read);
   // Plan-oblique geometry needs the DEM's lowest height before the first stroke: a pass of its
   // own over the DEM.
   const double z_ref = run->geometry == Geometry::oblique

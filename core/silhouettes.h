@@ -72,15 +72,17 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
                                const ProfileReader& read, const ProgressFn& progress = {},
                                StrokeSink sink = {});
 
-// A DEM to read window by window (row 0 north, NaN for nodata) for a view: a raster file through
-// GDAL, a QGIS layer through its provider, a grid in memory.
+// A DEM to read window by window (row 0 north, NaN for nodata), whatever the view: a raster file
+// through GDAL, a QGIS layer through its provider, a grid in memory. The view's frame is made from
+// the run's parameters (params.view), never from the source.
 struct DemSource {
-  OrientedFrame frame;  // the view on the DEM (make_frame)
+  DemGrid grid;
   GeoTransform geotransform;
   WindowReader read;
 };
 
-// The whole method on a DEM read window by window: what the front ends call. It decides the
+// The whole method on a DEM read window by window, seen as params.view says: what the front ends
+// call for the silhouettes. It decides the
 // memory a run takes (strips of `strip` profiles, 0: strip_profiles()), reads the next strip while
 // the stages work on this one, first reads a sample of the DEM (the whole DEM for local
 // adaptivity) for an adaptive filter (adapt_filter), and for plan-oblique geometry reads the DEM

@@ -128,7 +128,8 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
   }
   const double dx = dem.geotransform.a[1] * dem.ground_scale;
   const double dy = -dem.geotransform.a[5] * dem.ground_scale;
-  dem.frame = make_frame(dem.rows, dem.cols, dx, dy, options.azimuth_deg);
+  dem.grid = {dem.rows, dem.cols, dx, dy};
+  make_frame(dem.grid, 90.0);  // refuses a grid no view could address, before any work
   return dem;
 }
 

@@ -11,8 +11,9 @@
 namespace tsk::io {
 
 // Checks the band and the georeferencing of an open DEM and fills everything of a Dem but the
-// heights. Throws Error on what it cannot read faithfully (a missing band, rotated or south-up
-// georeferencing, no georeferencing without a cell size), DemRefused for a geographic CRS.
+// heights and the view's frame. Throws Error on what it cannot read faithfully (a missing band,
+// rotated or south-up georeferencing, no georeferencing without a cell size), DemRefused for a
+// geographic CRS.
 Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions& options);
 
 }  // namespace tsk::io

@@ -141,11 +141,12 @@ void read_band(const std::string& path, GDALRasterBand& band, const DemOptions& 
 
 }  // namespace
 
-Dem read_dem(const std::string& path, const DemOptions& options) {
+Dem read_dem(const std::string& path, const DemOptions& options, double azimuth_deg) {
   GdalErrorCapture capture;
   auto dataset = open_raster(path);
   Dem dem = describe_dem(*dataset, path, options);
-  refuse_too_large_to_turn(path, dem);
+  refuse_too_large_to_turn(path, dem, azimuth_deg);
+  dem.frame = make_frame(dem.grid, azimuth_deg);
   try {
     read_band(path, *dataset->GetRasterBand(options.band), options, dem);
   } catch (const std::bad_alloc&) {
@@ -155,8 +156,8 @@ Dem read_dem(const std::string& path, const DemOptions& options) {
   return dem;
 }
 
-void refuse_too_large_to_turn(const std::string& path, const Dem& dem) {
-  if (!too_large_to_turn_whole(dem.frame)) return;
+void refuse_too_large_to_turn(const std::string& path, const Dem& dem, double azimuth_deg) {
+  if (!too_large_to_turn_whole(make_frame(dem.grid, azimuth_deg))) return;
   throw Error("'" + path + "' (" + std::to_string(dem.cols) + " x " + std::to_string(dem.rows) +
               " cells) is too large for this command, which holds the whole DEM turned to the "
               "view: that would take more than half of this machine's memory. `silhouettes` "
@@ -245,18 +246,18 @@ DemFile::DemFile(const std::string& path, const DemOptions& options) {
 DemFile::~DemFile() = default;
 
 DemSource DemFile::source() const {
-  return {dem_.frame, dem_.geotransform,
+  return {dem_.grid, dem_.geotransform,
           stopping([&file = *file_](const DemWindow& w, float* heights) { file.read(w, heights); },
                    stop_)};
 }
 
 HeldDem HeldDemFile::held() const {
-  DemSource source{dem.frame, dem.geotransform, windows ? windows->source().read : WindowReader()};
-  return {dem.oriented, std::move(source), dem.lowest_height, dem.ground_scale};
+  DemSource source{dem.grid, dem.geotransform, windows ? windows->source().read : WindowReader()};
+  return {dem.oriented, dem.frame, std::move(source), dem.lowest_height, dem.ground_scale};
 }
 
-HeldDemFile hold_dem(const std::string& path, const DemOptions& options) {
-  HeldDemFile held{read_dem(path, options), nullptr};
+HeldDemFile hold_dem(const std::string& path, const DemOptions& options, double azimuth_deg) {
+  HeldDemFile held{read_dem(path, options, azimuth_deg), nullptr};
   if (!held.dem.frame.as_it_lies()) held.windows = std::make_unique<DemFile>(path, options);
   return held;
 }

@@ -17,7 +17,6 @@ namespace tsk::io {
 
 struct DemOptions {
   int band = 1;
-  double azimuth_deg = 90.0;
   double cell_size = 0.0;  // > 0: use this cell size when the raster has no georeferencing
   // Called before every read of the DEM's cells (a few rows at a time); throws to stop a read
   // in any phase (the command line's Ctrl-C and SIGTERM). A DEM read whole on its own grid is
@@ -27,7 +26,8 @@ struct DemOptions {
 
 struct Dem {
   HeightGrid oriented;
-  OrientedFrame frame;
+  DemGrid grid;         // the DEM's own grid, in ground units
+  OrientedFrame frame;  // read_dem: the view it was turned for
   GeoTransform geotransform;
   std::string srs_wkt;         // empty when the raster has no CRS
   double ground_scale = 1.0;   // ground metres per map unit used for the cell sizes
@@ -55,7 +55,8 @@ class DemRefused : public Error {
 
 // Throws tsk::Error with a message for the user on anything it cannot read faithfully:
 // not a raster, bad band, rotated or south-up georeferencing, a geographic CRS.
-Dem read_dem(const std::string& path, const DemOptions& options);
+// The DEM is turned for the view facing `azimuth_deg` (the run's ViewParams::azimuth_deg).
+Dem read_dem(const std::string& path, const DemOptions& options, double azimuth_deg);
 
 // Windows of one band of a raster file read as Float32, nodata as NaN, through a dataset of its
 // own. The QGIS plugin reads a GDAL layer's file through it rather than through the layer's
@@ -102,7 +103,7 @@ class DemFile {
  public:
   DemFile(const std::string& path, const DemOptions& options);
   ~DemFile();
-  const Dem& info() const { return dem_; }  // georeferencing, frame and notes; `oriented` empty
+  const Dem& info() const { return dem_; }  // grid, georeferencing and notes; no heights, no frame
   // The DEM for the core; it reads through this object, which must outlive it.
   DemSource source() const;
 
@@ -120,11 +121,11 @@ struct HeldDemFile {
   std::unique_ptr<DemFile> windows;  // null when the grid is the DEM as it lies
   HeldDem held() const;
 };
-HeldDemFile hold_dem(const std::string& path, const DemOptions& options);
+HeldDemFile hold_dem(const std::string& path, const DemOptions& options, double azimuth_deg);
 
-// Throws Error when the DEM of `path` described by `dem` could not be turned whole for its view
-// (too_large_to_turn_whole): what every command but `silhouettes` needs.
-void refuse_too_large_to_turn(const std::string& path, const Dem& dem);
+// Throws Error when the DEM of `path` described by `dem` could not be turned whole for the view
+// facing `azimuth_deg` (too_large_to_turn_whole): what every command but `silhouettes` needs.
+void refuse_too_large_to_turn(const std::string& path, const Dem& dem, double azimuth_deg);
 
 // Every band of a raster as grids on its own pixel grid (row 0 north), nodata as NaN: the
 // rasters to drape.

@@ -132,6 +132,7 @@ RasterGrid::RasterGrid(QgsRasterLayer* layer, int band,
   for (const io::DemNote& note : assessment.notes)
     if (const QString text = noteText(note); !text.isEmpty()) mNotes << text;
   mFile = openFile(*layer, band);
+  setGrid();
   if (mFile) return;
   const QString file = plainGdalFile(*layer);
   if (!file.isEmpty()) mSourceCells = rotatedSourceCells(file);
@@ -235,7 +236,7 @@ bool RasterGrid::SourceCells::cover(double x, double y) const {
   return col >= 0 && col < cols && row >= 0 && row < rows;
 }
 
-void RasterGrid::setView(double azimuthDeg) {
+void RasterGrid::setGrid() {
   // A file read straight through GDAL keeps its own geotransform, as the command line does: the
   // layer's extent divided by its size may differ from it in the last digits.
   if (!mFile || !mFile->geotransform(mGeoTransform)) {
@@ -243,23 +244,22 @@ void RasterGrid::setView(double azimuthDeg) {
         mExtent.xMinimum(),       mExtent.width() / mCols, 0.0, mExtent.yMaximum(), 0.0,
         -mExtent.height() / mRows};
   }
-  const double dx = mGeoTransform.a[1], dy = -mGeoTransform.a[5];
-  mFrame = withCoreErrors([&] {
-    return make_frame(static_cast<std::size_t>(mRows), static_cast<std::size_t>(mCols),
-                      dx * mGroundScale, dy * mGroundScale, azimuthDeg);
-  });
+  mGrid = {static_cast<std::size_t>(mRows), static_cast<std::size_t>(mCols),
+           mGeoTransform.a[1] * mGroundScale, -mGeoTransform.a[5] * mGroundScale};
+  withCoreErrors([&] { return make_frame(mGrid, 90.0); });  // a grid no view could address
 }
 
-DemSource RasterGrid::source(double azimuthDeg) {
-  setView(azimuthDeg);
-  return {mFrame, mGeoTransform,
+void RasterGrid::setView(double azimuthDeg) {
+  mFrame = withCoreErrors([&] { return make_frame(mGrid, azimuthDeg); });
+}
+
+DemSource RasterGrid::source() const {
+  return {mGrid, mGeoTransform,
           [this](const DemWindow& w, float* heights) { readWindow(w, heights); }};
 }
 
 HeldDem RasterGrid::held() const {
-  DemSource source{mFrame, mGeoTransform,
-                   [this](const DemWindow& w, float* heights) { readWindow(w, heights); }};
-  return {mOriented, std::move(source), lowestHeight(), mGroundScale};
+  return {mOriented, mFrame, source(), lowestHeight(), mGroundScale};
 }
 
 void RasterGrid::readWindow(const DemWindow& w, float* heights) const {

@@ -49,10 +49,9 @@ class RasterGrid {
   void read(double azimuthDeg, QgsProcessingFeedback* feedback, double progressFrom,
             double progressTo);
 
-  // Worker thread, for DEMs read strip by strip (any view): sets the frame for `azimuthDeg`
-  // without reading and returns the DEM for sketch_silhouettes, read window by window through
-  // this object, which must outlive it.
-  DemSource source(double azimuthDeg);
+  // Worker thread, for DEMs read strip by strip (any view): the DEM for sketch_silhouettes, read
+  // window by window through this object, which must outlive it.
+  DemSource source() const;
   // The DEM's lowest height, the plan-oblique reference (SPEC 1.9), once read() has read it.
   double lowestHeight() const;
   // Worker thread, once read(): the DEM held whole for the recipes (run_recipes.h), its windows
@@ -69,7 +68,9 @@ class RasterGrid {
   bool readsFileDirectly() const { return mFile != nullptr; }
 
  private:
-  // Sets the frame and the geotransform for a view.
+  // Sets the geotransform and the DEM's grid in ground units (main thread, once).
+  void setGrid();
+  // Sets the frame for a view.
   void setView(double azimuthDeg);
   // Reads the band in blocks of rows into mOriented.
   void readBlocks(QgsProcessingFeedback* feedback, double progressFrom, double progressTo);
@@ -103,6 +104,7 @@ class RasterGrid {
   double mGroundScale = 1.0;
   QStringList mNotes;
   HeightGrid mOriented;
+  DemGrid mGrid;
   OrientedFrame mFrame;
   GeoTransform mGeoTransform;
   double mLowest = 0;  // known once the heights are read

@@ -217,11 +217,12 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
                                                    QgsProcessingContext& context,
                                                    QgsProcessingFeedback* feedback) {
   RasterGrid& raster = preparedRaster();
-  const DemSource dem = raster.source(mParams.view.azimuth_deg);
-  const std::size_t strip =
-      mStrips > 0 ? static_cast<std::size_t>(mStrips) : strip_profiles(dem.frame);
+  const DemSource dem = raster.source();
+  const OrientedFrame frame =
+      withCoreErrors([&] { return make_frame(dem.grid, mParams.view.azimuth_deg); });
+  const std::size_t strip = mStrips > 0 ? static_cast<std::size_t>(mStrips) : strip_profiles(frame);
   // Worth saying only when the DEM does not fit one strip.
-  const std::size_t strips = (dem.frame.profiles + strip - 1) / strip;
+  const std::size_t strips = (frame.profiles + strip - 1) / strip;
   if (feedback && strips > 1) {
     feedback->pushInfo(
         tr("Processing the DEM in %1 strips of %2 profiles.").arg(strips).arg(strip));

@@ -7,6 +7,7 @@
 #include "adaptive_filter.h"
 #include "catch_compat.h"
 #include "choice_names.h"
+#include "resampled_silhouettes.h"
 #include "slope_scale_map.h"
 #include "test_support.h"
 
@@ -15,8 +16,8 @@ using namespace tsk;
 namespace {
 
 // A DEM held in memory, read window by window as the front ends read files.
-DemSource memory_source(const HeightGrid& dem, double cell, double azimuth) {
-  return {make_frame(dem.rows(), dem.cols(), cell, cell, azimuth), GeoTransform{},
+DemSource memory_source(const HeightGrid& dem, double cell) {
+  return {DemGrid{dem.rows(), dem.cols(), cell, cell}, GeoTransform{},
           [&dem](const DemWindow& w, float* out) {
             for (std::size_t r = 0; r < w.rows; ++r)
               std::copy_n(dem.row(w.row0 + r) + w.col0, w.cols, out + r * w.cols);
@@ -63,7 +64,7 @@ SilhouetteParams adaptive() {
 
 TEST_CASE("the survey's median slope is the brute-force median within a bin", "[adaptive]") {
   const HeightGrid z = rolling(120, 140);
-  const DemSource dem = memory_source(z, 10.0, 90);
+  const DemSource dem = memory_source(z, 10.0);
   const SlopeSurvey survey = survey_slopes(z.rows(), z.cols(), 10.0, 10.0, dem.read);
   const double brute = brute_median_slope(z, 10.0, survey.heights.tolerance);
   // Bins are an eighth of an octave wide (9 %); the median is interpolated within its bin.
@@ -93,10 +94,10 @@ TEST_CASE("the scale follows the median slope and is held within its bounds", "[
 
 TEST_CASE("a fixed filter is left as it is", "[adaptive]") {
   const HeightGrid z = rolling(60, 70);
-  const DemSource dem = memory_source(z, 10.0, 90);
+  const DemSource dem = memory_source(z, 10.0);
   SilhouetteParams fixed;
   fixed.filter.row_cut_pct = 30;
-  const ResolvedParams run = adapt_filter(fixed, dem.frame, dem.read);
+  const ResolvedParams run = adapt_filter(fixed, dem.grid, dem.read);
   CHECK(run->filter.row_cut_pct == 30);
   CHECK(run->height_tolerance == 0.0);
   CHECK(run->local_scale == nullptr);
@@ -106,14 +107,14 @@ TEST_CASE("a fixed filter is left as it is", "[adaptive]") {
 
 TEST_CASE("an adaptive filter cannot run unresolved, and reports what it ran", "[adaptive]") {
   const HeightGrid z = rolling(60, 70);
-  const DemSource dem = memory_source(z, 10.0, 90);
+  const DemSource dem = memory_source(z, 10.0);
   SilhouetteParams asked;
   asked.adaptive.mode = FilterMode::adaptive;
   // Taken as fixed, the run would apply the thesis's cut-offs while reporting "adaptive".
   CHECK_THROWS_AS(ResolvedParams(asked), Error);
-  CHECK_THROWS_AS(adapt_filter(asked, dem.frame, WindowReader()), Error);
-  const ResolvedParams run = adapt_filter(asked, dem.frame, dem.read);
-  const SilhouetteResult result = run_silhouettes(z, dem.frame, {}, run);
+  CHECK_THROWS_AS(adapt_filter(asked, dem.grid, WindowReader()), Error);
+  const ResolvedParams run = adapt_filter(asked, dem.grid, dem.read);
+  const SilhouetteResult result = run_silhouettes(z, make_frame(dem.grid, 90.0), {}, run);
   // The stages took the scaled cut-offs, and the result says so: the report is the resolving's.
   CHECK(run->filter.row_cut_pct == Approx(asked.filter.row_cut_pct * run.filter().scale));
   CHECK(result.filter.choice.mode == FilterMode::adaptive);
@@ -131,16 +132,16 @@ TEST_CASE("doubling the relief and halving the exaggeration gives the same sketc
   const HeightGrid doubled = make_cone(100, 120, 10.0, 200.0, 0.2);
   SilhouetteParams p = adaptive(), q = adaptive();
   q.view.ve = p.view.ve / 2;
-  const SilhouetteResult a = sketch_silhouettes(memory_source(z, 10.0, 90), p);
-  const SilhouetteResult b = sketch_silhouettes(memory_source(doubled, 10.0, 90), q);
+  const SilhouetteResult a = sketch_silhouettes(memory_source(z, 10.0), p);
+  const SilhouetteResult b = sketch_silhouettes(memory_source(doubled, 10.0), q);
   CHECK(b.filter.scale == Approx(2 * a.filter.scale));
   CHECK(a.stats.candidate == b.stats.candidate);
   CHECK(a.stats.filtered == b.stats.filtered);
   CHECK(a.stats.formulated_strokes == b.stats.formulated_strokes);
   CHECK(a.stats.filtered > 0);
   p.adaptive.mode = q.adaptive.mode = FilterMode::fixed;
-  const SilhouetteResult c = sketch_silhouettes(memory_source(z, 10.0, 90), p);
-  const SilhouetteResult d = sketch_silhouettes(memory_source(doubled, 10.0, 90), q);
+  const SilhouetteResult c = sketch_silhouettes(memory_source(z, 10.0), p);
+  const SilhouetteResult d = sketch_silhouettes(memory_source(doubled, 10.0), q);
   CHECK(c.stats.filtered != d.stats.filtered);
 }
 
@@ -154,7 +155,7 @@ TEST_CASE("integer heights give the same c-set a millionth of a degree off a car
     SilhouetteParams p;
     p.adaptive.mode = mode;
     p.view.azimuth_deg = azimuth;
-    const SilhouetteResult r = sketch_silhouettes(memory_source(z, 10.0, azimuth), p);
+    const SilhouetteResult r = sketch_silhouettes(memory_source(z, 10.0), p);
     return r.stats.pct(r.stats.candidate);
   };
   for (double azimuth : {90.0, 0.0}) {
@@ -180,15 +181,15 @@ TEST_CASE("local adaptivity keeps a plain's breaks of slope beside mountains", "
   SilhouetteParams whole = adaptive(), local = adaptive();
   local.adaptive.adapt = Adaptivity::local;
   local.adaptive.window = 40;
-  const DemSource dem = memory_source(z, 10.0, 90);
+  const DemSource dem = memory_source(z, 10.0);
   const SilhouetteResult w =
-      run_silhouettes(z, dem.frame, {}, adapt_filter(whole, dem.frame, dem.read));
-  const ResolvedParams run = adapt_filter(local, dem.frame, dem.read);
+      run_silhouettes(z, make_frame(dem.grid, 90.0), {}, adapt_filter(whole, dem.grid, dem.read));
+  const ResolvedParams run = adapt_filter(local, dem.grid, dem.read);
   const FilterReport& report = run.filter();
   REQUIRE(run->local_scale);
   CHECK(report.local_lowest < report.scale);
   CHECK(report.local_highest > report.scale);
-  const SilhouetteResult l = run_silhouettes(z, dem.frame, {}, run);
+  const SilhouetteResult l = run_silhouettes(z, make_frame(dem.grid, 90.0), {}, run);
   auto plain_fset = [](const SilhouetteResult& r) {
     std::size_t n = 0;
     for (std::size_t p = 0; p < r.flags.rows(); ++p)
@@ -213,4 +214,26 @@ TEST_CASE("the choices' names and order are pinned: saved models keep their mean
   CHECK_THROWS_WITH(parse_stroke_mode("sketchy"),
                     "strokes must be 'drawn' or 'exact', got 'sketchy'");
   CHECK(choice_list(kPlacementNames) == "'far' or 'near_and_far'");
+}
+
+TEST_CASE("the view's azimuth alone turns a run read window by window", "[adaptive][pipeline]") {
+  // The source knows no view: setting params.view.azimuth_deg is all it takes, and the run equals
+  // the whole grid turned for that azimuth.
+  const HeightGrid z = rolling(70, 90);
+  const DemSource source = memory_source(z, 10.0);
+  for (const double azimuth : {0.0, 180.0, 30.0}) {
+    CAPTURE(azimuth);
+    SilhouetteParams p;
+    p.view.azimuth_deg = azimuth;
+    const OrientedFrame frame = make_frame(source.grid, azimuth);
+    const SilhouetteResult streamed = sketch_silhouettes(source, p);
+    const SilhouetteResult whole =
+        frame.resampled
+            ? run_resampled_silhouettes(z, frame, GeoTransform{}, p)
+            : run_silhouettes(orient(z, frame), frame, GeoTransform{}, ResolvedParams(p));
+    CHECK(streamed.stats.valid == whole.stats.valid);
+    CHECK(streamed.stats.candidate == whole.stats.candidate);
+    CHECK(streamed.stats.thinned == whole.stats.thinned);
+    CHECK(streamed.strokes.size() == whole.strokes.size());
+  }
 }

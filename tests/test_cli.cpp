@@ -89,7 +89,7 @@ TEST_CASE("the sample DEM becomes a GeoPackage equal to the core's result", "[cl
   CHECK(run.err.empty());
 
   io::DemOptions options;
-  const io::Dem dem = io::read_dem(kSample, options);
+  const io::Dem dem = io::read_dem(kSample, options, 90.0);
   const SilhouetteResult core = run_silhouettes(dem.oriented, dem.frame, dem.geotransform, {});
   VectorSummary s = summarise(dir / "out.gpkg");
   CHECK(s.features == static_cast<long long>(core.strokes.size()));
@@ -127,7 +127,7 @@ TEST_CASE("drawn strokes go out as LineString M with their weights, exact ones a
   REQUIRE(drawn.code == 0);
   REQUIRE(exact.code == 0);
   io::DemOptions options;
-  const io::Dem dem = io::read_dem(kSample, options);
+  const io::Dem dem = io::read_dem(kSample, options, 90.0);
   SilhouetteParams params;
   params.strokes.mode = StrokeMode::drawn;
   const SilhouetteResult core =
@@ -623,7 +623,7 @@ TEST_CASE("classify writes the stage of every DEM cell with a colour table", "[c
   CHECK(std::string(band->GetCategoryNames()[3]) == "occluding");
   // Class counts equal the core's stage counts (cardinal view: one DEM cell per oriented cell).
   io::DemOptions options;
-  const io::Dem dem = io::read_dem(kSample, options);
+  const io::Dem dem = io::read_dem(kSample, options, 90.0);
   const SilhouetteResult core = run_silhouettes(dem.oriented, dem.frame, dem.geotransform, {});
   std::vector<GByte> pixels(dem.rows * dem.cols);
   REQUIRE(band->RasterIO(GF_Read, 0, 0, static_cast<int>(dem.cols), static_cast<int>(dem.rows),
@@ -707,16 +707,15 @@ TEST_CASE("strips give byte-identical output to the whole DEM", "[cli][strips]")
   ScratchDir dir("strips");
   for (const char* az : {"0", "90", "180", "270", "45", "200"}) {
     CAPTURE(az);
-    io::DemOptions options;
-    options.azimuth_deg = std::stod(az);
-    const io::Dem whole = io::read_dem(kSample, options);
+    const io::DemOptions options;
+    const io::Dem whole = io::read_dem(kSample, options, std::stod(az));
     SilhouetteParams asked;
-    asked.view.azimuth_deg = options.azimuth_deg;
+    asked.view.azimuth_deg = std::stod(az);
     asked.geometry = Geometry::oblique;
     asked.adaptive.mode = FilterMode::adaptive;  // the command line's defaults
     asked.strokes.mode = StrokeMode::drawn;
     const ResolvedParams params =
-        adapt_filter(asked, whole.frame, io::DemFile(kSample, options).source().read);
+        adapt_filter(asked, whole.grid, io::DemFile(kSample, options).source().read);
     const FilterReport& filter = params.filter();
     StageStats reference;
     io::write_strokes(

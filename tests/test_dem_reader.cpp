@@ -79,7 +79,7 @@ TEST_CASE("band windows read a file's heights and let GDAL keep only the rows in
 
 TEST_CASE("Web Mercator cells are scaled to ground metres with a note", "[io]") {
   io::DemOptions options;
-  const io::Dem dem = io::read_dem(kData + "/topobathy_3857.tif", options);
+  const io::Dem dem = io::read_dem(kData + "/topobathy_3857.tif", options, 90.0);
   // Strait of Georgia, about 49.5 N: cos = 0.65.
   CHECK(dem.ground_scale == Approx(0.65).margin(0.02));
   CHECK(dem.frame.d == Approx(3710.65 * dem.ground_scale).epsilon(1e-6));
@@ -97,7 +97,7 @@ TEST_CASE("a stop asked for ends every read of a DEM, whole or window by window"
   options.stop = [&reads, &allowed] {
     if (++reads > allowed) throw Cancelled();
   };
-  CHECK_THROWS_AS(io::read_dem(sample, options), Cancelled);  // read in one block of rows
+  CHECK_THROWS_AS(io::read_dem(sample, options, 90.0), Cancelled);  // read in one block of rows
   reads = 0, allowed = 1;
   const io::DemFile file(sample, options);
   const DemSource dem = file.source();
@@ -108,7 +108,7 @@ TEST_CASE("a stop asked for ends every read of a DEM, whole or window by window"
   options.stop = {};
   const io::DemFile unstopped(sample, options);
   const DemSource whole = unstopped.source();
-  CHECK(dem_lowest_height(whole.frame.dem_rows, whole.frame.dem_cols, whole.read) > 0);
+  CHECK(dem_lowest_height(whole.grid.rows, whole.grid.cols, whole.read) > 0);
 }
 
 TEST_CASE("a DEM on its own grid is read whole in two halves, as a turned one is", "[io]") {
@@ -134,9 +134,8 @@ TEST_CASE("a DEM on its own grid is read whole in two halves, as a turned one is
                                            kRows, GDT_Float32, 0, 0) == CE_None);
     GDALClose(ds);
   }
-  io::DemOptions options;
-  options.azimuth_deg = 90.0;  // the DEM as it lies
-  const io::Dem as_it_lies = io::read_dem(path, options);
+  const io::DemOptions options;
+  const io::Dem as_it_lies = io::read_dem(path, options, 90.0);  // the DEM as it lies
   REQUIRE(as_it_lies.oriented.rows() == kRows);
   REQUIRE(as_it_lies.oriented.cols() == kCols);
   for (std::size_t k = 0; k < values.size(); ++k) {
@@ -148,8 +147,7 @@ TEST_CASE("a DEM on its own grid is read whole in two halves, as a turned one is
     }
   }
   CHECK(as_it_lies.lowest_height == 12.5);
-  options.azimuth_deg = 270.0;  // turned: block by block through the builder
-  const io::Dem turned = io::read_dem(path, options);
+  const io::Dem turned = io::read_dem(path, options, 270.0);  // block by block, turned
   CHECK(turned.lowest_height == 12.5);
   CHECK(turned.oriented(kRows - 1 - 1000, kCols - 1 - 10) == 12.5f);
 }

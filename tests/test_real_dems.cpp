@@ -43,8 +43,7 @@ std::string line_of(const StageStats& s) {
 
 SilhouetteResult run_case(const Case& c) {
   io::DemOptions options;
-  options.azimuth_deg = c.azimuth;
-  const io::Dem dem = io::read_dem(kData + "/" + c.file, options);
+  const io::Dem dem = io::read_dem(kData + "/" + c.file, options, c.azimuth);
   SilhouetteParams params;
   params.view.azimuth_deg = c.azimuth;
   return run_silhouettes(dem.oriented, dem.frame, dem.geotransform, ResolvedParams(params));
@@ -103,7 +102,7 @@ TEST_CASE("the Jacksboro DEM resembles the thesis's dissected plateau", "[golden
 
 TEST_CASE("nodata outside the gorilla reserve yields no strokes there", "[golden]") {
   io::DemOptions options;
-  const io::Dem dem = io::read_dem(kData + "/gorillas_utm32n.tif", options);
+  const io::Dem dem = io::read_dem(kData + "/gorillas_utm32n.tif", options, 90.0);
   const SilhouetteResult r = run_silhouettes(dem.oriented, dem.frame, dem.geotransform, {});
   std::size_t nodata = 0;
   for (std::size_t k = 0; k < dem.oriented.size(); ++k) nodata += !is_data(dem.oriented.data()[k]);

@@ -57,15 +57,18 @@ using namespace tsk;
 // Oriented profiles of a raster for a view, read window by window as a run reads them.
 struct ViewStrips {
   DemSource source;
+  OrientedFrame frame;
   StripLoader loader;
   ViewStrips(plugin::RasterGrid& grid, double azimuth)
-      : source(grid.source(azimuth)), loader(source.frame, source.read) {}
+      : source(grid.source()),
+        frame(make_frame(source.grid, azimuth)),
+        loader(frame, source.read) {}
 };
 
 // The lowest height of a raster read window by window, as a plan-oblique run reads it first.
 inline double lowestOf(plugin::RasterGrid& grid) {
-  const DemSource dem = grid.source(90);
-  return dem_lowest_height(dem.frame.dem_rows, dem.frame.dem_cols, dem.read);
+  const DemSource dem = grid.source();
+  return dem_lowest_height(dem.grid.rows, dem.grid.cols, dem.read);
 }
 
 inline const QString kData = QStringLiteral(TSK_TEST_DATA);
@@ -165,9 +168,7 @@ inline Run runOk(const QString& input, const QVariantMap& extra, const QTemporar
 
 // The DEM as the core reads it for the view from `azimuth`.
 inline io::Dem coreDem(const QString& file, double azimuth = 90) {
-  io::DemOptions options;
-  options.azimuth_deg = azimuth;
-  return io::read_dem(file.toStdString(), options);
+  return io::read_dem(file.toStdString(), io::DemOptions(), azimuth);
 }
 
 // Runs the core directly on the same file through io's GDAL reader, as the command line does,
@@ -180,10 +181,8 @@ inline SilhouetteResult coreResult(const QString& file, double azimuth, Geometry
   params.geometry = geometry;
   params.adaptive.mode = FilterMode::adaptive;  // the algorithm's defaults
   params.strokes.mode = StrokeMode::drawn;
-  io::DemOptions options;
-  options.azimuth_deg = azimuth;
-  const ResolvedParams run =
-      adapt_filter(params, dem.frame, io::DemFile(file.toStdString(), options).source().read);
+  const ResolvedParams run = adapt_filter(
+      params, dem.grid, io::DemFile(file.toStdString(), io::DemOptions()).source().read);
   return run_silhouettes(dem.oriented, dem.frame, dem.geotransform, run, {}, dem.lowest_height);
 }
 

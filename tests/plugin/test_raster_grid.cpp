@@ -126,7 +126,7 @@ TEST_CASE("a GDAL layer's file is read straight through GDAL, with the provider'
     for (double az : {90.0, 0.0, 45.0}) {
       CAPTURE(straight == &scaledDirect, az);
       ViewStrips straightStrips(*straight, az), throughStrips(*through, az);
-      const std::size_t profiles = straightStrips.source.frame.profiles;
+      const std::size_t profiles = straightStrips.frame.profiles;
       HeightGrid a, b;
       std::size_t nodata = 0;
       for (std::size_t first = 0; first < profiles; first += 17) {
@@ -142,8 +142,8 @@ TEST_CASE("a GDAL layer's file is read straight through GDAL, with the provider'
   }
   ViewStrips directRows(direct, 90), scaledRows(scaledDirect, 90);  // profiles are the rows
   HeightGrid metres, values;
-  directRows.loader.load(0, directRows.source.frame.profiles, metres);
-  scaledRows.loader.load(0, scaledRows.source.frame.profiles, values);
+  directRows.loader.load(0, directRows.frame.profiles, metres);
+  scaledRows.loader.load(0, scaledRows.frame.profiles, values);
   REQUIRE(metres.size() == values.size());
   for (std::size_t k = 0; k < metres.size(); ++k) {
     const float z = metres.data()[k];
@@ -212,7 +212,7 @@ TEST_CASE("a rotated or south-up raster is read as QGIS warps it, through its pr
   CHECK(grid.notes().join(' ').contains("rotated"));
   ViewStrips rows(grid, 90);
   HeightGrid heights;
-  rows.loader.load(0, rows.source.frame.profiles, heights);
+  rows.loader.load(0, rows.frame.profiles, heights);
   const auto nodata = std::count_if(heights.data(), heights.data() + heights.size(),
                                     [](float z) { return std::isnan(z); });
   CHECK(nodata > 0);
