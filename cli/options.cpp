@@ -1,15 +1,14 @@
 #include "options.h"
 
 #include <cctype>
-#include <filesystem>
-#include <iterator>
-#include <utility>
+#include <optional>
 
 #include "errors.h"
 #include "gdal_util.h"
 #include "interrupt.h"
 #include "option_table.h"
 #include "output_files.h"
+#include "path_clashes.h"
 
 namespace tsk::cli {
 namespace {
@@ -26,54 +25,30 @@ void check_page(const Options& o) {
     throw Error("--plotter draws vector art for a pen: give --preview a .svg or .pdf name");
 }
 
-// True when paths a and b name one file: the same existing file, or the same path to be made.
-bool same_file(const std::string& a, const std::string& b) {
-  if (a.empty() || b.empty()) return false;
-  std::error_code ec;
-  if (std::filesystem::equivalent(a, b, ec)) return true;
-  const auto full_a = std::filesystem::weakly_canonical(a, ec);
-  if (ec) return false;
-  const auto full_b = std::filesystem::weakly_canonical(b, ec);
-  return !ec && full_a == full_b;
-}
-
 // Every output replaces its file whole, so an output named as an input would destroy it (a DEM
 // in a GeoPackage written over by its own strokes) and two outputs of one name would lose one.
 // Each output's folder must exist and be writable.
 void refuse_clashing_paths(const Options& o) {
-  const std::pair<const char*, const std::string*> outputs[] = {{"OUTPUT", &o.output},
-                                                                {"--stats-json", &o.stats_json},
-                                                                {"--preview", &o.preview},
-                                                                {"--visibility", &o.visibility}};
-  // Every file GDAL reads for each input: a VRT's sources too.
-  std::vector<std::pair<const char*, std::vector<std::string>>> inputs;
-  for (const auto& [name, path] : {std::pair{"INPUT", &o.input}, std::pair{"--source", &o.source},
-                                   std::pair{"--peaks", &o.peaks}}) {
-    if (path->empty()) continue;
-    io::check_input_path(*path);
-    std::vector<std::string> files = io::dataset_files(*path);
-    files.push_back(*path);
-    inputs.emplace_back(name, std::move(files));
+  const std::vector<io::NamedFile> outputs = {{"OUTPUT", o.output},
+                                              {"--stats-json", o.stats_json},
+                                              {"--preview", o.preview},
+                                              {"--visibility", o.visibility}};
+  std::vector<io::NamedFile> inputs = {
+      {"INPUT", o.input}, {"--source", o.source}, {"--peaks", o.peaks}};
+  for (const io::NamedFile& input : inputs)
+    if (!input.path.empty()) io::check_input_path(input.path);
+  // All the outputs can be written, or none is: the strokes are not left for a preview that then
+  // fails.
+  for (const io::NamedFile& output : outputs)
+    if (!output.path.empty()) io::check_output_path(output.path);
+  const std::optional<io::PathClash> clash = io::find_clash(outputs, inputs);
+  if (!clash) return;
+  const std::string named = clash->output.name + " '" + clash->output.path + "' names ";
+  if (clash->with_input) {
+    throw Error(named + "a file the " + clash->other.name +
+                " raster reads, which writing it would replace; choose another path");
   }
-  for (std::size_t k = 0; k < std::size(outputs); ++k) {
-    const auto& [name, path] = outputs[k];
-    // All the outputs can be written, or none is: the strokes are not left for a preview that
-    // then fails.
-    if (!path->empty()) io::check_output_path(*path);
-    for (const auto& [input_name, files] : inputs) {
-      for (const std::string& file : files) {
-        if (!same_file(*path, file)) continue;
-        throw Error(std::string(name) + " '" + *path + "' names a file the " + input_name +
-                    " raster reads, which writing it would replace; choose another path");
-      }
-    }
-    for (std::size_t j = 0; j < k; ++j) {
-      if (same_file(*path, *outputs[j].second)) {
-        throw Error(std::string(name) + " '" + *path + "' names " + outputs[j].first +
-                    " too; choose another path");
-      }
-    }
-  }
+  throw Error(named + clash->other.name + " too; choose another path");
 }
 
 }  // namespace

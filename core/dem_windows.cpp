@@ -177,4 +177,21 @@ double OrientedGridBuilder::dem_lowest_height() const {
   return lowest_.value();
 }
 
+TurnedDem turn_dem(const OrientedFrame& frame, const WindowReader& read,
+                   const std::function<void(double)>& rows_read) {
+  OrientedGridBuilder builder(frame);
+  read_row_blocks(
+      frame.dem_rows, frame.dem_cols, read,
+      [&](std::size_t first_row, std::size_t count, const float* heights) {
+        builder.add_rows(first_row, count, heights);
+        if (rows_read) {
+          rows_read(static_cast<double>(first_row + count) / static_cast<double>(frame.dem_rows));
+        }
+      });
+  TurnedDem turned;
+  turned.lowest_height = builder.dem_lowest_height();
+  turned.oriented = builder.finish();
+  return turned;
+}
+
 }  // namespace tsk

@@ -100,4 +100,16 @@ class OrientedGridBuilder {
   LowestHeight lowest_;
 };
 
+// A DEM read whole and turned for a view: its grid and the DEM's lowest height.
+struct TurnedDem {
+  HeightGrid oriented;
+  double lowest_height = 0.0;
+};
+
+// Reads the DEM of `frame` whole through `read`, block of rows after block of rows, and turns it
+// for the frame's view (OrientedGridBuilder). `rows_read` hears of the share of rows read (0 to
+// 1) after each block. Throws what `read` throws.
+TurnedDem turn_dem(const OrientedFrame& frame, const WindowReader& read,
+                   const std::function<void(double)>& rows_read = {});
+
 }  // namespace tsk

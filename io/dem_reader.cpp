@@ -130,13 +130,9 @@ void read_as_it_lies(const std::string& path, GDALRasterBand& band, const DemOpt
 // Reads the band in blocks of rows into dem.oriented.
 void read_band(const std::string& path, GDALRasterBand& band, const DemOptions& options, Dem& dem) {
   if (dem.frame.as_it_lies()) return read_as_it_lies(path, band, options, dem);
-  OrientedGridBuilder builder(dem.frame);
-  read_row_blocks(dem.rows, dem.cols, stopping(band_reader(band, path), options.stop),
-                  [&builder](std::size_t first_row, std::size_t count, const float* heights) {
-                    builder.add_rows(first_row, count, heights);
-                  });
-  dem.lowest_height = builder.dem_lowest_height();
-  dem.oriented = builder.finish();
+  TurnedDem turned = turn_dem(dem.frame, stopping(band_reader(band, path), options.stop));
+  dem.lowest_height = turned.lowest_height;
+  dem.oriented = std::move(turned.oriented);
 }
 
 }  // namespace

@@ -8,14 +8,15 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QIcon>
-#include <algorithm>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "choice_parameter.h"
 #include "errors.h"
-#include "gdal_util.h"
 #include "line_output.h"
+#include "path_clashes.h"
 #include "plugin_paths.h"
 #include "qgis_compat.h"
 #include "raster_grid.h"
@@ -195,38 +196,24 @@ void DemViewAlgorithm::logFilter(const FilterReport& r, QgsProcessingFeedback* f
 
 namespace {
 
-// The file `path` names, resolved (links, "..") so that two names of one file compare equal,
-// also when the file is still to be made; empty for an empty path.
-QString fileIdentity(const QString& path) {
-  if (path.isEmpty()) return {};
-  const QFileInfo file(path);
-  return file.exists() ? file.canonicalFilePath() : QDir::cleanPath(file.absoluteFilePath());
+std::string localPath(const QString& path) {
+  return QFile::encodeName(path).toStdString();
+}
+
+QString qtPath(const std::string& path) {
+  return QDir::toNativeSeparators(QFile::decodeName(path.c_str()));
 }
 
 }  // namespace
 
 void DemViewAlgorithm::refuseClashingOutputs(const QVariantMap& parameters,
                                              QgsProcessingContext& context) const {
-  struct Written {
-    QString file;
-    bool whole;  // a plain path, which QGIS writes whole (else a layer added to the file)
-    const QgsProcessingParameterDefinition* output;
-  };
-  std::vector<Written> written;
+  std::vector<io::NamedFile> outputs, inputs;
   for (const QgsProcessingParameterDefinition* output : destinationParameterDefinitions()) {
     const QString target = parameterAsOutputLayer(parameters, output->name(), context);
-    const QString file = fileIdentity(destinationFile(target));
-    if (file.isEmpty()) continue;
-    const bool whole = !target.startsWith(QLatin1String("ogr:"));
-    for (const Written& other : written) {
-      if (other.file != file || !(whole || other.whole)) continue;
-      throw QgsProcessingException(
-          tr("%1 and %2 would both be written to %3, one over the other; choose different files, "
-             "or save both to one GeoPackage with a layer name each.")
-              .arg(other.output->description(), output->description(),
-                   QDir::toNativeSeparators(file)));
-    }
-    written.push_back({file, whole, output});
+    // A plain path is written whole; "ogr:..." adds a layer to the file.
+    outputs.push_back({output->description().toStdString(), localPath(destinationFile(target)),
+                       !target.startsWith(QLatin1String("ogr:"))});
   }
   for (const QgsProcessingParameterDefinition* input : parameterDefinitions()) {
     if (input->type() != QgsProcessingParameterRasterLayer::typeName()) continue;
@@ -236,23 +223,22 @@ void DemViewAlgorithm::refuseClashingOutputs(const QVariantMap& parameters,
                              ->decodeUri(layer->providerType(), layer->source())
                              .value(QStringLiteral("path"))
                              .toString();
-    // The layer's file and every file GDAL reads for it: a VRT's sources too.
-    QStringList inputFiles{fileIdentity(path)};
-    if (!path.isEmpty() && layer->providerType() == QLatin1String("gdal")) {
-      for (const std::string& file : io::dataset_files(QFile::encodeName(path).toStdString()))
-        inputFiles << fileIdentity(QFile::decodeName(file.c_str()));
-    }
-    for (const Written& output : written) {
-      const auto read = std::find(inputFiles.begin(), inputFiles.end(), output.file);
-      if (read == inputFiles.end() || read->isEmpty()) continue;
-      const QString inputFile = *read;
-      throw QgsProcessingException(
-          tr("%1 would be written into %2, the file of %3, which this algorithm reads; choose "
-             "another file.")
-              .arg(output.output->description(), QDir::toNativeSeparators(inputFile),
-                   input->description()));
-    }
+    inputs.push_back({input->description().toStdString(), localPath(path)});
   }
+  const std::optional<io::PathClash> clash = io::find_clash(outputs, inputs);
+  if (!clash) return;
+  const QString output = QString::fromStdString(clash->output.name);
+  const QString other = QString::fromStdString(clash->other.name);
+  if (clash->with_input) {
+    throw QgsProcessingException(
+        tr("%1 would be written into %2, the file of %3, which this algorithm reads; choose "
+           "another file.")
+            .arg(output, qtPath(clash->file), other));
+  }
+  throw QgsProcessingException(
+      tr("%1 and %2 would both be written to %3, one over the other; choose different files, "
+         "or save both to one GeoPackage with a layer name each.")
+          .arg(other, output, qtPath(clash->file)));
 }
 
 bool DemViewAlgorithm::checkParameterValues(const QVariantMap& parameters,

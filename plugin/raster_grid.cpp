@@ -323,24 +323,17 @@ void RasterGrid::read(double azimuthDeg, QgsProcessingFeedback* feedback, double
 
 void RasterGrid::readBlocks(QgsProcessingFeedback* feedback, double progressFrom,
                             double progressTo) {
-  const auto rows = static_cast<std::size_t>(mRows);
-  OrientedGridBuilder builder(mFrame);
-  read_row_blocks(
-      rows, static_cast<std::size_t>(mCols),
+  TurnedDem turned = turn_dem(
+      mFrame,
       [this, feedback](const DemWindow& w, float* heights) {
         if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
         readWindow(w, heights);
       },
-      [&](std::size_t top, std::size_t count, const float* heights) {
-        builder.add_rows(top, count, heights);
-        if (feedback) {
-          feedback->setProgress(progressFrom + (progressTo - progressFrom) *
-                                                   static_cast<double>(top + count) /
-                                                   static_cast<double>(rows));
-        }
+      [&](double done) {
+        if (feedback) feedback->setProgress(progressFrom + (progressTo - progressFrom) * done);
       });
-  mLowest = builder.dem_lowest_height();
-  mOriented = builder.finish();
+  mLowest = turned.lowest_height;
+  mOriented = std::move(turned.oriented);
 }
 
 }  // namespace tsk::plugin

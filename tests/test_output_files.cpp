@@ -18,6 +18,7 @@
 #include "destination_lock.h"
 #include "gdal_test_support.h"
 #include "gdal_util.h"
+#include "path_clashes.h"
 
 using namespace tsk;
 using namespace tsk::test;
@@ -179,4 +180,41 @@ TEST_CASE("an input that is a pipe or no file is refused before GDAL opens it", 
   CHECK_THAT(missing.err, Catch::Contains("No such file"));
   CHECK_NOTHROW(io::check_input_path("/vsizip/archive.zip/dem.tif"));
   CHECK_NOTHROW(io::check_input_path(dir.path.string()));  // a folder: an Arc/Info grid
+}
+
+TEST_CASE("clashes between outputs and inputs are found alike for every front end",
+          "[io][robustness]") {
+  ScratchDir dir("clashes");
+  const double gt[6] = {500000, 10, 0, 4000000, 0, -10};
+  write_tiff(
+      dir / "src.tif", 8, 8, 1, [](int, int r, int c) { return r + c; }, gt, 32616);
+  GDALDatasetH src = GDALOpen((dir / "src.tif").c_str(), GA_ReadOnly);
+  REQUIRE(src != nullptr);
+  GDALBuildVRTOptions* vrt_options = GDALBuildVRTOptionsNew(nullptr, nullptr);
+  GDALDatasetH vrt = GDALBuildVRT((dir / "v.vrt").c_str(), 1, &src, nullptr, vrt_options, nullptr);
+  GDALBuildVRTOptionsFree(vrt_options);
+  REQUIRE(vrt != nullptr);
+  GDALClose(vrt);
+  GDALClose(src);
+  const std::vector<io::NamedFile> inputs = {{"INPUT", dir / "v.vrt"}, {"--source", ""}};
+  const auto clash = [&](std::vector<io::NamedFile> outputs) {
+    return io::find_clash(outputs, inputs);
+  };
+  // An output over the VRT's source, by another spelling of its path.
+  const auto source = clash({{"OUTPUT", dir / "./src.tif"}});
+  REQUIRE(source);
+  CHECK(source->with_input);
+  CHECK(source->other.name == "INPUT");
+  CHECK(io::same_file(source->file, dir / "src.tif"));
+  CHECK(clash({{"OUTPUT", dir / "v.vrt"}}));
+  // Two outputs over one file, unless both add a layer to it.
+  const auto twice = clash({{"A", dir / "o.gpkg"}, {"B", dir / "o.gpkg"}});
+  REQUIRE(twice);
+  CHECK_FALSE(twice->with_input);
+  CHECK(twice->output.name == "B");
+  CHECK(twice->other.name == "A");
+  CHECK_FALSE(clash({{"A", dir / "o.gpkg", false}, {"B", dir / "o.gpkg", false}}));
+  CHECK(clash({{"A", dir / "o.gpkg", false}, {"B", dir / "o.gpkg", true}}));
+  // Nothing shared, or nothing given: no clash.
+  CHECK_FALSE(clash({{"OUTPUT", dir / "out.tif"}, {"--preview", ""}, {"--stats-json", ""}}));
 }

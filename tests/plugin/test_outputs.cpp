@@ -185,6 +185,25 @@ TEST_CASE("an output into the file of a raster being read is refused, the raster
   CHECK(run.ok);
 }
 
+TEST_CASE("an output into a file the algorithm reads is refused before the run",
+          "[plugin][outputs][robustness]") {
+  QTemporaryDir dir;
+  const QString dem = dir.filePath("dem.tif");
+  REQUIRE(QFile::copy(kData + "/volcano.tif", dem));
+  const QByteArray before = [&] {
+    QFile file(dem);
+    REQUIRE(file.open(QIODevice::ReadOnly));
+    return file.readAll();
+  }();
+  const Run run = runAlgorithm(dem, {{"OUTPUT", dir.filePath("./dem.tif")}}, dir, nullptr,
+                               QStringLiteral("classification"));
+  CHECK_FALSE(run.ok);
+  CHECK(run.error.contains("which this algorithm reads"));
+  QFile file(dem);
+  REQUIRE(file.open(QIODevice::ReadOnly));
+  CHECK(file.readAll() == before);
+}
+
 TEST_CASE("two outputs into one file are refused unless both add a layer",
           "[plugin][outputs][robustness]") {
   QTemporaryDir dir;
