@@ -39,182 +39,202 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="73" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="74" />
         <source>Elevation (DEM)</source>
         <translation>Höhenmodell (DGM)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="74" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="75" />
         <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
         <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="77" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="78" />
         <source>Band</source>
         <translation>Kanal</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="79" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="80" />
         <source>The band holding the heights (the first when none is chosen).</source>
         <translation>Der Kanal mit den Höhen (der erste, wenn keiner gewählt ist).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="57" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
         <source>View azimuth (degrees)</source>
         <translation>Blickrichtung (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="59" />
         <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
         <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="64" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="65" />
         <source>Vertical exaggeration</source>
         <translation>Überhöhung</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="65" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="66" />
         <source>Factor applied to heights before occlusion is computed.</source>
         <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="66" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="67" />
         <source>Base slope (%)</source>
         <translation>Grundneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="68" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="69" />
         <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
         <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="85" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="86" />
         <source>Slope filter</source>
         <translation>Neigungsfilter</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="87" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="88" />
         <source>Adapted to the DEM</source>
         <translation>An das DGM angepasst</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="88" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="89" />
         <source>Fixed (the thesis's cut-offs)</source>
         <translation>Fest (die Schwellen der Dissertation)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="91" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="92" />
         <source>Adapted to the DEM (the default): the cut-offs below are scaled by the DEM's median slope over 24 %, that of the terrain the thesis tuned them on at 75 m cells (from 1/16 to 4 times), so that coarse, fine, flat and steep DEMs all give a balanced sketch; height steps within half the DEM's height unit count as flat, so the sketch holds still as the view turns. Fixed: the cut-offs as given, the thesis's filter.</source>
         <translation>An das DGM angepasst (Standard): die Schwellen unten werden mit der mittleren Hangneigung (Median) des DGM geteilt durch 24 % skaliert, der des Geländes, auf das die Dissertation sie bei 75-m-Zellen abgestimmt hat (1/16- bis 4-fach), so dass grobe, feine, flache und steile DGM alle eine ausgewogene Skizze ergeben; Höhenstufen innerhalb der halben Höheneinheit des DGM gelten als flach, so dass die Skizze stehen bleibt, wenn sich die Blickrichtung dreht. Fest: die Schwellen wie angegeben, der Filter der Dissertation.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="98" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="99" />
         <source>Adapt the filter to</source>
         <translation>Filter anpassen an</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="100" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="101" />
         <source>The whole DEM</source>
         <translation>Das ganze DGM</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="101" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="102" />
         <source>Each neighbourhood</source>
         <translation>Jede Nachbarschaft</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="104" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="105" />
         <source>With the adapted filter: one scale for the whole DEM, or a scale for each neighbourhood, so that a plain beside mountains keeps its subtle breaks of slope (this reads the DEM once more).</source>
         <translation>Beim angepassten Filter: ein Maßstab für das ganze DGM oder einer für jede Nachbarschaft, so dass eine Ebene neben Bergen ihre feinen Gefällsknicke behält (dazu wird das DGM ein weiteres Mal gelesen).</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="109" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="110" />
         <source>Neighbourhood (cells)</source>
         <translation>Nachbarschaft (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="112" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="113" />
         <source>With a scale for each neighbourhood: the side of a neighbourhood, in DEM cells. Scales are blended between neighbourhoods, so the filter has no seams.</source>
         <translation>Bei einem Maßstab je Nachbarschaft: die Seitenlänge einer Nachbarschaft in DGM-Zellen. Zwischen Nachbarschaften werden die Maßstäbe überblendet, so dass der Filter keine Nähte hat.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="115" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="116" />
         <source>Row slope cut-off (%)</source>
         <translation>Grenzwert Zeilenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="117" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="118" />
         <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
         <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="119" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="120" />
         <source>Column slope cut-off (%)</source>
         <translation>Grenzwert Spaltenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="121" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="122" />
         <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
         <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="123" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="124" />
         <source>Control point column slope (%)</source>
         <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="125" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="126" />
         <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
         <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="129" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="130" />
         <source>Allow for diagonals</source>
         <translation>Diagonalen berücksichtigen</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="130" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="131" />
         <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
         <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="136" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="137" />
         <source>Strokes</source>
         <translation>Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="138" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="139" />
         <source>Drawn (joined, smoothed, tapered)</source>
         <translation>Gezeichnet (verbunden, geglättet, verjüngt)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="139" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="140" />
         <source>Exact (the thesis's, a point per cell)</source>
         <translation>Exakt (wie in der Dissertation, ein Punkt je Zelle)</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="178" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="154" />
+        <source>Geometry</source>
+        <translation>Geometrie</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="156" />
+        <source>Map (cell centres)</source>
+        <translation>Karte (Zellmittelpunkte)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="156" />
+        <source>Plan oblique (the sketch)</source>
+        <translation>Plan oblique (die Skizze)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="159" />
+        <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
+        <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="197" />
         <source>Slope filter adapted to the DEM: its median slope is %1 % against %2 % on the thesis's terrain, so the cut-offs are scaled by %3: row %4 %, column %5 %, control point %6 %.</source>
         <translation>Neigungsfilter an das DGM angepasst: seine mittlere Hangneigung ist %1 % gegenüber %2 % im Gelände der Dissertation, daher werden die Schwellen mit %3 skaliert: Zeile %4 %, Spalte %5 %, Kontrollpunkt %6 %.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="188" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="207" />
         <source>Each neighbourhood of %1 cells scales them from %2 to %3 times the thesis's.</source>
         <translation>Jede Nachbarschaft von %1 Zellen skaliert sie auf das %2- bis %3-fache der Schwellen der Dissertation.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="224" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="257" />
         <source>%1 and %2 would both be written to %3, one over the other; choose different files, or save both to one GeoPackage with a layer name each.</source>
         <translation>%1 und %2 würden beide nach %3 geschrieben, eines über das andere; wählen Sie verschiedene Dateien, oder speichern Sie beide in ein GeoPackage mit je einem Layernamen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="250" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="252" />
         <source>%1 would be written into %2, the file of %3, which this algorithm reads; choose another file.</source>
         <translation>%1 würde in %2 geschrieben, die Datei von %3, die dieser Algorithmus liest; wählen Sie eine andere Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="296" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="300" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -317,92 +337,72 @@
 <context>
     <name>PStrokeAlgorithm</name>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="20" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="19" />
         <source>P-stroke sketch</source>
         <translation>P-Strich-Skizze</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="24" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="23" />
         <source>Short strokes drawn across the line of sight where the terrain bends (Visvalingam and Dowson 1998). Every profile along the view (column) and across it (row) is scored with Visvalingam's effective-area line generalisation; a visible cell whose convex or concave score reaches its class's tolerance seeds a stroke along the cross-section. Tolerances are effective areas in square metres of the triangles formed by distance (m) and unexaggerated height (m) along the profiles; the defaults are the thesis's sparse sketch of a 50 m DEM. Combined with the silhouettes: no P-stroke is seeded in an f-set cell and none is extended into one.</source>
         <translation>Kurze Striche quer zur Blickrichtung, wo das Gelände knickt (Visvalingam und Dowson 1998). Jedes Profil entlang der Ansicht (Spalte) und quer dazu (Zeile) wird mit Visvalingams Linienvereinfachung nach effektiver Fläche bewertet; eine sichtbare Zelle, deren konvexe oder konkave Bewertung die Toleranz ihrer Klasse erreicht, setzt einen Strich entlang des Querschnitts. Die Toleranzen sind effektive Flächen in Quadratmetern der Dreiecke aus Abstand (m) und nicht überhöhter Höhe (m) entlang der Profile; die Vorgaben sind die der spärlichen Skizze eines 50-m-DGM in der Dissertation. Zusammen mit den Silhouetten: kein P-Strich beginnt in einer Zelle der f-Menge, und keiner wird in eine hinein verlängert.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="46" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="45" />
         <source>Convex column tolerance (m²)</source>
         <translation>Toleranz konvex entlang (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="47" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="46" />
         <source>Effective area a convex bend along the view must reach.</source>
         <translation>Effektive Fläche, die ein konvexer Knick entlang der Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="48" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="47" />
         <source>Concave column tolerance (m²)</source>
         <translation>Toleranz konkav entlang (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="49" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="48" />
         <source>Effective area a concave bend along the view must reach.</source>
         <translation>Effektive Fläche, die ein konkaver Knick entlang der Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="50" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="49" />
         <source>Convex row tolerance (m²)</source>
         <translation>Toleranz konvex quer (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="51" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="50" />
         <source>Effective area a convex bend across the view must reach.</source>
         <translation>Effektive Fläche, die ein konvexer Knick quer zur Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="52" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="51" />
         <source>Concave row tolerance (m²)</source>
         <translation>Toleranz konkav quer (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="53" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="52" />
         <source>Effective area a concave bend across the view must reach.</source>
         <translation>Effektive Fläche, die ein konkaver Knick quer zur Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="55" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="54" />
         <source>Stroke half length (cells)</source>
         <translation>Halbe Strichlänge (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="57" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="56" />
         <source>Cells drawn on each side of a seed along the cross-section.</source>
         <translation>Zellen, die auf jeder Seite eines Startpunkts entlang des Querschnitts gezeichnet werden.</translation>
     </message>
     <message>
         <location filename="../plugin/pstroke_algorithm.cpp" line="59" />
-        <source>Geometry</source>
-        <translation>Geometrie</translation>
-    </message>
-    <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="61" />
-        <source>Map (cell centres)</source>
-        <translation>Karte (Zellmittelpunkte)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="62" />
-        <source>Plan oblique (the sketch)</source>
-        <translation>Plan oblique (die Skizze)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="65" />
-        <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
-        <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="69" />
         <source>P-strokes</source>
         <translation>P-Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="70" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="60" />
         <source>P-strokes as lines with their class and score.</source>
         <translation>P-Striche als Linien mit ihrer Klasse und Bewertung.</translation>
     </message>
@@ -639,67 +639,67 @@
         <translation>Das Raster hat keine Zellen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="152" />
+        <location filename="../plugin/raster_grid.cpp" line="153" />
         <source>The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres like its heights. Reproject it to a metric CRS first, for example with Raster &gt; Projections &gt; Warp (Reproject) to the UTM zone of the area.</source>
         <translation>Das Raster liegt in einem geographischen KBS (%1): seine Zellgrößen sind Grad, nicht Meter wie seine Höhen. Projizieren Sie es zuerst in ein metrisches KBS, zum Beispiel mit Raster &gt; Projektionen &gt; Transformieren (Reprojizieren) in die UTM-Zone des Gebiets.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="157" />
+        <location filename="../plugin/raster_grid.cpp" line="158" />
         <source>The raster has no CRS: cell sizes are taken as metres and the outputs have no CRS.</source>
         <translation>Das Raster hat kein KBS: Zellgrößen werden als Meter angenommen, die Ausgaben haben kein KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="161" />
+        <location filename="../plugin/raster_grid.cpp" line="162" />
         <source>Mercator projection: map units are not ground metres here; cell sizes are scaled by cos(latitude of the centre) = %1.</source>
         <translation>Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen werden mit cos(Breite der Mitte) = %1 skaliert.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="165" />
+        <location filename="../plugin/raster_grid.cpp" line="166" />
         <source>The CRS's unit is %1, not the metre: the heights must be in %1 too, and depths and lengths come out in %1.</source>
         <translation>Die Einheit des KBS ist %1, nicht der Meter: die Höhen müssen ebenfalls in %1 sein, und Tiefen und Längen werden in %1 ausgegeben.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="169" />
+        <location filename="../plugin/raster_grid.cpp" line="170" />
         <source>The raster has %1 bands; band %2 is used.</source>
         <translation>Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="171" />
+        <location filename="../plugin/raster_grid.cpp" line="172" />
         <source>Heights go down to %1, a common fill value: if those cells have no data, set it as the layer's no data value (Layer Properties &gt; Transparency) or in the file.</source>
         <translation>Die Höhen reichen bis %1 hinab, ein üblicher Füllwert: wenn diese Zellen keine Daten haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften &gt; Transparenz) oder in der Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="176" />
+        <location filename="../plugin/raster_grid.cpp" line="177" />
         <source>Heights span %1 over a raster %2 across, more than any terrain: if they are millimetres or centimetres, give the band a scale in the file (gdal_edit.py -scale 0.001).</source>
         <translation>Die Höhen umfassen %1 auf einem Raster von %2 Breite, mehr als jedes Gelände: wenn es Millimeter oder Zentimeter sind, geben Sie dem Kanal in der Datei einen Maßstab (gdal_edit.py -scale 0.001).</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="139" />
+        <location filename="../plugin/raster_grid.cpp" line="140" />
         <source>The raster is rotated: QGIS turns it north-up, and the cells it adds around it are left out as no data.</source>
         <translation>Das Raster ist gedreht: QGIS richtet es nach Norden aus, und die Zellen, die es dabei rundum hinzufügt, bleiben als NoData außen vor.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="144" />
+        <location filename="../plugin/raster_grid.cpp" line="145" />
         <source>Could not open the raster's data provider.</source>
         <translation>Der Datenanbieter des Rasters konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="307" />
+        <location filename="../plugin/raster_grid.cpp" line="308" />
         <source>The raster (%1 x %2 cells) is too large for this algorithm, which holds the whole DEM turned to the view: that would take more than half of this machine's memory. The Silhouettes algorithm reads large DEMs strip by strip; or clip or resample the DEM.</source>
         <translation>Das Raster (%1 x %2 Zellen) ist zu groß für diesen Algorithmus, der das ganze DGM zur Blickrichtung gedreht im Speicher hält: das würde mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen. Der Algorithmus Silhouetten liest große DGM Streifen für Streifen; oder schneiden Sie das DGM zu oder verringern Sie seine Auflösung.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="319" />
+        <location filename="../plugin/raster_grid.cpp" line="320" />
         <source>Not enough memory for a %1 x %2 raster.</source>
         <translation>Nicht genug Speicher für ein Raster von %1 x %2.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="330" />
+        <location filename="../plugin/raster_grid.cpp" line="329" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="283" />
+        <location filename="../plugin/raster_grid.cpp" line="284" />
         <source>Could not read rows %1 to %2 of the raster.</source>
         <translation>Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
     </message>
@@ -730,22 +730,22 @@
 <context>
     <name>SilhouettesAlgorithm</name>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="49" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="48" />
         <source>Silhouettes (factual and formulated)</source>
         <translation>Silhouetten (faktisch und formuliert)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="53" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="52" />
         <source>silhouette,occluding contour,sketch,oblique,panorama,block diagram,plan oblique,terrain,dem,hidden</source>
         <translation>Silhouette,Verdeckungskontur,Skizze,Schrägansicht,Panorama,Blockbild,Plan oblique,Gelände,DGM,verdeckt</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="59" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="58" />
         <source>Draws the silhouette lines of a DEM seen obliquely from above as vector strokes.</source>
         <translation>Zeichnet die Silhouettenlinien eines schräg von oben gesehenen DGM als Vektorstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="63" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="62" />
         <source>Finds the lines a cartographer sketches first when drawing terrain seen obliquely from above.
 
 Factual Silhouettes are occluding contours: cells beyond which the terrain hides what lies behind it, in a parallel view with vertical exaggeration and a base slope added along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view brings into sight (the candidate set), kept where the slope filter finds them significant (outside the weak/weak corner of column slope against row slope), thinned to the cell furthest from the viewer and chained across profiles.
@@ -774,182 +774,162 @@ Die Stufenkennzahlen (Protokoll und Ausgaben), in Prozent der Zellen mit Daten: 
 Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="110" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="109" />
         <source>Chaining window (cells)</source>
         <translation>Verkettungsfenster (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="110" />
         <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
         <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="112" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
         <source>Minimum stroke cells</source>
         <translation>Mindestzahl Zellen je Strich</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="112" />
         <source>Strokes with fewer cells are dropped (generalisation).</source>
         <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
     </message>
     <message>
         <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
-        <source>Geometry</source>
-        <translation>Geometrie</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
-        <source>Map (cell centres)</source>
-        <translation>Karte (Zellmittelpunkte)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
-        <source>Plan oblique (the sketch)</source>
-        <translation>Plan oblique (die Skizze)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="120" />
-        <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
-        <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="124" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="126" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="126" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="129" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="120" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="130" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="121" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="131" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="135" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="126" />
         <source>Profiles per strip (0: automatic)</source>
         <translation>Profile je Streifen (0: automatisch)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="136" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="127" />
         <source>The DEM is read and processed this many profiles at a time, the next strip read while this one is processed, so DEMs larger than memory run too. 0 chooses 1024, more for profiles under 1024 cells (a million cells a strip), or fewer when profiles are so long that the strips would take more than 512 MB. Strips that would take more than half of this machine's memory are refused.</source>
         <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, mehr für Profile unter 1024 Zellen (eine Million Zellen je Streifen), oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="142" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="133" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="143" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="134" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="144" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="135" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="145" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="136" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="159" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="150" />
         <source>Drawn (the default): strokes a cartographer would publish. Pieces of one class that continue each other across a small gap are joined before short strokes are dropped; points lie between cells where the profile peaks or the slope breaks, and are smoothed along the stroke; every point carries a weight (its M value) that tapers the ends and thins the strokes towards the back of the view, which the layers' styles draw. Exact: the thesis's strokes, a point at each cell centre.</source>
         <translation>Gezeichnet (Voreinstellung): Striche, wie sie ein Kartograf veröffentlichen würde. Stücke einer Klasse, die einander über eine kleine Lücke fortsetzen, werden verbunden, bevor kurze Striche entfallen; Punkte liegen zwischen den Zellen, wo das Profil gipfelt oder die Neigung bricht, und werden entlang des Strichs geglättet; jeder Punkt trägt ein Gewicht (seinen M-Wert), das die Enden verjüngt und die Striche zum hinteren Rand der Ansicht hin dünner macht, wie es die Stile der Layer zeichnen. Exakt: die Striche der Dissertation, ein Punkt in jeder Zellmitte.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="165" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="156" />
         <source>Join gap (cells)</source>
         <translation>Verbindungslücke (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="166" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="157" />
         <source>Drawn strokes: ends of two strokes this close (in cells) are joined when their directions agree. 0 joins none.</source>
         <translation>Gezeichnete Striche: Enden zweier Striche, die so nahe beieinander liegen (in Zellen), werden verbunden, wenn ihre Richtungen übereinstimmen. 0 verbindet keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="168" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="159" />
         <source>Join angle (degrees)</source>
         <translation>Verbindungswinkel (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="169" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="160" />
         <source>Drawn strokes: the largest turn between two ends' directions, and the step between them, for them to be joined.</source>
         <translation>Gezeichnete Striche: die größte Drehung zwischen den Richtungen zweier Enden und dem Schritt zwischen ihnen, bei der sie noch verbunden werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="171" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="162" />
         <source>Smoothing (cells)</source>
         <translation>Glättung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="172" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="163" />
         <source>Drawn strokes: the width (sigma, in cells) of the Gaussian smoothing along each stroke. 0 keeps the points where they are.</source>
         <translation>Gezeichnete Striche: die Breite (Sigma, in Zellen) der Gaußschen Glättung entlang jedes Strichs. 0 lässt die Punkte, wo sie sind.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="174" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="165" />
         <source>Smoothing tolerance (cells)</source>
         <translation>Glättungstoleranz (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="175" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="166" />
         <source>Drawn strokes: no point moves farther than this (in cells) from its place on the exact chain, so smoothing never invents terrain.</source>
         <translation>Gezeichnete Striche: kein Punkt liegt weiter als dies (in Zellen) von seinem Platz auf der exakten Kette, so dass die Glättung nie Gelände erfindet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="177" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="168" />
         <source>Taper (share of the stroke)</source>
         <translation>Verjüngung (Anteil des Strichs)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="178" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="169" />
         <source>Drawn strokes: the share of a stroke's length over which each end thins.</source>
         <translation>Gezeichnete Striche: der Anteil der Strichlänge, über den jedes Ende dünner wird.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="179" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="170" />
         <source>Depth cue</source>
         <translation>Tiefenwirkung</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="180" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="171" />
         <source>Drawn strokes: the share of the weight strokes lose from the front of the view to its back.</source>
         <translation>Gezeichnete Striche: der Anteil des Gewichts, den Striche vom vorderen zum hinteren Rand der Ansicht verlieren.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="182" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="173" />
         <source>Over-extension (cells)</source>
         <translation>Überzeichnung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="183" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="174" />
         <source>Drawn strokes: each end runs on this far (in cells) along its direction, as a hand-drawn stroke does. 0: none.</source>
         <translation>Gezeichnete Striche: jedes Ende läuft so weit (in Zellen) in seiner Richtung weiter, wie es ein von Hand gezeichneter Strich tut. 0: keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="227" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="219" />
         <source>Processing the DEM in %1 strips of %2 profiles.</source>
         <translation>Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.</translation>
     </message>

@@ -148,6 +148,24 @@ StrokeMode DemViewAlgorithm::readStrokeMode(const QVariantMap& parameters,
   return parameterAsChoice(*this, parameters, QStringLiteral("STROKES"), context, kStrokeModeNames);
 }
 
+void DemViewAlgorithm::addGeometryParameter(Geometry defaultValue) {
+  addWithHelp(
+      choiceParameter(
+          QStringLiteral("GEOMETRY"), tr("Geometry"), kGeometryNames,
+          [](Geometry g) {
+            return g == Geometry::map ? tr("Map (cell centres)") : tr("Plan oblique (the sketch)");
+          },
+          defaultValue),
+      tr("Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved "
+         "along the view azimuth by (exaggeration / base slope) x (height - lowest height), so "
+         "the strokes draw the oblique sketch in the same CRS."));
+}
+
+Geometry DemViewAlgorithm::readGeometry(const QVariantMap& parameters,
+                                        QgsProcessingContext& context) const {
+  return parameterAsChoice(*this, parameters, QStringLiteral("GEOMETRY"), context, kGeometryNames);
+}
+
 ViewParams DemViewAlgorithm::readView(const QVariantMap& parameters,
                                       QgsProcessingContext& context) const {
   ViewParams view;

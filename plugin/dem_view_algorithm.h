@@ -41,6 +41,9 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   // STROKES, advanced: drawn (the default) or exact strokes, explained by `help`.
   void addStrokeModeParameter(const QString& help);
   StrokeMode readStrokeMode(const QVariantMap& parameters, QgsProcessingContext& context) const;
+  // GEOMETRY: map or plan oblique, `defaultValue` chosen.
+  void addGeometryParameter(Geometry defaultValue);
+  Geometry readGeometry(const QVariantMap& parameters, QgsProcessingContext& context) const;
   ViewParams readView(const QVariantMap& parameters, QgsProcessingContext& context) const;
   // The filter's parameters into `params`: its cut-offs and whether they adapt to the DEM.
   void readFilter(const QVariantMap& parameters, QgsProcessingContext& context,

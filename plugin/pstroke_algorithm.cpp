@@ -2,7 +2,6 @@
 
 #include <qgsprocessingfeedback.h>
 
-#include "choice_parameter.h"
 #include "errors.h"
 #include "layer_style.h"
 #include "line_output.h"
@@ -55,16 +54,7 @@ void PStrokeAlgorithm::initAlgorithm(const QVariantMap&) {
                                                tr("Stroke half length (cells)"), kIntegerNumber,
                                                defaults.half_length, false, 1, 100),
               tr("Cells drawn on each side of a seed along the cross-section."));
-  addWithHelp(choiceParameter(
-                  QStringLiteral("GEOMETRY"), tr("Geometry"), kGeometryNames,
-                  [](Geometry g) {
-                    return g == Geometry::map ? tr("Map (cell centres)")
-                                              : tr("Plan oblique (the sketch)");
-                  },
-                  Geometry::oblique),
-              tr("Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point "
-                 "moved along the view azimuth by (exaggeration / base slope) x (height - lowest "
-                 "height), so the strokes draw the oblique sketch in the same CRS."));
+  addGeometryParameter(Geometry::oblique);
   addWithHelp(
       new QgsProcessingParameterFeatureSink(QStringLiteral("OUTPUT"), tr("P-strokes"), kLineLayer),
       tr("P-strokes as lines with their class and score."));
@@ -83,8 +73,7 @@ double PStrokeAlgorithm::readParameters(const QVariantMap& parameters,
   mPStrokes.concave_row_m2 = parameterAsDouble(parameters, QStringLiteral("CONCAVE_ROW"), context);
   mPStrokes.half_length = parameterAsInt(parameters, QStringLiteral("HALF_LENGTH"), context);
   mPStrokes.validate();
-  mParams.geometry =
-      parameterAsChoice(*this, parameters, QStringLiteral("GEOMETRY"), context, kGeometryNames);
+  mParams.geometry = readGeometry(parameters, context);
   return mParams.view.azimuth_deg;
 }
 

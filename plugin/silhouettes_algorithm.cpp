@@ -21,7 +21,6 @@ namespace {
 // Parameter keys.
 const QString kWindow = QStringLiteral("WINDOW");
 const QString kMinCells = QStringLiteral("MIN_CELLS");
-const QString kGeometry = QStringLiteral("GEOMETRY");
 const QString kPlacement = QStringLiteral("PLACEMENT");
 const QString kSubcell = QStringLiteral("SUBCELL");
 const QString kStrips = QStringLiteral("STRIPS");
@@ -111,15 +110,7 @@ void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
       tr("Formulated strokes link cells on neighbouring profiles at most this many cells apart."));
   add(integer(kMinCells, tr("Minimum stroke cells"), defaults.chain.min_cells, 2, 1000000),
       tr("Strokes with fewer cells are dropped (generalisation)."));
-  add(choiceParameter(
-          kGeometry, tr("Geometry"), kGeometryNames,
-          [](Geometry g) {
-            return g == Geometry::map ? tr("Map (cell centres)") : tr("Plan oblique (the sketch)");
-          },
-          Geometry::map),
-      tr("Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved "
-         "along the view azimuth by (exaggeration / base slope) x (height - lowest height), so "
-         "the strokes draw the oblique sketch in the same CRS."));
+  addGeometryParameter(Geometry::map);
   add(choiceParameter(
           kPlacement, tr("Formulated stroke placement"), kPlacementNames,
           [](Placement p) {
@@ -204,7 +195,7 @@ double SilhouettesAlgorithm::readParameters(const QVariantMap& parameters,
   readFilter(parameters, context, p);
   p.chain.window = parameterAsInt(parameters, kWindow, context);
   p.chain.min_cells = parameterAsInt(parameters, kMinCells, context);
-  p.geometry = parameterAsChoice(*this, parameters, kGeometry, context, kGeometryNames);
+  p.geometry = readGeometry(parameters, context);
   p.placement = parameterAsChoice(*this, parameters, kPlacement, context, kPlacementNames);
   p.subcell = parameterAsBool(parameters, kSubcell, context);
   mStrips = parameterAsInt(parameters, kStrips, context);
