@@ -1,16 +1,17 @@
 // SilhouetteStream: the method strip by strip, each profile's stages while its cells are in
 // cache, the chains linked in the order of the scan as the next profiles are classified.
 #include <algorithm>
-#include <atomic>
 #include <limits>
 #include <memory>
 #include <mutex>
 #include <utility>
 
 #include "chaining.h"
+#include "drawing_pipeline.h"
 #include "drawn_strokes.h"
 #include "errors.h"
 #include "profile_stages.h"
+#include "scan_order.h"
 #include "silhouettes.h"
 #include "stage_timing.h"
 
@@ -24,9 +25,6 @@ std::size_t batch_profiles(std::size_t length) {
                                  16384);
 }
 
-// Batches each step of the drawing may have still to do before the step before it waits.
-constexpr std::size_t kBatchesBehind = 2;
-
 // Whether drawn strokes are drawn, and handed on, on threads of their own.
 bool draws_alongside(const SilhouetteParams& p) {
   return p.strokes.drawn() && resolve_threads(p.threads) > 1;
@@ -34,26 +32,21 @@ bool draws_alongside(const SilhouetteParams& p) {
 
 }  // namespace
 
+// The linking of a run: chains linked profile by profile (SPEC 1.7), their strokes kept in the
+// order of the scan and handed on, or to the drawing for drawn strokes.
 struct SilhouetteStream::State {
-  // A complete stroke, or a piece of one (drawn strokes), and its chain's place in the scan.
-  struct Waiting {
-    std::size_t chain;
-    std::size_t piece;
-    Stroke stroke;
-  };
   // One class of strokes: its linker, the strokes of its open chains by slot, and its complete
-  // strokes waiting until every chain started before theirs is complete too.
+  // strokes held until every chain started before theirs is complete too.
   struct Strokes {
     Strokes(bool factual, int window)
         : linker(factual, window), cls(factual ? StrokeClass::factual : StrokeClass::formulated) {}
     ChainLinker linker;
     StrokeClass cls;
     std::vector<StrokeBuilder> open;
-    std::vector<Waiting> waiting;          // a heap, the oldest chain on top
-    std::vector<Stroke> pieces;            // of the drawn chain closing, its storage reused
-    std::vector<Stroke> handed_on;         // without a sink
-    std::unique_ptr<StrokeDrawer> drawer;  // drawn strokes
-    std::size_t count = 0, cells = 0;      // of the strokes handed on
+    ScanOrder order;
+    std::vector<Stroke> pieces;        // of the drawn chain closing, its storage reused
+    std::vector<Stroke> handed_on;     // without a sink
+    std::size_t count = 0, cells = 0;  // of the strokes handed on
   };
 
   OrientedFrame frame;
@@ -67,22 +60,8 @@ struct SilhouetteStream::State {
   Strokes factual{true, 0}, formulated;
   CellFlags flags;  // the current strip's classification, its memory reused by the next strip
   SilhouetteResult result;
-  // Drawn strokes are drawn while the stages go on, in three steps on three threads: grouped,
-  // then joined, smoothed and weighed, then handed on. The linking gives the grouping its steps
-  // in the order of the scan: a class's next piece, or where the chains still open begin (the
-  // frontier) once a profile is linked.
-  struct DrawingStep {
-    Strokes* strokes;
-    Stroke piece;     // a step that adds a piece
-    double frontier;  // a step that settles groups
-    bool settle;
-  };
-  std::vector<DrawingStep> steps;  // not given to the drawing thread yet
-  std::atomic<bool> abandoned{false};
-  // Declared last, in reverse order: each is stopped before the one it gives its work to.
-  TasksBehind writing;
-  TasksBehind finishing;
-  TasksBehind grouping;
+  // Drawn strokes only. Declared last: stopped before what it delivers to goes.
+  std::unique_ptr<DrawingPipeline> drawing;
 
   State(const OrientedFrame& f, const GeoTransform& gt, const SilhouetteParams& p, double z,
         const ProgressFn& pr, StrokeSink sk)
@@ -92,18 +71,13 @@ struct SilhouetteStream::State {
         z_ref(z),
         progress(pr),
         sink(std::move(sk)),
-        formulated(false, p.chain.window),
-        writing(kBatchesBehind, draws_alongside(p)),
-        finishing(kBatchesBehind, draws_alongside(p)),
-        grouping(kBatchesBehind, draws_alongside(p)) {
-    if (p.strokes.drawn()) {
-      const DrawingSetup setup = drawing_setup(f, gt, p, z);
-      factual.drawer = std::make_unique<StrokeDrawer>(setup);
-      formulated.drawer = std::make_unique<StrokeDrawer>(setup);
-    }
+        formulated(false, p.chain.window) {
+    if (!p.strokes.drawn()) return;
+    drawing = std::make_unique<DrawingPipeline>(
+        drawing_setup(f, gt, p, z), draws_alongside(p), [this](StrokeClass cls, Stroke&& stroke) {
+          deliver(cls == StrokeClass::factual ? factual : formulated, std::move(stroke));
+        });
   }
-  // A run that ends early (cancelled, failed) leaves what is still to draw undrawn.
-  ~State() { abandoned = true; }
 
   // Checks that a strip of `count` profiles from `first` follows the last one and matches the
   // frame; returns how many neighbour profiles it holds before its first (0 or 1).
@@ -131,12 +105,12 @@ struct SilhouetteStream::State {
       link(formulated, c.formulated, c.formulated_cells);
       ++next_linked;
       // Profile by profile, so that the two classes interleave alike whatever the batches.
-      if (params.strokes.drawn()) {
+      if (drawing) {
         take_settled(factual);
         take_settled(formulated);
       }
     }
-    draw_settled();
+    if (drawing) drawing->flush();
   }
 
   // Adds the cells of a profile's candidates to the strokes of their chains, finishes the closed
@@ -146,7 +120,7 @@ struct SilhouetteStream::State {
     const auto& joined = strokes.linker.add_profile(candidates);
     std::vector<StrokeBuilder>& open = strokes.open;
     if (open.size() < strokes.linker.slot_count()) open.resize(strokes.linker.slot_count());
-    const bool drawn = params.strokes.drawn();
+    const bool drawn = drawing != nullptr;
     for (std::size_t k = 0; k < joined.size(); ++k) open[joined[k].slot].add(cells[k], drawn);
     close(strokes, strokes.linker.closed());
     hand_on(strokes, strokes.linker.oldest_open());
@@ -159,102 +133,41 @@ struct SilhouetteStream::State {
     const double frontier = last     ? std::numeric_limits<double>::infinity()
                             : oldest ? strokes.open[oldest->slot].first_profile()
                                      : static_cast<double>(next_linked);
-    steps.push_back({&strokes, Stroke(), frontier, true});
-  }
-
-  // Gives the drawing its steps so far: the grouping alone touches the drawers' pieces and
-  // groups, the finishing draws the groups taken and the writing hands the strokes on, each on a
-  // thread of its own if there are threads. A failed step (a sink that could not write) ends the
-  // run as soon as it is seen; the linking waits when the drawing falls behind by more than a few
-  // batches, whose pieces it would otherwise hold.
-  void draw_settled() {
-    if (steps.empty()) return;
-    auto taken = std::make_shared<std::vector<DrawingStep>>(std::move(steps));
-    steps.clear();
-    steps.reserve(taken->size());
-    grouping.run([this, taken] {
-      auto settled = std::make_shared<std::vector<std::pair<Strokes*, StrokeGroups>>>();
-      for (DrawingStep& step : *taken) {
-        if (abandoned) return;
-        Strokes& strokes = *step.strokes;
-        if (step.settle) {
-          settled->emplace_back(&strokes, strokes.drawer->take_settled(step.frontier));
-        } else {
-          strokes.drawer->add(std::move(step.piece));
-        }
-      }
-      finishing.run([this, settled] { finish_groups(*settled); });
-    });
-  }
-
-  // Draws groups taken, in order, and gives the strokes to the writing.
-  void finish_groups(std::vector<std::pair<Strokes*, StrokeGroups>>& settled) {
-    auto drawn = std::make_shared<std::vector<std::pair<Strokes*, Stroke>>>();
-    std::size_t pieces = 0;
-    for (const auto& taken : settled) pieces += taken.second.pieces.size();
-    drawn->reserve(pieces);  // as many strokes at most
-    for (auto& [strokes, groups] : settled) {
-      if (abandoned) return;
-      Strokes* of = strokes;
-      of->drawer->draw(groups,
-                       [&](Stroke&& stroke) { drawn->emplace_back(of, std::move(stroke)); });
-    }
-    writing.run([this, drawn] {
-      for (auto& [strokes, stroke] : *drawn) {
-        if (abandoned) return;
-        deliver(*strokes, std::move(stroke));
-      }
-    });
-  }
-
-  // Waits for every step of the drawing given, in order.
-  void finish_drawing() {
-    grouping.finish();
-    finishing.finish();
-    writing.finish();
+    drawing->settle(strokes.cls, frontier);
   }
 
   // Keeps the strokes of closed chains long enough to draw (every one the drawing can use for
   // drawn strokes, which are generalised after joining); their slots' storage is reused.
   void close(Strokes& strokes, const std::vector<ChainRef>& chains) {
-    const int min_cells = params.strokes.drawn() ? kLeastDrawnCells : params.chain.min_cells;
+    const int min_cells = drawing ? kLeastDrawnCells : params.chain.min_cells;
     for (const ChainRef& chain : chains) {
       StrokeBuilder& builder = strokes.open[chain.slot];
       if (builder.cells() >= min_cells) {
         // Copies sized to fit: the builder keeps its storage for the slot's next chain (taking
         // its vectors left them to grow anew, allocation after allocation).
-        if (strokes.drawer) {
+        if (drawing) {
           strokes.pieces.clear();
-          builder.drawn_pieces(strokes.cls, strokes.drawer->longest_step(), strokes.pieces);
+          builder.drawn_pieces(strokes.cls, drawing->longest_step(), strokes.pieces);
           for (std::size_t k = 0; k < strokes.pieces.size(); ++k)
-            wait(strokes, {chain.id, k, std::move(strokes.pieces[k])});
+            strokes.order.hold(chain.id, k, std::move(strokes.pieces[k]));
         } else {
-          wait(strokes, {chain.id, 0, builder.stroke(strokes.cls)});
+          strokes.order.hold(chain.id, 0, builder.stroke(strokes.cls));
         }
       }
       builder.clear();
     }
   }
 
-  void wait(Strokes& strokes, Waiting&& stroke) {
-    strokes.waiting.push_back(std::move(stroke));
-    std::push_heap(strokes.waiting.begin(), strokes.waiting.end(), later_chain);
-  }
-
-  // Hands on the waiting strokes of chains started before chain `id`, oldest first: to the
-  // drawer for drawn strokes.
+  // Hands on the held strokes of chains started before chain `id`, oldest first: to the drawing
+  // for drawn strokes.
   void hand_on(Strokes& strokes, std::size_t id) {
-    auto& waiting = strokes.waiting;
-    while (!waiting.empty() && waiting.front().chain < id) {
-      std::pop_heap(waiting.begin(), waiting.end(), later_chain);
-      Stroke stroke = std::move(waiting.back().stroke);
-      waiting.pop_back();
-      if (strokes.drawer) {
-        steps.push_back({&strokes, std::move(stroke), 0.0, false});
+    strokes.order.release_before(id, [&](Stroke&& stroke) {
+      if (drawing) {
+        drawing->add_piece(strokes.cls, std::move(stroke));
       } else {
         deliver(strokes, std::move(stroke));
       }
-    }
+    });
   }
 
   void deliver(Strokes& strokes, Stroke&& stroke) {
@@ -265,10 +178,6 @@ struct SilhouetteStream::State {
     } else {
       strokes.handed_on.push_back(std::move(stroke));
     }
-  }
-
-  static bool later_chain(const Waiting& a, const Waiting& b) {
-    return a.chain != b.chain ? a.chain > b.chain : a.piece > b.piece;
   }
 };
 
@@ -348,10 +257,12 @@ SilhouetteResult SilhouetteStream::finish() {
   for (State::Strokes* strokes : {&st.factual, &st.formulated}) {
     st.close(*strokes, strokes->linker.close_all());
     st.hand_on(*strokes, std::numeric_limits<std::size_t>::max());
-    if (strokes->drawer) st.take_settled(*strokes, true);
+    if (st.drawing) st.take_settled(*strokes, true);
   }
-  st.draw_settled();
-  st.finish_drawing();
+  if (st.drawing) {
+    st.drawing->flush();
+    st.drawing->finish();
+  }
   SilhouetteResult& result = st.result;
   StageStats& stats = result.stats;
   stats.generalised = st.factual.cells + st.formulated.cells;
