@@ -1,6 +1,7 @@
 // terrain-sketch silhouettes: the strokes, written as they complete.
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <ostream>
 #include <utility>
 #include <vector>
@@ -29,14 +30,26 @@ void print_timings(const StageTimings& t, double write_s, double commit_s, std::
       << " (alongside the stages) + " << commit_s << " (spatial index, commit)\n";
 }
 
-// The preview draws the strokes over the whole DEM turned to the view, read once more.
+// The preview draws the strokes over the whole DEM turned to the view, held for the run.
 io::PlotterReport write_preview(const Options& o, SilhouetteResult& result,
-                                std::vector<Stroke>&& drawn) {
+                                std::vector<Stroke>&& drawn, const io::Dem& whole) {
   result.strokes = std::move(drawn);
-  const io::Dem whole = io::read_dem(o.input, o.dem, o.params.view.azimuth_deg);
   return io::write_preview(o.preview, result, whole.oriented, whole.frame, whole.geotransform,
                            o.params.view, o.params.geometry, o.page);
 }
+
+// The DEM of a run: held whole once for a preview, which draws over it too (refused when too
+// large to hold); otherwise open to be read strip by strip, for DEMs of any size.
+struct RunDem {
+  std::optional<io::HeldDemFile> held;
+  std::optional<io::DemFile> file;
+  const io::Dem& info() const { return held ? held->dem : file->info(); }
+  SilhouetteResult sketch(const Options& o, const ProgressFn& progress, StrokeSink sink) const {
+    if (held) return sketch_held_dem(held->held(), o.params, progress, std::move(sink));
+    return sketch_silhouettes(file->source(), o.params, static_cast<std::size_t>(o.strips),
+                              progress, std::move(sink));
+  }
+};
 
 void print_plotter(const io::PlotterReport& r, bool millimetres, std::ostream& err) {
   const char* unit = millimetres ? " mm" : " px";
@@ -51,11 +64,14 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
                 const ProgressFn& progress) {
   const Options o = parse("silhouettes", args);
   io::check_vector_output(o.output, o.format);  // before any work
-  const io::DemFile dem(o.input, o.dem);
-  print_notes(dem.info().notes, err);
   const bool preview = !o.preview.empty();
-  if (preview)  // before any work too
-    io::refuse_too_large_to_turn(o.input, dem.info(), o.params.view.azimuth_deg);
+  RunDem dem;
+  if (preview) {
+    dem.held.emplace(load_dem(o, err));
+  } else {
+    dem.file.emplace(o.input, o.dem);
+    print_notes(dem.info().notes, err);
+  }
   // Strokes are written as they complete, so they are never all held (but for the preview).
   SilhouetteResult result;
   io::PlotterReport plotter;
@@ -65,19 +81,18 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
   io::write_strokes(
       o.output, o.format, dem.info().srs_wkt,
       [&](const io::StrokeWriter& write) {
-        result = sketch_silhouettes(dem.source(), o.params, static_cast<std::size_t>(o.strips),
-                                    progress, [&](Stroke&& stroke) {
-                                      const auto start = Clock::now();
-                                      write(stroke);
-                                      write_s += since(start);
-                                      if (preview) drawn.push_back(std::move(stroke));
-                                    });
+        result = dem.sketch(o, progress, [&](Stroke&& stroke) {
+          const auto start = Clock::now();
+          write(stroke);
+          write_s += since(start);
+          if (preview) drawn.push_back(std::move(stroke));
+        });
         stop_if_interrupted();  // the last chance to stop with nothing written
         // The statistics and the preview go out before the strokes are committed, so that a failure
         // to write them discards the strokes too.
         if (!o.stats_json.empty())
           io::write_text_file(o.stats_json, stats_json(result.stats, result.filter));
-        if (preview) plotter = write_preview(o, result, std::move(drawn));
+        if (preview) plotter = write_preview(o, result, std::move(drawn), dem.info());
         produced = Clock::now();
       },
       io::kStrokeLayer, o.params.strokes.drawn());

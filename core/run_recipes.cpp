@@ -44,11 +44,11 @@ ResolvedParams resolve_on(const HeldDem& dem, const SilhouetteParams& choice) {
 }
 
 SilhouetteResult sketch_held_dem(const HeldDem& dem, const SilhouetteParams& choice,
-                                 const ProgressFn& progress) {
+                                 const ProgressFn& progress, StrokeSink sink) {
   require_view(dem, choice.view);
   const ResolvedParams params = resolve_on(dem, choice);
   return run_silhouettes(dem.oriented, dem.frame, dem.source.geotransform, params, progress,
-                         dem.lowest_height);
+                         dem.lowest_height, std::move(sink));
 }
 
 PlanObliqueDrape lay_out_drape(const HeldDem& dem, const ViewParams& view, unsigned threads,

@@ -32,9 +32,10 @@ ResolvedParams resolve_on(const HeldDem& dem, const SilhouetteParams& choice);
 
 // Every stage on a DEM held whole, with every cell's class kept: what the classification, the
 // filter diagram and the P-strokes start from. Throws Error on bad parameters or a DEM turned for
-// another azimuth than the choice's, Cancelled when `progress` says stop.
+// another azimuth than the choice's, Cancelled when `progress` says stop. With a sink, strokes go
+// to it as they complete (as sketch_silhouettes hands them on) and the result holds none.
 SilhouetteResult sketch_held_dem(const HeldDem& dem, const SilhouetteParams& choice,
-                                 const ProgressFn& progress = {});
+                                 const ProgressFn& progress = {}, StrokeSink sink = {});
 
 // The drape's lattice for a DEM held whole: its visibility for the view, laid out in plan-oblique
 // space about the DEM's lowest height. Throws Error as sketch_held_dem does.

@@ -77,13 +77,14 @@ SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams
 
 SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,
                                  const GeoTransform& geotransform, const ResolvedParams& params,
-                                 const ProgressFn& progress, std::optional<double> z_ref) {
+                                 const ProgressFn& progress, std::optional<double> z_ref,
+                                 StrokeSink sink) {
   if (oriented.rows() != frame.profiles || oriented.cols() != frame.length) {
     throw Error("oriented grid does not match its frame");
   }
   SilhouetteStream stream(frame, geotransform, params,
                           z_ref ? *z_ref : plan_oblique_reference(oriented, params.params()),
-                          progress);
+                          progress, std::move(sink));
   stream.add_strip(oriented, 0, frame.profiles, true);
   return stream.finish();
 }

@@ -97,9 +97,10 @@ SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams
 // plan-oblique reference; without it the grid's lowest height stands in (in oblique geometry),
 // which is the DEM's for a cardinal view but may lie above it for a resampled one. Throws Error on
 // bad parameters or a grid that does not match the frame, Cancelled when `progress` returns false.
+// With a sink, strokes go to it as they complete and the result holds none.
 SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,
                                  const GeoTransform& geotransform, const ResolvedParams& params,
                                  const ProgressFn& progress = {},
-                                 std::optional<double> z_ref = std::nullopt);
+                                 std::optional<double> z_ref = std::nullopt, StrokeSink sink = {});
 
 }  // namespace tsk
