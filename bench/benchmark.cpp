@@ -15,14 +15,14 @@
 #include <thread>
 #include <vector>
 
+#include "core/terrain_sketch.h"
 #include "resampled_silhouettes.h"
-#include "terrain_sketch.h"
 #include "whole_grid_stages.h"
 
 #ifdef TSK_BENCH_WITH_GDAL
 #include <gdal_priv.h>
 
-#include "dem_reader.h"
+#include "io/read/dem_reader.h"
 #endif
 
 namespace {

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "gdal_util.h"
-#include "gpkg_spatial_index.h"
+#include "io/gpkg/gpkg_spatial_index.h"
+#include "io/read/gdal_util.h"
 
 namespace {
 

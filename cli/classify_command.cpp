@@ -1,12 +1,12 @@
 // terrain-sketch classify: the stage of every DEM cell as a GeoTIFF.
 #include <ostream>
 
-#include "command_support.h"
-#include "commands.h"
-#include "diagnostics.h"
-#include "interrupt.h"
-#include "output_files.h"
-#include "raster_writer.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/interrupt.h"
+#include "core/applications/diagnostics.h"
+#include "io/write/output_files.h"
+#include "io/write/raster_writer.h"
 
 namespace tsk::cli {
 

@@ -1,4 +1,4 @@
-#include "cli_app.h"
+#include "cli/cli_app.h"
 
 #include <cpl_conv.h>
 #include <gdal.h>
@@ -8,12 +8,12 @@
 #include <new>
 #include <string>
 
-#include "commands.h"
-#include "dem_note_text.h"
-#include "errors.h"
-#include "interrupt.h"
-#include "option_table.h"
-#include "progress_line.h"
+#include "cli/commands.h"
+#include "cli/dem_note_text.h"
+#include "cli/interrupt.h"
+#include "cli/option_table.h"
+#include "cli/progress_line.h"
+#include "core/base/errors.h"
 
 namespace tsk::cli {
 namespace {

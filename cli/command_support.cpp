@@ -1,12 +1,12 @@
-#include "command_support.h"
+#include "cli/command_support.h"
 
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 
-#include "dem_note_text.h"
-#include "errors.h"
-#include "output_files.h"
+#include "cli/dem_note_text.h"
+#include "core/base/errors.h"
+#include "io/write/output_files.h"
 
 namespace tsk::cli {
 

@@ -4,9 +4,9 @@
 #include <ostream>
 #include <string>
 
-#include "dem_reader.h"
-#include "options.h"
-#include "silhouettes.h"
+#include "cli/options.h"
+#include "core/method/silhouettes.h"
+#include "io/read/dem_reader.h"
 
 namespace tsk::cli {
 

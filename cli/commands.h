@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "parallel.h"
+#include "core/base/parallel.h"
 
 namespace tsk::cli {
 

@@ -1,6 +1,6 @@
-#include "dem_note_text.h"
+#include "cli/dem_note_text.h"
 
-#include "errors.h"
+#include "core/base/errors.h"
 
 namespace tsk::cli {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "dem_reader.h"
+#include "io/read/dem_reader.h"
 
 namespace tsk::cli {
 

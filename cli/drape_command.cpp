@@ -3,12 +3,12 @@
 #include <utility>
 #include <vector>
 
-#include "command_support.h"
-#include "commands.h"
-#include "dem_reader.h"
-#include "drape.h"
-#include "interrupt.h"
-#include "raster_writer.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/interrupt.h"
+#include "core/applications/drape.h"
+#include "io/read/dem_reader.h"
+#include "io/write/raster_writer.h"
 
 namespace tsk::cli {
 int drape(const Args& args, std::ostream& out, std::ostream& err,

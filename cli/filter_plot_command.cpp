@@ -2,11 +2,11 @@
 #include <filesystem>
 #include <ostream>
 
-#include "command_support.h"
-#include "commands.h"
-#include "filter_diagram.h"
-#include "interrupt.h"
-#include "output_files.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/interrupt.h"
+#include "core/applications/filter_diagram.h"
+#include "io/write/output_files.h"
 
 namespace tsk::cli {
 

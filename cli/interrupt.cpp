@@ -1,9 +1,9 @@
-#include "interrupt.h"
+#include "cli/interrupt.h"
 
 #include <atomic>
 #include <csignal>
 
-#include "errors.h"
+#include "core/base/errors.h"
 
 namespace tsk::cli {
 namespace {

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "cli_app.h"
-#include "interrupt.h"
+#include "cli/cli_app.h"
+#include "cli/interrupt.h"
 
 int main(int argc, char** argv) {
   tsk::cli::catch_interrupts();

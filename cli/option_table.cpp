@@ -1,13 +1,13 @@
-#include "option_table.h"
+#include "cli/option_table.h"
 
 #include <cctype>
 #include <cmath>
 #include <stdexcept>
 
-#include "choice_names.h"
-#include "errors.h"
-#include "options.h"
-#include "output_files.h"
+#include "cli/options.h"
+#include "core/base/errors.h"
+#include "core/method/choice_names.h"
+#include "io/write/output_files.h"
 
 namespace tsk::cli {
 namespace {

@@ -1,14 +1,14 @@
-#include "options.h"
+#include "cli/options.h"
 
 #include <cctype>
 #include <optional>
 
-#include "errors.h"
-#include "gdal_util.h"
-#include "interrupt.h"
-#include "option_table.h"
-#include "output_files.h"
-#include "path_clashes.h"
+#include "cli/interrupt.h"
+#include "cli/option_table.h"
+#include "core/base/errors.h"
+#include "io/read/gdal_util.h"
+#include "io/write/output_files.h"
+#include "io/write/path_clashes.h"
 
 namespace tsk::cli {
 namespace {

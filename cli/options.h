@@ -4,11 +4,11 @@
 #include <string>
 #include <vector>
 
-#include "dem_reader.h"
-#include "panorama_rays.h"
-#include "params.h"
-#include "pstrokes.h"
-#include "sketch_page.h"
+#include "core/applications/pstrokes.h"
+#include "core/method/params.h"
+#include "core/panorama/panorama_rays.h"
+#include "io/pages/sketch_page.h"
+#include "io/read/dem_reader.h"
 
 namespace tsk::cli {
 

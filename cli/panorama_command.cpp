@@ -6,18 +6,18 @@
 #include <ostream>
 #include <string>
 
-#include "command_support.h"
-#include "commands.h"
-#include "dem_note_text.h"
-#include "errors.h"
-#include "interrupt.h"
-#include "named_points.h"
-#include "output_files.h"
-#include "panorama.h"
-#include "panorama_page.h"
-#include "preview.h"
-#include "raster_writer.h"
-#include "vector_writer.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/dem_note_text.h"
+#include "cli/interrupt.h"
+#include "core/base/errors.h"
+#include "core/panorama/panorama.h"
+#include "io/pages/panorama_page.h"
+#include "io/pages/preview.h"
+#include "io/read/named_points.h"
+#include "io/write/output_files.h"
+#include "io/write/raster_writer.h"
+#include "io/write/vector_writer.h"
 
 namespace tsk::cli {
 namespace {

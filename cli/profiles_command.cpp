@@ -1,12 +1,12 @@
 // terrain-sketch profiles: the profile plot as lines.
 #include <ostream>
 
-#include "command_support.h"
-#include "commands.h"
-#include "interrupt.h"
-#include "profile_plot.h"
-#include "vector_writer.h"
-#include "visibility.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/interrupt.h"
+#include "core/applications/profile_plot.h"
+#include "core/method/visibility.h"
+#include "io/write/vector_writer.h"
 
 namespace tsk::cli {
 

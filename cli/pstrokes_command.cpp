@@ -1,11 +1,11 @@
 // terrain-sketch pstrokes: the P-stroke sketch.
 #include <ostream>
 
-#include "command_support.h"
-#include "commands.h"
-#include "interrupt.h"
-#include "pstrokes.h"
-#include "vector_writer.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/interrupt.h"
+#include "core/applications/pstrokes.h"
+#include "io/write/vector_writer.h"
 
 namespace tsk::cli {
 

@@ -1,11 +1,11 @@
 // terrain-sketch row-slope: |slope across the line of sight| as a GeoTIFF.
 #include <ostream>
 
-#include "command_support.h"
-#include "commands.h"
-#include "diagnostics.h"
-#include "interrupt.h"
-#include "raster_writer.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/interrupt.h"
+#include "core/applications/diagnostics.h"
+#include "io/write/raster_writer.h"
 
 namespace tsk::cli {
 

@@ -6,13 +6,13 @@
 #include <utility>
 #include <vector>
 
-#include "command_support.h"
-#include "commands.h"
-#include "dem_note_text.h"
-#include "interrupt.h"
-#include "output_files.h"
-#include "preview.h"
-#include "vector_writer.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/dem_note_text.h"
+#include "cli/interrupt.h"
+#include "io/pages/preview.h"
+#include "io/write/output_files.h"
+#include "io/write/vector_writer.h"
 
 namespace tsk::cli {
 namespace {

@@ -6,8 +6,8 @@
 #include <cstring>
 #include <limits>
 
-#include "panorama.h"
-#include "terrain_sketch.h"
+#include "core/panorama/panorama.h"
+#include "core/terrain_sketch.h"
 
 namespace {
 

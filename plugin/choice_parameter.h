@@ -8,7 +8,7 @@
 
 #include <QStringList>
 
-#include "choice_names.h"
+#include "core/method/choice_names.h"
 
 namespace tsk::plugin {
 

@@ -1,13 +1,13 @@
-#include "classification_algorithm.h"
+#include "plugin/classification_algorithm.h"
 
 #include <qgsprocessingfeedback.h>
 #include <qgsprocessingoutputs.h>
 
-#include "diagnostics.h"
-#include "layer_style.h"
-#include "raster_grid.h"
-#include "raster_output.h"
-#include "silhouettes.h"
+#include "core/applications/diagnostics.h"
+#include "core/method/silhouettes.h"
+#include "plugin/layer_style.h"
+#include "plugin/raster_grid.h"
+#include "plugin/raster_output.h"
 
 namespace tsk::plugin {
 

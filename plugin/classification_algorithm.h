@@ -2,7 +2,7 @@
 // method on the DEM grid, for the map views of thesis figures 5.4 and 5.10.
 #pragma once
 
-#include "dem_view_algorithm.h"
+#include "plugin/dem_view_algorithm.h"
 
 namespace tsk::plugin {
 

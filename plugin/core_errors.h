@@ -6,7 +6,7 @@
 #include <QCoreApplication>
 #include <new>
 
-#include "errors.h"
+#include "core/base/errors.h"
 
 namespace tsk::plugin {
 

@@ -1,4 +1,4 @@
-#include "dem_view_algorithm.h"
+#include "plugin/dem_view_algorithm.h"
 
 #include <qgsprocessingfeedback.h>
 #include <qgsproviderregistry.h>
@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "choice_parameter.h"
-#include "errors.h"
-#include "line_output.h"
-#include "path_clashes.h"
-#include "plugin_paths.h"
-#include "qgis_compat.h"
-#include "raster_grid.h"
+#include "core/base/errors.h"
+#include "io/write/path_clashes.h"
+#include "plugin/choice_parameter.h"
+#include "plugin/line_output.h"
+#include "plugin/plugin_paths.h"
+#include "plugin/qgis_compat.h"
+#include "plugin/raster_grid.h"
 
 namespace tsk::plugin {
 

@@ -7,9 +7,9 @@
 #include <QCoreApplication>
 #include <memory>
 
-#include "core_errors.h"
-#include "params.h"
-#include "silhouettes.h"
+#include "core/method/params.h"
+#include "core/method/silhouettes.h"
+#include "plugin/core_errors.h"
 
 namespace tsk::plugin {
 

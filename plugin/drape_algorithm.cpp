@@ -1,4 +1,4 @@
-#include "drape_algorithm.h"
+#include "plugin/drape_algorithm.h"
 
 #include <qgsprocessingfeedback.h>
 #include <qgsrasterblock.h>
@@ -8,11 +8,11 @@
 
 #include <utility>
 
-#include "drape.h"
-#include "errors.h"
-#include "raster_grid.h"
-#include "raster_output.h"
-#include "visibility.h"
+#include "core/applications/drape.h"
+#include "core/base/errors.h"
+#include "core/method/visibility.h"
+#include "plugin/raster_grid.h"
+#include "plugin/raster_output.h"
 
 namespace tsk::plugin {
 

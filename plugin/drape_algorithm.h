@@ -4,8 +4,8 @@
 
 #include <memory>
 
-#include "dem_view_algorithm.h"
-#include "drape.h"
+#include "core/applications/drape.h"
+#include "plugin/dem_view_algorithm.h"
 
 class QgsRasterDataProvider;
 

@@ -1,15 +1,15 @@
-#include "filter_diagram_algorithm.h"
+#include "plugin/filter_diagram_algorithm.h"
 
 #include <qgsprocessingfeedback.h>
 
 #include <QFile>
 #include <algorithm>
 
-#include "errors.h"
-#include "filter_diagram.h"
-#include "output_files.h"
-#include "raster_grid.h"
-#include "silhouettes.h"
+#include "core/applications/filter_diagram.h"
+#include "core/base/errors.h"
+#include "core/method/silhouettes.h"
+#include "io/write/output_files.h"
+#include "plugin/raster_grid.h"
 
 namespace tsk::plugin {
 

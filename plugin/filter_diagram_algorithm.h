@@ -2,7 +2,7 @@
 // filter's removal region (thesis figures 5.7, 5.8), as an HTML page, for tuning the filter.
 #pragma once
 
-#include "dem_view_algorithm.h"
+#include "plugin/dem_view_algorithm.h"
 
 namespace tsk::plugin {
 

@@ -1,4 +1,4 @@
-#include "gpkg_line_sink.h"
+#include "plugin/gpkg_line_sink.h"
 
 #include <qgsfeature.h>
 #include <qgsgeometry.h>

@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-#include "gpkg_line_appender.h"
+#include "io/gpkg/gpkg_line_appender.h"
 
 namespace tsk::plugin {
 

@@ -1,4 +1,4 @@
-#include "layer_style.h"
+#include "plugin/layer_style.h"
 
 #include <qgsmaplayer.h>
 #include <qgsprocessingfeedback.h>
@@ -7,8 +7,8 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 
-#include "plugin_paths.h"
-#include "qgis_compat.h"
+#include "plugin/plugin_paths.h"
+#include "plugin/qgis_compat.h"
 
 namespace tsk::plugin {
 namespace {

@@ -1,4 +1,4 @@
-#include "line_output.h"
+#include "plugin/line_output.h"
 
 #include <gdal.h>
 #include <ogr_api.h>
@@ -14,10 +14,10 @@
 #include <cctype>
 #include <exception>
 
-#include "core_errors.h"
-#include "gpkg_line_sink.h"
-#include "qgis_compat.h"
-#include "stroke_features.h"
+#include "plugin/core_errors.h"
+#include "plugin/gpkg_line_sink.h"
+#include "plugin/qgis_compat.h"
+#include "plugin/stroke_features.h"
 
 namespace tsk::plugin {
 namespace {

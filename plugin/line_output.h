@@ -20,8 +20,8 @@
 #include <QVariantMap>
 #include <memory>
 
-#include "destination_lock.h"
-#include "strokes.h"
+#include "core/method/strokes.h"
+#include "io/write/destination_lock.h"
 
 namespace tsk::plugin {
 

@@ -1,4 +1,4 @@
-#include "panorama_algorithm.h"
+#include "plugin/panorama_algorithm.h"
 
 #include <qgsfeaturerequest.h>
 #include <qgsgeometry.h>
@@ -8,13 +8,13 @@
 #include <qgsprocessingutils.h>
 #include <qgsrasterlayer.h>
 
-#include "errors.h"
-#include "layer_style.h"
-#include "line_output.h"
-#include "qgis_compat.h"
-#include "raster_grid.h"
-#include "raster_output.h"
-#include "stroke_features.h"
+#include "core/base/errors.h"
+#include "plugin/layer_style.h"
+#include "plugin/line_output.h"
+#include "plugin/qgis_compat.h"
+#include "plugin/raster_grid.h"
+#include "plugin/raster_output.h"
+#include "plugin/stroke_features.h"
 
 namespace tsk::plugin {
 namespace {

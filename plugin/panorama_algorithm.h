@@ -2,8 +2,8 @@
 // all round or over a field of view, on the map and in the panorama, with the visibility raster.
 #pragma once
 
-#include "dem_view_algorithm.h"
-#include "run_recipes.h"
+#include "core/method/run_recipes.h"
+#include "plugin/dem_view_algorithm.h"
 
 namespace tsk::plugin {
 

@@ -5,8 +5,8 @@
 
 #include <memory>
 
-#include "provider.h"
-#include "translation.h"
+#include "plugin/provider.h"
+#include "plugin/translation.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "plugin_paths.h"
+#include "plugin/plugin_paths.h"
 
 #include <dlfcn.h>
 

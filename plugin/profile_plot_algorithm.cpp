@@ -1,15 +1,15 @@
-#include "profile_plot_algorithm.h"
+#include "plugin/profile_plot_algorithm.h"
 
 #include <qgsprocessingfeedback.h>
 
-#include "errors.h"
-#include "layer_style.h"
-#include "line_output.h"
-#include "profile_plot.h"
-#include "qgis_compat.h"
-#include "raster_grid.h"
-#include "stroke_features.h"
-#include "visibility.h"
+#include "core/applications/profile_plot.h"
+#include "core/base/errors.h"
+#include "core/method/visibility.h"
+#include "plugin/layer_style.h"
+#include "plugin/line_output.h"
+#include "plugin/qgis_compat.h"
+#include "plugin/raster_grid.h"
+#include "plugin/stroke_features.h"
 
 namespace tsk::plugin {
 

@@ -2,7 +2,7 @@
 // plan-oblique geometry with hidden parts removed (thesis figure 4.6).
 #pragma once
 
-#include "dem_view_algorithm.h"
+#include "plugin/dem_view_algorithm.h"
 
 namespace tsk::plugin {
 

@@ -1,16 +1,16 @@
-#include "provider.h"
+#include "plugin/provider.h"
 
 #include <QIcon>
 
-#include "classification_algorithm.h"
-#include "drape_algorithm.h"
-#include "filter_diagram_algorithm.h"
-#include "panorama_algorithm.h"
-#include "plugin_paths.h"
-#include "profile_plot_algorithm.h"
-#include "pstroke_algorithm.h"
-#include "row_slope_algorithm.h"
-#include "silhouettes_algorithm.h"
+#include "plugin/classification_algorithm.h"
+#include "plugin/drape_algorithm.h"
+#include "plugin/filter_diagram_algorithm.h"
+#include "plugin/panorama_algorithm.h"
+#include "plugin/plugin_paths.h"
+#include "plugin/profile_plot_algorithm.h"
+#include "plugin/pstroke_algorithm.h"
+#include "plugin/row_slope_algorithm.h"
+#include "plugin/silhouettes_algorithm.h"
 
 namespace tsk::plugin {
 

@@ -1,14 +1,14 @@
-#include "pstroke_algorithm.h"
+#include "plugin/pstroke_algorithm.h"
 
 #include <qgsprocessingfeedback.h>
 
-#include "errors.h"
-#include "layer_style.h"
-#include "line_output.h"
-#include "qgis_compat.h"
-#include "raster_grid.h"
-#include "silhouettes.h"
-#include "stroke_features.h"
+#include "core/base/errors.h"
+#include "core/method/silhouettes.h"
+#include "plugin/layer_style.h"
+#include "plugin/line_output.h"
+#include "plugin/qgis_compat.h"
+#include "plugin/raster_grid.h"
+#include "plugin/stroke_features.h"
 
 namespace tsk::plugin {
 

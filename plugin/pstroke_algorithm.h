@@ -2,8 +2,8 @@
 // where profiles bend, combined with the silhouettes' f-set.
 #pragma once
 
-#include "dem_view_algorithm.h"
-#include "pstrokes.h"
+#include "core/applications/pstrokes.h"
+#include "plugin/dem_view_algorithm.h"
 
 namespace tsk::plugin {
 

@@ -1,4 +1,4 @@
-#include "raster_grid.h"
+#include "plugin/raster_grid.h"
 
 #include <gdal.h>
 #include <qgscoordinatetransform.h>
@@ -17,10 +17,10 @@
 #include <utility>
 #include <vector>
 
-#include "core_errors.h"
-#include "dem_reader.h"
-#include "qgis_compat.h"
-#include "silhouettes.h"
+#include "core/method/silhouettes.h"
+#include "io/read/dem_reader.h"
+#include "plugin/core_errors.h"
+#include "plugin/qgis_compat.h"
 
 namespace tsk::plugin {
 namespace {

@@ -11,11 +11,11 @@
 #include <memory>
 #include <optional>
 
-#include "dem_notes.h"
-#include "orient.h"
-#include "run_recipes.h"
-#include "silhouettes.h"
-#include "strokes.h"
+#include "core/method/orient.h"
+#include "core/method/run_recipes.h"
+#include "core/method/silhouettes.h"
+#include "core/method/strokes.h"
+#include "io/read/dem_notes.h"
 
 class QgsRasterBlock;
 class QgsRasterDataProvider;

@@ -1,10 +1,10 @@
-#include "raster_output.h"
+#include "plugin/raster_output.h"
 
 #include <QFile>
 
-#include "core_errors.h"
-#include "raster_grid.h"
-#include "raster_writer.h"
+#include "io/write/raster_writer.h"
+#include "plugin/core_errors.h"
+#include "plugin/raster_grid.h"
 
 namespace tsk::plugin {
 namespace {

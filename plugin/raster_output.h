@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "geotransform.h"
-#include "grid.h"
+#include "core/base/geotransform.h"
+#include "core/base/grid.h"
 
 namespace tsk::plugin {
 

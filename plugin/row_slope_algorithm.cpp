@@ -1,11 +1,11 @@
-#include "row_slope_algorithm.h"
+#include "plugin/row_slope_algorithm.h"
 
 #include <qgsprocessingfeedback.h>
 
-#include "diagnostics.h"
-#include "layer_style.h"
-#include "raster_grid.h"
-#include "raster_output.h"
+#include "core/applications/diagnostics.h"
+#include "plugin/layer_style.h"
+#include "plugin/raster_grid.h"
+#include "plugin/raster_output.h"
 
 namespace tsk::plugin {
 

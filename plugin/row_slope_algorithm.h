@@ -2,7 +2,7 @@
 // of thesis section 6.2 (light where flat across the view, dark where steep).
 #pragma once
 
-#include "dem_view_algorithm.h"
+#include "plugin/dem_view_algorithm.h"
 
 namespace tsk::plugin {
 

@@ -3,9 +3,9 @@
 
 #include <QCoreApplication>
 
-#include "dem_view_algorithm.h"
-#include "params.h"
-#include "silhouettes.h"
+#include "core/method/params.h"
+#include "core/method/silhouettes.h"
+#include "plugin/dem_view_algorithm.h"
 
 namespace tsk::plugin {
 

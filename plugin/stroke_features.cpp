@@ -1,11 +1,11 @@
-#include "stroke_features.h"
+#include "plugin/stroke_features.h"
 
 #include <qgsgeometry.h>
 #include <qgslinestring.h>
 
 #include <cmath>
 
-#include "qgis_compat.h"
+#include "plugin/qgis_compat.h"
 
 namespace tsk::plugin {
 

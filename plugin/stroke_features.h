@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "strokes.h"
+#include "core/method/strokes.h"
 
 namespace tsk::plugin {
 

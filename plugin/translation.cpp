@@ -1,4 +1,4 @@
-#include "translation.h"
+#include "plugin/translation.h"
 
 #include <qgsapplication.h>
 
@@ -6,7 +6,7 @@
 #include <QTranslator>
 #include <memory>
 
-#include "plugin_paths.h"
+#include "plugin/plugin_paths.h"
 
 namespace tsk::plugin {
 namespace {

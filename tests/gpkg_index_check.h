@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "catch_compat.h"
-#include "gdal_util.h"
+#include "io/read/gdal_util.h"
 
 namespace tsk::test {
 

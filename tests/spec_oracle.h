@@ -8,8 +8,8 @@
 #include <limits>
 #include <vector>
 
-#include "flags.h"
-#include "params.h"
+#include "core/base/flags.h"
+#include "core/method/params.h"
 
 namespace tsk::oracle {
 

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <vector>
 
-#include "adaptive_filter.h"
 #include "catch_compat.h"
-#include "choice_names.h"
+#include "core/method/adaptive_filter.h"
+#include "core/method/choice_names.h"
+#include "core/method/slope_scale_map.h"
 #include "resampled_silhouettes.h"
-#include "slope_scale_map.h"
 #include "test_support.h"
 
 using namespace tsk;

@@ -13,13 +13,13 @@
 #include <thread>
 
 #include "catch_compat.h"
+#include "cli/command_support.h"
 #include "cli_run.h"
-#include "command_support.h"
-#include "dem_reader.h"
+#include "core/method/silhouettes.h"
 #include "gdal_test_support.h"
-#include "gdal_util.h"
-#include "silhouettes.h"
-#include "vector_writer.h"
+#include "io/read/dem_reader.h"
+#include "io/read/gdal_util.h"
+#include "io/write/vector_writer.h"
 
 using namespace tsk;
 using test::CliRun;

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "catch_compat.h"
-#include "dem_notes.h"
+#include "io/read/dem_notes.h"
 
 using namespace tsk::io;
 

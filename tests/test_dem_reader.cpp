@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "catch_compat.h"
-#include "dem_reader.h"
 #include "gdal_test_support.h"
+#include "io/read/dem_reader.h"
 
 using namespace tsk;
 using test::ScratchDir;

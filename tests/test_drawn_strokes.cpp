@@ -4,12 +4,12 @@
 #include <cmath>
 
 #include "catch_compat.h"
-#include "drawn_strokes.h"
-#include "orient.h"
-#include "plan_oblique.h"
-#include "stroke_joining.h"
-#include "stroke_smoothing.h"
-#include "stroke_weights.h"
+#include "core/drawn/drawn_strokes.h"
+#include "core/drawn/stroke_joining.h"
+#include "core/drawn/stroke_smoothing.h"
+#include "core/drawn/stroke_weights.h"
+#include "core/method/orient.h"
+#include "core/method/plan_oblique.h"
 #include "support/analytic_terrain.h"
 #include "test_support.h"
 

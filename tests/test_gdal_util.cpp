@@ -4,7 +4,7 @@
 #include <string>
 
 #include "catch_compat.h"
-#include "gdal_util.h"
+#include "io/read/gdal_util.h"
 
 using namespace tsk;
 

@@ -11,8 +11,8 @@
 #include "cli_run.h"
 #include "gdal_test_support.h"
 #include "gpkg_index_check.h"
-#include "gpkg_spatial_index.h"
-#include "vector_writer.h"
+#include "io/gpkg/gpkg_spatial_index.h"
+#include "io/write/vector_writer.h"
 
 using namespace tsk;
 using test::IndexedGpkg;

@@ -15,10 +15,10 @@
 
 #include "catch_compat.h"
 #include "cli_run.h"
-#include "destination_lock.h"
 #include "gdal_test_support.h"
-#include "gdal_util.h"
-#include "path_clashes.h"
+#include "io/read/gdal_util.h"
+#include "io/write/destination_lock.h"
+#include "io/write/path_clashes.h"
 
 using namespace tsk;
 using namespace tsk::test;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "catch_compat.h"
-#include "panorama.h"
+#include "core/panorama/panorama.h"
 #include "test_support.h"
 
 namespace tsk {

@@ -14,7 +14,7 @@
 #include "catch_compat.h"
 #include "cli_run.h"
 #include "gdal_test_support.h"
-#include "gdal_util.h"
+#include "io/read/gdal_util.h"
 
 using namespace tsk;
 using test::CliRun;

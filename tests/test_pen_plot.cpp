@@ -4,8 +4,8 @@
 #include <random>
 
 #include "catch_compat.h"
-#include "pen_plot.h"
-#include "stroke_outline.h"
+#include "core/drawn/pen_plot.h"
+#include "core/drawn/stroke_outline.h"
 
 using namespace tsk;
 

@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "catch_compat.h"
-#include "dem_reader.h"
-#include "silhouettes.h"
+#include "core/method/silhouettes.h"
+#include "io/read/dem_reader.h"
 
 using namespace tsk;
 

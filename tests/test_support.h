@@ -7,8 +7,8 @@
 
 #include "analytic_terrain.h"
 #include "catch_compat.h"
+#include "core/terrain_sketch.h"
 #include "resampled_silhouettes.h"
-#include "terrain_sketch.h"
 #include "whole_grid_stages.h"
 
 namespace tsk::test {

@@ -35,20 +35,20 @@
 #include <memory>
 
 #include "catch_compat.h"
-#include "dem_reader.h"
-#include "diagnostics.h"
-#include "drape.h"
+#include "core/applications/diagnostics.h"
+#include "core/applications/drape.h"
+#include "core/applications/profile_plot.h"
+#include "core/applications/pstrokes.h"
+#include "core/method/plan_oblique.h"
+#include "core/method/silhouettes.h"
+#include "core/method/visibility.h"
 #include "gdal_test_support.h"
 #include "gpkg_index_check.h"
-#include "plan_oblique.h"
-#include "profile_plot.h"
-#include "provider.h"
-#include "pstrokes.h"
-#include "qgis_compat.h"
-#include "raster_grid.h"
-#include "silhouettes.h"
-#include "translation.h"
-#include "visibility.h"
+#include "io/read/dem_reader.h"
+#include "plugin/provider.h"
+#include "plugin/qgis_compat.h"
+#include "plugin/raster_grid.h"
+#include "plugin/translation.h"
 
 namespace tsk::plugin_test {
 

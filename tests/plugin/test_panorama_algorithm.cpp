@@ -1,7 +1,7 @@
 // The panorama algorithm against the core.
 #include <qgsrasterlayer.h>
 
-#include "panorama.h"
+#include "core/panorama/panorama.h"
 #include "plugin_test_support.h"
 
 using namespace tsk::plugin_test;

@@ -4,7 +4,7 @@
 
 #include <cstddef>
 
-#include "grid.h"
+#include "core/base/grid.h"
 
 namespace tsk {
 

@@ -1,8 +1,8 @@
 #include "resampled_silhouettes.h"
 
-#include "errors.h"
-#include "plan_oblique.h"
-#include "stage_timing.h"
+#include "core/base/errors.h"
+#include "core/base/stage_timing.h"
+#include "core/method/plan_oblique.h"
 
 namespace tsk {
 

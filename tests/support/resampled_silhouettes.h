@@ -3,7 +3,7 @@
 // (The front ends read their DEMs through sketch_silhouettes.)
 #pragma once
 
-#include "silhouettes.h"
+#include "core/method/silhouettes.h"
 
 namespace tsk {
 

@@ -5,13 +5,13 @@
 
 #include <vector>
 
-#include "candidates.h"
-#include "chaining.h"
-#include "flags.h"
-#include "parallel.h"
-#include "params.h"
-#include "slope_filter.h"
-#include "thinning.h"
+#include "core/base/flags.h"
+#include "core/base/parallel.h"
+#include "core/method/candidates.h"
+#include "core/method/chaining.h"
+#include "core/method/params.h"
+#include "core/method/slope_filter.h"
+#include "core/method/thinning.h"
 
 namespace tsk {
 

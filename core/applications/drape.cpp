@@ -1,0 +1,126 @@
+#include "core/applications/drape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/base/errors.h"
+#include "core/method/plan_oblique.h"
+
+namespace tsk {
+
+namespace {
+
+// Every 256 steps of `count`, tells `progress` of the share `from` + `span` * step / count done;
+// throws Cancelled when it says stop.
+void every_256(const ProgressFn& progress, std::size_t step, std::size_t count, double from,
+               double span) {
+  if (!progress || step % 256 != 0) return;
+  if (!progress(from + span * static_cast<double>(step) / static_cast<double>(count)))
+    throw Cancelled();
+}
+
+}  // namespace
+
+PlanObliqueDrape::PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& flags,
+                                   const OrientedFrame& frame, const ViewParams& view, double z_ref,
+                                   const ProgressFn& progress)
+    : frame_(frame) {
+  if (static_cast<double>(frame.profiles) * static_cast<double>(frame.length) >= kNone) {
+    throw Error("the DEM is too large to drape: more than 4 294 967 294 cells in view");
+  }
+  const PlanObliqueShift shift(view, frame.d, z_ref);
+  // Plan-oblique positions along each profile. Visible cells have non-decreasing transformed
+  // height, so their positions i + k (z - z_ref) are sorted.
+  std::vector<std::vector<double>> position(frame.profiles);
+  std::vector<std::vector<std::uint32_t>> cell(frame.profiles);
+  double col_min = 1e300, col_max = -1e300, row_min = 1e300, row_max = -1e300;
+  for (std::size_t p = 0; p < frame.profiles; ++p) {
+    every_256(progress, p, frame.profiles, 0.0, 0.5);
+    // Held for every visible cell until the layout is done: no room to spare.
+    const std::uint8_t* row = flags.row(p);
+    const auto visible =
+        static_cast<std::size_t>(std::count_if(row, row + frame.length, [](std::uint8_t f) {
+          return (f & cell::valid) && !(f & cell::hidden);
+        }));
+    position[p].reserve(visible);
+    cell[p].reserve(visible);
+    for (std::size_t i = 0; i < frame.length; ++i) {
+      const std::uint8_t f = flags(p, i);
+      if (!(f & cell::valid) || (f & cell::hidden)) continue;
+      const double s = shift(static_cast<double>(i), static_cast<double>(oriented(p, i)));
+      position[p].push_back(s);
+      cell[p].push_back(static_cast<std::uint32_t>(p * frame.length + i));
+      const PixelPoint px = frame.to_pixel(static_cast<double>(p), s);
+      col_min = std::min(col_min, px.col), col_max = std::max(col_max, px.col);
+      row_min = std::min(row_min, px.row), row_max = std::max(row_max, px.row);
+    }
+  }
+  if (col_min > col_max) return;   // nothing visible: an empty drape
+  constexpr double kSlack = 1e-6;  // positions a hair past a cell edge stay in that cell
+  col0_ = static_cast<std::int64_t>(std::floor(col_min - 0.5 + kSlack));
+  row0_ = static_cast<std::int64_t>(std::floor(row_min - 0.5 + kSlack));
+  cols_ = static_cast<std::size_t>(std::ceil(col_max + 0.5 - kSlack) - static_cast<double>(col0_));
+  rows_ = static_cast<std::size_t>(std::ceil(row_max + 0.5 - kSlack) - static_cast<double>(row0_));
+  const double dem_cells =
+      static_cast<double>(frame.dem_rows) * static_cast<double>(frame.dem_cols);
+  if (static_cast<double>(rows_) * static_cast<double>(cols_) > 16.0 * dem_cells + 1e6) {
+    throw Error(
+        "the plan-oblique drape would be far larger than the DEM; lower the vertical "
+        "exaggeration or raise the base slope");
+  }
+  source_cell_.assign(checked_cell_count(rows_, cols_), kNone);
+  for (std::size_t r = 0; r < rows_; ++r) {
+    every_256(progress, r, rows_, 0.5, 0.5);
+    for (std::size_t col = 0; col < cols_; ++col) {
+      double pf = 0, s = 0;
+      frame.from_pixel({static_cast<double>(col0_ + static_cast<std::int64_t>(col)) + 0.5,
+                        static_cast<double>(row0_ + static_cast<std::int64_t>(r)) + 0.5},
+                       pf, s);
+      pf = std::round(pf);
+      if (pf < 0 || pf >= static_cast<double>(frame.profiles)) continue;
+      const auto& pos = position[static_cast<std::size_t>(pf)];
+      if (pos.empty() || s < pos.front() - 0.5 || s > pos.back() + 0.5) continue;
+      const auto above = std::upper_bound(pos.begin(), pos.end(), s);
+      std::size_t best = static_cast<std::size_t>(above - pos.begin());
+      if (best == pos.size() || (best > 0 && s - pos[best - 1] <= pos[best] - s)) --best;
+      source_cell_[r * cols_ + col] = cell[static_cast<std::size_t>(pf)][best];
+    }
+  }
+}
+
+GeoTransform PlanObliqueDrape::geotransform(const GeoTransform& dem) const {
+  GeoTransform out = dem;
+  dem.apply({static_cast<double>(col0_), static_cast<double>(row0_)}, out.a[0], out.a[3]);
+  return out;
+}
+
+void PlanObliqueDrape::check_on_dem_grid(const HeightGrid& source_on_dem) const {
+  if (source_on_dem.rows() != frame_.dem_rows || source_on_dem.cols() != frame_.dem_cols) {
+    throw Error("the raster to drape must be on the DEM's grid (" +
+                std::to_string(frame_.dem_cols) + " x " + std::to_string(frame_.dem_rows) +
+                " cells); resample it first");
+  }
+}
+
+HeightGrid PlanObliqueDrape::from_oriented(const HeightGrid& oriented) const {
+  HeightGrid out(rows_, cols_, kNoData);
+  for (std::size_t k = 0; k < source_cell_.size(); ++k) {
+    if (source_cell_[k] != kNone) out.data()[k] = oriented.data()[source_cell_[k]];
+  }
+  return out;
+}
+
+HeightGrid PlanObliqueDrape::drape(const HeightGrid& source_on_dem) const {
+  check_on_dem_grid(source_on_dem);
+  return from_oriented(orient(source_on_dem, frame_));
+}
+
+HeightGrid PlanObliqueDrape::drape(HeightGrid&& source_on_dem) const {
+  check_on_dem_grid(source_on_dem);
+  const HeightGrid oriented = orient(source_on_dem, frame_);
+  source_on_dem = HeightGrid();
+  return from_oriented(oriented);
+}
+
+}  // namespace tsk

@@ -1,0 +1,59 @@
+#include "core/base/memory_budget.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/base/errors.h"
+
+namespace tsk {
+namespace {
+
+bool over_half_the_memory(double bytes) {
+  const double memory =
+      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+  return memory > 0 && bytes > 0.5 * memory;
+}
+
+// What a strip-by-strip run holds per profile of a strip: two strips of heights (the one processed
+// and the one being read), the classification and, resampled, the band of DEM cells.
+double strip_bytes_per_profile(const OrientedFrame& frame) {
+  return (frame.resampled ? 13.0 : 9.0) *
+         static_cast<double>(std::max<std::size_t>(1, frame.length));
+}
+
+}  // namespace
+
+bool too_large_to_turn_whole(const OrientedFrame& frame) {
+  const double dem = frame.resampled ? 4.0 * static_cast<double>(frame.dem_rows) *
+                                           static_cast<double>(frame.dem_cols)
+                                     : 0.0;
+  return over_half_the_memory(dem + 5.0 * static_cast<double>(frame.profiles) *
+                                        static_cast<double>(frame.length));
+}
+
+std::size_t strip_profiles(const OrientedFrame& frame) {
+  constexpr double kBudget = 512.0 * 1024 * 1024;
+  const double bytes_per_profile = strip_bytes_per_profile(frame);
+  // Short profiles come more to a strip, at least 1 Mi cells, as every strip costs a read and a
+  // pause in linking. (Not more for others: the first strip is read before any work starts.)
+  const double most = std::clamp(
+      std::floor(1024.0 * 1024 / static_cast<double>(std::max<std::size_t>(1, frame.length))),
+      1024.0, 65536.0);
+  return static_cast<std::size_t>(std::clamp(std::floor(kBudget / bytes_per_profile), 16.0, most));
+}
+
+void check_strip_fits(const OrientedFrame& frame, std::size_t strip) {
+  if (strip == 0) throw Error("a strip needs at least one profile");
+  const std::size_t held = std::min(strip, frame.profiles) + 2;
+  if (over_half_the_memory(strip_bytes_per_profile(frame) * static_cast<double>(held))) {
+    throw Error("strips of " + std::to_string(strip) + " profiles of " +
+                std::to_string(frame.length) +
+                " cells would take more than half of this machine's memory; choose fewer "
+                "profiles per strip (0 chooses them)");
+  }
+}
+
+}  // namespace tsk

@@ -1,0 +1,77 @@
+#include "core/drawn/drawing_pipeline.h"
+
+#include <utility>
+
+namespace tsk {
+namespace {
+
+// Batches each step of the drawing may have still to do before the step before it waits.
+constexpr std::size_t kBatchesBehind = 2;
+
+}  // namespace
+
+DrawingPipeline::DrawingPipeline(const DrawingSetup& setup, bool alongside, Deliver deliver)
+    : drawers_{std::make_unique<StrokeDrawer>(setup), std::make_unique<StrokeDrawer>(setup)},
+      deliver_(std::move(deliver)),
+      writing_(kBatchesBehind, alongside),
+      finishing_(kBatchesBehind, alongside),
+      grouping_(kBatchesBehind, alongside) {}
+
+DrawingPipeline::~DrawingPipeline() {
+  abandoned_ = true;
+}
+
+void DrawingPipeline::add_piece(StrokeClass cls, Stroke&& piece) {
+  steps_.push_back({cls, std::move(piece), 0.0, false});
+}
+
+void DrawingPipeline::settle(StrokeClass cls, double frontier) {
+  steps_.push_back({cls, Stroke(), frontier, true});
+}
+
+void DrawingPipeline::flush() {
+  if (steps_.empty()) return;
+  auto taken = std::make_shared<std::vector<Step>>(std::move(steps_));
+  steps_.clear();
+  steps_.reserve(taken->size());
+  grouping_.run([this, taken] { group(*taken); });
+}
+
+void DrawingPipeline::group(std::vector<Step>& steps) {
+  auto settled = std::make_shared<Settled>();
+  for (Step& step : steps) {
+    if (abandoned_) return;
+    if (step.settle) {
+      settled->emplace_back(step.cls, drawer(step.cls).take_settled(step.frontier));
+    } else {
+      drawer(step.cls).add(std::move(step.piece));
+    }
+  }
+  finishing_.run([this, settled] { draw(*settled); });
+}
+
+void DrawingPipeline::draw(Settled& settled) {
+  auto drawn = std::make_shared<std::vector<std::pair<StrokeClass, Stroke>>>();
+  std::size_t pieces = 0;
+  for (const auto& taken : settled) pieces += taken.second.pieces.size();
+  drawn->reserve(pieces);  // as many strokes at most
+  for (auto& [cls, groups] : settled) {
+    if (abandoned_) return;
+    const StrokeClass of = cls;
+    drawer(of).draw(groups, [&](Stroke&& stroke) { drawn->emplace_back(of, std::move(stroke)); });
+  }
+  writing_.run([this, drawn] {
+    for (auto& [cls, stroke] : *drawn) {
+      if (abandoned_) return;
+      deliver_(cls, std::move(stroke));
+    }
+  });
+}
+
+void DrawingPipeline::finish() {
+  grouping_.finish();
+  finishing_.finish();
+  writing_.finish();
+}
+
+}  // namespace tsk

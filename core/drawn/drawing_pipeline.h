@@ -1,0 +1,67 @@
+// Drawn strokes drawn while the stages go on, in three steps on three threads: the pieces grouped;
+// the settled groups joined, smoothed and weighed; the strokes handed on. The linking queues its
+// steps in the order of the scan (a class's next piece, or where its open chains begin once a
+// profile is linked) and gives them to the drawing after each batch.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "core/base/parallel.h"
+#include "core/drawn/drawn_strokes.h"
+#include "core/method/strokes.h"
+
+namespace tsk {
+
+class DrawingPipeline {
+ public:
+  // Takes each drawn stroke, in order, on the writing step's thread.
+  using Deliver = std::function<void(StrokeClass cls, Stroke&& stroke)>;
+  // `alongside`: each step on a thread of its own; otherwise each runs as it is given.
+  DrawingPipeline(const DrawingSetup& setup, bool alongside, Deliver deliver);
+  // A run that ends early (cancelled, failed) leaves what is still to draw undrawn.
+  ~DrawingPipeline();
+  DrawingPipeline(const DrawingPipeline&) = delete;
+  DrawingPipeline& operator=(const DrawingPipeline&) = delete;
+
+  // The longest step between neighbouring points of a piece (StrokeDrawer::longest_step).
+  double longest_step() const { return drawers_[0]->longest_step(); }
+  // Queues a piece of a complete chain's stroke.
+  void add_piece(StrokeClass cls, Stroke&& piece);
+  // Queues the settling of the groups that no piece from profile `frontier` on can join (an
+  // infinite frontier: all of them).
+  void settle(StrokeClass cls, double frontier);
+  // Gives the drawing the steps queued. A failed step (a sink that could not write) is rethrown
+  // as soon as it is seen; this waits when the drawing falls behind by more than a few batches,
+  // whose pieces it would otherwise hold.
+  void flush();
+  // Waits for every step given, in order; rethrows the first failure.
+  void finish();
+
+ private:
+  struct Step {
+    StrokeClass cls;
+    Stroke piece;     // a step that adds a piece
+    double frontier;  // a step that settles groups
+    bool settle;
+  };
+  using Settled = std::vector<std::pair<StrokeClass, StrokeGroups>>;
+  StrokeDrawer& drawer(StrokeClass cls) { return *drawers_[cls == StrokeClass::factual ? 0 : 1]; }
+  // The grouping: adds the pieces and takes the settled groups, then gives them to the finishing.
+  void group(std::vector<Step>& steps);
+  // The finishing: draws the groups taken, in order, and gives the strokes to the writing.
+  void draw(Settled& settled);
+
+  std::unique_ptr<StrokeDrawer> drawers_[2];  // factual, formulated
+  Deliver deliver_;
+  std::vector<Step> steps_;  // not given to the drawing yet
+  std::atomic<bool> abandoned_{false};
+  // Declared last, in reverse order: each is stopped before the one it gives its work to.
+  TasksBehind writing_;
+  TasksBehind finishing_;
+  TasksBehind grouping_;
+};
+
+}  // namespace tsk

@@ -1,0 +1,413 @@
+#include "core/drawn/stroke_joining.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <utility>
+
+#include "core/drawn/stroke_smoothing.h"
+
+namespace tsk {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// One end of a stroke: where it is and the direction it leaves the stroke in (0, 0 when the
+// stroke has a single point).
+struct StrokeEnd {
+  StrokePoint at;
+  double dx, dy;
+};
+
+std::size_t stroke_of(std::size_t end) {
+  return end / 2;
+}
+bool is_start(std::size_t end) {
+  return end % 2 == 0;
+}
+
+// The outward direction of an end, over about `reach` of the stroke's length, so that a stroke
+// stepping from cell to cell still has the direction it runs in.
+StrokeEnd stroke_end(const std::vector<StrokePoint>& pts, bool start, double reach) {
+  const std::size_t n = pts.size();
+  const StrokePoint at = start ? pts.front() : pts.back();
+  StrokePoint from = at;
+  double walked = 0.0;
+  for (std::size_t k = 1; k < n && walked < reach; ++k) {
+    const StrokePoint next = start ? pts[k] : pts[n - 1 - k];
+    walked += distance(next, from);
+    from = next;
+  }
+  const double len = distance(at, from);
+  if (len <= 0.0) return {at, 0.0, 0.0};
+  return {at, (at.x - from.x) / len, (at.y - from.y) / len};
+}
+
+// Angle between two directions in degrees; 180 when either is missing.
+double angle_between(double ax, double ay, double bx, double by) {
+  const double la = std::sqrt(ax * ax + ay * ay), lb = std::sqrt(bx * bx + by * by);
+  if (la <= 0.0 || lb <= 0.0) return 180.0;
+  const double c = std::clamp((ax * bx + ay * by) / (la * lb), -1.0, 1.0);
+  return std::acos(c) * 180.0 / kPi;
+}
+
+// How badly end a leads on into end b (smaller is better), or a negative value when it does not.
+double join_cost(const StrokeEnd& a, const StrokeEnd& b, const JoinRule& rule) {
+  const double gx = b.at.x - a.at.x, gy = b.at.y - a.at.y;
+  const double gap = std::sqrt(gx * gx + gy * gy);
+  if (gap > rule.gap) return -1.0;
+  const bool a_dir = a.dx != 0.0 || a.dy != 0.0, b_dir = b.dx != 0.0 || b.dy != 0.0;
+  if (!a_dir && !b_dir) return -1.0;
+  double worst = 0.0;
+  if (a_dir && b_dir) worst = angle_between(a.dx, a.dy, -b.dx, -b.dy);
+  // A step shorter than a tenth of the gap has no direction of its own to compare.
+  if (gap > 0.1 * rule.gap) {
+    if (a_dir) worst = std::max(worst, angle_between(a.dx, a.dy, gx, gy));
+    if (b_dir) worst = std::max(worst, angle_between(-b.dx, -b.dy, gx, gy));
+  }
+  if (worst > rule.angle_deg) return -1.0;
+  return gap / std::max(rule.gap, 1e-300) + worst / std::max(rule.angle_deg, 1e-9);
+}
+
+struct EndPair {
+  double cost;
+  std::uint32_t a, b;
+};
+
+// The first end of each bucket that has had one, by bucket key: an open-addressing table, as the
+// buckets are looked up several times for every stroke added.
+class BucketHeads {
+ public:
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+  explicit BucketHeads(std::size_t expected) {
+    std::size_t capacity = 16;
+    while (capacity < 2 * expected) capacity *= 2;
+    slots_.assign(capacity, {kEmpty, kNone});
+  }
+  // The head of bucket `key`, made (with none) if it has none yet.
+  std::uint32_t& operator[](std::uint64_t key) {
+    if (2 * (used_ + 1) > slots_.size()) grow();
+    Slot& slot = slots_[find_slot(key)];
+    if (slot.key == kEmpty) slot.key = key, ++used_;
+    return slot.head;
+  }
+  // The head of bucket `key`, or kNone.
+  std::uint32_t head(std::uint64_t key) const {
+    const Slot& slot = slots_[find_slot(key)];
+    return slot.key == kEmpty ? kNone : slot.head;
+  }
+  // The head of bucket `key`, or null if it has none; the table is left as it is.
+  std::uint32_t* find(std::uint64_t key) {
+    Slot& slot = slots_[find_slot(key)];
+    return slot.key == kEmpty ? nullptr : &slot.head;
+  }
+  // Forgets bucket `key` (emptied), so that the table holds only the buckets in use: a stream
+  // of strokes passes over ever new buckets.
+  void erase(std::uint64_t key) {
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t hole = find_slot(key);
+    if (slots_[hole].key == kEmpty) return;
+    --used_;
+    // Backward shift: each key after the hole that may sit there (its home slot does not lie
+    // between the hole and where it sits) moves into it, and leaves the next hole.
+    for (std::size_t k = (hole + 1) & mask; slots_[k].key != kEmpty; k = (k + 1) & mask) {
+      if (((k - home(slots_[k].key)) & mask) >= ((k - hole) & mask)) {
+        slots_[hole] = slots_[k];
+        hole = k;
+      }
+    }
+    slots_[hole] = {kEmpty, kNone};
+  }
+
+ private:
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  struct Slot {
+    std::uint64_t key;
+    std::uint32_t head;
+  };
+  // The slot a key is looked for from: the product's high half, which every bit of the key
+  // moves (its low bits left out the bucket's column, and a row of buckets probed as one run).
+  std::size_t home(std::uint64_t key) const {
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & (slots_.size() - 1);
+  }
+  std::size_t find_slot(std::uint64_t key) const {
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t k = home(key);
+    while (slots_[k].key != key && slots_[k].key != kEmpty) k = (k + 1) & mask;
+    return k;
+  }
+  void grow() {
+    std::vector<Slot> old(2 * slots_.size(), {kEmpty, kNone});
+    old.swap(slots_);
+    for (const Slot& slot : old)
+      if (slot.key != kEmpty) slots_[find_slot(slot.key)] = slot;
+  }
+  std::vector<Slot> slots_;
+  std::size_t used_ = 0;
+};
+
+// Ends in square buckets, to find the ends within a radius of a point; ends can come and go.
+// Each bucket lists its ends through `next_`, so that adding an end allocates nothing once its
+// bucket is known.
+class EndIndex {
+ public:
+  explicit EndIndex(double radius, std::size_t expected = 0)
+      : size_(std::max(2.0 * radius, 1e-9)), heads_(expected) {}
+  void insert(std::uint32_t end, StrokePoint at) {
+    const std::size_t k = end - first_held_;
+    if (next_.size() <= k) next_.resize(std::max<std::size_t>(k + 1, 2 * next_.size()), kNone);
+    std::uint32_t& head = heads_[key(at)];
+    next_[k] = head;
+    head = end;
+  }
+  // Forgets the links of the ends before `end`, all removed.
+  void forget_before(std::uint32_t end) {
+    const std::size_t gone = std::min<std::size_t>(end - first_held_, next_.size());
+    next_.erase(next_.begin(), next_.begin() + static_cast<std::ptrdiff_t>(gone));
+    first_held_ = end;
+  }
+  void remove(std::uint32_t end, StrokePoint at) {
+    const std::uint64_t k = key(at);
+    std::uint32_t* head = heads_.find(k);
+    if (!head) return;
+    for (std::uint32_t* link = head; *link != kNone; link = &next(*link)) {
+      if (*link == end) {
+        *link = next(end);
+        if (*head == kNone) heads_.erase(k);
+        return;
+      }
+    }
+  }
+  // Calls f(end) for every end that may lie within `radius` of p: buckets are twice the radius
+  // wide, so those in the 2 x 2 buckets nearest p.
+  template <typename F>
+  void near(StrokePoint p, F&& f) const {
+    const double ux = p.x / size_, uy = p.y / size_;
+    const auto bx = static_cast<std::int64_t>(std::floor(ux));
+    const auto by = static_cast<std::int64_t>(std::floor(uy));
+    const std::int64_t sx = ux - static_cast<double>(bx) < 0.5 ? -1 : 1;
+    const std::int64_t sy = uy - static_cast<double>(by) < 0.5 ? -1 : 1;
+    for (std::int64_t cy : {by, by + sy}) {
+      for (std::int64_t cx : {bx, bx + sx}) {
+        for (std::uint32_t e = heads_.head(key(cx, cy)); e != kNone; e = next(e)) f(e);
+      }
+    }
+  }
+
+ private:
+  static constexpr std::uint32_t kNone = BucketHeads::kNone;
+  std::uint32_t& next(std::uint32_t end) { return next_[end - first_held_]; }
+  std::uint32_t next(std::uint32_t end) const { return next_[end - first_held_]; }
+  std::int64_t bucket(double v) const { return static_cast<std::int64_t>(std::floor(v / size_)); }
+  std::uint64_t key(StrokePoint at) const { return key(bucket(at.x), bucket(at.y)); }
+  static std::uint64_t key(std::int64_t bx, std::int64_t by) {
+    return (static_cast<std::uint64_t>(bx) << 32) ^ (static_cast<std::uint64_t>(by) & 0xffffffffu);
+  }
+  double size_;
+  BucketHeads heads_;
+  std::vector<std::uint32_t> next_;  // by end from first_held_ on: the next end in its bucket
+  std::uint32_t first_held_ = 0;
+};
+
+// Every pair of ends of different strokes that may join, best first. Most groups are a few
+// strokes, whose ends are simply tried against each other.
+std::vector<EndPair> candidate_pairs(const std::vector<StrokeEnd>& ends, const JoinRule& rule) {
+  std::vector<EndPair> pairs;
+  const auto try_pair = [&](std::size_t a, std::size_t b) {
+    if (b <= a || stroke_of(b) == stroke_of(a)) return;
+    const double cost = join_cost(ends[a], ends[b], rule);
+    if (cost >= 0.0)
+      pairs.push_back({cost, static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)});
+  };
+  constexpr std::size_t kFewEnds = 64;
+  if (ends.size() <= kFewEnds) {
+    for (std::size_t a = 0; a < ends.size(); ++a)
+      for (std::size_t b = a + 1; b < ends.size(); ++b) try_pair(a, b);
+  } else {
+    EndIndex index(rule.gap, ends.size());
+    for (std::size_t e = 0; e < ends.size(); ++e)
+      index.insert(static_cast<std::uint32_t>(e), ends[e].at);
+    for (std::size_t a = 0; a < ends.size(); ++a)
+      index.near(ends[a].at, [&](std::uint32_t b) { try_pair(a, b); });
+  }
+  std::sort(pairs.begin(), pairs.end(), [](const EndPair& x, const EndPair& y) {
+    return x.cost != y.cost ? x.cost < y.cost : std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
+  });
+  return pairs;
+}
+
+std::size_t find_root(std::vector<std::size_t>& parent, std::size_t s) {
+  while (parent[s] != s) s = parent[s] = parent[parent[s]];
+  return s;
+}
+
+// For each end, the end it joins (or itself): best pairs first, each end once, no loops.
+std::vector<std::size_t> choose_partners(const std::vector<StrokeEnd>& ends, const JoinRule& rule) {
+  std::vector<std::size_t> partner(ends.size());
+  std::iota(partner.begin(), partner.end(), std::size_t{0});
+  std::vector<std::size_t> group(ends.size() / 2);
+  std::iota(group.begin(), group.end(), std::size_t{0});
+  for (const EndPair& pair : candidate_pairs(ends, rule)) {
+    if (partner[pair.a] != pair.a || partner[pair.b] != pair.b) continue;
+    const std::size_t ga = find_root(group, stroke_of(pair.a));
+    const std::size_t gb = find_root(group, stroke_of(pair.b));
+    if (ga == gb) continue;
+    group[ga] = gb;
+    partner[pair.a] = pair.b;
+    partner[pair.b] = pair.a;
+  }
+  return partner;
+}
+
+// Weighted mean of two values, the finite one alone when the other is not.
+double merged_mean(double a, double wa, double b, double wb) {
+  if (!std::isfinite(a)) return b;
+  if (!std::isfinite(b)) return a;
+  return (a * wa + b * wb) / (wa + wb);
+}
+
+// (Element by element: GCC 14 warns falsely about a range insert here, -Wstringop-overflow.)
+template <typename T>
+void append_in_order(std::vector<T>& into, const std::vector<T>& from, bool reversed) {
+  into.reserve(into.size() + from.size());
+  if (reversed) {
+    for (auto it = from.rbegin(); it != from.rend(); ++it) into.push_back(*it);
+  } else {
+    for (const T& v : from) into.push_back(v);
+  }
+}
+
+// Appends `piece` to `joined`, reversed when it is entered at its last point.
+void append_piece(Stroke& joined, Stroke& piece, bool reversed) {
+  if (joined.points.empty()) {
+    joined = std::move(piece);
+    if (reversed) {
+      std::reverse(joined.points.begin(), joined.points.end());
+      std::reverse(joined.vertices.begin(), joined.vertices.end());
+      std::reverse(joined.chain.begin(), joined.chain.end());
+    }
+    return;
+  }
+  const StrokePoint last = joined.points.back();
+  const StrokePoint first = reversed ? piece.points.back() : piece.points.front();
+  const double wa = joined.cells, wb = piece.cells;
+  joined.mean_slope_pct = merged_mean(joined.mean_slope_pct, wa, piece.mean_slope_pct, wb);
+  joined.mean_row_slope_pct =
+      merged_mean(joined.mean_row_slope_pct, wa, piece.mean_row_slope_pct, wb);
+  joined.mean_depth_m = merged_mean(joined.mean_depth_m, wa, piece.mean_depth_m, wb);
+  joined.mean_dist = merged_mean(joined.mean_dist, wa, piece.mean_dist, wb);
+  joined.mean_z = merged_mean(joined.mean_z, wa, piece.mean_z, wb);
+  if (std::isfinite(piece.max_depth_m))
+    joined.max_depth_m = std::isfinite(joined.max_depth_m)
+                             ? std::max(joined.max_depth_m, piece.max_depth_m)
+                             : piece.max_depth_m;
+  joined.length += distance(first, last) + piece.length;
+  joined.cells += piece.cells;
+  append_in_order(joined.points, piece.points, reversed);
+  append_in_order(joined.vertices, piece.vertices, reversed);
+  append_in_order(joined.chain, piece.chain, reversed);
+}
+
+// The ends of every stroke: stroke k's start at 2k, its last point at 2k + 1.
+std::vector<StrokeEnd> stroke_ends(const std::vector<Stroke>& strokes, const JoinRule& rule) {
+  std::vector<StrokeEnd> ends;
+  ends.reserve(2 * strokes.size());
+  for (const Stroke& s : strokes) {
+    ends.push_back(stroke_end(s.points, true, 2.0 * rule.gap));
+    ends.push_back(stroke_end(s.points, false, 2.0 * rule.gap));
+  }
+  return ends;
+}
+
+}  // namespace
+
+std::vector<Stroke> join_strokes(std::vector<Stroke> strokes, const JoinRule& rule) {
+  if (strokes.size() < 2) return strokes;
+  const std::vector<std::size_t> partner = choose_partners(stroke_ends(strokes, rule), rule);
+  const auto joins = [&](std::size_t end) { return partner[end] != end; };
+  std::vector<Stroke> joined;
+  std::vector<std::uint8_t> taken(strokes.size(), 0);
+  for (std::size_t s = 0; s < strokes.size(); ++s) {
+    if (taken[s]) continue;
+    // Walk back through the starts to the first piece, then forward through the pieces.
+    std::size_t entry = 2 * s;  // the end the walk enters a piece at
+    while (joins(entry)) entry = partner[entry] ^ 1u;
+    Stroke whole;
+    while (true) {
+      const std::size_t piece = stroke_of(entry);
+      taken[piece] = 1;
+      append_piece(whole, strokes[piece], !is_start(entry));
+      const std::size_t exit = entry ^ 1u;
+      if (!joins(exit)) break;
+      entry = partner[exit];
+    }
+    joined.push_back(std::move(whole));
+  }
+  return joined;
+}
+
+struct StrokeGrouper::Index : EndIndex {
+  using EndIndex::EndIndex;
+};
+
+StrokeGrouper::StrokeGrouper(const JoinRule& rule)
+    : rule_(rule), index_(std::make_unique<Index>(rule.gap, std::size_t{1} << 12)) {}
+
+StrokeGrouper::~StrokeGrouper() = default;
+
+std::size_t StrokeGrouper::add(const Stroke& stroke) {
+  const std::size_t id = first_held_ + records_.size();
+  records_.push_back({id, kNone, id, stroke.chain.empty() ? 0 : stroke.chain.back().p, {}});
+  for (bool start : {true, false}) {
+    const StrokeEnd end = stroke_end(stroke.points, start, 2.0 * rule_.gap);
+    record(id).ends[start ? 0 : 1] = {end.at, end.dx, end.dy};
+    const auto end_id = static_cast<std::uint32_t>(2 * id + (start ? 0 : 1));
+    index_->near(end.at, [&](std::uint32_t other) {
+      const EndRecord& o = record(stroke_of(other)).ends[other % 2];
+      if (stroke_of(other) != id && join_cost(end, {o.at, o.dx, o.dy}, rule_) >= 0.0)
+        unite(id, stroke_of(other));
+    });
+    index_->insert(end_id, end.at);
+  }
+  return id;
+}
+
+void StrokeGrouper::unite(std::size_t a, std::size_t b) {
+  a = group_of(a), b = group_of(b);
+  if (a == b) return;
+  if (b < a) std::swap(a, b);
+  // The group's root is its first stroke; its members stay listed from there.
+  Record &first = record(a), &second = record(b);
+  second.parent = a;
+  first.reach = std::max(first.reach, second.reach);
+  record(first.tail).next = b;
+  first.tail = second.tail;
+}
+
+std::size_t StrokeGrouper::group_of(std::size_t id) {
+  while (record(id).parent != id) id = record(id).parent = record(record(id).parent).parent;
+  return id;
+}
+
+void StrokeGrouper::take_group(std::size_t root, std::vector<std::size_t>& members) {
+  members.clear();
+  for (std::size_t m = root; m != kNone; m = record(m).next) members.push_back(m);
+  if (members.size() > 1) std::sort(members.begin(), members.end());
+  for (std::size_t m : members) {
+    for (std::size_t e : {2 * m, 2 * m + 1})
+      index_->remove(static_cast<std::uint32_t>(e), record(m).ends[e % 2].at);
+  }
+}
+
+void StrokeGrouper::forget_before(std::size_t id) {
+  // Groups are taken whole and named by their first strokes, so no stroke still held points to
+  // one before `id`. The records go once they are most of those held, to move few.
+  const std::size_t taken = std::min(id, first_held_ + records_.size()) - first_held_;
+  if (taken < kForgetAtLeast || 2 * taken < records_.size()) return;
+  records_.erase(records_.begin(), records_.begin() + static_cast<std::ptrdiff_t>(taken));
+  first_held_ += taken;
+  index_->forget_before(static_cast<std::uint32_t>(2 * first_held_));
+}
+
+}  // namespace tsk

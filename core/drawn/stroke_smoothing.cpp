@@ -1,0 +1,154 @@
+#include "core/drawn/stroke_smoothing.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/base/vector_clones.h"
+
+namespace tsk {
+
+constexpr int kSmoothingPasses = 3;
+
+double polyline_length(const std::vector<StrokePoint>& points) {
+  double length = 0.0;
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    const double dx = points[k].x - points[k - 1].x, dy = points[k].y - points[k - 1].y;
+    length += std::sqrt(dx * dx + dy * dy);
+  }
+  return length;
+}
+
+namespace {
+
+// The Gaussian's weights from `reach` points before a point to `reach` points after it, out to
+// three sigma; the same weights either side, so that a sum over points reads them in turn.
+struct Kernel {
+  std::vector<double> weights;
+  std::ptrdiff_t reach = 0;
+  double whole_sum = 0.0;  // of the weights, for a point with the whole kernel inside the stroke
+  // The weight of a point `j` points after the centre (before it if negative).
+  const double* centre() const { return weights.data() + reach; }
+  void make(double sigma_points, std::size_t n) {
+    reach = static_cast<std::ptrdiff_t>(
+        std::min<std::size_t>(n, static_cast<std::size_t>(std::ceil(3.0 * sigma_points))));
+    weights.resize(static_cast<std::size_t>(2 * reach + 1));
+    for (std::ptrdiff_t j = 0; j <= reach; ++j) {
+      const auto jj = static_cast<double>(j * j);
+      weights[static_cast<std::size_t>(reach + j)] = weights[static_cast<std::size_t>(reach - j)] =
+          std::exp(-0.5 * jj / (sigma_points * sigma_points));
+    }
+    whole_sum = weights[static_cast<std::size_t>(reach)];
+    for (std::ptrdiff_t j = 1; j <= reach; ++j)
+      whole_sum += 2.0 * weights[static_cast<std::size_t>(reach + j)];
+  }
+};
+
+// The Gaussian mean about point k where the kernel runs past an end of the stroke: the weights
+// of the points it covers, renormalised; of heights too if `z` is given. (Summed in order from the
+// first point covered.)
+template <bool kHeights>
+StrokePoint truncated_mean(const std::vector<StrokePoint>& points, const Kernel& kernel,
+                           std::ptrdiff_t k, std::ptrdiff_t last,
+                           const std::vector<StrokeVertex>* vertices, double* z) {
+  const std::ptrdiff_t lo = std::max<std::ptrdiff_t>(0, k - kernel.reach);
+  const std::ptrdiff_t hi = std::min(last, k + kernel.reach);
+  const double* w = kernel.centre() - k;  // w[j]: the weight of point j
+  double sw = 0.0, sx = 0.0, sy = 0.0, sz = 0.0;
+  for (std::ptrdiff_t j = lo; j <= hi; ++j) {
+    const auto v = static_cast<std::size_t>(j);
+    sw += w[j];
+    sx += w[j] * points[v].x;
+    sy += w[j] * points[v].y;
+    if constexpr (kHeights) sz += w[j] * (*vertices)[v].z;
+  }
+  if constexpr (kHeights) *z = sz / sw;
+  return {sx / sw, sy / sw};
+}
+
+// The Gaussian means about points [from, to), where the kernel lies whole inside the stroke:
+// pairs of points either side, one normaliser. Taps outermost, so that the loops run along the
+// points and vectorise; each point's sum still adds its pairs in order from the nearest.
+TSK_VECTOR_CLONES
+void whole_kernel_means(const StrokePoint* points, const double* w, std::size_t taps, double total,
+                        std::size_t from, std::size_t to, StrokePoint* out) {
+  for (std::size_t k = from; k < to; ++k) out[k] = {w[0] * points[k].x, w[0] * points[k].y};
+  for (std::size_t j = 1; j < taps; ++j) {
+    const double wj = w[j];
+    for (std::size_t k = from; k < to; ++k) {
+      out[k].x += wj * (points[k - j].x + points[k + j].x);
+      out[k].y += wj * (points[k - j].y + points[k + j].y);
+    }
+  }
+  for (std::size_t k = from; k < to; ++k) out[k] = {out[k].x / total, out[k].y / total};
+}
+
+// One pass: the Gaussian mean about each inner point (of heights too, if `vertices` are given),
+// then each point held within `tolerance` of its anchor.
+void smoothing_pass(std::vector<StrokePoint>& points, const Kernel& kernel,
+                    const std::vector<StrokePoint>& anchors, double tolerance,
+                    std::vector<StrokePoint>& scratch, std::vector<double>& z,
+                    std::vector<StrokeVertex>* vertices) {
+  const auto last = static_cast<std::ptrdiff_t>(points.size() - 1);
+  const std::ptrdiff_t reach = kernel.reach;
+  scratch.resize(points.size());  // every inner point is written; the ends stay
+  scratch.front() = points.front();
+  scratch.back() = points.back();
+  z.resize(vertices ? points.size() : 0);
+  const auto near_an_end = [&](std::ptrdiff_t k) {
+    const auto u = static_cast<std::size_t>(k);
+    scratch[u] = vertices ? truncated_mean<true>(points, kernel, k, last, vertices, &z[u])
+                          : truncated_mean<false>(points, kernel, k, last, nullptr, nullptr);
+  };
+  // Points [whole_from, whole_to) have the whole kernel inside the stroke (heights are smoothed
+  // point by point).
+  const std::ptrdiff_t whole_from = vertices ? last : std::clamp<std::ptrdiff_t>(reach, 1, last);
+  const std::ptrdiff_t whole_to = std::max(whole_from, last - reach + 1);
+  for (std::ptrdiff_t k = 1; k < whole_from; ++k) near_an_end(k);
+  if (whole_from < whole_to) {
+    whole_kernel_means(points.data(), kernel.centre(), static_cast<std::size_t>(reach + 1),
+                       kernel.whole_sum, static_cast<std::size_t>(whole_from),
+                       static_cast<std::size_t>(whole_to), scratch.data());
+  }
+  for (std::ptrdiff_t k = whole_to; k < last; ++k) near_an_end(k);
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const StrokePoint anchor = anchors[k];
+    double dx = scratch[k].x - anchor.x, dy = scratch[k].y - anchor.y;
+    const double moved_squared = dx * dx + dy * dy;
+    if (moved_squared > tolerance * tolerance) {
+      const double scale = tolerance / std::sqrt(moved_squared);
+      dx *= scale, dy *= scale;
+    }
+    points[k] = {anchor.x + dx, anchor.y + dy};
+    if (vertices && k > 0 && static_cast<std::ptrdiff_t>(k) < last) (*vertices)[k].z = z[k];
+  }
+}
+
+}  // namespace
+
+void smooth_stroke(Stroke& stroke, double sigma, double tolerance, bool heights,
+                   const std::vector<StrokePoint>* anchors) {
+  const std::size_t n = stroke.points.size();
+  if (n < 3 || !(sigma > 0.0)) return;
+  // A chain has a point per profile, so its points lie about evenly along it: the Gaussian over
+  // arc length is one over point indices, sigma taken in points at the stroke's mean spacing.
+  const double spacing = polyline_length(stroke.points) / static_cast<double>(n - 1);
+  if (!(spacing > 0.0)) return;
+  // Storage kept from stroke to stroke (smoothing runs on one thread at a time per drawer).
+  thread_local Kernel kernel;
+  kernel.make(sigma / spacing, n);
+  // Points are held near their anchors, or near where they were when no anchors are given.
+  std::vector<StrokePoint> where_they_were;
+  if (!anchors || anchors->size() != n) where_they_were = stroke.points;
+  const std::vector<StrokePoint>& held = where_they_were.empty() ? *anchors : where_they_were;
+  thread_local std::vector<StrokePoint> scratch;
+  thread_local std::vector<double> z;
+  // Where a pass pulls a point back within the tolerance, it leaves a kink; the next passes
+  // smooth the kinks out within the same band.
+  for (int pass = 0; pass < kSmoothingPasses; ++pass) {
+    const bool first = pass == 0;
+    smoothing_pass(stroke.points, kernel, held, tolerance, scratch, z,
+                   first && heights && stroke.vertices.size() == n ? &stroke.vertices : nullptr);
+  }
+}
+
+}  // namespace tsk

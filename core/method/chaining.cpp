@@ -1,0 +1,113 @@
+#include "core/method/chaining.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+
+namespace tsk {
+namespace {
+
+// Index of the candidate of `next`, from index `from` on, not yet in `used` with the smallest
+// |cell - i| among those whose [cell, reach] overlaps [lo, hi]; ties go to the smaller cell. -1 if
+// none. `from` is the first candidate whose reach is at least lo.
+std::ptrdiff_t nearest_overlapping(const ProfileCandidates& next,
+                                   const std::vector<std::uint8_t>& used, std::size_t from,
+                                   std::int32_t i, std::int32_t hi) {
+  std::ptrdiff_t best = -1;
+  std::int64_t best_gap = std::numeric_limits<std::int64_t>::max();
+  for (std::size_t k = from; k < next.cell.size(); ++k) {
+    const std::int32_t j = next.cell[k];
+    if (j > hi) break;
+    if (used[k]) continue;
+    const std::int64_t gap = std::llabs(static_cast<std::int64_t>(j) - i);
+    if (gap < best_gap) {  // strict: on a tie the earlier (smaller j) stays
+      best_gap = gap;
+      best = static_cast<std::ptrdiff_t>(k);
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+void profile_candidates(const std::uint8_t* f, std::size_t length, bool factual,
+                        ProfileCandidates& out, std::size_t first) {
+  const std::uint8_t bit = factual ? cell::occluding : cell::thinned;
+  out.cell.clear();
+  out.reach.clear();
+  for (std::size_t i = next_cell_with(f, first, length, bit); i < length;
+       i = next_cell_with(f, i, length, bit)) {
+    const auto index = static_cast<std::int32_t>(i);
+    out.cell.push_back(index);
+    out.reach.push_back(index);
+    ++i;
+    if (!factual) continue;
+    // The hidden zone: hidden cells, and nodata between them, up to the next visible cell.
+    for (; i < length; ++i) {
+      if (f[i] & cell::hidden) {
+        out.reach.back() = static_cast<std::int32_t>(i);
+      } else if (f[i] & (cell::valid | bit)) {
+        break;
+      }
+    }
+  }
+}
+
+ChainLinker::ChainLinker(bool factual, int window) : factual_(factual), window_(window) {}
+
+std::uint32_t ChainLinker::take_slot() {
+  if (free_slots_.empty()) return slot_count_++;
+  const std::uint32_t slot = free_slots_.back();
+  free_slots_.pop_back();
+  return slot;
+}
+
+const std::vector<ChainRef>& ChainLinker::add_profile(const ProfileCandidates& next) {
+  for (const ChainRef& c : closed_) free_slots_.push_back(c.slot);
+  used_.assign(next.cell.size(), 0);
+  joined_.assign(next.cell.size(), ChainRef{0, 0});
+  closed_.clear();
+  still_open_.clear();
+  // Where each last cell's search starts in `next`: the first candidate reaching its low end.
+  // Both profiles are sorted and so are the low ends, so one merge finds them all.
+  const auto low_end = [this](std::size_t k) {
+    return factual_ ? last_.cell[k] : last_.cell[k] - window_;
+  };
+  search_from_.resize(last_.cell.size());
+  for (std::size_t k = 0, from = 0; k < last_.cell.size(); ++k) {
+    while (from < next.reach.size() && next.reach[from] < low_end(k)) ++from;
+    search_from_[k] = from;
+  }
+  for (const Open& o : open_) {
+    const std::int32_t i = last_.cell[o.k];
+    const std::int32_t hi = factual_ ? last_.reach[o.k] : i + window_;
+    const std::ptrdiff_t found = nearest_overlapping(next, used_, search_from_[o.k], i, hi);
+    if (found < 0) {
+      closed_.push_back(o.chain);
+      continue;
+    }
+    const auto k = static_cast<std::size_t>(found);
+    used_[k] = 1;
+    joined_[k] = o.chain;
+    still_open_.push_back({o.chain, k});
+  }
+  for (std::size_t k = 0; k < next.cell.size(); ++k) {
+    if (used_[k]) continue;
+    joined_[k] = ChainRef{started_++, take_slot()};
+    still_open_.push_back({joined_[k], k});
+  }
+  std::swap(open_, still_open_);
+  last_.cell.assign(next.cell.begin(), next.cell.end());  // into storage of its own, reused
+  last_.reach.assign(next.reach.begin(), next.reach.end());
+  return joined_;
+}
+
+const std::vector<ChainRef>& ChainLinker::close_all() {
+  for (const ChainRef& c : closed_) free_slots_.push_back(c.slot);
+  closed_.clear();
+  for (const Open& o : open_) closed_.push_back(o.chain);
+  open_.clear();
+  return closed_;
+}
+
+}  // namespace tsk

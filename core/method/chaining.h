@@ -1,0 +1,85 @@
+// Stage 6 (SPEC 1.7): linking occluding cells and t-set cells across profiles into chains.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/base/flags.h"
+#include "core/base/parallel.h"
+
+namespace tsk {
+
+struct ChainCell {
+  std::int32_t p;  // profile
+  std::int32_t i;  // cell along the profile
+};
+
+// Cells of one chain, one per profile, in consecutive profiles left to right.
+using Chain = std::vector<ChainCell>;
+
+// The cells of one profile that may join chains, front to back. For factual chaining `reach` is
+// the last cell of the hidden zone behind each cell; for formulated chaining the cell itself.
+struct ProfileCandidates {
+  std::vector<std::int32_t> cell;
+  std::vector<std::int32_t> reach;
+};
+
+// The candidates of profile p: occluding cells with their hidden zones (factual) or t-set cells,
+// among cells [first, length), into `out` (whose storage is reused).
+void profile_candidates(const std::uint8_t* flags, std::size_t length, bool factual,
+                        ProfileCandidates& out, std::size_t first = 0);
+
+// A chain as the linker reports it: its id (ids count up in the order chains are started) and
+// its slot, a small index that a closed chain hands on to a later one, so a caller can keep the
+// cells of open chains in a vector indexed by slot and reuse its storage.
+struct ChainRef {
+  std::size_t id;
+  std::uint32_t slot;
+};
+
+// Links profiles given one at a time, left to right, as SPEC 1.7 scans them: every chain is grown
+// as far right as it goes before the next unused cell (front to back) starts one. In each new
+// profile the open chains pick their cell in the order they were started (older first), nearest
+// first, ties to the front; the cells left over start new chains. Holds two profiles at a time.
+class ChainLinker {
+ public:
+  ChainLinker(bool factual, int window);
+
+  // Links the next profile. Returns, for each of its candidates, the chain it joined.
+  const std::vector<ChainRef>& add_profile(const ProfileCandidates& candidates);
+  // The chains that the last add_profile() could not extend: they are complete. Their slots are
+  // handed on only from the next call on.
+  const std::vector<ChainRef>& closed() const { return closed_; }
+  // Closes every chain still open (after the last profile) and returns them.
+  const std::vector<ChainRef>& close_all();
+  // One more than the largest slot handed out so far.
+  std::size_t slot_count() const { return slot_count_; }
+  // The id of the oldest chain still open (the next id when none is): every chain with a smaller
+  // id is complete.
+  std::size_t oldest_open() const { return open_.empty() ? started_ : open_.front().chain.id; }
+  // The oldest chain still open, when one is.
+  const ChainRef* oldest_open_chain() const {
+    return open_.empty() ? nullptr : &open_.front().chain;
+  }
+
+ private:
+  struct Open {
+    ChainRef chain;
+    std::size_t k;  // index of the chain's last cell in the last profile
+  };
+  std::uint32_t take_slot();
+
+  bool factual_;
+  int window_;
+  ProfileCandidates last_;
+  // Open chains in the order they were started: the survivors keep their order, new ones follow.
+  std::vector<Open> open_, still_open_;
+  std::vector<ChainRef> joined_, closed_;
+  std::vector<std::uint8_t> used_;
+  std::vector<std::size_t> search_from_;  // per candidate of the last profile
+  std::vector<std::uint32_t> free_slots_;
+  std::size_t started_ = 0;
+  std::uint32_t slot_count_ = 0;
+};
+
+}  // namespace tsk

@@ -1,0 +1,83 @@
+#include "core/method/run_recipes.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "core/base/errors.h"
+#include "core/method/visibility.h"
+
+namespace tsk {
+
+namespace {
+
+// Refuses a run whose view is not the one the DEM was turned for.
+void require_view(const HeldDem& dem, const ViewParams& view) {
+  view.validate();
+  const OrientedFrame asked = make_frame(dem.frame.dem_grid(), view.azimuth_deg);
+  if (asked.azimuth_deg != dem.frame.azimuth_deg || asked.resampled != dem.frame.resampled) {
+    throw Error("internal: the DEM was turned for azimuth " + number_text(dem.frame.azimuth_deg) +
+                ", the run asks for " + number_text(view.azimuth_deg));
+  }
+}
+
+}  // namespace
+
+WindowReader dem_windows(const HeldDem& dem) {
+  if (!dem.frame.as_it_lies()) {
+    if (!dem.source.read) throw Error("internal: a turned DEM needs its windows to survey");
+    return dem.source.read;
+  }
+  const HeightGrid& grid = dem.oriented;
+  return [&grid](const DemWindow& w, float* heights) {
+    if (w.row0 + w.rows > grid.rows() || w.col0 + w.cols > grid.cols())
+      throw Error("internal: a window beyond the DEM");
+    for (std::size_t r = 0; r < w.rows; ++r) {
+      const float* row = grid.row(w.row0 + r) + w.col0;
+      std::copy(row, row + w.cols, heights + r * w.cols);
+    }
+  };
+}
+
+ResolvedParams resolve_on(const HeldDem& dem, const SilhouetteParams& choice) {
+  if (choice.adaptive.mode == FilterMode::fixed) return ResolvedParams(choice);
+  return adapt_filter(choice, dem.source.grid, dem_windows(dem));
+}
+
+SilhouetteResult sketch_held_dem(const HeldDem& dem, const SilhouetteParams& choice,
+                                 const ProgressFn& progress, StrokeSink sink) {
+  require_view(dem, choice.view);
+  const ResolvedParams params = resolve_on(dem, choice);
+  return run_silhouettes(dem.oriented, dem.frame, dem.source.geotransform, params, progress,
+                         dem.lowest_height, std::move(sink));
+}
+
+PlanObliqueDrape lay_out_drape(const HeldDem& dem, const ViewParams& view, unsigned threads,
+                               const ProgressFn& progress) {
+  require_view(dem, view);
+  CellFlags flags;
+  classify_visibility(dem.oriented, dem.frame.d, view, flags, threads);
+  return PlanObliqueDrape(dem.oriented, flags, dem.frame, view, dem.lowest_height, progress);
+}
+
+PanoramaRun sketch_panorama_on(const HeldDem& dem, const PanoramaChoice& choice,
+                               const ProgressFn& progress) {
+  if (!dem.frame.as_it_lies())
+    throw Error("internal: a panorama needs the DEM as it lies, unturned");
+  const ResolvedParams resolved = resolve_on(dem, choice.method);
+  const SilhouetteParams& method = resolved.params();
+  PanoramaParams params;
+  params.view = choice.view;
+  params.view.metres_per_unit = dem.ground_scale;
+  params.rules = {method.filter, method.height_tolerance, method.placement};
+  params.local_scale = method.local_scale;
+  params.chain = method.chain;
+  params.threads = method.threads;
+  params.record_visibility = choice.record_visibility;
+  // A leap along a ray draws no line on the terrain; SPEC's exact strokes are the chains.
+  params.cut_leaps = method.strokes.drawn();
+  PanoramaRun run{sketch_panorama(dem.oriented, dem.source.geotransform, params, progress),
+                  resolved.filter()};
+  return run;
+}
+
+}  // namespace tsk

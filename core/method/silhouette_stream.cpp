@@ -1,0 +1,281 @@
+// SilhouetteStream: the method strip by strip, each profile's stages while its cells are in
+// cache, the chains linked in the order of the scan as the next profiles are classified.
+#include <algorithm>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <utility>
+
+#include "core/base/errors.h"
+#include "core/base/stage_timing.h"
+#include "core/drawn/drawing_pipeline.h"
+#include "core/drawn/drawn_strokes.h"
+#include "core/method/chaining.h"
+#include "core/method/profile_stages.h"
+#include "core/method/scan_order.h"
+#include "core/method/silhouettes.h"
+
+namespace tsk {
+namespace {
+
+// Profiles to a batch: about a million cells, at least 256 profiles. Short profiles come in more
+// to a batch, as every batch costs a thread start or two whatever its size.
+std::size_t batch_profiles(std::size_t length) {
+  return std::clamp<std::size_t>((std::size_t{1} << 20) / std::max<std::size_t>(1, length), 256,
+                                 16384);
+}
+
+// Whether drawn strokes are drawn, and handed on, on threads of their own.
+bool draws_alongside(const SilhouetteParams& p) {
+  return p.strokes.drawn() && resolve_threads(p.threads) > 1;
+}
+
+}  // namespace
+
+// The linking of a run: chains linked profile by profile (SPEC 1.7), their strokes kept in the
+// order of the scan and handed on, or to the drawing for drawn strokes.
+struct SilhouetteStream::State {
+  // One class of strokes: its linker, the strokes of its open chains by slot, and its complete
+  // strokes held until every chain started before theirs is complete too.
+  struct Strokes {
+    Strokes(bool factual, int window)
+        : linker(factual, window), cls(factual ? StrokeClass::factual : StrokeClass::formulated) {}
+    ChainLinker linker;
+    StrokeClass cls;
+    std::vector<StrokeBuilder> open;
+    ScanOrder order;
+    std::vector<Stroke> pieces;        // of the drawn chain closing, its storage reused
+    std::vector<Stroke> handed_on;     // without a sink
+    std::size_t count = 0, cells = 0;  // of the strokes handed on
+  };
+
+  OrientedFrame frame;
+  GeoTransform geotransform;
+  SilhouetteParams params;
+  double z_ref;
+  ProgressFn progress;
+  StrokeSink sink;
+  std::size_t next_profile = 0;
+  std::size_t next_linked = 0;  // the next profile to link
+  Strokes factual{true, 0}, formulated;
+  CellFlags flags;  // the current strip's classification, its memory reused by the next strip
+  SilhouetteResult result;
+  // Drawn strokes only. Declared last: stopped before what it delivers to goes.
+  std::unique_ptr<DrawingPipeline> drawing;
+
+  State(const OrientedFrame& f, const GeoTransform& gt, const SilhouetteParams& p, double z,
+        const ProgressFn& pr, StrokeSink sk)
+      : frame(f),
+        geotransform(gt),
+        params(p),
+        z_ref(z),
+        progress(pr),
+        sink(std::move(sk)),
+        formulated(false, p.chain.window) {
+    if (!p.strokes.drawn()) return;
+    drawing = std::make_unique<DrawingPipeline>(
+        drawing_setup(f, gt, p, z), draws_alongside(p), [this](StrokeClass cls, Stroke&& stroke) {
+          deliver(cls == StrokeClass::factual ? factual : formulated, std::move(stroke));
+        });
+  }
+
+  // Checks that a strip of `count` profiles from `first` follows the last one and matches the
+  // frame; returns how many neighbour profiles it holds before its first (0 or 1).
+  std::size_t accept_strip(const HeightGrid& z, std::size_t first, std::size_t count) {
+    const std::size_t before = first > 0 ? 1 : 0;
+    const std::size_t after = first + count < frame.profiles ? 1 : 0;
+    if (first != next_profile || count == 0 || z.rows() != before + count + after ||
+        z.cols() != frame.length) {
+      throw Error("strip of profiles does not follow the previous one or does not match the frame");
+    }
+    next_profile = first + count;
+    return before;
+  }
+
+  // Tells `progress` that `done` profiles are done; throws Cancelled when it says stop.
+  void report_progress(std::size_t done) const {
+    if (progress && !progress(static_cast<double>(done) / static_cast<double>(frame.profiles)))
+      throw Cancelled();
+  }
+
+  // Links the chain candidates of a batch of profiles, in order (SPEC 1.7).
+  void link(const std::vector<ProfileChainCells>& batch) {
+    for (const ProfileChainCells& c : batch) {
+      link(factual, c.factual, c.factual_cells);
+      link(formulated, c.formulated, c.formulated_cells);
+      ++next_linked;
+      // Profile by profile, so that the two classes interleave alike whatever the batches.
+      if (drawing) {
+        take_settled(factual);
+        take_settled(formulated);
+      }
+    }
+    if (drawing) drawing->flush();
+  }
+
+  // Adds the cells of a profile's candidates to the strokes of their chains, finishes the closed
+  // chains and hands on the strokes no open chain precedes.
+  void link(Strokes& strokes, const ProfileCandidates& candidates,
+            const std::vector<StrokeCell>& cells) {
+    const auto& joined = strokes.linker.add_profile(candidates);
+    std::vector<StrokeBuilder>& open = strokes.open;
+    if (open.size() < strokes.linker.slot_count()) open.resize(strokes.linker.slot_count());
+    const bool drawn = drawing != nullptr;
+    for (std::size_t k = 0; k < joined.size(); ++k) open[joined[k].slot].add(cells[k], drawn);
+    close(strokes, strokes.linker.closed());
+    hand_on(strokes, strokes.linker.oldest_open());
+  }
+
+  // Asks the drawing for the groups of drawn strokes that no chain still open or to come can
+  // join (after the last profile, all of them), to be drawn in that order.
+  void take_settled(Strokes& strokes, bool last = false) {
+    const ChainRef* oldest = strokes.linker.oldest_open_chain();
+    const double frontier = last     ? std::numeric_limits<double>::infinity()
+                            : oldest ? strokes.open[oldest->slot].first_profile()
+                                     : static_cast<double>(next_linked);
+    drawing->settle(strokes.cls, frontier);
+  }
+
+  // Keeps the strokes of closed chains long enough to draw (every one the drawing can use for
+  // drawn strokes, which are generalised after joining); their slots' storage is reused.
+  void close(Strokes& strokes, const std::vector<ChainRef>& chains) {
+    const int min_cells = drawing ? kLeastDrawnCells : params.chain.min_cells;
+    for (const ChainRef& chain : chains) {
+      StrokeBuilder& builder = strokes.open[chain.slot];
+      if (builder.cells() >= min_cells) {
+        // Copies sized to fit: the builder keeps its storage for the slot's next chain (taking
+        // its vectors left them to grow anew, allocation after allocation).
+        if (drawing) {
+          strokes.pieces.clear();
+          builder.drawn_pieces(strokes.cls, drawing->longest_step(), strokes.pieces);
+          for (std::size_t k = 0; k < strokes.pieces.size(); ++k)
+            strokes.order.hold(chain.id, k, std::move(strokes.pieces[k]));
+        } else {
+          strokes.order.hold(chain.id, 0, builder.stroke(strokes.cls));
+        }
+      }
+      builder.clear();
+    }
+  }
+
+  // Hands on the held strokes of chains started before chain `id`, oldest first: to the drawing
+  // for drawn strokes.
+  void hand_on(Strokes& strokes, std::size_t id) {
+    strokes.order.release_before(id, [&](Stroke&& stroke) {
+      if (drawing) {
+        drawing->add_piece(strokes.cls, std::move(stroke));
+      } else {
+        deliver(strokes, std::move(stroke));
+      }
+    });
+  }
+
+  void deliver(Strokes& strokes, Stroke&& stroke) {
+    ++strokes.count;
+    strokes.cells += static_cast<std::size_t>(stroke.cells);
+    if (sink) {
+      sink(std::move(stroke));
+    } else {
+      strokes.handed_on.push_back(std::move(stroke));
+    }
+  }
+};
+
+SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransform& geotransform,
+                                   const ResolvedParams& params, double z_ref,
+                                   const ProgressFn& progress, StrokeSink sink)
+    : state_(std::make_unique<State>(frame, geotransform, params.params(), z_ref, progress,
+                                     std::move(sink))) {
+  state_->result.filter = params.filter();
+}
+
+SilhouetteStream::~SilhouetteStream() = default;
+
+void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::size_t count,
+                                 bool keep_flags) {
+  State& st = *state_;
+  const std::size_t before = st.accept_strip(z, first, count);
+  st.flags.reshape(z.rows(), z.cols(), kUnset);  // rows of the neighbours stay unused
+  const StrokeContext context{z,
+                              st.flags,
+                              st.frame,
+                              st.params.view,
+                              st.geotransform,
+                              st.params.geometry,
+                              st.params.subcell,
+                              st.params.strokes.drawn(),
+                              st.params.height_tolerance,
+                              st.z_ref,
+                              first - before};
+  const unsigned threads = resolve_threads(st.params.threads);
+  const std::size_t batch = batch_profiles(st.frame.length);
+  std::mutex merge;
+  StageTimings seconds;  // time of each stage summed over the threads
+  // Batches of profiles are classified and their chain candidates collected in parallel...
+  auto collect = [&](std::size_t b0, std::vector<ProfileChainCells>& cells) {
+    cells.resize(std::min(batch, count - b0));  // every entry refilled, storage reused
+    parallel_for(cells.size(), threads, [&](std::size_t lo, std::size_t hi) {
+      StageTimings sampled;
+      StageStats counts;
+      for (std::size_t k = lo; k < hi; ++k) {
+        const std::size_t row = before + b0 + k, p = first + b0 + k;
+        StageClock clock{p % kTimedEvery == 0, sampled};
+        std::uint8_t* f = st.flags.row(row);
+        const CellRange range = classify_profile(z, row, p, f, st.frame, st.params, clock);
+        clock.time(&StageTimings::chaining, [&] {
+          count_profile(f + range.begin, range.size(), counts);
+          cells[k].collect(context, f, p, range);
+        });
+      }
+      std::lock_guard<std::mutex> lock(merge);
+      add_sampled_times(sampled, seconds);
+      add_counts(counts, st.result.stats);
+    });
+  };
+  // ... then linked in order on a thread of their own while the next batch is collected.
+  auto link = [&](const std::vector<ProfileChainCells>& cells) {
+    const auto start = Clock::now();
+    st.link(cells);
+    std::lock_guard<std::mutex> lock(merge);
+    seconds.chaining += seconds_since(start);
+  };
+  const auto start = Clock::now();
+  pipeline_batches<std::vector<ProfileChainCells>>(
+      count, batch, threads > 1, collect, link,
+      [&](std::size_t done) { st.report_progress(first + done); });
+  share_out(seconds, seconds_since(start), st.result.timings);
+  if (keep_flags) {
+    st.result.flags = std::move(st.flags);
+    st.flags = CellFlags();
+  }
+}
+
+SilhouetteResult SilhouetteStream::finish() {
+  State& st = *state_;
+  if (st.next_profile != st.frame.profiles) throw Error("not every profile was delivered");
+  const auto start = Clock::now();
+  for (State::Strokes* strokes : {&st.factual, &st.formulated}) {
+    st.close(*strokes, strokes->linker.close_all());
+    st.hand_on(*strokes, std::numeric_limits<std::size_t>::max());
+    if (st.drawing) st.take_settled(*strokes, true);
+  }
+  if (st.drawing) {
+    st.drawing->flush();
+    st.drawing->finish();
+  }
+  SilhouetteResult& result = st.result;
+  StageStats& stats = result.stats;
+  stats.generalised = st.factual.cells + st.formulated.cells;
+  stats.factual_strokes = st.factual.count;
+  stats.formulated_strokes = st.formulated.count;
+  result.z_ref = st.z_ref;
+  // Without a sink: factual strokes first, then formulated, each in the order of the scan.
+  result.strokes = std::move(st.factual.handed_on);
+  result.strokes.reserve(result.strokes.size() + st.formulated.handed_on.size());
+  for (Stroke& stroke : st.formulated.handed_on) result.strokes.push_back(std::move(stroke));
+  result.timings.strokes += seconds_since(start);
+  if (st.progress && !st.progress(1.0)) throw Cancelled();
+  return std::move(result);
+}
+
+}  // namespace tsk

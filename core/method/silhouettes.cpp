@@ -1,0 +1,92 @@
+// The entry points of the method: a DEM read window by window (what the front ends call), a
+// grid held whole, and strips delivered by a reader.
+#include "core/method/silhouettes.h"
+
+#include <utility>
+
+#include "core/base/stage_timing.h"
+#include "core/method/plan_oblique.h"
+
+namespace tsk {
+std::vector<StageFigure> stage_figures(const StageStats& s) {
+  return {{"hidden_pct", s.pct(s.hidden), false},
+          {"occluding_pct", s.pct(s.occluding), false},
+          {"cset_pct", s.pct(s.candidate), false},
+          {"fset_pct", s.pct(s.filtered), false},
+          {"tset_pct", s.pct(s.thinned), false},
+          {"gset_pct", s.pct(s.generalised), false},
+          {"factual_strokes", static_cast<double>(s.factual_strokes), true},
+          {"formulated_strokes", static_cast<double>(s.formulated_strokes), true}};
+}
+
+SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& geotransform,
+                               const ResolvedParams& params, double z_ref, std::size_t strip,
+                               const ProfileReader& read, const ProgressFn& progress,
+                               StrokeSink sink) {
+  check_strip_fits(frame, strip);
+  SilhouetteStream stream(frame, geotransform, params, z_ref, progress, std::move(sink));
+  // The strip starting at `first` with its neighbours.
+  auto read_strip = [&](std::size_t first, HeightGrid& heights) {
+    const std::size_t lo = first > 0 ? first - 1 : 0;
+    const std::size_t hi = std::min(frame.profiles, first + strip + 1);
+    read(lo, hi - lo, heights);
+  };
+  // The next strip is read while this one is processed, into memory of its own, by a reader of
+  // its own.
+  HeightGrid current, next;
+  Worker reader(resolve_threads(params->threads) > 1);
+  reader.run([&] { read_strip(0, current); }).get();
+  for (std::size_t first = 0; first < frame.profiles; first += strip) {
+    std::future<void> reading;
+    if (first + strip < frame.profiles)
+      reading = reader.run([&, first] { read_strip(first + strip, next); });
+    // If processing throws, the reader finishes the read before it goes.
+    stream.add_strip(current, first, std::min(strip, frame.profiles - first));
+    if (reading.valid()) reading.get();
+    std::swap(current, next);
+  }
+  return stream.finish();
+}
+
+SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams& params,
+                                    std::size_t strip, const ProgressFn& progress,
+                                    StrokeSink sink) {
+  params.validate();
+  const OrientedFrame frame = make_frame(dem.grid, params.view.azimuth_deg);
+  const ResolvedParams run = adapt_filter(params, dem.grid, dem.read);
+  // Plan-oblique geometry needs the DEM's lowest height before the first stroke: a pass of its
+  // own over the DEM.
+  const double z_ref = run->geometry == Geometry::oblique
+                           ? dem_lowest_height(frame.dem_rows, frame.dem_cols, dem.read)
+                           : 0.0;
+  // Strips bound the memory, and they are faster than the whole DEM: the next strip is read while
+  // the stages work on this one, into memory reused from strip to strip.
+  StripLoader loader(frame, dem.read, run->threads);
+  double reading = 0;
+  SilhouetteResult result = run_in_strips(
+      frame, dem.geotransform, run, z_ref, strip > 0 ? strip : strip_profiles(frame),
+      [&](std::size_t first, std::size_t count, HeightGrid& heights) {
+        const auto start = Clock::now();
+        loader.load(first, count, heights);
+        reading += seconds_since(start);
+      },
+      progress, std::move(sink));
+  result.timings.reading = reading;
+  return result;
+}
+
+SilhouetteResult run_silhouettes(const HeightGrid& oriented, const OrientedFrame& frame,
+                                 const GeoTransform& geotransform, const ResolvedParams& params,
+                                 const ProgressFn& progress, std::optional<double> z_ref,
+                                 StrokeSink sink) {
+  if (oriented.rows() != frame.profiles || oriented.cols() != frame.length) {
+    throw Error("oriented grid does not match its frame");
+  }
+  SilhouetteStream stream(frame, geotransform, params,
+                          z_ref ? *z_ref : plan_oblique_reference(oriented, params.params()),
+                          progress, std::move(sink));
+  stream.add_strip(oriented, 0, frame.profiles, true);
+  return stream.finish();
+}
+
+}  // namespace tsk

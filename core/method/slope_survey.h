@@ -1,0 +1,68 @@
+// The DEM's own slopes, surveyed on its own grid rather than the view's, for the adaptive slope
+// filter (docs/ADAPTIVE_FILTER.md): how steep its terrain is, and the step of its heights. What a
+// survey finds does not depend on the azimuth, so the filter does not move as the view turns.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/method/dem_windows.h"
+
+namespace tsk {
+
+// Counts of slopes (percent) in bins an eighth of an octave wide, from 2^-12 % to 2^12 %; slopes
+// beyond fall in the end bins.
+class SlopeHistogram {
+ public:
+  static constexpr int kPerOctave = 8, kLowestOctave = -12, kOctaves = 24;
+  static constexpr int kBins = kPerOctave * kOctaves;
+
+  void add(float slope_pct);
+  void merge(const SlopeHistogram& other);
+  std::uint64_t total() const { return total_; }
+  // The slope below which a share q of the counted slopes lie, interpolated within its bin;
+  // NaN when nothing was counted.
+  double quantile(double q) const;
+
+ private:
+  std::array<std::uint32_t, kBins> counts_{};
+  std::uint64_t total_ = 0;
+};
+
+// What the adaptive filter needs to know about a DEM's heights.
+struct HeightStep {
+  double quantum = 0.0;    // 1, 0.5, 0.1 or 0.01 when every height is a multiple of it, else 0
+  double tolerance = 0.0;  // half the quantum, or a relative epsilon of the largest height
+};
+
+struct SlopeSurvey {
+  double median_slope_pct = 0.0;  // of the cells that are not flat; NaN when every cell is
+  HeightStep heights;
+  std::size_t cells = 0;  // cells whose slope was measured, flat or not
+  std::size_t flat_cells = 0;
+};
+
+// The slope of cell (r, c) of `z` (cols wide) in percent from its forward differences east and
+// south, or a negative number when it is flat (both steps within `tolerance`) or next to nodata.
+inline float cell_slope_pct(const float* z, std::size_t cols, std::size_t c, double dx, double dy,
+                            double tolerance) {
+  const double here = z[c];
+  const double east = static_cast<double>(z[c + 1]) - here;
+  const double south = static_cast<double>(z[c + cols]) - here;
+  if (!(std::isfinite(east) && std::isfinite(south))) return -2.0f;
+  if (std::fabs(east) <= tolerance && std::fabs(south) <= tolerance) return -1.0f;
+  return static_cast<float>(100.0 * std::hypot(east / dx, south / dy));
+}
+
+// The step of a DEM's heights from a sample of them (NaN for nodata).
+HeightStep height_step(const float* heights, std::size_t count);
+
+// Surveys a DEM of rows x cols cells of dx x dy ground units read through `read`: the whole DEM
+// when it has at most about two million cells, else 64 windows spread evenly over it.
+SlopeSurvey survey_slopes(std::size_t rows, std::size_t cols, double dx, double dy,
+                          const WindowReader& read);
+
+}  // namespace tsk

@@ -1,0 +1,136 @@
+#include "core/panorama/panorama.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "core/base/errors.h"
+#include "core/method/profile_stages.h"
+
+namespace tsk {
+namespace {
+
+// Rays to a batch: about a million samples, at least 16 rays.
+std::size_t batch_rays(std::size_t samples) {
+  return std::clamp<std::size_t>((std::size_t{1} << 20) / std::max<std::size_t>(1, samples), 16,
+                                 4096);
+}
+
+void add_strokes(std::vector<PanoramaStroke>&& strokes, PanoramaResult& result, bool factual) {
+  for (PanoramaStroke& s : strokes) {
+    result.stats.generalised += static_cast<std::size_t>(s.map.cells);
+    ++(factual ? result.stats.factual_strokes : result.stats.formulated_strokes);
+    result.strokes.push_back(std::move(s));
+  }
+}
+
+}  // namespace
+
+void PanoramaParams::validate() const {
+  view.validate();
+  rules.filter.validate();
+  chain.validate();
+  if (!(rules.height_tolerance >= 0.0 && std::isfinite(rules.height_tolerance)))
+    throw Error("the height tolerance must be 0 or more");
+}
+
+PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotransform,
+                               const PanoramaParams& params, const ProgressFn& progress) {
+  params.validate();
+  PanoramaResult result;
+  result.rays = plan_rays(dem, geotransform, params.view);
+  const PanoramaRays& rays = result.rays;
+  if (params.record_visibility) result.samples.assign(rays.rays * result.row_bytes(), 0);
+  const bool full = rays.field.full_circle;
+  PanoramaLinker factual(true, 0, params.chain.min_cells, full, params.cut_leaps);
+  PanoramaLinker formulated(false, params.chain.window, params.chain.min_cells, full,
+                            params.cut_leaps);
+  const unsigned threads = resolve_threads(params.threads);
+  RayRules rules = params.rules;
+  rules.local_scale = params.local_scale.get();
+  using Batch = std::vector<RayChainCells>;
+  const std::size_t size = batch_rays(rays.samples);
+  const auto collect = [&](std::size_t first, Batch& batch) {
+    batch.resize(std::min(size, rays.rays - first));
+    parallel_for(batch.size(), threads, [&](std::size_t lo, std::size_t hi) {
+      RayScratch scratch;
+      for (std::size_t k = lo; k < hi; ++k) {
+        const std::size_t r = first + k;
+        std::uint8_t* record =
+            params.record_visibility ? result.samples.data() + r * result.row_bytes() : nullptr;
+        classify_ray(dem, rays, rules, r, scratch, batch[k], record);
+      }
+    });
+  };
+  std::size_t next_ray = 0;
+  const auto link = [&](const Batch& batch) {
+    for (const RayChainCells& ray : batch) {
+      add_counts(ray.counts, result.stats);
+      factual.add_ray(next_ray, ray.factual, ray.factual_cells, ray.factual_view);
+      formulated.add_ray(next_ray, ray.formulated, ray.formulated_cells, ray.formulated_view);
+      ++next_ray;
+    }
+  };
+  const auto after = [&](std::size_t done) {
+    if (progress && !progress(static_cast<double>(done) / static_cast<double>(rays.rays)))
+      throw Cancelled();
+  };
+  pipeline_batches<Batch>(rays.rays, size, threads > 1, collect, link, after);
+  add_strokes(factual.finish(), result, true);
+  add_strokes(formulated.finish(), result, false);
+  return result;
+}
+
+std::vector<PeakLeader> lead_peaks(const PanoramaResult& result,
+                                   const std::vector<SeenPeak>& seen) {
+  double low = 0.0, high = 0.0;  // the horizontal, when there are no strokes
+  bool first = true;
+  for (const PanoramaStroke& s : result.strokes) {
+    for (const StrokePoint& p : s.view) {
+      low = first ? p.y : std::min(low, p.y);
+      high = first ? p.y : std::max(high, p.y);
+      first = false;
+    }
+  }
+  for (const SeenPeak& p : seen) high = std::max(high, p.elevation_deg);
+  const double row = std::max(0.05, 0.1 * (high - low));
+  return peak_leaders(seen, high, row, result.rays.field.width_deg / 20.0);
+}
+
+Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t rows,
+                                     std::size_t cols, const GeoTransform& geotransform,
+                                     unsigned threads) {
+  const PanoramaRays& rays = result.rays;
+  if (result.samples.size() != rays.rays * result.row_bytes())
+    throw Error("the panorama did not record its samples' visibility");
+  Grid<std::uint8_t> raster(rows, cols, kUnset);
+  const RayLocator locator(rays);
+  const auto code_of = [&](double x, double y) -> std::uint8_t {
+    const double dx = x - rays.observer_x, dy = y - rays.observer_y;
+    // The nearest sample (rounded half up, without libm's calls: this runs for every cell).
+    const double i = static_cast<double>(
+        static_cast<std::int64_t>(std::sqrt(dx * dx + dy * dy) / rays.step + 0.5));
+    if (i < 1.0) return visibility_code::visible;  // the cell under O
+    if (i > static_cast<double>(rays.samples)) return visibility_code::out_of_range;
+    const std::size_t r = locator.ray_of(dx, dy);
+    if (r == rays.rays) return visibility_code::out_of_range;
+    const std::size_t k = static_cast<std::size_t>(i) - 1;
+    const std::uint8_t bits =
+        (result.samples[r * result.row_bytes() + k / 4] >> (2 * (k % 4))) & 3u;
+    return bits == sample_class::visible  ? visibility_code::visible
+           : bits == sample_class::hidden ? visibility_code::hidden
+                                          : visibility_code::out_of_range;
+  };
+  parallel_for(rows, threads, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t row = lo; row < hi; ++row) {
+      for (std::size_t col = 0; col < cols; ++col) {
+        double x, y;
+        geotransform.apply({static_cast<double>(col) + 0.5, static_cast<double>(row) + 0.5}, x, y);
+        raster(row, col) = code_of(x, y);
+      }
+    }
+  });
+  return raster;
+}
+
+}  // namespace tsk

@@ -1,0 +1,62 @@
+// Panorama sketches from a viewpoint (docs/PANORAMA.md): SPEC's method carried over to a point
+// observer, its rays cast all round or over a field of view, on a DEM held whole.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "core/base/parallel.h"
+#include "core/method/params.h"
+#include "core/method/stage_stats.h"
+#include "core/panorama/panorama_peaks.h"
+#include "core/panorama/panorama_ray.h"
+#include "core/panorama/panorama_rays.h"
+#include "core/panorama/panorama_strokes.h"
+
+namespace tsk {
+
+struct PanoramaParams {
+  PanoramaView view;
+  RayRules rules;  // its local_scale is set from local_scale below
+  std::shared_ptr<const SlopeScaleMap> local_scale;  // local adaptivity (adapt_filter's), or null
+  ChainParams chain;
+  unsigned threads = 0;            // 0: one per hardware thread
+  bool record_visibility = false;  // keep every sample's class for visibility_raster()
+  // Cut strokes where their chains leap along the rays (PanoramaLinker): the front ends' drawn
+  // strokes. Off, the strokes are the chains, as SPEC 1.8 makes them.
+  bool cut_leaps = false;
+  void validate() const;
+};
+
+struct PanoramaResult {
+  PanoramaRays rays;
+  StageStats stats;                     // shares of the valid samples in range
+  std::vector<PanoramaStroke> strokes;  // factual first, each class in the order chains started
+  // With record_visibility: two bits per sample (sample_class), row_bytes() per ray.
+  std::vector<std::uint8_t> samples;
+  std::size_t row_bytes() const { return (rays.samples + 3) / 4; }
+};
+
+// Throws Error naming the cause on a view it cannot draw (panorama_rays.h), Cancelled when
+// `progress` says stop.
+PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotransform,
+                               const PanoramaParams& params, const ProgressFn& progress = {});
+
+// The leaders of the peaks `seen` over the strokes of `result`: their labels a little above the
+// highest stroke, in rows a tenth of the strokes' span of elevation apart, each label taking a
+// twentieth of the field of view.
+std::vector<PeakLeader> lead_peaks(const PanoramaResult& result, const std::vector<SeenPeak>& seen);
+
+// The visibility raster on the DEM's grid (docs/PANORAMA.md 2): each cell takes the class of the
+// sample nearest its centre. `result` must hold the samples (record_visibility).
+namespace visibility_code {
+constexpr std::uint8_t hidden = 0, visible = 1, out_of_range = 255;
+}
+Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t rows,
+                                     std::size_t cols, const GeoTransform& geotransform,
+                                     unsigned threads = 0);
+
+}  // namespace tsk

@@ -1,0 +1,201 @@
+#include "io/gpkg/gpkg_line_appender.h"
+
+#include <gdal_priv.h>
+#include <ogrsf_frmts.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "io/gpkg/gpkg_connection.h"
+
+namespace tsk::io {
+namespace {
+
+using gpkg::Connection;
+using gpkg::quoted_identifier;
+
+const char* const kWhat = "writing lines to a GeoPackage";
+
+// Geometry blobs in the machine's byte order, which their flag bytes declare.
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+constexpr unsigned char kLittleEndian = 0;
+#else
+constexpr unsigned char kLittleEndian = 1;
+#endif
+
+template <typename T>
+void append(std::vector<unsigned char>& out, T value) {
+  const std::size_t at = out.size();
+  out.resize(at + sizeof value);
+  std::memcpy(out.data() + at, &value, sizeof value);
+}
+
+}  // namespace
+
+// The connection and the statement that inserts a row.
+class GpkgLineAppender::Rows {
+ public:
+  Rows(GDALDataset& dataset, const std::string& sql) : db(dataset, kWhat), insert(db, sql) {}
+  Connection db;
+  Connection::Statement insert;
+};
+
+GpkgLineAppender::GpkgLineAppender(GDALDataset& dataset, const std::string& table)
+    : dataset_(dataset), table_(table) {
+  OGRLayer* layer = dataset.GetLayerByName(table.c_str());
+  if (!layer) throw Error("no layer '" + table + "' to write to");
+  // GDAL creates the table when it syncs the layer.
+  if (layer->SyncToDisk() != OGRERR_NONE) {
+    throw Error(std::string(kWhat) + " failed: " + CPLGetLastErrorMsg());
+  }
+  std::string columns = quoted_identifier(layer->GetGeometryColumn()), values = "?";
+  const OGRFeatureDefn* fields = layer->GetLayerDefn();
+  for (int k = 0; k < fields->GetFieldCount(); ++k)
+    columns += ", " + quoted_identifier(fields->GetFieldDefn(k)->GetNameRef()), values += ", ?";
+  rows_ = std::make_unique<Rows>(dataset, "INSERT INTO " + quoted_identifier(table) + " (" +
+                                              columns + ") VALUES (" + values + ")");
+  Connection::Statement srs(rows_->db,
+                            "SELECT srs_id FROM gpkg_geometry_columns WHERE table_name = ?");
+  srs.bind(1, table_.c_str());
+  if (!srs.step()) rows_->db.fail("the layer '" + table + "' has no geometry column");
+  const auto srs_id = static_cast<std::int32_t>(srs.integer(0));
+  // GDAL's trigger that counts every insert: costly row by row, and the count is set in finish().
+  Connection::Statement trigger(
+      rows_->db, "SELECT sql FROM sqlite_master WHERE type = 'trigger' AND name = ?");
+  const std::string trigger_name = "trigger_insert_feature_count_" + table;
+  trigger.bind(1, trigger_name.c_str());
+  if (trigger.step()) {
+    count_trigger_ = trigger.text(0);
+    rows_->db.run("DROP TRIGGER " + quoted_identifier(trigger_name));
+  }
+  // The blob's header: magic, version, flags (byte order, an x-y envelope), the CRS id.
+  constexpr unsigned char kEnvelopeXY = 1 << 1;
+  blob_ = {'G', 'P', 0, static_cast<unsigned char>(kLittleEndian | kEnvelopeXY)};
+  append(blob_, srs_id);
+}
+
+GpkgLineAppender::~GpkgLineAppender() = default;
+
+void GpkgLineAppender::set_null(int field) {
+  rows_->insert.bind_null(field + 2);
+}
+
+void GpkgLineAppender::set(int field, std::int64_t value) {
+  rows_->insert.bind(field + 2, value);
+}
+
+void GpkgLineAppender::set(int field, double value) {
+  if (std::isfinite(value)) {
+    rows_->insert.bind(field + 2, value);
+  } else {
+    set_null(field);
+  }
+}
+
+void GpkgLineAppender::set(int field, const char* text) {
+  rows_->insert.bind(field + 2, text);
+}
+
+void GpkgLineAppender::add(const std::vector<StrokePoint>& points, const std::vector<double>& m) {
+  const bool measured = !m.empty();
+  if (measured && m.size() != points.size()) rows_->db.fail("a line with an M value missing");
+  if (points.size() > std::numeric_limits<std::uint32_t>::max()) {
+    rows_->db.fail("a line of " + std::to_string(points.size()) + " points");
+  }
+  double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+  for (const StrokePoint& p : points) {
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  }
+  constexpr std::size_t kHeader = 8;
+  blob_.resize(kHeader);
+  for (double v : {x0, x1, y0, y1}) append(blob_, v);
+  // Well-known binary: byte order, type 2 (LineString) or 2002 (LineString M), the number of
+  // points, the points.
+  append(blob_, kLittleEndian);
+  append(blob_, std::uint32_t{measured ? 2002u : 2u});
+  append(blob_, static_cast<std::uint32_t>(points.size()));
+  static_assert(sizeof(StrokePoint) == 2 * sizeof(double), "points are x, y pairs");
+  if (measured) {
+    std::size_t at = blob_.size();
+    blob_.resize(at + points.size() * 3 * sizeof(double));
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const double xym[3] = {points[k].x, points[k].y, m[k]};
+      std::memcpy(blob_.data() + at, xym, sizeof xym);
+      at += sizeof xym;
+    }
+  } else {
+    const std::size_t at = blob_.size();
+    blob_.resize(at + points.size() * sizeof(StrokePoint));
+    std::memcpy(blob_.data() + at, points.data(), points.size() * sizeof(StrokePoint));
+  }
+  rows_->insert.bind(1, blob_);
+  rows_->insert.step();
+  boxes_.push_back({rows_->db.last_rowid(), x0, x1, y0, y1});
+  min_x_ = std::min(min_x_, x0), max_x_ = std::max(max_x_, x1);
+  min_y_ = std::min(min_y_, y0), max_y_ = std::max(max_y_, y1);
+}
+
+void GpkgLineAppender::finish() {
+  const Connection& db = rows_->db;
+  if (!boxes_.empty()) {
+    Connection::Statement extent(db,
+                                 "UPDATE gpkg_contents SET min_x = ?, min_y = ?, max_x = ?, "
+                                 "max_y = ? WHERE lower(table_name) = lower(?)");
+    extent.bind(1, min_x_).bind(2, min_y_).bind(3, max_x_).bind(4, max_y_).bind(5, table_.c_str());
+    extent.step();
+  }
+  // GDAL keeps a feature count when the file has the table for it.
+  const bool counted =
+      Connection::Statement(
+          db, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'gpkg_ogr_contents'")
+          .step();
+  if (counted) {
+    Connection::Statement count(
+        db, "UPDATE gpkg_ogr_contents SET feature_count = ? WHERE lower(table_name) = lower(?)");
+    count.bind(1, static_cast<std::int64_t>(boxes_.size())).bind(2, table_.c_str());
+    count.step();
+  }
+  if (!count_trigger_.empty()) db.run(count_trigger_);
+  add_gpkg_spatial_index(dataset_, table_, std::move(boxes_));
+  boxes_.clear();
+}
+
+GpkgFileAppender::GpkgFileAppender(const std::string& path, const std::string& table)
+    : path_(path) {
+  GDALAllRegister();
+  CPLErrorReset();
+  dataset_.reset(static_cast<GDALDataset*>(
+      GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE, nullptr, nullptr, nullptr)));
+  if (!dataset_) throw Error("cannot open '" + path + "' to write lines: " + CPLGetLastErrorMsg());
+  OGRLayer* layer = table.empty() && dataset_->GetLayerCount() == 1
+                        ? dataset_->GetLayer(0)
+                        : dataset_->GetLayerByName(table.c_str());
+  if (!layer) throw Error("'" + path + "' has no layer '" + table + "' to write lines to");
+  if (dataset_->StartTransaction() != OGRERR_NONE) {
+    throw Error("cannot start a transaction in '" + path + "': " + CPLGetLastErrorMsg());
+  }
+  lines_ = std::make_unique<GpkgLineAppender>(*dataset_, layer->GetName());
+}
+
+GpkgFileAppender::~GpkgFileAppender() {
+  if (!dataset_) return;
+  lines_.reset();
+  dataset_->RollbackTransaction();
+}
+
+void GpkgFileAppender::finish() {
+  lines_->finish();
+  lines_.reset();  // its statements end before the commit
+  if (dataset_->CommitTransaction() != OGRERR_NONE) {
+    throw Error("cannot commit the lines written to '" + path_ + "': " + CPLGetLastErrorMsg());
+  }
+  CPLErrorReset();
+  dataset_.reset();
+  if (CPLGetLastErrorType() >= CE_Failure) {
+    throw Error("closing '" + path_ + "' failed: " + CPLGetLastErrorMsg());
+  }
+}
+
+}  // namespace tsk::io

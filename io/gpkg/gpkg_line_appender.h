@@ -1,0 +1,74 @@
+// Line features appended to a GeoPackage layer straight through SQLite.
+//
+// GDAL creates the file, the layer and its fields; the rows are then inserted with one prepared
+// statement, each line's GeoPackage geometry blob built in reused memory, rather than through an
+// OGRFeature and GDAL's GeoPackage writer per stroke (102 000 strokes: 0.3 s of a 0.9 s run).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/method/strokes.h"
+#include "io/gpkg/gpkg_spatial_index.h"
+
+class GDALDataset;
+
+namespace tsk::io {
+
+class GpkgLineAppender {
+ public:
+  // `table` is a line layer of `dataset` with no features yet; set() numbers its attribute
+  // fields in the layer's order, and every row sets them all.
+  GpkgLineAppender(GDALDataset& dataset, const std::string& table);
+  ~GpkgLineAppender();
+  GpkgLineAppender(const GpkgLineAppender&) = delete;
+  GpkgLineAppender& operator=(const GpkgLineAppender&) = delete;
+
+  // The value of attribute `field` for the next row.
+  void set_null(int field);
+  void set(int field, std::int64_t value);
+  void set(int field, double value);      // NaN and infinities are written as null
+  void set(int field, const char* text);  // must outlive the next add()
+  // Inserts a row: the line through `points` with the attributes set since the last row, a
+  // LineString M with `m` (one per point) when given, else a LineString.
+  void add(const std::vector<StrokePoint>& points, const std::vector<double>& m = {});
+  // Writes the layer's extent and feature count, and its spatial index in bulk.
+  void finish();
+
+ private:
+  class Rows;
+  GDALDataset& dataset_;
+  std::string table_;
+  std::unique_ptr<Rows> rows_;
+  std::vector<unsigned char> blob_;  // the geometry of the row being added
+  std::vector<IndexBox> boxes_;
+  std::string count_trigger_;  // GDAL's, dropped while rows are inserted
+  double min_x_ = std::numeric_limits<double>::infinity(), max_x_ = -min_x_;
+  double min_y_ = min_x_, max_y_ = -min_x_;
+};
+
+// Lines appended to a layer of a GeoPackage file that someone else created and closed (QGIS's
+// feature sinks, made with no spatial index), in a transaction of its own: whole or not at all.
+class GpkgFileAppender {
+ public:
+  // An empty `table` names the file's only layer.
+  GpkgFileAppender(const std::string& path, const std::string& table);
+  ~GpkgFileAppender();  // without finish(), nothing of the lines is kept
+  GpkgFileAppender(const GpkgFileAppender&) = delete;
+  GpkgFileAppender& operator=(const GpkgFileAppender&) = delete;
+
+  GpkgLineAppender& lines() { return *lines_; }
+  // Writes the layer's extent, count and spatial index, commits and closes the file.
+  void finish();
+
+ private:
+  std::string path_;
+  std::unique_ptr<GDALDataset> dataset_;
+  std::unique_ptr<GpkgLineAppender> lines_;
+};
+
+}  // namespace tsk::io

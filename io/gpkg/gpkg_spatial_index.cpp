@@ -1,0 +1,256 @@
+#include "io/gpkg/gpkg_spatial_index.h"
+
+#include <gdal_priv.h>
+#include <ogrsf_frmts.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <memory>
+
+#include "core/base/errors.h"
+#include "io/gpkg/gpkg_connection.h"
+
+namespace tsk::io {
+namespace {
+
+using gpkg::Connection;
+using gpkg::quoted_identifier;
+using gpkg::quoted_literal;
+
+// A box as the R-tree stores it: float bounds rounded outwards. `ref` is a feature id in a
+// leaf, a child's index in its level otherwise.
+struct Cell {
+  std::int64_t ref = 0;
+  float min_x = 0, max_x = 0, min_y = 0, max_y = 0;
+  double centre_x() const { return 0.5 * (double{min_x} + double{max_x}); }
+  double centre_y() const { return 0.5 * (double{min_y} + double{max_y}); }
+};
+using Node = std::vector<Cell>;
+
+constexpr std::size_t kCellBytes = 8 + 4 * 4;  // the id, then min and max of x and y
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+float round_down(double v) {
+  const auto f = static_cast<float>(v);
+  return double{f} > v ? std::nextafter(f, -kInf) : f;
+}
+
+float round_up(double v) {
+  const auto f = static_cast<float>(v);
+  return double{f} < v ? std::nextafter(f, kInf) : f;
+}
+
+Cell cover(const Node& node, std::int64_t ref) {
+  Cell c{ref, kInf, -kInf, kInf, -kInf};
+  for (const Cell& child : node) {
+    c.min_x = std::min(c.min_x, child.min_x);
+    c.max_x = std::max(c.max_x, child.max_x);
+    c.min_y = std::min(c.min_y, child.min_y);
+    c.max_y = std::max(c.max_y, child.max_y);
+  }
+  return c;
+}
+
+// Sort-Tile-Recursive: vertical slices by centre x, each cut into nodes by centre y, so that a
+// node holds boxes that lie close together.
+std::vector<Node> tile(std::vector<Cell> cells, std::size_t per_node) {
+  const std::size_t node_count = (cells.size() + per_node - 1) / per_node;
+  auto slices = static_cast<std::size_t>(std::sqrt(static_cast<double>(node_count)));
+  while (slices * slices < node_count) ++slices;
+  const std::size_t slice_cells = std::max<std::size_t>(1, slices) * per_node;
+  std::sort(cells.begin(), cells.end(), [](const Cell& a, const Cell& b) {
+    return a.centre_x() != b.centre_x() ? a.centre_x() < b.centre_x() : a.ref < b.ref;
+  });
+  const auto at = [&cells](std::size_t i) {
+    return cells.begin() + static_cast<std::ptrdiff_t>(i);
+  };
+  std::vector<Node> nodes;
+  for (std::size_t start = 0; start < cells.size(); start += slice_cells) {
+    const std::size_t end = std::min(cells.size(), start + slice_cells);
+    std::sort(at(start), at(end), [](const Cell& a, const Cell& b) {
+      return a.centre_y() != b.centre_y() ? a.centre_y() < b.centre_y() : a.ref < b.ref;
+    });
+    for (std::size_t k = start; k < end; k += per_node) {
+      nodes.emplace_back(at(k), at(std::min(end, k + per_node)));
+    }
+  }
+  return nodes;
+}
+
+void put_big_endian(unsigned char* out, std::uint64_t value, int bytes) {
+  for (int k = bytes - 1; k >= 0; --k) {
+    out[k] = static_cast<unsigned char>(value & 0xff);
+    value >>= 8;
+  }
+}
+
+void put_float(unsigned char* out, float value) {
+  std::uint32_t bits = 0;
+  std::memcpy(&bits, &value, sizeof bits);
+  put_big_endian(out, bits, 4);
+}
+
+}  // namespace
+
+PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes) {
+  if (node_bytes < 4 + 2 * kCellBytes) {
+    throw Error("R-tree nodes of " + std::to_string(node_bytes) + " bytes cannot hold two boxes");
+  }
+  const std::size_t per_node = (node_bytes - 4) / kCellBytes;
+
+  std::vector<Cell> leaves(boxes.size());
+  std::transform(boxes.begin(), boxes.end(), leaves.begin(), [](const IndexBox& b) {
+    return Cell{b.id, round_down(b.min_x), round_up(b.max_x), round_down(b.min_y),
+                round_up(b.max_y)};
+  });
+  boxes = {};
+  // levels[0] holds the leaves, levels.back() the root alone.
+  std::vector<std::vector<Node>> levels{leaves.empty() ? std::vector<Node>(1)
+                                                       : tile(std::move(leaves), per_node)};
+  while (levels.back().size() > 1) {
+    const std::vector<Node>& below = levels.back();
+    std::vector<Cell> covers;
+    covers.reserve(below.size());
+    for (std::size_t i = 0; i < below.size(); ++i) {
+      covers.push_back(cover(below[i], static_cast<std::int64_t>(i)));
+    }
+    levels.push_back(tile(std::move(covers), per_node));
+  }
+
+  // Numbers top down from the root's 1; each node's parent from the cells above it.
+  std::vector<std::vector<std::int64_t>> number(levels.size());
+  std::vector<std::vector<std::int64_t>> parent(levels.size());
+  std::int64_t next = 1;
+  for (std::size_t level = levels.size(); level-- > 0;) {
+    number[level].resize(levels[level].size());
+    parent[level].assign(levels[level].size(), 0);
+    for (auto& n : number[level]) n = next++;
+    if (level + 1 < levels.size()) {
+      for (std::size_t j = 0; j < levels[level + 1].size(); ++j) {
+        for (const Cell& c : levels[level + 1][j]) {
+          parent[level][static_cast<std::size_t>(c.ref)] = number[level + 1][j];
+        }
+      }
+    }
+  }
+
+  PackedRtree packed;
+  packed.depth = static_cast<int>(levels.size()) - 1;
+  for (std::size_t level = levels.size(); level-- > 0;) {
+    for (std::size_t i = 0; i < levels[level].size(); ++i) {
+      const Node& node = levels[level][i];
+      RtreeNode out{number[level][i], parent[level][i], std::vector<unsigned char>(node_bytes)};
+      if (out.number == 1) put_big_endian(out.blob.data(), static_cast<unsigned>(packed.depth), 2);
+      put_big_endian(out.blob.data() + 2, node.size(), 2);
+      for (std::size_t k = 0; k < node.size(); ++k) {
+        const Cell& c = node[k];
+        const std::int64_t ref =
+            level == 0 ? c.ref : number[level - 1][static_cast<std::size_t>(c.ref)];
+        unsigned char* cell = out.blob.data() + 4 + k * kCellBytes;
+        put_big_endian(cell, static_cast<std::uint64_t>(ref), 8);
+        put_float(cell + 8, c.min_x);
+        put_float(cell + 12, c.max_x);
+        put_float(cell + 16, c.min_y);
+        put_float(cell + 20, c.max_y);
+        if (level == 0) packed.leaf_of.emplace_back(c.ref, out.number);
+      }
+      packed.nodes.push_back(std::move(out));
+    }
+  }
+  return packed;
+}
+
+namespace {
+
+// The triggers of the GeoPackage R-tree extension (GeoPackage 1.2, F.3) on R-tree `r`, as GDAL 3.6
+// makes them.
+std::vector<std::string> rtree_triggers(const std::string& table, const std::string& column,
+                                        const std::string& fid, const std::string& r) {
+  const std::string t = quoted_identifier(table), c = quoted_identifier(column),
+                    i = quoted_identifier(fid), rtree = quoted_identifier(r);
+  const std::string upsert = "INSERT OR REPLACE INTO " + rtree + " VALUES (NEW." + i +
+                             ",ST_MinX(NEW." + c + "), ST_MaxX(NEW." + c + "),ST_MinY(NEW." + c +
+                             "), ST_MaxY(NEW." + c + "));";
+  const std::string has_geometry = "(NEW." + c + " NOTNULL AND NOT ST_IsEmpty(NEW." + c + "))";
+  const std::string no_geometry = "(NEW." + c + " ISNULL OR ST_IsEmpty(NEW." + c + "))";
+  const auto trigger = [&](const std::string& name, const std::string& when,
+                           const std::string& body) {
+    return "CREATE TRIGGER " + quoted_identifier(r + "_" + name) + " " + when + " BEGIN " + body +
+           " END";
+  };
+  return {
+      trigger("insert",
+              "AFTER INSERT ON " + t + " WHEN (new." + c + " NOT NULL AND NOT ST_IsEmpty(NEW." + c +
+                  "))",
+              upsert),
+      trigger("update1",
+              "AFTER UPDATE OF " + c + " ON " + t + " WHEN OLD." + i + " = NEW." + i + " AND " +
+                  has_geometry,
+              upsert),
+      trigger("update2",
+              "AFTER UPDATE OF " + c + " ON " + t + " WHEN OLD." + i + " = NEW." + i + " AND " +
+                  no_geometry,
+              "DELETE FROM " + rtree + " WHERE id = OLD." + i + ";"),
+      trigger("update3",
+              "AFTER UPDATE ON " + t + " WHEN OLD." + i + " != NEW." + i + " AND " + has_geometry,
+              "DELETE FROM " + rtree + " WHERE id = OLD." + i + "; " + upsert),
+      trigger("update4",
+              "AFTER UPDATE ON " + t + " WHEN OLD." + i + " != NEW." + i + " AND " + no_geometry,
+              "DELETE FROM " + rtree + " WHERE id IN (OLD." + i + ", NEW." + i + ");"),
+      trigger("delete", "AFTER DELETE ON " + t + " WHEN old." + c + " NOT NULL",
+              "DELETE FROM " + rtree + " WHERE id = OLD." + i + ";"),
+  };
+}
+
+}  // namespace
+
+void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
+                            std::vector<IndexBox> boxes) {
+  OGRLayer* layer = dataset.GetLayerByName(table.c_str());
+  if (!layer) throw Error("no layer '" + table + "' to index");
+  const std::string column = layer->GetGeometryColumn();
+  const std::string fid = *layer->GetFIDColumn() ? layer->GetFIDColumn() : "fid";
+  const std::string rtree = "rtree_" + table + "_" + column;
+  const Connection db(dataset, "building a GeoPackage spatial index");
+
+  db.run("CREATE VIRTUAL TABLE " + quoted_identifier(rtree) +
+         " USING rtree(id, minx, maxx, miny, maxy)");
+  std::size_t node_bytes = 0;
+  {
+    Connection::Statement root(
+        db, "SELECT length(data) FROM " + quoted_identifier(rtree + "_node") + " WHERE nodeno = 1");
+    if (root.step()) node_bytes = static_cast<std::size_t>(root.integer(0));
+  }
+  const PackedRtree packed = pack_rtree(std::move(boxes), node_bytes);
+  db.run("DELETE FROM " + quoted_identifier(rtree + "_node"));
+  Connection::Statement node(
+      db, "INSERT INTO " + quoted_identifier(rtree + "_node") + "(nodeno, data) VALUES (?, ?)");
+  Connection::Statement parent(db, "INSERT INTO " + quoted_identifier(rtree + "_parent") +
+                                       "(nodeno, parentnode) VALUES (?, ?)");
+  for (const RtreeNode& n : packed.nodes) {
+    node.bind(1, n.number).bind(2, n.blob).step();
+    if (n.parent != 0) parent.bind(1, n.number).bind(2, n.parent).step();
+  }
+  // In the order of the ids, so that each row lands at the end of the table's B-tree.
+  std::vector<std::pair<std::int64_t, std::int64_t>> leaf_of = packed.leaf_of;
+  std::sort(leaf_of.begin(), leaf_of.end());
+  Connection::Statement row(
+      db, "INSERT INTO " + quoted_identifier(rtree + "_rowid") + "(rowid, nodeno) VALUES (?, ?)");
+  for (const auto& [id, leaf] : leaf_of) row.bind(1, id).bind(2, leaf).step();
+
+  for (const std::string& trigger : rtree_triggers(table, column, fid, rtree)) db.run(trigger);
+  db.run(
+      "CREATE TABLE IF NOT EXISTS gpkg_extensions (table_name TEXT,column_name TEXT,"
+      "extension_name TEXT NOT NULL,definition TEXT NOT NULL,scope TEXT NOT NULL,"
+      "CONSTRAINT ge_tce UNIQUE (table_name, column_name, extension_name))");
+  db.run(
+      "INSERT INTO gpkg_extensions (table_name, column_name, extension_name, definition, scope) "
+      "VALUES (" +
+      quoted_literal(table) + ", " + quoted_literal(column) +
+      ", 'gpkg_rtree_index', 'http://www.geopackage.org/spec120/#extension_rtree', "
+      "'write-only')");
+}
+
+}  // namespace tsk::io

@@ -1,0 +1,141 @@
+#include "io/pages/preview.h"
+
+#include <gdal_priv.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <locale>
+#include <sstream>
+#include <vector>
+
+#include "io/pages/sketch_page.h"
+#include "io/pages/vector_art.h"
+#include "io/read/gdal_util.h"
+#include "io/write/output_files.h"
+
+namespace tsk::io {
+namespace {
+
+// A grey-level canvas on which pens darken pixels with anti-aliased discs.
+class Canvas {
+ public:
+  Canvas(int width, int height)
+      : width_(width), height_(height), ink_(static_cast<std::size_t>(width) * height, 0.f) {}
+
+  void line(double x0, double y0, double x1, double y1, double radius, float darkness) {
+    const double len = std::hypot(x1 - x0, y1 - y0);
+    const int steps = std::max(1, static_cast<int>(std::ceil(len / 0.35)));
+    for (int k = 0; k <= steps; ++k) {
+      const double t = static_cast<double>(k) / steps;
+      dot(x0 + t * (x1 - x0), y0 + t * (y1 - y0), radius, darkness);
+    }
+  }
+
+  std::vector<GByte> pixels() const {
+    std::vector<GByte> out(ink_.size());
+    for (std::size_t k = 0; k < ink_.size(); ++k) {
+      out[k] = static_cast<GByte>(std::lround(255.0 * (1.0 - std::min(1.f, ink_[k]))));
+    }
+    return out;
+  }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  void dot(double cx, double cy, double radius, float darkness) {
+    const int x_lo = std::max(0, static_cast<int>(std::floor(cx - radius - 1)));
+    const int x_hi = std::min(width_ - 1, static_cast<int>(std::ceil(cx + radius + 1)));
+    const int y_lo = std::max(0, static_cast<int>(std::floor(cy - radius - 1)));
+    const int y_hi = std::min(height_ - 1, static_cast<int>(std::ceil(cy + radius + 1)));
+    for (int y = y_lo; y <= y_hi; ++y) {
+      for (int x = x_lo; x <= x_hi; ++x) {
+        const double dist = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
+        const double coverage = std::clamp(radius + 0.5 - dist, 0.0, 1.0);
+        float& v = ink_[static_cast<std::size_t>(y) * width_ + x];
+        v = std::max(v, static_cast<float>(coverage) * darkness);
+      }
+    }
+  }
+
+  int width_, height_;
+  std::vector<float> ink_;
+};
+
+void write_png_preview(const std::string& path, SketchPage page) {
+  // A paper page is drawn at 150 dots per inch.
+  if (page.millimetres) {
+    const double px = 150.0 / 25.4;
+    page.width = std::ceil(page.width * px), page.height = std::ceil(page.height * px);
+    for (PagePath& p : page.paths) {
+      for (StrokePoint& q : p.points) q.x *= px, q.y *= px;
+      for (double& w : p.widths) w *= px;
+    }
+    for (PageLabel& l : page.labels)
+      for (StrokePoint* q : {&l.from, &l.to}) q->x *= px, q->y *= px;
+  }
+  Canvas canvas(static_cast<int>(page.width), static_cast<int>(page.height));
+  // Formulated first so factual strokes stay on top.
+  for (StrokeClass cls : {StrokeClass::formulated, StrokeClass::factual}) {
+    const bool factual = cls == StrokeClass::factual;
+    for (const PagePath& s : page.paths) {
+      if (s.cls != cls) continue;
+      for (std::size_t k = 1; k < s.points.size(); ++k) {
+        const double radius = 0.25 * (s.widths[k - 1] + s.widths[k]);
+        canvas.line(s.points[k - 1].x, s.points[k - 1].y, s.points[k].x, s.points[k].y, radius,
+                    static_cast<float>(s.ink) * (factual ? 1.f : 0.6f));
+      }
+    }
+  }
+  // Labels' leaders: a picture has no text, so its peaks show as leaders alone.
+  for (const PageLabel& l : page.labels) canvas.line(l.from.x, l.from.y, l.to.x, l.to.y, 0.5, 0.5f);
+  GDALAllRegister();
+  GdalErrorCapture capture;
+  std::vector<GByte> pixels = canvas.pixels();
+  GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
+  GDALDriver* png = GetGDALDriverManager()->GetDriverByName("PNG");
+  if (!mem || !png) throw Error("GDAL has no MEM or PNG driver");
+  const int width = canvas.width(), height = canvas.height();
+  DatasetPtr image(mem->Create("", width, height, 1, GDT_Byte, nullptr));
+  if (!image || image->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, width, height, pixels.data(),
+                                                  width, height, GDT_Byte, 0, 0) != CE_None) {
+    throw Error("cannot draw the preview: " + capture.message());
+  }
+  write_atomically(path, [&](const std::filesystem::path& staged) {
+    DatasetPtr out(png->CreateCopy(staged.c_str(), image.get(), FALSE, nullptr, nullptr, nullptr));
+    if (!out) throw Error("cannot write preview '" + path + "': " + capture.message());
+  });
+}
+
+}  // namespace
+
+PlotterReport write_preview(const std::string& path, const SilhouetteResult& result,
+                            const HeightGrid& z, const OrientedFrame& frame,
+                            const GeoTransform& geotransform, const ViewParams& view,
+                            Geometry geometry, const PageOptions& options) {
+  return write_page(path, lay_out_sketch(result, z, frame, geotransform, view, geometry, options),
+                    options);
+}
+
+PlotterReport write_page(const std::string& path, const SketchPage& page,
+                         const PageOptions& options) {
+  const std::string ext = lowercase_extension(path);
+  if (options.plotter && ext == ".png")
+    throw Error("--plotter draws vector art for a pen: give --preview a .svg or .pdf name");
+  if (ext == ".png") {
+    write_png_preview(path, page);
+    return {};
+  }
+  PlotterPage plotter;
+  if (options.plotter) plotter = plan_plotter_page(page);
+  const PlotterPage* pen = options.plotter ? &plotter : nullptr;
+  if (ext == ".pdf") {
+    write_pdf(path, page, pen);
+  } else {
+    write_svg(path, page, pen);
+  }
+  return plotter.report;
+}
+
+}  // namespace tsk::io

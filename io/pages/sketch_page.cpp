@@ -1,0 +1,182 @@
+#include "io/pages/sketch_page.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "core/base/errors.h"
+#include "core/method/plan_oblique.h"
+#include "core/method/resample.h"
+#include "io/write/output_files.h"
+
+namespace tsk::io {
+namespace {
+
+// Full widths of the classes' strokes: exact strokes have them throughout, drawn strokes at a
+// weight of 1. Pixels of the 1600 px picture, and millimetres on a page.
+struct ClassWidths {
+  double factual, formulated;
+};
+constexpr ClassWidths kExactPx{2.2, 1.1}, kDrawnPx{3.4, 1.9};
+constexpr ClassWidths kExactMm{0.5, 0.25}, kDrawnMm{0.8, 0.45};
+constexpr double kMarginPx = 10.0, kMarginMm = 10.0;
+
+// Where the sketch lies before it is put on the page: x across the view and y up the
+// plan-oblique position along it, ground units, from the view's left and lowest height.
+class Plot {
+ public:
+  Plot(const HeightGrid& z, const OrientedFrame& frame, const GeoTransform& geotransform,
+       const ViewParams& view, Geometry geometry, double z_ref)
+      : z_(z), frame_(frame), geotransform_(geotransform), geometry_(geometry) {
+    double z_min = std::numeric_limits<double>::infinity(), z_max = -z_min;
+    for (std::size_t k = 0; k < z.size(); ++k) {
+      if (!is_data(z.data()[k])) continue;
+      z_min = std::min(z_min, static_cast<double>(z.data()[k]));
+      z_max = std::max(z_max, static_cast<double>(z.data()[k]));
+    }
+    if (!std::isfinite(z_min)) z_min = z_max = 0.0;
+    shift_ = PlanObliqueShift(view, frame.d, z_min);
+    z_min_ = z_min;
+    // Points already in plan-oblique geometry were shifted from the run's reference height.
+    reference_cells_ = shift_(0.0, z_ref);
+    width_ = std::max(frame.w, static_cast<double>(frame.profiles) * frame.w);
+    height_ = shift_(static_cast<double>(frame.length), z_max) * frame.d;
+  }
+  double width() const { return width_; }
+  double height() const { return height_; }
+
+  StrokePoint cell(const ChainCell& c) const {
+    const double zc =
+        static_cast<double>(z_(static_cast<std::size_t>(c.p), static_cast<std::size_t>(c.i)));
+    return {(c.p + 0.5) * frame_.w, shift_(c.i + 0.5, zc) * frame_.d};
+  }
+  // A drawn stroke's point, in the run's geometry, carried back to its profile and place.
+  StrokePoint point(StrokePoint at) const {
+    double p = 0.0, s = 0.0;
+    frame_.from_pixel(geotransform_.to_pixel(at.x, at.y), p, s);
+    double along = s + 0.5 + reference_cells_;
+    if (geometry_ == Geometry::map) along = shift_(s + 0.5, height_at(p, s));
+    return {(p + 0.5) * frame_.w, along * frame_.d};
+  }
+
+ private:
+  // The height at a place along a profile: bilinear between cells, the nearest cell's next to
+  // nodata or the grid's edge.
+  double height_at(double p, double s) const {
+    const float between = sample_bilinear(z_, {s + 0.5, p + 0.5});
+    if (is_data(between)) return between;
+    const auto row =
+        static_cast<std::size_t>(std::clamp(std::lround(p), 0L, static_cast<long>(z_.rows()) - 1));
+    const auto col =
+        static_cast<std::size_t>(std::clamp(std::lround(s), 0L, static_cast<long>(z_.cols()) - 1));
+    const float nearest = z_(row, col);
+    return is_data(nearest) ? nearest : z_min_;
+  }
+
+  const HeightGrid& z_;
+  const OrientedFrame& frame_;
+  const GeoTransform& geotransform_;
+  Geometry geometry_;
+  PlanObliqueShift shift_{ViewParams{}, 1.0, 0.0};
+  double reference_cells_ = 0.0, width_ = 0.0, height_ = 0.0, z_min_ = 0.0;
+};
+
+// How plot coordinates become page coordinates.
+struct Placement {
+  double scale, left, bottom, height;
+  StrokePoint place(StrokePoint plot) const {
+    return {left + plot.x * scale, height - bottom - plot.y * scale};
+  }
+};
+
+// The 1600 px picture (the preview before pages): as tall as the sketch needs.
+Placement pixel_placement(const Plot& plot, const PageOptions& options, SketchPage& page) {
+  page.width = std::clamp(options.width_px, 64, 20000);
+  const double scale = (page.width - 2.0 * kMarginPx) / plot.width();
+  page.height = std::clamp(
+      static_cast<int>(std::ceil(plot.height() * scale)) + 2 * static_cast<int>(kMarginPx), 64,
+      20000);
+  return {scale, kMarginPx, kMarginPx, page.height};
+}
+
+// A page of paper: turned to suit the sketch, which is fitted or drawn at the scale asked for
+// and centred.
+Placement paper_placement(const Plot& plot, const PageOptions& options, SketchPage& page) {
+  const PageSize size = parse_page_size(options.size);
+  const double short_side = std::min(size.width_mm, size.height_mm);
+  const double long_side = std::max(size.width_mm, size.height_mm);
+  const bool landscape = plot.width() >= plot.height();
+  page.width = landscape ? long_side : short_side;
+  page.height = landscape ? short_side : long_side;
+  page.millimetres = true;
+  const double room_w = page.width - 2 * kMarginMm, room_h = page.height - 2 * kMarginMm;
+  const double fit = std::min(room_w / plot.width(), room_h / plot.height());
+  const double scale = options.scale > 0.0 ? 1000.0 / options.scale : fit;  // mm per ground unit
+  if (scale > fit * (1.0 + 1e-9)) {
+    throw Error("at 1:" + number_text(options.scale) + " the sketch is " +
+                number_text(std::round(plot.width() * scale)) + " x " +
+                number_text(std::round(plot.height() * scale)) + " mm, larger than the page's " +
+                number_text(room_w) + " x " + number_text(room_h) +
+                " mm inside its margins; give --page-scale " +
+                number_text(std::ceil(1000.0 / fit)) + " or more, or a larger --page");
+  }
+  return {scale, (page.width - plot.width() * scale) / 2, (page.height - plot.height() * scale) / 2,
+          page.height};
+}
+
+}  // namespace
+
+PageSize parse_page_size(const std::string& text) {
+  static const std::map<std::string, PageSize> named = {
+      {"a4", {210, 297}},         {"a3", {297, 420}},  {"a2", {420, 594}},
+      {"a1", {594, 841}},         {"a0", {841, 1189}}, {"letter", {215.9, 279.4}},
+      {"tabloid", {279.4, 431.8}}};
+  std::string lower;
+  for (char c : text) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (const auto found = named.find(lower); found != named.end()) return found->second;
+  const std::size_t x = lower.find('x');
+  try {
+    std::size_t used_w = 0, used_h = 0;
+    if (x == std::string::npos) throw std::invalid_argument("no x");
+    const double w = std::stod(lower.substr(0, x), &used_w);
+    const double h = std::stod(lower.substr(x + 1), &used_h);
+    if (used_w == x && used_h == lower.size() - x - 1 && w >= 50 && w <= 5000 && h >= 50 &&
+        h <= 5000)
+      return {w, h};
+  } catch (const std::exception&) {
+  }
+  throw Error(
+      "--page must be A4, A3, A2, A1, A0, letter, tabloid or WIDTHxHEIGHT in millimetres "
+      "(each 50 to 5000), got '" +
+      text + "'");
+}
+
+SketchPage lay_out_sketch(const SilhouetteResult& result, const HeightGrid& z,
+                          const OrientedFrame& frame, const GeoTransform& geotransform,
+                          const ViewParams& view, Geometry geometry, const PageOptions& options) {
+  const Plot plot(z, frame, geotransform, view, geometry, result.z_ref);
+  SketchPage page;
+  const Placement at = options.size.empty() ? pixel_placement(plot, options, page)
+                                            : paper_placement(plot, options, page);
+  for (const Stroke& s : result.strokes) {
+    const bool drawn = !s.weights.empty();
+    const ClassWidths widths =
+        page.millimetres ? (drawn ? kDrawnMm : kExactMm) : (drawn ? kDrawnPx : kExactPx);
+    const double full = s.cls == StrokeClass::factual ? widths.factual : widths.formulated;
+    PagePath path{s.cls, {}, {}};
+    if (drawn) {
+      for (std::size_t k = 0; k < s.points.size(); ++k) {
+        path.points.push_back(at.place(plot.point(s.points[k])));
+        path.widths.push_back(full * s.weights[k]);
+      }
+    } else {
+      for (const ChainCell& c : s.chain) path.points.push_back(at.place(plot.cell(c)));
+      path.widths.assign(path.points.size(), full);
+    }
+    page.paths.push_back(std::move(path));
+  }
+  return page;
+}
+
+}  // namespace tsk::io

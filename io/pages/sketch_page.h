@@ -1,0 +1,54 @@
+// The sketch laid out on a page for the previews: every stroke as a path of page points with a
+// width at each, far side up, as the raised viewer sees it (the thesis's profile plot).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/method/silhouettes.h"
+
+namespace tsk::io {
+
+struct PageOptions {
+  int width_px = 1600;   // without a page size: the picture's width in pixels
+  std::string size;      // A4, A3, A2, A1, A0, letter, tabloid or WxH in millimetres; empty: none
+  double scale = 0.0;    // the page at 1:scale of the ground; 0: the sketch fits the page
+  bool plotter = false;  // single-line paths for a pen plotter (vector art only)
+};
+
+// A page size in millimetres, portrait; throws Error naming what is wrong.
+struct PageSize {
+  double width_mm, height_mm;
+};
+PageSize parse_page_size(const std::string& text);
+
+struct PagePath {
+  StrokeClass cls;
+  std::vector<StrokePoint> points;  // page units, y down
+  std::vector<double> widths;       // page units, at each point
+  double ink = 1.0;  // share of the class's colour over white: far panorama strokes are lighter
+};
+
+// A label with its leader: a line from `from` to `to`, the text on from `to`, in page units.
+struct PageLabel {
+  StrokePoint from, to;
+  std::string text;  // UTF-8
+};
+
+struct SketchPage {
+  double width = 0.0, height = 0.0;  // page units: millimetres with a page size, else pixels
+  bool millimetres = false;
+  std::vector<PagePath> paths;                                    // in the order of the strokes
+  std::vector<PageLabel> labels;                                  // a panorama's peaks
+  double label_size() const { return millimetres ? 3.0 : 13.0; }  // the text's height
+};
+
+// Lays the strokes of `result` out on the page. Exact strokes are drawn through their cells'
+// centres; drawn strokes through their points, carried back into the view (the DEM's heights
+// between cells for map geometry), with their weights as widths. Throws Error when the sketch
+// at the scale asked for does not fit the page.
+SketchPage lay_out_sketch(const SilhouetteResult& result, const HeightGrid& z,
+                          const OrientedFrame& frame, const GeoTransform& geotransform,
+                          const ViewParams& view, Geometry geometry, const PageOptions& options);
+
+}  // namespace tsk::io

@@ -1,0 +1,287 @@
+#include "io/pages/vector_art.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <locale>
+#include <sstream>
+#include <string>
+
+#include "core/drawn/stroke_outline.h"
+#include "io/write/output_files.h"
+
+namespace tsk::io {
+namespace {
+
+constexpr StrokeClass kClassOrder[] = {StrokeClass::formulated, StrokeClass::factual};
+
+struct ClassLook {
+  const char* id;
+  const char* label;
+  const char* svg_colour;
+  double rgb[3];
+};
+
+ClassLook look(StrokeClass cls) {
+  if (cls == StrokeClass::factual)
+    return {"factual", "Factual silhouettes", "#111111", {0.067, 0.067, 0.067}};
+  return {"formulated", "Formulated silhouettes", "#6e3e1c", {0.431, 0.243, 0.110}};
+}
+
+bool uniform(const std::vector<double>& widths) {
+  return std::all_of(widths.begin(), widths.end(), [&](double w) { return w == widths.front(); });
+}
+
+// Calls draw(points, closed, width, ink) for each path of class `cls`: a line of one width, or a
+// tapered stroke's filled outline (width 0).
+template <typename Draw>
+void class_paths(const SketchPage& page, const PlotterPage* plotter, std::size_t class_index,
+                 Draw&& draw) {
+  if (plotter) {
+    for (const auto& line : plotter->classes[class_index].paths) draw(line, false, 0.0, 1.0);
+    return;
+  }
+  for (const PagePath& p : page.paths) {
+    if (p.cls != kClassOrder[class_index] || p.points.empty()) continue;
+    if (uniform(p.widths)) {
+      draw(p.points, false, p.widths.front(), p.ink);
+    } else {
+      draw(tapered_outline(p.points, p.widths), true, 0.0, p.ink);
+    }
+  }
+}
+
+// The class's colour `ink` of the way from white, each channel from 0 to 1.
+std::array<double, 3> inked(const ClassLook& l, double ink) {
+  std::array<double, 3> rgb{};
+  for (int k = 0; k < 3; ++k) rgb[k] = 1.0 - ink * (1.0 - l.rgb[k]);
+  return rgb;
+}
+
+// The colour as SVG writes it: the class's own at full ink.
+std::string svg_colour(const ClassLook& l, double ink) {
+  if (ink == 1.0) return l.svg_colour;
+  const std::array<double, 3> rgb = inked(l, ink);
+  char hex[8];
+  std::snprintf(hex, sizeof hex, "#%02x%02x%02x", static_cast<unsigned>(std::lround(rgb[0] * 255)),
+                static_cast<unsigned>(std::lround(rgb[1] * 255)),
+                static_cast<unsigned>(std::lround(rgb[2] * 255)));
+  return hex;
+}
+
+// Numbers as vector formats want them: a point for the decimal, no exponent.
+std::ostringstream number_stream() {
+  std::ostringstream out;
+  out.imbue(std::locale::classic());
+  out.setf(std::ios::fixed);
+  out.precision(3);
+  return out;
+}
+
+}  // namespace
+
+// Text as XML holds it.
+std::string xml_text(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+// The labels' layer: grey leaders, names in a sans-serif face.
+void write_svg_labels(std::ostringstream& svg, const SketchPage& page) {
+  if (page.labels.empty()) return;
+  svg << "<g id=\"labels\" inkscape:label=\"Peaks\" inkscape:groupmode=\"layer\" "
+         "font-family=\"sans-serif\" font-size=\""
+      << page.label_size() << "\" fill=\"#333333\">\n";
+  for (const PageLabel& l : page.labels) {
+    svg << "<path d=\"M" << l.from.x << " " << l.from.y << " L" << l.to.x << " " << l.to.y
+        << "\" fill=\"none\" stroke=\"#777777\" stroke-width=\"" << page.label_size() / 16
+        << "\"/>\n<text x=\"" << l.to.x << "\" y=\"" << l.to.y << "\">" << xml_text(l.text)
+        << "</text>\n";
+  }
+  svg << "</g>\n";
+}
+
+// Text as a PDF string in WinAnsi (Latin-1 for the letters it shares): UTF-8 decoded, what
+// Latin-1 lacks as '?', and the string's special characters escaped.
+std::string pdf_text(const std::string& text) {
+  std::string out;
+  for (std::size_t k = 0; k < text.size(); ++k) {
+    unsigned code = static_cast<unsigned char>(text[k]);
+    if (code >= 0xc0 && code < 0xe0 && k + 1 < text.size()) {
+      code = ((code & 0x1fu) << 6) | (static_cast<unsigned char>(text[++k]) & 0x3fu);
+    } else if (code >= 0x80) {
+      while (k + 1 < text.size() && (static_cast<unsigned char>(text[k + 1]) & 0xc0u) == 0x80u) ++k;
+      code = '?';
+    }
+    if (code > 0xff) code = '?';
+    if (code == '(' || code == ')' || code == '\\') out += '\\';
+    out += static_cast<char>(code);
+  }
+  return out;
+}
+
+PlotterPage plan_plotter_page(const SketchPage& page) {
+  PlotterPage plotter;
+  // Ends closer than a fifth of a millimetre (or of a pixel's width, 0.75 px) meet.
+  const double meet = page.millimetres ? 0.2 : 0.75;
+  for (StrokeClass cls : kClassOrder) {
+    std::vector<std::vector<StrokePoint>> lines;
+    for (const PagePath& p : page.paths)
+      if (p.cls == cls && !p.points.empty()) lines.push_back(p.points);
+    plotter.report.strokes += lines.size();
+    PenPlan plan = plan_pen_paths(std::move(lines), meet, {0.0, 0.0});
+    plotter.report.travel_before += plan.travel_before;
+    plotter.report.travel_after += plan.travel_after;
+    plotter.report.paths += plan.paths.size();
+    plotter.classes.push_back(std::move(plan));
+  }
+  return plotter;
+}
+
+void write_svg(const std::string& path, const SketchPage& page, const PlotterPage* plotter) {
+  std::ostringstream svg = number_stream();
+  const char* unit = page.millimetres ? "mm" : "";
+  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+         "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\""
+      << page.width << unit << "\" height=\"" << page.height << unit << "\" viewBox=\"0 0 "
+      << page.width << " " << page.height << "\">\n";
+  if (!plotter) svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  for (std::size_t c = 0; c < 2; ++c) {
+    const ClassLook l = look(kClassOrder[c]);
+    svg << "<g id=\"" << l.id << "\" inkscape:label=\"" << l.label
+        << "\" inkscape:groupmode=\"layer\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+    class_paths(page, plotter, c,
+                [&](const std::vector<StrokePoint>& pts, bool closed, double w, double ink) {
+                  svg << "<path d=\"";
+                  for (std::size_t k = 0; k < pts.size(); ++k)
+                    svg << (k == 0 ? "M" : " L") << pts[k].x << " " << pts[k].y;
+                  if (closed) {
+                    svg << " Z\" fill=\"" << svg_colour(l, ink) << "\" stroke=\"none\"/>\n";
+                  } else {
+                    svg << "\" fill=\"none\" stroke=\"" << svg_colour(l, ink)
+                        << "\" stroke-width=\"" << (plotter ? (page.millimetres ? 0.3 : 1.0) : w)
+                        << "\"/>\n";
+                  }
+                });
+    svg << "</g>\n";
+  }
+  write_svg_labels(svg, page);
+  svg << "</svg>\n";
+  write_text_file(path, svg.str());
+}
+
+namespace {
+
+// A PDF's objects, numbered from 1, and its cross-reference table.
+class PdfFile {
+ public:
+  void add(const std::string& object) { objects_.push_back(object); }
+  std::string text() const {
+    std::string out = "%PDF-1.5\n%\xe2\xe3\xcf\xd3\n";
+    std::vector<std::size_t> offsets;
+    for (std::size_t k = 0; k < objects_.size(); ++k) {
+      offsets.push_back(out.size());
+      out += std::to_string(k + 1) + " 0 obj\n" + objects_[k] + "\nendobj\n";
+    }
+    const std::size_t xref = out.size();
+    out += "xref\n0 " + std::to_string(objects_.size() + 1) + "\n0000000000 65535 f \n";
+    for (std::size_t at : offsets) {
+      char line[24];
+      std::snprintf(line, sizeof line, "%010zu 00000 n \n", at);
+      out += line;
+    }
+    out += "trailer\n<< /Size " + std::to_string(objects_.size() + 1) +
+           " /Root 1 0 R >>\nstartxref\n" + std::to_string(xref) + "\n%%EOF\n";
+    return out;
+  }
+
+ private:
+  std::vector<std::string> objects_;
+};
+
+}  // namespace
+
+void write_pdf(const std::string& path, const SketchPage& page, const PlotterPage* plotter) {
+  // Points of 1/72 inch, y up: millimetres and pixels (taken as points) turned over.
+  const double to_pt = page.millimetres ? 72.0 / 25.4 : 1.0;
+  const double width = page.width * to_pt, height = page.height * to_pt;
+  std::ostringstream content = number_stream();
+  content << "1 J 1 j\n";
+  for (std::size_t c = 0; c < 2; ++c) {
+    const ClassLook l = look(kClassOrder[c]);
+    content << "/OC /L" << c << " BDC\n"
+            << l.rgb[0] << " " << l.rgb[1] << " " << l.rgb[2] << " RG " << l.rgb[0] << " "
+            << l.rgb[1] << " " << l.rgb[2] << " rg\n";
+    double current_ink = 1.0;
+    class_paths(
+        page, plotter, c,
+        [&](const std::vector<StrokePoint>& pts, bool closed, double w, double ink) {
+          if (ink !=
+              current_ink) {  // only lighter paths change the colour: others stay as they were
+            const std::array<double, 3> rgb = inked(l, ink);
+            content << rgb[0] << " " << rgb[1] << " " << rgb[2] << " RG " << rgb[0] << " " << rgb[1]
+                    << " " << rgb[2] << " rg\n";
+            current_ink = ink;
+          }
+          for (std::size_t k = 0; k < pts.size(); ++k)
+            content << pts[k].x * to_pt << " " << height - pts[k].y * to_pt
+                    << (k ? " l\n" : " m\n");
+          if (closed) {
+            content << "f\n";
+          } else {
+            content << (plotter ? (page.millimetres ? 0.3 : 1.0) : w) * to_pt << " w S\n";
+          }
+        });
+    content << "EMC\n";
+  }
+  if (!page.labels.empty()) {
+    content << "0.47 0.47 0.47 RG " << page.label_size() / 16 * to_pt << " w\n";
+    for (const PageLabel& l : page.labels) {
+      content << l.from.x * to_pt << " " << height - l.from.y * to_pt << " m " << l.to.x * to_pt
+              << " " << height - l.to.y * to_pt << " l S\n";
+    }
+    content << "0.2 0.2 0.2 rg\n";
+    for (const PageLabel& l : page.labels) {
+      content << "BT /F1 " << page.label_size() * to_pt << " Tf " << l.to.x * to_pt << " "
+              << height - l.to.y * to_pt << " Td (" << pdf_text(l.text) << ") Tj ET\n";
+    }
+  }
+  const std::string stream = content.str();
+  std::ostringstream media = number_stream();
+  media << "[0 0 " << width << " " << height << "]";
+  PdfFile pdf;
+  pdf.add(
+      "<< /Type /Catalog /Pages 2 0 R /OCProperties << /OCGs [5 0 R 6 0 R] /D << /Order "
+      "[5 0 R 6 0 R] >> >> >>");
+  pdf.add("<< /Type /Pages /Kids [3 0 R] /Count 1 >>");
+  pdf.add("<< /Type /Page /Parent 2 0 R /MediaBox " + media.str() +
+          " /Resources << /Properties << /L0 5 0 R /L1 6 0 R >> /Font << /F1 7 0 R >> >> "
+          "/Contents 4 0 R >>");
+  pdf.add("<< /Length " + std::to_string(stream.size()) + " >>\nstream\n" + stream + "\nendstream");
+  pdf.add(std::string("<< /Type /OCG /Name (") + look(kClassOrder[0]).label + ") >>");
+  pdf.add(std::string("<< /Type /OCG /Name (") + look(kClassOrder[1]).label + ") >>");
+  pdf.add("<< /Type /Font /Subtype /Type1 /BaseFont /Helvetica /Encoding /WinAnsiEncoding >>");
+  write_text_file(path, pdf.text());
+}
+
+}  // namespace tsk::io

@@ -1,0 +1,136 @@
+#include "io/read/dem_description.h"
+
+#include <ogr_spatialref.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "io/read/dem_notes.h"
+#include "io/read/gdal_util.h"
+
+namespace tsk::io {
+namespace {
+
+void check_band(GDALDataset& dataset, const std::string& path, int band) {
+  const int bands = dataset.GetRasterCount();
+  if (bands < 1) throw Error("'" + path + "' has no raster bands");
+  if (band < 1 || band > bands) {
+    throw Error("band " + std::to_string(band) + " does not exist: '" + path + "' has " +
+                std::to_string(bands) + " band(s)");
+  }
+  const GDALDataType type = dataset.GetRasterBand(band)->GetRasterDataType();
+  if (GDALDataTypeIsComplex(type)) {
+    throw Error("band " + std::to_string(band) + " of '" + path + "' holds complex numbers (" +
+                GDALGetDataTypeName(type) + "); heights are real numbers");
+  }
+}
+
+// The geotransform of a north-up DEM, or of square cells of the given size for a raster without
+// georeferencing (with a note).
+void read_georeferencing(GDALDataset& dataset, const std::string& path, const DemOptions& options,
+                         Dem& dem) {
+  double gt[6];
+  const std::string warp = std::string("gdalwarp ") + kWarpNoData + " INPUT OUTPUT_northup.tif";
+  if (dataset.GetGeoTransform(gt) == CE_None) {
+    if (gt[2] != 0.0 || gt[4] != 0.0) {
+      throw Error("'" + path +
+                  "' has a rotated or sheared geotransform; make it north-up first, "
+                  "e.g. " +
+                  warp);
+    }
+    if (!(gt[1] > 0.0) || !(gt[5] < 0.0)) {
+      throw Error("'" + path +
+                  "' is not north-up (row 0 must be north, column 0 west); warp it "
+                  "first, e.g. " +
+                  warp);
+    }
+    std::copy(gt, gt + 6, dem.geotransform.a.begin());
+    if (options.cell_size > 0.0)
+      dem.notes.push_back({DemNoteCode::cell_size_ignored, {options.cell_size}, {}});
+  } else if (options.cell_size > 0.0) {
+    dem.geotransform.a = {0.0, options.cell_size, 0.0, 0.0, 0.0, -options.cell_size};
+    dem.notes.push_back({DemNoteCode::assumed_cell_size, {options.cell_size}, {}});
+  } else {
+    throw Error("'" + path +
+                "' has no georeferencing, so its cell size is unknown; give it with --cell-size");
+  }
+}
+
+// The DEM's centre in degrees of longitude and latitude, through the CRS's own geographic CRS.
+bool centre_in_degrees(const OGRSpatialReference& srs, const Dem& dem, double& lon, double& lat) {
+  dem.geotransform.apply({static_cast<double>(dem.cols) / 2, static_cast<double>(dem.rows) / 2},
+                         lon, lat);
+  if (srs.IsGeographic()) return true;
+  std::unique_ptr<OGRSpatialReference> geographic(srs.CloneGeogCS());
+  if (!geographic) return false;
+  geographic->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  OGRSpatialReference source(srs);
+  source.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  std::unique_ptr<OGRCoordinateTransformation> to_lonlat(
+      OGRCreateCoordinateTransformation(&source, geographic.get()));
+  return to_lonlat && to_lonlat->Transform(1, &lon, &lat);
+}
+
+void add_crs_facts(const OGRSpatialReference& srs, const Dem& dem, DemFacts& f) {
+  f.has_crs = true;
+  f.geographic = srs.IsGeographic();
+  const char* authority = srs.GetAuthorityName(nullptr);
+  const char* code = srs.GetAuthorityCode(nullptr);
+  f.crs_id = authority && code ? std::string(authority) + ":" + code : std::string(srs.GetName());
+  const char* unit = nullptr;
+  const double metres_per_unit = srs.GetLinearUnits(&unit);
+  f.unit_is_metre = !(srs.IsProjected() && std::fabs(metres_per_unit - 1.0) > 1e-9);
+  if (!f.unit_is_metre && unit) f.unit = unit;
+  char* proj = nullptr;
+  if (srs.exportToProj4(&proj) == OGRERR_NONE && proj) f.proj = proj;
+  CPLFree(proj);
+  f.has_centre = centre_in_degrees(srs, dem, f.centre_lon, f.centre_lat);
+}
+
+// GDAL's approximate range reads a sample of the blocks: milliseconds, and fill values cover
+// whole holes and edges when they are there.
+void add_value_facts(GDALRasterBand& band, DemFacts& f) {
+  f.scale = band.GetScale();
+  f.offset = band.GetOffset();
+  double range[2];
+  CPLErrorReset();
+  GDALComputeRasterMinMax(&band, TRUE, range);
+  f.has_range = CPLGetLastErrorType() < CE_Failure;
+  f.lowest_value = range[0];
+  f.highest_value = range[1];
+}
+
+}  // namespace
+
+Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions& options) {
+  check_band(dataset, path, options.band);
+  Dem dem;
+  dem.rows = static_cast<std::size_t>(dataset.GetRasterYSize());
+  dem.cols = static_cast<std::size_t>(dataset.GetRasterXSize());
+  read_georeferencing(dataset, path, options, dem);
+  DemFacts facts;
+  facts.rows = dem.rows, facts.cols = dem.cols;
+  facts.cell_x = dem.geotransform.a[1], facts.cell_y = -dem.geotransform.a[5];
+  facts.bands = dataset.GetRasterCount(), facts.band = options.band;
+  const OGRSpatialReference* srs = dataset.GetSpatialRef();
+  if (srs) add_crs_facts(*srs, dem, facts);
+  add_value_facts(*dataset.GetRasterBand(options.band), facts);
+  const DemAssessment assessment = assess_dem(facts);
+  if (assessment.refused) throw DemRefused(path, assessment.notes.front());
+  dem.ground_scale = assessment.ground_scale;
+  dem.notes.insert(dem.notes.end(), assessment.notes.begin(), assessment.notes.end());
+  if (srs) {
+    char* wkt = nullptr;
+    srs->exportToWkt(&wkt);
+    dem.srs_wkt = wkt ? wkt : "";
+    CPLFree(wkt);
+  }
+  const double dx = dem.geotransform.a[1] * dem.ground_scale;
+  const double dy = -dem.geotransform.a[5] * dem.ground_scale;
+  dem.grid = {dem.rows, dem.cols, dx, dy};
+  make_frame(dem.grid, 90.0);  // refuses a grid no view could address, before any work
+  return dem;
+}
+
+}  // namespace tsk::io

@@ -1,0 +1,261 @@
+#include "io/read/dem_reader.h"
+
+#include <gdal_priv.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <future>
+#include <memory>
+#include <new>
+#include <thread>
+#include <vector>
+
+#include "core/method/silhouettes.h"
+#include "io/read/dem_description.h"
+#include "io/read/gdal_util.h"
+
+namespace tsk::io {
+namespace {
+
+// Replaces the band's nodata value, if it has one, by the core's NaN in `values`.
+void nodata_to_nan(GDALRasterBand& band, float* values, std::size_t count) {
+  int has_nodata = 0;
+  const auto nodata = static_cast<float>(band.GetNoDataValue(&has_nodata));
+  if (has_nodata) std::replace(values, values + count, nodata, kNoData);
+}
+
+// Reads windows of the band as Float32, nodata to NaN, the band's scale and offset applied (a DEM
+// stored in decimetres as integers has scale 0.1), as QGIS applies them.
+// `earlier_failure`, when given, is a failure GDAL reported on an earlier read of the band: GDAL
+// tells a missing file behind a VRT once per thread, so a later read fails without a reason.
+WindowReader band_reader(GDALRasterBand& band, const std::string& path,
+                         std::shared_ptr<const std::string> earlier_failure = nullptr) {
+  const double scale = band.GetScale(), offset = band.GetOffset();
+  if (!std::isfinite(scale) || scale == 0.0 || !std::isfinite(offset)) {
+    throw Error("'" + path + "' gives its band a scale of " + number_text(scale) +
+                " and an offset of " + number_text(offset) +
+                ", which make no heights; correct them (gdal_edit.py -scale 1 -offset 0 INPUT)");
+  }
+  return [&band, path, scale, offset, earlier_failure](const DemWindow& w, float* heights) {
+    GdalErrorCapture errors;
+    if (band.RasterIO(GF_Read, static_cast<int>(w.col0), static_cast<int>(w.row0),
+                      static_cast<int>(w.cols), static_cast<int>(w.rows), heights,
+                      static_cast<int>(w.cols), static_cast<int>(w.rows), GDT_Float32, 0,
+                      0) != CE_None) {
+      const bool unexplained =
+          errors.first_failure().empty() && earlier_failure && !earlier_failure->empty();
+      throw Error("reading '" + path +
+                  "' failed: " + (unexplained ? *earlier_failure : errors.message()));
+    }
+    const std::size_t count = w.rows * w.cols;
+    nodata_to_nan(band, heights, count);
+    if (scale != 1.0 || offset != 0.0) {
+      // Heights out of float's range become infinite, which the core takes as nodata.
+      for (std::size_t k = 0; k < count; ++k)
+        heights[k] = static_cast<float>(static_cast<double>(heights[k]) * scale + offset);
+    }
+  };
+}
+
+// `read` calling `stop` before each window it reads (`read` itself without one).
+WindowReader stopping(WindowReader read, std::function<void()> stop) {
+  if (!stop) return read;
+  return [read = std::move(read), stop = std::move(stop)](const DemWindow& w, float* heights) {
+    stop();
+    read(w, heights);
+  };
+}
+
+// Reads rows [from, to) of the DEM through `read` straight into `grid`, `step` rows at a time,
+// noting their lowest height; gives up quietly once `given_up` is set (by the other half).
+void read_rows_into(const WindowReader& read, std::size_t from, std::size_t to, std::size_t step,
+                    const std::atomic<bool>& given_up, HeightGrid& grid, LowestHeight& lowest) {
+  const std::size_t cols = grid.cols();
+  for (std::size_t top = from; top < to && !given_up; top += step) {
+    const std::size_t count = std::min(step, to - top);
+    read({top, 0, count, cols}, grid.row(top));
+    lowest.add(grid.row(top), count * cols);
+  }
+}
+
+// A DEM that needs no turning is read straight into its grid, its two halves at once, each
+// through a dataset of its own (a GDAL dataset is not to be shared between threads): the first
+// touch of a DEM-sized grid's pages and the decoding of its blocks are most of a read.
+void read_as_it_lies(const std::string& path, GDALRasterBand& band, const DemOptions& options,
+                     Dem& dem) {
+  HeightGrid grid(dem.rows, dem.cols, kUnset);
+  // Reads of whole block rows, a few MB each, and halves that share no block: each block is
+  // decoded once, whatever GDAL's cache holds.
+  int block_width = 0, block_height = 0;
+  band.GetBlockSize(&block_width, &block_height);
+  const std::size_t block_rows = static_cast<std::size_t>(std::max(1, block_height));
+  const std::size_t step =
+      std::max<std::size_t>(1, (std::size_t{1} << 22) / dem.cols / block_rows) * block_rows;
+  const std::size_t half =
+      dem.rows >= 512 && std::thread::hardware_concurrency() > 1
+          ? std::min(dem.rows, (dem.rows / 2 + block_rows - 1) / block_rows * block_rows)
+          : dem.rows;
+  std::atomic<bool> given_up{false};
+  LowestHeight upper, lower;
+  std::future<void> second;
+  if (half < dem.rows) {
+    second = std::async(std::launch::async, [&] {
+      try {
+        GdalErrorCapture capture;
+        auto dataset = open_raster(path);
+        read_rows_into(
+            stopping(band_reader(*dataset->GetRasterBand(options.band), path), options.stop), half,
+            dem.rows, step, given_up, grid, lower);
+      } catch (...) {
+        given_up = true;
+        throw;
+      }
+    });
+  }
+  try {
+    read_rows_into(stopping(band_reader(band, path), options.stop), 0, half, step, given_up, grid,
+                   upper);
+  } catch (...) {
+    given_up = true;
+    if (second.valid()) second.wait();
+    throw;
+  }
+  if (second.valid()) second.get();
+  upper.add(lower);
+  dem.lowest_height = upper.value();
+  dem.oriented = std::move(grid);
+}
+
+// Reads the band in blocks of rows into dem.oriented.
+void read_band(const std::string& path, GDALRasterBand& band, const DemOptions& options, Dem& dem) {
+  if (dem.frame.as_it_lies()) return read_as_it_lies(path, band, options, dem);
+  TurnedDem turned = turn_dem(dem.frame, stopping(band_reader(band, path), options.stop));
+  dem.lowest_height = turned.lowest_height;
+  dem.oriented = std::move(turned.oriented);
+}
+
+}  // namespace
+
+Dem read_dem(const std::string& path, const DemOptions& options, double azimuth_deg) {
+  GdalErrorCapture capture;
+  auto dataset = open_raster(path);
+  Dem dem = describe_dem(*dataset, path, options);
+  refuse_too_large_to_turn(path, dem, azimuth_deg);
+  dem.frame = make_frame(dem.grid, azimuth_deg);
+  try {
+    read_band(path, *dataset->GetRasterBand(options.band), options, dem);
+  } catch (const std::bad_alloc&) {
+    throw Error("not enough memory for a " + std::to_string(dem.rows) + " x " +
+                std::to_string(dem.cols) + " DEM");
+  }
+  return dem;
+}
+
+void refuse_too_large_to_turn(const std::string& path, const Dem& dem, double azimuth_deg) {
+  if (!too_large_to_turn_whole(make_frame(dem.grid, azimuth_deg))) return;
+  throw Error("'" + path + "' (" + std::to_string(dem.cols) + " x " + std::to_string(dem.rows) +
+              " cells) is too large for this command, which holds the whole DEM turned to the "
+              "view: that would take more than half of this machine's memory. `silhouettes` "
+              "without `--preview` reads large DEMs strip by strip; or clip or resample the DEM");
+}
+
+std::vector<HeightGrid> read_bands(const std::string& path) {
+  GdalErrorCapture capture;
+  auto dataset = open_raster(path);
+  const auto rows = static_cast<std::size_t>(dataset->GetRasterYSize());
+  const auto cols = static_cast<std::size_t>(dataset->GetRasterXSize());
+  std::vector<HeightGrid> bands;
+  for (int b = 1; b <= dataset->GetRasterCount(); ++b) {
+    HeightGrid grid(rows, cols, kUnset);
+    band_reader(*dataset->GetRasterBand(b), path)({0, 0, rows, cols}, grid.data());
+    bands.push_back(std::move(grid));
+  }
+  return bands;
+}
+
+BandWindows::BandWindows(const std::string& path, int band)
+    : BandWindows(
+          [&] {
+            GdalErrorCapture capture;
+            return open_raster(path);
+          }(),
+          path, band) {}
+
+BandWindows::BandWindows(DatasetPtr dataset, const std::string& path, int band)
+    : dataset_(std::move(dataset)) {
+  if (band < 1 || band > dataset_->GetRasterCount()) {
+    throw Error("band " + std::to_string(band) + " does not exist in '" + path + "'");
+  }
+  band_ = dataset_->GetRasterBand(band);
+  read_ = band_reader(*band_, path, earlier_failure_);
+  rows_ = static_cast<std::size_t>(dataset_->GetRasterYSize());
+  cols_ = static_cast<std::size_t>(dataset_->GetRasterXSize());
+  int block_width = 0, block_height = 0;
+  band_->GetBlockSize(&block_width, &block_height);
+  block_rows_ = static_cast<std::size_t>(std::max(1, block_height));
+  blocks_per_row_ = (cols_ + static_cast<std::size_t>(std::max(1, block_width)) - 1) /
+                    static_cast<std::size_t>(std::max(1, block_width));
+  // At least 64 rows a run, so that a file of one-row blocks is not read row by row.
+  run_rows_ = block_rows_ * ((64 + block_rows_ - 1) / block_rows_);
+}
+
+BandWindows::~BandWindows() = default;
+
+bool BandWindows::geotransform(GeoTransform& gt) const {
+  return dataset_->GetGeoTransform(gt.a.data()) == CE_None;
+}
+
+void BandWindows::read(const DemWindow& window, float* heights) const {
+  const std::size_t end = window.row0 + window.rows;
+  for (std::size_t top = window.row0; top < end;) {
+    const std::size_t run_end = std::min(end, (top / run_rows_ + 1) * run_rows_);
+    cached_from_ = std::min(cached_from_, top / block_rows_);
+    read_({top, window.col0, run_end - top, window.cols},
+          heights + (top - window.row0) * window.cols);
+    // The next strip of a cardinal view starts on the row before this one's last.
+    drop_block_rows_above((run_end - std::min<std::size_t>(run_end, 2)) / block_rows_);
+    top = run_end;
+  }
+}
+
+void BandWindows::drop_block_rows_above(std::size_t keep) const {
+  for (; cached_from_ < keep; ++cached_from_) {
+    for (std::size_t x = 0; x < blocks_per_row_; ++x)
+      band_->FlushBlock(static_cast<int>(x), static_cast<int>(cached_from_), FALSE);
+  }
+}
+
+DemRefused::DemRefused(const std::string& path, DemNote note)
+    : Error("'" + path + "' cannot be taken as it is"), path_(path), note_(std::move(note)) {}
+
+DemFile::DemFile(const std::string& path, const DemOptions& options) {
+  GdalErrorCapture capture;
+  DatasetPtr dataset = open_raster(path);
+  dem_ = describe_dem(*dataset, path, options);
+  file_ = std::make_unique<BandWindows>(std::move(dataset), path, options.band);
+  // Describing it reads a sample of the DEM; a failure there is the reason for later ones.
+  file_->remember_failure(capture.first_failure());
+  stop_ = options.stop;
+}
+
+DemFile::~DemFile() = default;
+
+DemSource DemFile::source() const {
+  return {dem_.grid, dem_.geotransform,
+          stopping([&file = *file_](const DemWindow& w, float* heights) { file.read(w, heights); },
+                   stop_)};
+}
+
+HeldDem HeldDemFile::held() const {
+  DemSource source{dem.grid, dem.geotransform, windows ? windows->source().read : WindowReader()};
+  return {dem.oriented, dem.frame, std::move(source), dem.lowest_height, dem.ground_scale};
+}
+
+HeldDemFile hold_dem(const std::string& path, const DemOptions& options, double azimuth_deg) {
+  HeldDemFile held{read_dem(path, options, azimuth_deg), nullptr};
+  if (!held.dem.frame.as_it_lies()) held.windows = std::make_unique<DemFile>(path, options);
+  return held;
+}
+
+}  // namespace tsk::io

@@ -1,0 +1,70 @@
+// Small GDAL helpers shared by the reader and writers.
+#pragma once
+
+#include <gdal_priv.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/base/errors.h"
+
+namespace tsk::io {
+
+// While alive, GDAL errors on this thread are kept quiet (from stderr and from QGIS's log) and
+// kept for our own messages: the last one, and the first failure, which on a full disk is the
+// cause ("File too large") where the last is libtiff's consequence of it. The one way both front
+// ends catch GDAL's errors.
+class GdalErrorCapture {
+ public:
+  GdalErrorCapture();
+  ~GdalErrorCapture();
+  GdalErrorCapture(const GdalErrorCapture&) = delete;
+  GdalErrorCapture& operator=(const GdalErrorCapture&) = delete;
+  // The last error GDAL reported ("unknown GDAL error" if none), shortened.
+  std::string message() const;
+  // The first failure (CE_Failure or worse) since the capture began, shortened; "" if none.
+  const std::string& first_failure() const { return first_failure_; }
+
+ private:
+  static void CPL_STDCALL record(CPLErr type, CPLErrorNum number, const char* message);
+  std::string first_failure_;
+};
+
+struct GdalCloser {
+  void operator()(GDALDataset* ds) const { GDALClose(ds); }
+};
+using DatasetPtr = std::unique_ptr<GDALDataset, GdalCloser>;
+
+// While alive, datasets this thread opens leave no .aux.xml beside them: a look into a file
+// must not change what is there (GDAL 3.10 writes one for a GeoPackage raster it only opened).
+class NoAuxFiles {
+ public:
+  NoAuxFiles();
+  ~NoAuxFiles();
+  NoAuxFiles(const NoAuxFiles&) = delete;
+  NoAuxFiles& operator=(const NoAuxFiles&) = delete;
+
+ private:
+  std::string before_;
+  bool had_ = false;
+};
+
+// Closes `dataset` and returns false when GDAL says the close failed. GDAL 3.7 and later say so
+// when the cached blocks cannot be written as the file closes; GDAL 3.10's GeoTIFF driver
+// reports a full disk no other way (libtiff prints it, no GDAL error is raised).
+bool close_dataset(DatasetPtr& dataset);
+
+// Throws Error, before GDAL opens it, when `path` names no file or one GDAL's open would hang on
+// or misread: a named pipe, a socket or a device. Folders (an Arc/Info grid) and GDAL's virtual
+// paths (/vsizip/..., NETCDF:"file":var) pass.
+void check_input_path(const std::string& path);
+
+// Opens `path` read-only as a raster or throws tsk::Error saying why not.
+DatasetPtr open_raster(const std::string& path);
+
+// Every file GDAL reads for the raster or vector dataset at `path` (a VRT's sources included);
+// just `path` when GDAL cannot open it.
+std::vector<std::string> dataset_files(const std::string& path);
+
+}  // namespace tsk::io

@@ -1,0 +1,158 @@
+#include "io/write/raster_writer.h"
+
+#include <gdal_priv.h>
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+#include "io/read/gdal_util.h"
+#include "io/write/output_files.h"
+
+namespace tsk::io {
+namespace {
+
+// Reads every band of the raster at `staged` back, a block of rows at a time. GDAL 3.10's
+// GeoTIFF driver leaves a full disk unsaid (libtiff prints it, no error is raised and the close
+// succeeds), so a raster is whole only when it reads back.
+void check_reads_back(const std::string& path, const std::filesystem::path& staged,
+                      GDALDataType type) {
+  GdalErrorCapture capture;
+  const NoAuxFiles no_aux;
+  DatasetPtr ds(static_cast<GDALDataset*>(
+      GDALOpenEx(staged.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+  const auto fail = [&] {
+    throw Error("writing '" + path + "' failed: it does not read back (" +
+                (capture.first_failure().empty() ? std::string("is the disk full?")
+                                                 : capture.first_failure()) +
+                ")");
+  };
+  if (!ds) fail();
+  const int cols = ds->GetRasterXSize(), rows = ds->GetRasterYSize();
+  const int block_rows = std::max(1, std::min(rows, (1 << 22) / std::max(1, cols)));
+  std::vector<double> buffer(static_cast<std::size_t>(cols) * static_cast<std::size_t>(block_rows));
+  for (int b = 1; b <= ds->GetRasterCount(); ++b) {
+    for (int top = 0; top < rows; top += block_rows) {
+      const int count = std::min(block_rows, rows - top);
+      if (ds->GetRasterBand(b)->RasterIO(GF_Read, 0, top, cols, count, buffer.data(), cols, count,
+                                         type == GDT_Byte ? GDT_Byte : GDT_Float64, 0,
+                                         0) != CE_None) {
+        fail();
+      }
+    }
+  }
+  if (!capture.first_failure().empty()) fail();
+}
+
+// Creates a raster of pixels.size() bands at `staged` in the format of `path`'s extension, lets
+// `fill` set up each band, writes the pixels. Every failure GDAL reports fails the write: a full
+// disk shows only as an error when GDAL writes its cached blocks while it closes the file.
+template <typename Fill>
+void write_bands(const std::string& path, const std::filesystem::path& staged, std::size_t rows,
+                 std::size_t cols, GDALDataType type, const std::vector<const void*>& pixels,
+                 const GeoTransform& gt, const std::string& srs_wkt, Fill fill) {
+  GdalErrorCapture capture;
+  GDALDriver* driver = raster_driver_for(path);
+  const bool tiff = std::string(driver->GetDescription()) == "GTiff";
+  const char* tiff_options[] = {"COMPRESS=DEFLATE", "TILED=YES", "BIGTIFF=IF_SAFER", nullptr};
+  DatasetPtr ds(driver->Create(staged.c_str(), static_cast<int>(cols), static_cast<int>(rows),
+                               static_cast<int>(pixels.size()), type,
+                               tiff ? const_cast<char**>(tiff_options) : nullptr));
+  if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
+  double transform[6];
+  std::copy(gt.a.begin(), gt.a.end(), transform);
+  ds->SetGeoTransform(transform);
+  if (!srs_wkt.empty()) ds->SetProjection(srs_wkt.c_str());
+  for (std::size_t b = 0; b < pixels.size(); ++b) {
+    GDALRasterBand* band = ds->GetRasterBand(static_cast<int>(b) + 1);
+    fill(*band);
+    if (band->RasterIO(GF_Write, 0, 0, static_cast<int>(cols), static_cast<int>(rows),
+                       const_cast<void*>(pixels[b]), static_cast<int>(cols), static_cast<int>(rows),
+                       type, 0, 0) != CE_None) {
+      throw Error("writing '" + path + "' failed: " + capture.message());
+    }
+  }
+  const bool closed = close_dataset(ds);
+  if (!capture.first_failure().empty()) {
+    throw Error("writing '" + path + "' failed: " + capture.first_failure());
+  }
+  if (!closed) throw Error("writing '" + path + "' failed as it was closed (is the disk full?)");
+  check_reads_back(path, staged, type);
+}
+
+}  // namespace
+
+GDALDriver* raster_driver_for(const std::string& path) {
+  GDALAllRegister();
+  std::string ext = lowercase_extension(path);
+  if (!ext.empty()) ext.erase(0, 1);
+  if (ext.empty() || ext == "tiff") ext = "tif";
+  GDALDriverManager& drivers = *GetGDALDriverManager();
+  for (int k = 0; k < drivers.GetDriverCount(); ++k) {
+    GDALDriver* driver = drivers.GetDriver(k);
+    const char* raster = driver->GetMetadataItem(GDAL_DCAP_RASTER);
+    const char* create = driver->GetMetadataItem(GDAL_DCAP_CREATE);
+    const char* extensions = driver->GetMetadataItem(GDAL_DMD_EXTENSIONS);
+    if (!raster || !create || !extensions) continue;
+    const CPLStringList list(CSLTokenizeString(extensions));
+    for (int e = 0; e < list.size(); ++e)
+      if (EQUAL(list[e], ext.c_str())) return driver;
+  }
+  throw Error("no raster format that GDAL can create has the extension of '" + path +
+              "'; use .tif");
+}
+
+void write_float_raster(const std::string& path, const std::vector<HeightGrid>& bands,
+                        const GeoTransform& gt, const std::string& srs_wkt) {
+  if (bands.empty()) throw Error("nothing to write to '" + path + "'");
+  std::vector<const void*> pixels;
+  for (const HeightGrid& b : bands) pixels.push_back(b.data());
+  write_atomically(path, [&](const std::filesystem::path& staged) {
+    write_bands(path, staged, bands[0].rows(), bands[0].cols(), GDT_Float32, pixels, gt, srs_wkt,
+                [](GDALRasterBand& band) {
+                  band.SetNoDataValue(std::numeric_limits<double>::quiet_NaN());
+                });
+  });
+}
+
+void write_classification(const std::string& path, const Grid<std::uint8_t>& classes,
+                          const GeoTransform& gt, const std::string& srs_wkt) {
+  // Colours as in the thesis's map views: occlusion red, c-set light grey, f-set dark grey.
+  static const GDALColorEntry colours[kCellClassCount] = {
+      {0, 0, 0, 0},         {255, 255, 255, 255}, {190, 210, 235, 255}, {220, 30, 30, 255},
+      {215, 215, 215, 255}, {120, 120, 120, 255}, {20, 20, 20, 255}};
+  write_atomically(path, [&](const std::filesystem::path& staged) {
+    write_bands(path, staged, classes.rows(), classes.cols(), GDT_Byte, {classes.data()}, gt,
+                srs_wkt, [](GDALRasterBand& band) {
+                  band.SetNoDataValue(0);
+                  GDALColorTable table;
+                  CPLStringList names;
+                  for (int k = 0; k < kCellClassCount; ++k) {
+                    table.SetColorEntry(k, &colours[k]);
+                    names.AddString(cell_class_name(static_cast<CellClass>(k)));
+                  }
+                  band.SetColorTable(&table);
+                  band.SetCategoryNames(names.List());
+                });
+  });
+}
+
+void write_visibility(const std::string& path, const Grid<std::uint8_t>& visibility,
+                      const GeoTransform& gt, const std::string& srs_wkt) {
+  // Hidden ground greyed, visible ground clear, beyond the range left out.
+  static const GDALColorEntry hidden = {60, 60, 60, 150}, visible = {255, 255, 255, 0};
+  write_atomically(path, [&](const std::filesystem::path& staged) {
+    write_bands(path, staged, visibility.rows(), visibility.cols(), GDT_Byte, {visibility.data()},
+                gt, srs_wkt, [](GDALRasterBand& band) {
+                  band.SetNoDataValue(255);
+                  GDALColorTable table;
+                  table.SetColorEntry(0, &hidden);
+                  table.SetColorEntry(1, &visible);
+                  band.SetColorTable(&table);
+                  const char* names[] = {"hidden", "visible", nullptr};
+                  band.SetCategoryNames(const_cast<char**>(names));
+                });
+  });
+}
+
+}  // namespace tsk::io
