@@ -5,7 +5,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/interrupt.h"
-#include "core/applications/filter_diagram.h"
+#include "io/pages/filter_diagram_page.h"
 #include "io/write/output_files.h"
 
 namespace tsk::cli {
@@ -16,14 +16,10 @@ int filter_plot(const Args& args, std::ostream& out, std::ostream& err,
   const io::HeldDemFile held = load_dem(o, err);
   const io::Dem& dem = held.dem;
   const SilhouetteResult result = sketch_whole(o, held, progress, err);
-  const FilterReport& filter = result.filter;
   stop_if_interrupted();
-  const double range = diagram_range_pct(filter.cutoffs);
-  const SlopeScatter scatter =
-      slope_scatter(dem.oriented, result.flags, dem.frame.d, dem.frame.w, range);
   io::write_text_file(
       o.output,
-      filter_diagram_html(scatter, filter.cutoffs,
+      filter_diagram_html(slope_scatter_of(dem.oriented, dem.frame, result), result.filter.cutoffs,
                           "Slope filter: " + std::filesystem::path(o.input).filename().string()));
   out << o.output << ": c-set " << result.stats.pct(result.stats.candidate) << " %, f-set "
       << result.stats.pct(result.stats.filtered) << " %\n";

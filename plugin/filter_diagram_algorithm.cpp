@@ -5,9 +5,9 @@
 #include <QFile>
 #include <algorithm>
 
-#include "core/applications/filter_diagram.h"
 #include "core/base/errors.h"
 #include "core/method/silhouettes.h"
+#include "io/pages/filter_diagram_page.h"
 #include "io/write/output_files.h"
 #include "plugin/raster_grid.h"
 
@@ -55,10 +55,8 @@ QVariantMap FilterDiagramAlgorithm::processAlgorithm(const QVariantMap& paramete
   const RasterGrid& raster = readRaster(feedback, 40);
   const SilhouetteResult result = runSilhouettes(mParams, feedback, 40, 90);
   const std::string html = withCoreErrors([&] {
-    const double range = diagram_range_pct(result.filter.cutoffs);
-    return filter_diagram_html(
-        slope_scatter(raster.oriented(), result.flags, raster.frame().d, raster.frame().w, range),
-        result.filter.cutoffs, tr("Slope filter").toStdString());
+    return filter_diagram_html(slope_scatter_of(raster.oriented(), raster.frame(), result),
+                               result.filter.cutoffs, tr("Slope filter").toStdString());
   });
   const QString path = parameterAsFileOutput(parameters, QStringLiteral("OUTPUT"), context);
   // Whole or not at all, as every file output (io/output_files.h).

@@ -134,14 +134,6 @@ TEST_CASE("the filter diagram counts every stage and draws the removal polygon",
           removed = removed && !filter_accepts(filter, (c + dc) * step, (r + dr) * step);
       if (removed) REQUIRE(s.filtered[static_cast<std::size_t>(r * s.bins + c)] == 0);
     }
-  const std::string html = filter_diagram_html(s, filter, "test");
-  // Control point (8.75, 5.25) at x = 60 + 8.75 * 560 / 60, y = 60 + 560 - 5.25 * 560 / 60.
-  CHECK_THAT(html, Catch::Contains("<circle id=\"control\" cx=\"141.7\" cy=\"571\""));
-  CHECK_THAT(html, Catch::Contains("points=\"60,620 172,620 141.7,571 60,433.3\""));
-  FilterParams rectangle;
-  rectangle.diagonals = false;
-  CHECK_THAT(filter_diagram_html(s, rectangle, "t"),
-             Catch::Contains("points=\"60,620 172,620 172,433.3 60,433.3\""));
   CHECK_THROWS_AS(slope_scatter(o.z, o.result.flags, 10, 10, 0.0), Error);
 }
 

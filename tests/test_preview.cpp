@@ -11,6 +11,7 @@
 #include "catch_compat.h"
 #include "cli_run.h"
 #include "gdal_test_support.h"
+#include "io/pages/filter_diagram_page.h"
 
 using namespace tsk::test;
 
@@ -213,4 +214,26 @@ TEST_CASE("the plotter page merges strokes that meet and cuts the pen's travel",
   CHECK(svg.per_group["factual"] + svg.per_group["formulated"] == paths);
   CHECK(svg.closed_per_group["factual"] + svg.closed_per_group["formulated"] == 0);
   CHECK(svg.outside == 0);
+}
+
+TEST_CASE("the filter diagram page draws the removal polygon and the control point",
+          "[filter diagram]") {
+  using namespace tsk;
+  SlopeScatter s;
+  s.bins = 60, s.max_pct = 60.0;
+  s.all.assign(60 * 60, 0), s.candidate.assign(60 * 60, 0), s.filtered.assign(60 * 60, 0);
+  s.all[s.bin(10, 30)] = 5, s.candidate[s.bin(10, 30)] = 3, s.filtered[s.bin(10, 30)] = 1;
+  const FilterParams filter;
+  const std::string html = filter_diagram_html(s, filter, "test");
+  // Control point (8.75, 5.25) at x = 60 + 8.75 * 560 / 60, y = 60 + 560 - 5.25 * 560 / 60.
+  CHECK_THAT(html, Catch::Contains("<circle id=\"control\" cx=\"141.7\" cy=\"571\""));
+  CHECK_THAT(html, Catch::Contains("points=\"60,620 172,620 141.7,571 60,433.3\""));
+  CHECK_THAT(html, Catch::Contains("the c-set (3)"));
+  // A title from a file name is text, never markup.
+  CHECK_THAT(filter_diagram_html(s, filter, "<b>a&b</b>.tif"),
+             Catch::Contains("<h2>&lt;b&gt;a&amp;b&lt;/b&gt;.tif</h2>"));
+  FilterParams rectangle;
+  rectangle.diagonals = false;
+  CHECK_THAT(filter_diagram_html(s, rectangle, "t"),
+             Catch::Contains("points=\"60,620 172,620 172,433.3 60,433.3\""));
 }

@@ -1,6 +1,6 @@
 // Diagnostic (thesis figures 5.7 and 5.8): the scatter of column slope against row slope with the
-// c-set highlighted and the slope filter's removal region drawn, so a user tuning the control
-// point can see what the filter does. Rendered as a self-contained HTML page with inline SVG.
+// c-set highlighted, for the slope filter's removal region to be drawn over it, so a user tuning
+// the control point can see what the filter does. io/pages/filter_diagram_page.h draws the page.
 #pragma once
 
 #include <string>
@@ -8,6 +8,7 @@
 
 #include "core/base/flags.h"
 #include "core/method/params.h"
+#include "core/method/silhouettes.h"
 
 namespace tsk {
 
@@ -26,9 +27,9 @@ double diagram_range_pct(const FilterParams& filter);
 SlopeScatter slope_scatter(const HeightGrid& z, const CellFlags& flags, double d, double w,
                            double max_pct, int bins = 120);
 
-// The page: scatter (all cells grey, c-set red, f-set black), removal polygon, cut-offs and
-// control point, with a legend and the counts.
-std::string filter_diagram_html(const SlopeScatter& scatter, const FilterParams& filter,
-                                const std::string& title);
+// The scatter of a run on a DEM held whole (its flags kept), over the range its filter's
+// cut-offs call for: what both front ends draw.
+SlopeScatter slope_scatter_of(const HeightGrid& oriented, const OrientedFrame& frame,
+                              const SilhouetteResult& result);
 
 }  // namespace tsk
