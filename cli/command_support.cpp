@@ -95,4 +95,10 @@ void require_geotiff(const std::string& path) {
   if (ext != ".tif" && ext != ".tiff") throw Error("the output raster must be a GeoTIFF (.tif)");
 }
 
+void require_html(const std::string& path) {
+  const std::string ext = io::lowercase_extension(path);
+  if (ext != ".html" && ext != ".htm")
+    throw Error("the output is an HTML page: give it an .html name, got '" + path + "'");
+}
+
 }  // namespace tsk::cli

@@ -27,4 +27,7 @@ std::string stats_json(const StageStats& s, const FilterReport& filter);
 // Throws Error unless `path` names a GeoTIFF (.tif, .tiff).
 void require_geotiff(const std::string& path);
 
+// Throws Error unless `path` names an HTML page (.html, .htm).
+void require_html(const std::string& path);
+
 }  // namespace tsk::cli

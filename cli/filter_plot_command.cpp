@@ -13,6 +13,7 @@ namespace tsk::cli {
 int filter_plot(const Args& args, std::ostream& out, std::ostream& err,
                 const ProgressFn& progress) {
   const Options o = parse("filter-plot", args);
+  require_html(o.output);
   const io::HeldDemFile held = load_dem(o, err);
   const io::Dem& dem = held.dem;
   const SilhouetteResult result = sketch_whole(o, held, progress, err);

@@ -86,6 +86,13 @@ std::string parse_preview_name(const std::string& option, const std::string& pat
   return path;
 }
 
+// A JSON file's name: its extension says what it holds, so that no other file is written over.
+std::string parse_json_name(const std::string& option, const std::string& path) {
+  if (io::lowercase_extension(path) != ".json")
+    throw Error(option + " writes JSON: give it a .json name, got '" + path + "'");
+  return path;
+}
+
 double parse_page_scale(const std::string& option, const std::string& text) {
   const double scale = parse_number(option, text);
   if (!(scale >= 1.0 && scale <= 1e9))
@@ -203,8 +210,8 @@ const std::vector<OptionSpec> kOptionTable = {
      kAll, TSK_SET(dem.cell_size, parse_cell_size)},
     {"--format", "DRIVER", kInputOutput, "OGR driver name, overriding the extension", kVectors,
      [](Options& o, const std::string&, const std::string& v) { o.format = v; }},
-    {"--stats-json", "FILE", kInputOutput, "write the stage statistics as JSON", kCounted,
-     [](Options& o, const std::string&, const std::string& v) { o.stats_json = v; }},
+    {"--stats-json", "FILE.json", kInputOutput, "write the stage statistics as JSON", kCounted,
+     TSK_SET(stats_json, parse_json_name)},
     {"--preview", "FILE", kInputOutput,
      "silhouettes: the oblique sketch; panorama: the panorama, azimuth across,\n"
      "elevation up, far strokes lighter. .png a picture, .svg or .pdf vector\n"

@@ -1,6 +1,7 @@
 // The terrain-sketch command line, run in-process: outputs, formats, and every bad input it must
 // refuse with a message and without leaving a file behind.
 #include <fcntl.h>
+#include <gdal_utils.h>
 #include <ogrsf_frmts.h>
 #include <spawn.h>
 #include <sys/resource.h>
@@ -331,7 +332,11 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"classify", dir / "multi.tif", dir / "./multi.tif"}, "names a file the INPUT raster reads"},
       {{"drape", kSample, dir / "multi.tif", "--source", dir / "multi.tif"},
        "names a file the --source raster reads"},
-      {{"silhouettes", kSample, out, "--stats-json", out}, "names OUTPUT too"},
+      {{"silhouettes", kSample, dir / "o.json", "--stats-json", dir / "o.json"},
+       "names OUTPUT too"},
+      // An output's name says what it holds: no other file is written over.
+      {{"silhouettes", kSample, out, "--stats-json", dir / "dem.gpkg"}, "give it a .json name"},
+      {{"filter-plot", kSample, dir / "dem.gpkg"}, "give it an .html name"},
       {{"silhouettes", kSample, dir / "folder.gpkg"}, "is not a file"},
       {{"silhouettes", kSample, dir / "pipe.geojson"}, "is not a file"},
       {{"classify", kSample, dir / "folder.tif"}, "is not a file"},
@@ -341,8 +346,8 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"classify", kSample, dir / "c.tif", "--stats-json", dir / "no/s.json"}, "does not exist"},
       // A preview that cannot be put in place (a folder of its name) takes the strokes with it.
       {{"silhouettes", kSample, out, "--preview", dir / "taken.png"}, "taken.png"},
-      {{"silhouettes", kSample, out, "--preview", dir / "p.png", "--stats-json", dir / "p.png"},
-       "names --stats-json too"},
+      {{"silhouettes", kSample, out, "--preview", dir / "p.json", "--stats-json", dir / "p.json"},
+       "give it a .png, .svg or"},
   };
   for (const Bad& b : cases) {
     const CliRun run = run_cli(b.args);
@@ -1001,4 +1006,40 @@ TEST_CASE("COMMAND --help lists that command's options only", "[cli]") {
                               "drape", "panorama", "filter-plot"})
     CHECK_THAT(usage.out, Catch::Contains(std::string("  ") + command + " "));
   CHECK_THAT(usage.out, Catch::Contains("COMMAND --help"));
+}
+
+TEST_CASE("an output is refused when an input reads it, however deeply nested or wrapped",
+          "[cli][robustness]") {
+  ScratchDir dir("nested_inputs");
+  const std::string src = dir / "src.tif";
+  std::filesystem::copy_file(kSample, src);
+  // v.vrt reads src.tif; vv.vrt reads v.vrt, and GDAL lists only v.vrt for it.
+  const auto build_vrt = [](const std::string& path, const std::string& source) {
+    GDALDatasetH in = GDALOpen(source.c_str(), GA_ReadOnly);
+    REQUIRE(in != nullptr);
+    GDALDatasetH vrt = GDALBuildVRT(path.c_str(), 1, &in, nullptr, nullptr, nullptr);
+    REQUIRE(vrt != nullptr);
+    GDALClose(vrt);
+    GDALClose(in);
+  };
+  build_vrt(dir / "v.vrt", src);
+  build_vrt(dir / "vv.vrt", dir / "v.vrt");
+  const std::string before = slurp(src);
+  const std::string subfile = "/vsisubfile/0_" + std::to_string(before.size()) + "," + src;
+  const std::vector<std::vector<std::string>> cases = {
+      {"classify", dir / "vv.vrt", src},
+      {"row-slope", dir / "vv.vrt", src},
+      {"drape", kSample, src, "--source", dir / "vv.vrt"},
+      {"panorama", dir / "vv.vrt", dir / "p.gpkg", "--observer", "749008.1394,4009477.9308",
+       "--visibility", src},
+      {"classify", subfile, src},
+  };
+  for (const std::vector<std::string>& args : cases) {
+    const CliRun run = run_cli(args);
+    CAPTURE(args.front(), args.at(1), run.err);
+    CHECK(run.code == 1);
+    CHECK_THAT(run.err, Catch::Contains("raster reads, which writing it would replace"));
+    REQUIRE(slurp(src) == before);
+  }
+  CHECK(!std::filesystem::exists(dir / "p.gpkg"));
 }

@@ -5,6 +5,9 @@
 
 #include <cerrno>
 #include <cstring>
+#include <set>
+#include <string>
+#include <vector>
 
 namespace tsk::io {
 
@@ -87,19 +90,84 @@ bool close_dataset(DatasetPtr& dataset) {
 #endif
 }
 
-std::vector<std::string> dataset_files(const std::string& path) {
-  GDALAllRegister();
+namespace {
+
+// The file a GDAL virtual path reads, its wrappers taken off one by one: /vsisubfile/O_S,FILE,
+// /vsigzip/FILE, and the archive of /vsizip/, /vsitar/, /vsi7z/ and /vsirar/ paths (with or
+// without {braces}); the path itself when it wraps nothing on this machine.
+std::string underlying_file(std::string path) {
+  for (int depth = 0; depth < 16 && path.rfind("/vsi", 0) == 0; ++depth) {
+    const std::size_t slash = path.find('/', 1);
+    const std::string kind = path.substr(0, slash + 1);
+    std::string rest = slash == std::string::npos ? "" : path.substr(slash + 1);
+    if (kind == "/vsisubfile/") {
+      const std::size_t comma = rest.find(',');
+      if (comma == std::string::npos) return path;
+      path = rest.substr(comma + 1);
+    } else if (kind == "/vsigzip/") {
+      path = rest;
+    } else if (kind == "/vsizip/" || kind == "/vsitar/" || kind == "/vsi7z/" ||
+               kind == "/vsirar/") {
+      if (!rest.empty() && rest[0] == '{') {
+        const std::size_t close = rest.find('}');
+        if (close == std::string::npos) return path;
+        path = rest.substr(1, close - 1);
+        continue;
+      }
+      // The archive: the longest leading part of the path that is a file.
+      std::string archive;
+      for (std::size_t at = rest.find('/');; at = rest.find('/', at + 1)) {
+        const std::string part = rest.substr(0, at);
+        struct stat info {};
+        if (stat(part.c_str(), &info) == 0 && S_ISREG(info.st_mode)) archive = part;
+        if (at == std::string::npos) break;
+      }
+      if (archive.empty()) return path;
+      path = archive;
+    } else {
+      return path;  // a network or memory file system: no file on this machine
+    }
+  }
+  return path;
+}
+
+// The files GDAL lists for the dataset at `path`, or nothing when it cannot open it.
+std::vector<std::string> listed_files(const std::string& path) {
   GdalErrorCapture quiet;
   const NoAuxFiles no_aux;
   DatasetPtr dataset(static_cast<GDALDataset*>(
       GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr,
                  nullptr)));
-  if (!dataset) return {path};
   std::vector<std::string> files;
+  if (!dataset) return files;
   char** list = dataset->GetFileList();
   for (char** f = list; f && *f; ++f) files.emplace_back(*f);
   CSLDestroy(list);
-  if (files.empty()) files.push_back(path);
+  return files;
+}
+
+}  // namespace
+
+std::vector<std::string> dataset_files(const std::string& path) {
+  GDALAllRegister();
+  // Followed all the way down: a VRT of a VRT lists the VRT it reads, not that one's sources.
+  std::vector<std::string> files, to_visit{path};
+  std::set<std::string> seen;
+  while (!to_visit.empty() && seen.size() < 4096) {
+    const std::string next = to_visit.back();
+    to_visit.pop_back();
+    if (!seen.insert(next).second) continue;
+    files.push_back(next);
+    const std::string under = underlying_file(next);
+    if (under != next) to_visit.push_back(under);
+    // A source that is a plain, regular file is opened to list what it reads in turn; a pipe or
+    // a device is listed but never opened (GDAL's open would hang on a FIFO).
+    struct stat info {};
+    const bool plain = next.rfind("/vsi", 0) != 0;
+    if (next != path && plain && (stat(next.c_str(), &info) != 0 || !S_ISREG(info.st_mode)))
+      continue;
+    for (const std::string& file : listed_files(next)) to_visit.push_back(file);
+  }
   return files;
 }
 

@@ -1,5 +1,7 @@
 // Outputs whole or not at all: cancels, full disks, clashing outputs, layers added to existing
 // files, streaming into every format.
+#include <gdal_utils.h>
+
 #include "plugin_test_support.h"
 
 using namespace tsk::plugin_test;
@@ -200,6 +202,38 @@ TEST_CASE("an output into a file the algorithm reads is refused before the run",
   CHECK_FALSE(run.ok);
   CHECK(run.error.contains("which this algorithm reads"));
   QFile file(dem);
+  REQUIRE(file.open(QIODevice::ReadOnly));
+  CHECK(file.readAll() == before);
+}
+
+TEST_CASE("an output into a file a nested VRT reads is refused", "[plugin][outputs][robustness]") {
+  QTemporaryDir dir;
+  const QString src = dir.filePath("src.tif");
+  REQUIRE(QFile::copy(kData + "/volcano.tif", src));
+  // v.vrt reads src.tif; vv.vrt reads v.vrt, and GDAL lists only v.vrt for it.
+  for (const auto& [vrt, source] : {std::pair{QStringLiteral("v.vrt"), src},
+                                    std::pair{QStringLiteral("vv.vrt"), dir.filePath("v.vrt")}}) {
+    GDALDatasetH in = GDALOpen(source.toUtf8().constData(), GA_ReadOnly);
+    REQUIRE(in != nullptr);
+    GDALDatasetH out =
+        GDALBuildVRT(dir.filePath(vrt).toUtf8().constData(), 1, &in, nullptr, nullptr, nullptr);
+    REQUIRE(out != nullptr);
+    GDALClose(out);
+    GDALClose(in);
+  }
+  QFile file(src);
+  REQUIRE(file.open(QIODevice::ReadOnly));
+  const QByteArray before = file.readAll();
+  file.close();
+  const Run classification = runAlgorithm(dir.filePath("vv.vrt"), {{"OUTPUT", src}}, dir, nullptr,
+                                          QStringLiteral("classification"));
+  CHECK_FALSE(classification.ok);
+  CHECK(classification.error.contains("which this algorithm reads"));
+  const Run drape =
+      runAlgorithm(kData + "/volcano.tif", {{"SOURCE", dir.filePath("vv.vrt")}, {"OUTPUT", src}},
+                   dir, nullptr, QStringLiteral("drape"));
+  CHECK_FALSE(drape.ok);
+  CHECK(drape.error.contains("which this algorithm reads"));
   REQUIRE(file.open(QIODevice::ReadOnly));
   CHECK(file.readAll() == before);
 }
