@@ -927,13 +927,22 @@ TEST_CASE("what runs killed outright left in a folder is removed by the next run
   const std::string other = dir / (".other.gpkg.partial-" + std::to_string(child));
   for (const std::string& folder : {stale, live, other}) {
     std::filesystem::create_directory(folder);
+    std::ofstream(folder + "/.terrain-sketch-staging");  // the mark of a run's staging folder
     std::ofstream(folder + "/strokes.gpkg") << "half an output";
   }
+  // A user's folders of the same shape, without the mark, and a link to one: never touched.
+  const std::string photos = dir / (".photos.partial-" + std::to_string(child));
+  std::filesystem::create_directories(photos + "/sub");
+  std::ofstream(photos + "/sub/img.jpg") << "a picture";
+  const std::string linked = dir / (".linked.partial-" + std::to_string(child));
+  std::filesystem::create_directory_symlink(photos, linked);
   const CliRun run = run_cli({"silhouettes", kSample, dir / "strokes.gpkg"});
   REQUIRE(run.code == 0);
   CHECK_FALSE(std::filesystem::exists(stale));
   CHECK(std::filesystem::exists(live));         // a run still going
   CHECK_FALSE(std::filesystem::exists(other));  // another output's, of a run gone too
+  CHECK(std::filesystem::exists(photos + "/sub/img.jpg"));
+  CHECK(std::filesystem::is_symlink(linked));
   CHECK(summarise(dir / "strokes.gpkg").features > 100);
 }
 

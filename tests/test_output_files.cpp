@@ -218,3 +218,16 @@ TEST_CASE("clashes between outputs and inputs are found alike for every front en
   // Nothing shared, or nothing given: no clash.
   CHECK_FALSE(clash({{"OUTPUT", dir / "out.tif"}, {"--preview", ""}, {"--stats-json", ""}}));
 }
+
+TEST_CASE("a lock file planted as a link is refused, its target never made", "[io][robustness]") {
+  ScratchDir dir("planted_lock");
+  std::filesystem::create_directory(dir / "elsewhere");
+  const std::string target = dir / "elsewhere/made_by_root";
+  std::filesystem::create_symlink(target, dir / ".o.gpkg.lock");
+  const CliRun run = run_cli({"silhouettes", kSample, dir / "o.gpkg"});
+  CHECK(run.code == 1);
+  CHECK_THAT(run.err, Catch::Contains("lock file is a symbolic link"));
+  CHECK_THAT(run.err, Catch::Contains(".o.gpkg.lock"));
+  CHECK_FALSE(std::filesystem::exists(target));
+  CHECK_FALSE(std::filesystem::exists(dir / "o.gpkg"));
+}

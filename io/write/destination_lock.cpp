@@ -33,10 +33,15 @@ int lock_file(const std::filesystem::path& path, const std::filesystem::path& de
               const std::function<void()>& waiting, const std::function<void()>& stop) {
   bool told = false;
   for (;;) {
-    const int fd = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    // Never through a link: a planted ".NAME.lock" link would have a run as root make or lock
+    // the file it points to.
+    const int fd = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
     if (fd < 0) {
-      throw Error("cannot lock '" + destination.string() +
-                  "' for writing: " + std::strerror(errno));
+      const int reason = errno;
+      throw Error("cannot lock '" + destination.string() + "' for writing: " +
+                  (reason == ELOOP ? std::string("its lock file is a symbolic link")
+                                   : std::strerror(reason)) +
+                  " ('" + path.string() + "'; it may be removed when no run is writing there)");
     }
     while (flock(fd, LOCK_EX | LOCK_NB) != 0) {
       if (!told && waiting) waiting();

@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <system_error>
 #include <vector>
 
@@ -21,8 +22,19 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A staging folder is named ".NAME.partial-PID".
+// A staging folder is named ".NAME.partial-PID" and holds this marker from its making on: only a
+// folder with the marker is ever removed as a staging folder (a user's ".photos.partial-88888"
+// is not ours).
 constexpr char kStagingMark[] = ".partial-";
+constexpr char kStagingMarker[] = ".terrain-sketch-staging";
+
+// True when `folder` is a staging folder a run of this tool made: a real folder (not a link to
+// one) holding the marker.
+bool made_by_a_run(const fs::path& folder) {
+  std::error_code ec;
+  return fs::is_directory(fs::symlink_status(folder, ec)) &&
+         fs::is_regular_file(fs::symlink_status(folder / kStagingMarker, ec));
+}
 
 // The folder `destination` goes in, after checking that it names a file in a folder that exists
 // and can be written.
@@ -58,7 +70,7 @@ void remove_stale_staging(const fs::path& folder) {
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
     const std::size_t mark = name.rfind(kStagingMark);
-    if (name.empty() || name[0] != '.' || mark == std::string::npos || !entry.is_directory(ec))
+    if (name.empty() || name[0] != '.' || mark == std::string::npos || !made_by_a_run(entry.path()))
       continue;
     const std::string pid = name.substr(mark + std::strlen(kStagingMark));
     if (pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
@@ -96,6 +108,26 @@ void remove_earlier_output(const fs::path& destination, const std::vector<fs::pa
   }
 }
 
+// Makes this run's staging folder for `destination`, marked as made by a run; one of this process
+// left by an earlier output of the same name is removed first, a folder that is not ours refused.
+fs::path make_staging(const fs::path& destination, const fs::path& folder) {
+  const fs::path staging = hidden_beside(destination, kStagingMark + std::to_string(getpid()));
+  std::error_code ec;
+  if (made_by_a_run(staging)) fs::remove_all(staging, ec);
+  if (!fs::create_directory(staging, ec)) {
+    throw Error("cannot write in folder '" + folder.string() + "': " +
+                (ec ? ec.message()
+                    : "'" + staging.filename().string() +
+                          "' is there and was not made by this tool; move it"));
+  }
+  std::ofstream marker(staging / kStagingMarker);
+  if (!marker) {
+    fs::remove(staging, ec);
+    throw Error("cannot write in folder '" + folder.string() + "'");
+  }
+  return staging;
+}
+
 }  // namespace
 
 void check_output_path(const fs::path& destination) {
@@ -107,21 +139,19 @@ void write_atomically(const fs::path& destination,
   const fs::path folder = output_folder(destination);
   std::error_code ec;
   remove_stale_staging(folder);
-  const fs::path staging = hidden_beside(destination, kStagingMark + std::to_string(getpid()));
-  fs::remove_all(staging, ec);
-  if (!fs::create_directory(staging, ec)) {
-    throw Error("cannot write in folder '" + folder.string() + "': " + ec.message());
-  }
+  const fs::path staging = make_staging(destination, folder);
   try {
     write(staging / destination.filename());
     std::vector<fs::path> made;
-    for (const auto& entry : fs::directory_iterator(staging)) made.push_back(entry.path());
+    for (const auto& entry : fs::directory_iterator(staging))
+      if (entry.path().filename() != kStagingMarker) made.push_back(entry.path());
     {
       // One run at a time puts its set in place, the earlier output's files all gone.
       const DestinationLock lock(destination);
       remove_earlier_output(destination, made);
       for (const auto& file : made) fs::rename(file, folder / file.filename());
     }
+    fs::remove(staging / kStagingMarker);
     fs::remove(staging);
   } catch (const fs::filesystem_error& e) {
     fs::remove_all(staging, ec);
