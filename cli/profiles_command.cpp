@@ -4,8 +4,6 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/interrupt.h"
-#include "core/applications/profile_plot.h"
-#include "core/method/visibility.h"
 #include "io/write/vector_writer.h"
 
 namespace tsk::cli {
@@ -16,10 +14,8 @@ int profiles(const Args& args, std::ostream& out, std::ostream& err,
   io::check_vector_output(o.output, o.format);
   const io::HeldDemFile held = load_dem(o, err);
   const io::Dem& dem = held.dem;
-  CellFlags flags;
-  classify_visibility(dem.oriented, dem.frame.d, o.params.view, flags, o.params.threads);
-  const auto lines = profile_plot(dem.oriented, flags, dem.frame, o.params.view, dem.geotransform,
-                                  static_cast<std::size_t>(o.every), dem.lowest_height);
+  const auto lines = plot_profiles(held.held(), o.params.view, static_cast<std::size_t>(o.every),
+                                   o.params.threads);
   stop_if_interrupted();
   io::write_profile_lines(o.output, o.format, lines, dem.srs_wkt);
   out << o.output << ": " << lines.size() << " visible cross-section pieces\n";

@@ -1,10 +1,10 @@
 // terrain-sketch pstrokes: the P-stroke sketch.
 #include <ostream>
+#include <vector>
 
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/interrupt.h"
-#include "core/applications/pstrokes.h"
 #include "io/write/vector_writer.h"
 
 namespace tsk::cli {
@@ -14,13 +14,11 @@ int pstrokes(const Args& args, std::ostream& out, std::ostream& err, const Progr
   o.pstrokes.validate();
   io::check_vector_output(o.output, o.format);
   const io::HeldDemFile held = load_dem(o, err);
-  const io::Dem& dem = held.dem;
-  const SilhouetteResult result = sketch_whole(o, held, progress, err);
+  const PStrokeRun run = sketch_pstrokes(held.held(), o.params, o.pstrokes, progress);
+  print_filter(run.filter, err);
+  const std::vector<PStroke>& strokes = run.strokes;
   stop_if_interrupted();
-  const auto strokes =
-      pstroke_sketch(dem.oriented, result.flags, dem.frame, o.params.view, dem.geotransform,
-                     o.params.geometry, o.pstrokes, dem.lowest_height, o.params.threads);
-  io::write_pstrokes(o.output, o.format, strokes, dem.srs_wkt);
+  io::write_pstrokes(o.output, o.format, strokes, held.dem.srs_wkt);
   out << o.output << ": " << strokes.size() << " P-strokes\n";
   return 0;
 }

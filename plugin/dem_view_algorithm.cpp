@@ -309,16 +309,21 @@ RasterGrid& DemViewAlgorithm::readRaster(QgsProcessingFeedback* feedback, double
   return *mRaster;
 }
 
-SilhouetteResult DemViewAlgorithm::runSilhouettes(const SilhouetteParams& params,
-                                                  QgsProcessingFeedback* feedback, double from,
-                                                  double to) {
-  const ProgressFn progress = [feedback, from, to](double fraction) {
+ProgressFn DemViewAlgorithm::progressBetween(QgsProcessingFeedback* feedback, double from,
+                                             double to) {
+  return [feedback, from, to](double fraction) {
     if (!feedback) return true;
     feedback->setProgress(from + (to - from) * fraction);
     return !feedback->isCanceled();
   };
+}
+
+SilhouetteResult DemViewAlgorithm::runSilhouettes(const SilhouetteParams& params,
+                                                  QgsProcessingFeedback* feedback, double from,
+                                                  double to) {
   return withCoreErrors([&] {
-    SilhouetteResult result = sketch_held_dem(mRaster->held(), params, progress);
+    SilhouetteResult result =
+        sketch_held_dem(mRaster->held(), params, progressBetween(feedback, from, to));
     logFilter(result.filter, feedback);
     return result;
   });

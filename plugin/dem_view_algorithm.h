@@ -72,6 +72,9 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   RasterGrid& readRaster(QgsProcessingFeedback* feedback, double progressTo);
   void releaseRaster();
 
+  // Progress moving from `from` to `to` percent as the core reports its share done, and whether to
+  // go on (Cancel).
+  static ProgressFn progressBetween(QgsProcessingFeedback* feedback, double from, double to);
   // Runs the silhouette method on the raster read by readRaster(), its filter adapted to the DEM
   // (and logged), moving progress from `from` to `to` percent and stopping on cancel; the core's
   // errors become QgsProcessingException.

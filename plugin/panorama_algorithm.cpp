@@ -151,11 +151,7 @@ double PanoramaAlgorithm::readParameters(const QVariantMap& parameters,
 
 PanoramaResult PanoramaAlgorithm::sketch(QgsProcessingFeedback* feedback) {
   readRaster(feedback, 20);
-  const ProgressFn progress = [feedback](double fraction) {
-    if (!feedback) return true;
-    feedback->setProgress(20 + 60 * fraction);
-    return !feedback->isCanceled();
-  };
+  const ProgressFn progress = progressBetween(feedback, 20, 80);
   const PanoramaChoice choice{mView, mFilter, !mVisibility.isEmpty()};
   return withCoreErrors([&] {
     PanoramaRun run = sketch_panorama_on(preparedRaster().held(), choice, progress);

@@ -2,9 +2,7 @@
 
 #include <qgsprocessingfeedback.h>
 
-#include "core/applications/profile_plot.h"
 #include "core/base/errors.h"
-#include "core/method/visibility.h"
 #include "plugin/layer_style.h"
 #include "plugin/line_output.h"
 #include "plugin/qgis_compat.h"
@@ -58,12 +56,8 @@ QVariantMap ProfilePlotAlgorithm::processAlgorithm(const QVariantMap& parameters
                                                    QgsProcessingContext& context,
                                                    QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 50);
-  const std::vector<ProfileLine> lines = withCoreErrors([&] {
-    CellFlags flags;
-    classify_visibility(raster.oriented(), raster.frame().d, mView, flags);
-    return profile_plot(raster.oriented(), flags, raster.frame(), mView, raster.geotransform(),
-                        static_cast<std::size_t>(mEvery), raster.lowestHeight());
-  });
+  const std::vector<ProfileLine> lines = withCoreErrors(
+      [&] { return plot_profiles(raster.held(), mView, static_cast<std::size_t>(mEvery), 0); });
   QgsFields fields;
   fields.append(makeField(QStringLiteral("section"), FieldKind::Integer));
   fields.append(makeField(QStringLiteral("distance"), FieldKind::Real));

@@ -81,11 +81,11 @@ QVariantMap PStrokeAlgorithm::processAlgorithm(const QVariantMap& parameters,
                                                QgsProcessingContext& context,
                                                QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 25);
-  const SilhouetteResult result = runSilhouettes(mParams, feedback, 25, 40);
   const std::vector<PStroke> strokes = withCoreErrors([&] {
-    return pstroke_sketch(raster.oriented(), result.flags, raster.frame(), mParams.view,
-                          raster.geotransform(), mParams.geometry, mPStrokes,
-                          raster.lowestHeight());
+    PStrokeRun run =
+        sketch_pstrokes(raster.held(), mParams, mPStrokes, progressBetween(feedback, 25, 40));
+    logFilter(run.filter, feedback);
+    return std::move(run.strokes);
   });
   QgsFields fields;
   fields.append(makeField(QStringLiteral("class"), FieldKind::Text));

@@ -225,11 +225,7 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
                         drawn);
   // Each stroke goes to its output as it completes, from the thread that links the chains, while
   // the other threads work on the next profiles. A failure or cancel discards both outputs.
-  const ProgressFn progress = [feedback](double f) {
-    if (!feedback) return true;
-    feedback->setProgress(kCoreEnd * f);
-    return !feedback->isCanceled();
-  };
+  const ProgressFn progress = progressBetween(feedback, 0, kCoreEnd);
   const SilhouetteResult result = withCoreErrors([&] {
     return sketch_silhouettes(dem, mParams, strip, progress, [&](Stroke&& stroke) {
       (stroke.cls == StrokeClass::factual ? factual : formulated).add(stroke);

@@ -59,6 +59,25 @@ PlanObliqueDrape lay_out_drape(const HeldDem& dem, const ViewParams& view, unsig
   return PlanObliqueDrape(dem.oriented, flags, dem.frame, view, dem.lowest_height, progress);
 }
 
+std::vector<ProfileLine> plot_profiles(const HeldDem& dem, const ViewParams& view,
+                                       std::size_t every_n, unsigned threads) {
+  require_view(dem, view);
+  CellFlags flags;
+  classify_visibility(dem.oriented, dem.frame.d, view, flags, threads);
+  return profile_plot(dem.oriented, flags, dem.frame, view, dem.source.geotransform, every_n,
+                      dem.lowest_height);
+}
+
+PStrokeRun sketch_pstrokes(const HeldDem& dem, const SilhouetteParams& choice,
+                           const PStrokeParams& pstrokes, const ProgressFn& progress) {
+  pstrokes.validate();
+  const SilhouetteResult result = sketch_held_dem(dem, choice, progress);
+  return {
+      pstroke_sketch(dem.oriented, result.flags, dem.frame, choice.view, dem.source.geotransform,
+                     choice.geometry, pstrokes, dem.lowest_height, choice.threads),
+      result.filter};
+}
+
 PanoramaRun sketch_panorama_on(const HeldDem& dem, const PanoramaChoice& choice,
                                const ProgressFn& progress) {
   if (!dem.frame.as_it_lies())

@@ -6,6 +6,8 @@
 #pragma once
 
 #include "core/applications/drape.h"
+#include "core/applications/profile_plot.h"
+#include "core/applications/pstrokes.h"
 #include "core/method/adaptive_filter.h"
 #include "core/method/silhouettes.h"
 #include "core/panorama/panorama.h"
@@ -41,6 +43,21 @@ SilhouetteResult sketch_held_dem(const HeldDem& dem, const SilhouetteParams& cho
 // space about the DEM's lowest height. Throws Error as sketch_held_dem does.
 PlanObliqueDrape lay_out_drape(const HeldDem& dem, const ViewParams& view, unsigned threads,
                                const ProgressFn& progress = {});
+
+// The profile plot (SPEC 3) of a DEM held whole: every `every_n`-th cross-section, hidden parts
+// removed. Throws Error as sketch_held_dem does.
+std::vector<ProfileLine> plot_profiles(const HeldDem& dem, const ViewParams& view,
+                                       std::size_t every_n, unsigned threads);
+
+struct PStrokeRun {
+  std::vector<PStroke> strokes;
+  FilterReport filter;  // the slope filter the method ran with
+};
+
+// The P-stroke sketch (SPEC 3) of a DEM held whole: the method run with `choice` for its f-set,
+// then the strokes across the view. Throws Error as sketch_held_dem does.
+PStrokeRun sketch_pstrokes(const HeldDem& dem, const SilhouetteParams& choice,
+                           const PStrokeParams& pstrokes, const ProgressFn& progress = {});
 
 // What a panorama's user chooses. The method's view (azimuth, exaggeration, base slope) and
 // geometry do not apply to a panorama; its filter, chaining, strokes, placement and threads do.
