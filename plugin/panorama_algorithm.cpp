@@ -237,8 +237,9 @@ QVariantMap PanoramaAlgorithm::processAlgorithm(const QVariantMap& parameters,
                                                 QgsProcessingFeedback* feedback) {
   const PanoramaResult result = sketch(feedback);
   const RasterGrid& raster = preparedRaster();
-  const bool labelPeaks = parameters.value(kPeaksOutput).isValid() &&
-                          !parameters.value(kPeaksOutput).toString().isEmpty();
+  // Asked for as the dialog asks (a QgsProcessingOutputLayerDefinition, whose toString() is
+  // empty) or as processing.run does (a path).
+  const bool labelPeaks = !parameterAsOutputLayer(parameters, kPeaksOutput, context).isEmpty();
   const std::vector<PeakLeader> leaders =
       labelPeaks ? lead_peaks(result, see_peaks(raster.oriented(), raster.geotransform(),
                                                 result.rays, readPeaks(parameters, context)))
