@@ -228,7 +228,7 @@ void DemViewAlgorithm::refuseClashingOutputs(const QVariantMap& parameters,
                                              QgsProcessingContext& context) const {
   std::vector<io::NamedFile> outputs, inputs;
   for (const QgsProcessingParameterDefinition* output : destinationParameterDefinitions()) {
-    const QString target = parameterAsOutputLayer(parameters, output->name(), context);
+    const QString target = outputTarget(*this, parameters, output->name(), context);
     // A plain path is written whole; "ogr:..." adds a layer to the file.
     outputs.push_back({output->description().toStdString(), localPath(destinationFile(target)),
                        !target.startsWith(QLatin1String("ogr:"))});
@@ -262,6 +262,7 @@ void DemViewAlgorithm::refuseClashingOutputs(const QVariantMap& parameters,
 bool DemViewAlgorithm::checkParameterValues(const QVariantMap& parameters,
                                             QgsProcessingContext& context, QString* message) const {
   if (!QgsProcessingAlgorithm::checkParameterValues(parameters, context, message)) return false;
+  const LayersToLoadKept kept(context);  // the run lists what it writes
   try {
     refuseClashingOutputs(parameters, context);
     // The parameters the widgets cannot check alone (the control point below the column

@@ -109,6 +109,13 @@ void deleteDataset(const QString& path) {
   if (GDALDeleteDataset(nullptr, file.constData()) != CE_None) QFile::remove(path);
 }
 
+QString outputTarget(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
+                     const QString& key, QgsProcessingContext& context) {
+  const LayersToLoadKept kept(context);
+  return QgsProcessingParameters::parameterAsOutputLayer(algorithm.parameterDefinition(key),
+                                                         parameters, context);
+}
+
 QString destinationFile(const QString& target) {
   if (target.startsWith(QLatin1String("ogr:"))) return QgsDataSourceUri(target.mid(4)).database();
   static const QRegularExpression providerPrefix(QStringLiteral("^[A-Za-z_]{2,}:"));
@@ -125,8 +132,7 @@ LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMa
       mFields(fields),
       mExceptionsAtStart(std::uncaught_exceptions()) {
   const QgsProcessingParameterDefinition* definition = algorithm.parameterDefinition(key);
-  const QString target =
-      QgsProcessingParameters::parameterAsOutputLayer(definition, parameters, context);
+  const QString target = outputTarget(algorithm, parameters, key, context);
   const FileTarget file = fileTarget(target);
   // One run at a time writes a file, so that a run that fails removes only what it made.
   if (!file.path.isEmpty()) mLock = lockDestination(file.path, feedback);

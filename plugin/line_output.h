@@ -32,6 +32,30 @@ class GpkgLineSink;
 // "postgres:", ...) writes no file (empty); a plain path is a file QGIS writes whole.
 QString destinationFile(const QString& target);
 
+// Restores, when it goes, the layers `context` was to load on completion when it was made: what a
+// check reads of the outputs (QGIS's parameterAsOutputLayer lists each as a layer to load, a new
+// temporary file each time) must not leave layers that no run writes, which the dialog, sharing
+// its context between the check and the run, reported as "not correctly generated".
+class LayersToLoadKept {
+ public:
+  explicit LayersToLoadKept(QgsProcessingContext& context)
+      : mContext(context), mKept(context.layersToLoadOnCompletion()) {}
+  ~LayersToLoadKept() { mContext.setLayersToLoadOnCompletion(mKept); }
+  LayersToLoadKept(const LayersToLoadKept&) = delete;
+  LayersToLoadKept& operator=(const LayersToLoadKept&) = delete;
+
+ private:
+  QgsProcessingContext& mContext;
+  QMap<QString, QgsProcessingContext::LayerDetails> mKept;
+};
+
+// Where output `key` of `algorithm` goes, read without asking QGIS to load it: QGIS's own
+// parameterAsOutputLayer also lists a destination the dialog gave (with a project) as a layer to
+// load, which for a temporary sink is a name ("memory:Factual silhouettes") that no layer has: the
+// dialog then said the layer "was not correctly generated".
+QString outputTarget(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
+                     const QString& key, QgsProcessingContext& context);
+
 // Removes a dataset with the files its format keeps beside it (a shapefile's .shx, .dbf, ...).
 void deleteDataset(const QString& path);
 

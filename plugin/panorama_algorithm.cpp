@@ -239,7 +239,7 @@ QVariantMap PanoramaAlgorithm::processAlgorithm(const QVariantMap& parameters,
   const RasterGrid& raster = preparedRaster();
   // Asked for as the dialog asks (a QgsProcessingOutputLayerDefinition, whose toString() is
   // empty) or as processing.run does (a path).
-  const bool labelPeaks = !parameterAsOutputLayer(parameters, kPeaksOutput, context).isEmpty();
+  const bool labelPeaks = !outputTarget(*this, parameters, kPeaksOutput, context).isEmpty();
   const std::vector<PeakLeader> leaders =
       labelPeaks ? lead_peaks(result, see_peaks(raster.oriented(), raster.geotransform(),
                                                 result.rays, readPeaks(parameters, context)))

@@ -1,0 +1,89 @@
+"""Every algorithm run as the Processing dialog runs it, with its defaults: each output a
+QgsProcessingOutputLayerDefinition to a temporary output in the project, then Processing's own
+post-processing (handleAlgorithmResults), which loads the results. No error may be reported, and
+every layer output must be in the project, styled by its name.
+
+Usage (QGIS's Python): /usr/bin/python3 postprocessing_test.py BUILD_DIR REPO_DIR
+Prints one line per algorithm and 'N passed, N failed'; exits 1 on any failure.
+"""
+import os
+import sys
+
+build, repo = (os.path.abspath(a) for a in sys.argv[1:3])
+os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+sys.path.append("/usr/share/qgis/python/plugins")
+sys.path.insert(0, os.path.join(build, "qgis-plugin"))
+
+from qgis.core import (QgsApplication, QgsProcessingContext, QgsProcessingFeedback,  # noqa: E402
+                       QgsProcessingOutputLayerDefinition, QgsProject)
+
+app = QgsApplication([], False)
+app.initQgis()
+from processing.core.Processing import Processing  # noqa: E402
+from processing.gui.Postprocessing import handleAlgorithmResults  # noqa: E402
+import terrain_sketch  # noqa: E402
+
+terrain_sketch.classFactory(None).initProcessing()
+Processing.initialize()
+SAMPLE = os.path.join(repo, "resources", "sample", "jacksboro_utm16n.tif")
+SUMMIT = "749008.1394,4009477.9308 [EPSG:32616]"
+
+
+class Feedback(QgsProcessingFeedback):
+    """Keeps what Processing reports as errors (the dialog shows them in red)."""
+
+    def __init__(self):
+        super().__init__()
+        self.errors = []
+
+    def reportError(self, error, fatalError=False):  # noqa: N802 (QGIS's name)
+        self.errors.append(error)
+
+
+def run_as_dialog(alg_id, inputs):
+    """Runs `alg_id` with `inputs` and every destination a temporary output, as the dialog does;
+    returns (Processing's errors, the outputs not loaded into the project)."""
+    project = QgsProject.instance()
+    project.removeAllMapLayers()
+    alg = QgsApplication.processingRegistry().createAlgorithmById("terrainsketch:" + alg_id)
+    params = dict(inputs)
+    for output in alg.destinationParameterDefinitions():
+        params[output.name()] = QgsProcessingOutputLayerDefinition("TEMPORARY_OUTPUT", project)
+    context = QgsProcessingContext()
+    context.setProject(project)
+    feedback = Feedback()
+    ok, message = alg.checkParameterValues(params, context)
+    if not ok:
+        return [message], []
+    results, ran = alg.run(params, context, feedback)
+    if not ran:
+        return feedback.errors or ["the run failed"], []
+    handleAlgorithmResults(alg, context, feedback, False, params)
+    loaded = {layer.source() for layer in project.mapLayers().values()}
+    loaded |= {layer.id() for layer in project.mapLayers().values()}
+    missing = [name for name, value in results.items()
+               if alg.outputDefinition(name).type() in ("outputVector", "outputRaster", "outputLayer")
+               and value and not any(str(value) in source or source in str(value)
+                                     for source in loaded)]
+    return feedback.errors, missing
+
+
+CASES = [
+    ("silhouettes", {"INPUT": SAMPLE}),
+    ("profileplot", {"INPUT": SAMPLE}),
+    ("pstrokes", {"INPUT": SAMPLE}),
+    ("classification", {"INPUT": SAMPLE}),
+    ("rowslope", {"INPUT": SAMPLE}),
+    ("drape", {"INPUT": SAMPLE, "SOURCE": SAMPLE}),
+    ("panorama", {"INPUT": SAMPLE, "OBSERVER": SUMMIT, "AZIMUTH_FROM": 300, "AZIMUTH_TO": 30}),
+]
+passed = failed = 0
+for alg_id, inputs in CASES:
+    errors, missing = run_as_dialog(alg_id, inputs)
+    ok = not errors and not missing
+    passed, failed = passed + ok, failed + (not ok)
+    print(("ok      " if ok else "FAILED  ") + alg_id +
+          ("" if ok else f": errors {errors}, not loaded {missing}"), flush=True)
+print(f"post-processing: {passed} passed, {failed} failed")
+app.exitQgis()
+sys.exit(1 if failed else 0)
