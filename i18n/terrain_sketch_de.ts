@@ -13,12 +13,12 @@
         <translation>Zeigt, was das Silhouettenverfahren mit jeder Zelle des DGM macht, auf dem eigenen Gitter des DGM: 1 sichtbar, 2 verdeckt, 3 verdeckend (faktische Silhouette), 4 c-Menge (abgewandter Hang, der sichtbar wird), 5 f-Menge (vom Neigungsfilter behalten), 6 t-Menge (von der Ausdünnung behalten); 0 ist NoData. Gestaltet wie die Kartenansichten der Dissertation: Verdeckung rot, verdeckte Zonen blau, c-Menge hellgrau, f-Menge dunkelgrau. Die Stufenstatistik steht in den Ergebnissen und im Protokoll.</translation>
     </message>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="40" />
+        <location filename="../plugin/classification_algorithm.cpp" line="41" />
         <source>Silhouette stages</source>
         <translation>Silhouetten-Stufen</translation>
     </message>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="41" />
+        <location filename="../plugin/classification_algorithm.cpp" line="42" />
         <source>Byte raster of stage classes on the DEM's grid.</source>
         <translation>Byte-Raster der Stufenklassen auf dem Gitter des DGM.</translation>
     </message>
@@ -39,202 +39,17 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="74" />
-        <source>Elevation (DEM)</source>
-        <translation>Höhenmodell (DGM)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="75" />
-        <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
-        <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="78" />
-        <source>Band</source>
-        <translation>Kanal</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="80" />
-        <source>The band holding the heights (the first when none is chosen).</source>
-        <translation>Der Kanal mit den Höhen (der erste, wenn keiner gewählt ist).</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="58" />
-        <source>View azimuth (degrees)</source>
-        <translation>Blickrichtung (Grad)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="59" />
-        <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
-        <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="65" />
-        <source>Vertical exaggeration</source>
-        <translation>Überhöhung</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="66" />
-        <source>Factor applied to heights before occlusion is computed.</source>
-        <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="67" />
-        <source>Base slope (%)</source>
-        <translation>Grundneigung (%)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="69" />
-        <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
-        <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="86" />
-        <source>Slope filter</source>
-        <translation>Neigungsfilter</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="88" />
-        <source>Adapted to the DEM</source>
-        <translation>An das DGM angepasst</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="89" />
-        <source>Fixed (the thesis's cut-offs)</source>
-        <translation>Fest (die Schwellen der Dissertation)</translation>
-    </message>
-    <message>
         <location filename="../plugin/dem_view_algorithm.cpp" line="92" />
-        <source>Adapted to the DEM (the default): the cut-offs below are scaled by the DEM's median slope over 24 %, that of the terrain the thesis tuned them on at 75 m cells (from 1/16 to 4 times), so that coarse, fine, flat and steep DEMs all give a balanced sketch; height steps within half the DEM's height unit count as flat, so the sketch holds still as the view turns. Fixed: the cut-offs as given, the thesis's filter.</source>
-        <translation>An das DGM angepasst (Standard): die Schwellen unten werden mit der mittleren Hangneigung (Median) des DGM geteilt durch 24 % skaliert, der des Geländes, auf das die Dissertation sie bei 75-m-Zellen abgestimmt hat (1/16- bis 4-fach), so dass grobe, feine, flache und steile DGM alle eine ausgewogene Skizze ergeben; Höhenstufen innerhalb der halben Höheneinheit des DGM gelten als flach, so dass die Skizze stehen bleibt, wenn sich die Blickrichtung dreht. Fest: die Schwellen wie angegeben, der Filter der Dissertation.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="99" />
-        <source>Adapt the filter to</source>
-        <translation>Filter anpassen an</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="101" />
-        <source>The whole DEM</source>
-        <translation>Das ganze DGM</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="102" />
-        <source>Each neighbourhood</source>
-        <translation>Jede Nachbarschaft</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="105" />
-        <source>With the adapted filter: one scale for the whole DEM, or a scale for each neighbourhood, so that a plain beside mountains keeps its subtle breaks of slope (this reads the DEM once more).</source>
-        <translation>Beim angepassten Filter: ein Maßstab für das ganze DGM oder einer für jede Nachbarschaft, so dass eine Ebene neben Bergen ihre feinen Gefällsknicke behält (dazu wird das DGM ein weiteres Mal gelesen).</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="110" />
-        <source>Neighbourhood (cells)</source>
-        <translation>Nachbarschaft (Zellen)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="113" />
-        <source>With a scale for each neighbourhood: the side of a neighbourhood, in DEM cells. Scales are blended between neighbourhoods, so the filter has no seams.</source>
-        <translation>Bei einem Maßstab je Nachbarschaft: die Seitenlänge einer Nachbarschaft in DGM-Zellen. Zwischen Nachbarschaften werden die Maßstäbe überblendet, so dass der Filter keine Nähte hat.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="116" />
-        <source>Row slope cut-off (%)</source>
-        <translation>Grenzwert Zeilenneigung (%)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="118" />
-        <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
-        <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="120" />
-        <source>Column slope cut-off (%)</source>
-        <translation>Grenzwert Spaltenneigung (%)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="122" />
-        <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
-        <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="124" />
-        <source>Control point column slope (%)</source>
-        <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="126" />
-        <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
-        <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="130" />
-        <source>Allow for diagonals</source>
-        <translation>Diagonalen berücksichtigen</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="131" />
-        <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
-        <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="137" />
-        <source>Strokes</source>
-        <translation>Striche</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="139" />
-        <source>Drawn (joined, smoothed, tapered)</source>
-        <translation>Gezeichnet (verbunden, geglättet, verjüngt)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="140" />
-        <source>Exact (the thesis's, a point per cell)</source>
-        <translation>Exakt (wie in der Dissertation, ein Punkt je Zelle)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="154" />
-        <source>Geometry</source>
-        <translation>Geometrie</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="156" />
-        <source>Map (cell centres)</source>
-        <translation>Karte (Zellmittelpunkte)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="156" />
-        <source>Plan oblique (the sketch)</source>
-        <translation>Plan oblique (die Skizze)</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="159" />
-        <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
-        <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="197" />
-        <source>Slope filter adapted to the DEM: its median slope is %1 % against %2 % on the thesis's terrain, so the cut-offs are scaled by %3: row %4 %, column %5 %, control point %6 %.</source>
-        <translation>Neigungsfilter an das DGM angepasst: seine mittlere Hangneigung ist %1 % gegenüber %2 % im Gelände der Dissertation, daher werden die Schwellen mit %3 skaliert: Zeile %4 %, Spalte %5 %, Kontrollpunkt %6 %.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="207" />
-        <source>Each neighbourhood of %1 cells scales them from %2 to %3 times the thesis's.</source>
-        <translation>Jede Nachbarschaft von %1 Zellen skaliert sie auf das %2- bis %3-fache der Schwellen der Dissertation.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="257" />
         <source>%1 and %2 would both be written to %3, one over the other; choose different files, or save both to one GeoPackage with a layer name each.</source>
         <translation>%1 und %2 würden beide nach %3 geschrieben, eines über das andere; wählen Sie verschiedene Dateien, oder speichern Sie beide in ein GeoPackage mit je einem Layernamen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="252" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="87" />
         <source>%1 would be written into %2, the file of %3, which this algorithm reads; choose another file.</source>
         <translation>%1 würde in %2 geschrieben, die Datei von %3, die dieser Algorithmus liest; wählen Sie eine andere Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="300" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="136" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -252,37 +67,37 @@
         <translation>Projiziert ein Raster auf dem Gitter des DGM (eine Schummerung, eine Neigungs- oder Zeilenneigungskarte, ein Bild; alle Kanäle) in den Plan-oblique-Raum: jede sichtbare Zelle wird entlang der Blickrichtung um Überhöhung / Grundneigung x (Höhe - niedrigste Höhe) verschoben, hinter näherem Gelände verdecktes Gelände wird entfernt und dem Betrachter zugewandte Hänge werden gedehnt. Das Ergebnis liegt genau unter den Plan-oblique-Silhouetten und der Profildarstellung derselben Ansicht. Das Raster muss die Größe des DGM haben (zuerst auf das Gitter des DGM umtasten).</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="47" />
+        <location filename="../plugin/drape_algorithm.cpp" line="48" />
         <source>Raster to drape</source>
         <translation>Zu drapierendes Raster</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="48" />
+        <location filename="../plugin/drape_algorithm.cpp" line="49" />
         <source>A raster with the DEM's number of rows and columns; all its bands are draped.</source>
         <translation>Ein Raster mit der Zeilen- und Spaltenzahl des DGM; alle seine Kanäle werden drapiert.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="50" />
+        <location filename="../plugin/drape_algorithm.cpp" line="51" />
         <source>Draped raster</source>
         <translation>Drapiertes Raster</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="51" />
+        <location filename="../plugin/drape_algorithm.cpp" line="52" />
         <source>Float32 raster in plan-oblique space, one band per source band.</source>
         <translation>Float32-Raster im Plan-oblique-Raum, ein Kanal je Quellkanal.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="70" />
+        <location filename="../plugin/drape_algorithm.cpp" line="71" />
         <source>The raster to drape has %1 x %2 cells, the DEM %3 x %4: resample it to the DEM's grid first (Raster &gt; Projections &gt; Warp with the DEM's extent and resolution).</source>
         <translation>Das zu drapierende Raster hat %1 x %2 Zellen, das DGM %3 x %4: tasten Sie es zuerst auf das Gitter des DGM um (Raster &gt; Projektionen &gt; Transformieren mit Ausdehnung und Auflösung des DGM).</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="106" />
+        <location filename="../plugin/drape_algorithm.cpp" line="107" />
         <source>Could not read band %1 of the raster to drape.</source>
         <translation>Kanal %1 des zu drapierenden Rasters konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="125" />
+        <location filename="../plugin/drape_algorithm.cpp" line="126" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -291,7 +106,7 @@
     <name>FilterDiagramAlgorithm</name>
     <message>
         <location filename="../plugin/filter_diagram_algorithm.cpp" line="20" />
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="40" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="41" />
         <source>Slope filter diagram</source>
         <translation>Diagramm des Neigungsfilters</translation>
     </message>
@@ -301,17 +116,17 @@
         <translation>Trägt für jede Zelle den Betrag ihrer Spaltenneigung (entlang der Blickrichtung) gegen ihre Zeilenneigung (quer dazu) auf: alle Zellen grau, die Kandidatenmenge rot, die vom Neigungsfilter behaltenen Zellen schwarz, über dem grauen Entfernungsbereich des Filters mit eingekreistem Kontrollpunkt. Mit verschiedenen Filterparametern ausführen, um vor dem Zeichnen der Silhouetten zu sehen, was sie behalten. Die Seite öffnet sich im Ergebnisanzeiger.</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="40" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="41" />
         <source>HTML files (*.html)</source>
         <translation>HTML-Dateien (*.html)</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="41" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="42" />
         <source>HTML page with the diagram as SVG.</source>
         <translation>HTML-Seite mit dem Diagramm als SVG.</translation>
     </message>
     <message>
-        <location filename="../plugin/filter_diagram_algorithm.cpp" line="61" />
+        <location filename="../plugin/filter_diagram_algorithm.cpp" line="60" />
         <source>Slope filter</source>
         <translation>Neigungsfilter</translation>
     </message>
@@ -329,7 +144,7 @@
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/line_output.cpp" line="185" />
+        <location filename="../plugin/line_output.cpp" line="191" />
         <source>Could not write %1 whole: the file ends cut short. Is the disk full?</source>
         <translation>%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der Datenträger voll?</translation>
     </message>
@@ -347,62 +162,62 @@
         <translation>Kurze Striche quer zur Blickrichtung, wo das Gelände knickt (Visvalingam und Dowson 1998). Jedes Profil entlang der Ansicht (Spalte) und quer dazu (Zeile) wird mit Visvalingams Linienvereinfachung nach effektiver Fläche bewertet; eine sichtbare Zelle, deren konvexe oder konkave Bewertung die Toleranz ihrer Klasse erreicht, setzt einen Strich entlang des Querschnitts. Die Toleranzen sind effektive Flächen in Quadratmetern der Dreiecke aus Abstand (m) und nicht überhöhter Höhe (m) entlang der Profile; die Vorgaben sind die der spärlichen Skizze eines 50-m-DGM in der Dissertation. Zusammen mit den Silhouetten: kein P-Strich beginnt in einer Zelle der f-Menge, und keiner wird in eine hinein verlängert.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="45" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="46" />
         <source>Convex column tolerance (m²)</source>
         <translation>Toleranz konvex entlang (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="46" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="47" />
         <source>Effective area a convex bend along the view must reach.</source>
         <translation>Effektive Fläche, die ein konvexer Knick entlang der Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="47" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="48" />
         <source>Concave column tolerance (m²)</source>
         <translation>Toleranz konkav entlang (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="48" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="49" />
         <source>Effective area a concave bend along the view must reach.</source>
         <translation>Effektive Fläche, die ein konkaver Knick entlang der Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="49" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="50" />
         <source>Convex row tolerance (m²)</source>
         <translation>Toleranz konvex quer (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="50" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="51" />
         <source>Effective area a convex bend across the view must reach.</source>
         <translation>Effektive Fläche, die ein konvexer Knick quer zur Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="51" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="52" />
         <source>Concave row tolerance (m²)</source>
         <translation>Toleranz konkav quer (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="52" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="53" />
         <source>Effective area a concave bend across the view must reach.</source>
         <translation>Effektive Fläche, die ein konkaver Knick quer zur Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="54" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="55" />
         <source>Stroke half length (cells)</source>
         <translation>Halbe Strichlänge (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="56" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="57" />
         <source>Cells drawn on each side of a seed along the cross-section.</source>
         <translation>Zellen, die auf jeder Seite eines Startpunkts entlang des Querschnitts gezeichnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="59" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="60" />
         <source>P-strokes</source>
         <translation>P-Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="60" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="61" />
         <source>P-strokes as lines with their class and score.</source>
         <translation>P-Striche als Linien mit ihrer Klasse und Bewertung.</translation>
     </message>
@@ -435,137 +250,137 @@
         <translation>Beobachterhöhe (m)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="68" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="69" />
         <source>The eye's height above the ground at the observer, in metres.</source>
         <translation>Die Augenhöhe über dem Boden am Standpunkt, in Metern.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="70" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="71" />
         <source>Range (map units)</source>
         <translation>Reichweite (Karteneinheiten)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="73" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="74" />
         <source>The farthest distance drawn, in the DEM's map units; when not given, the whole DEM.</source>
         <translation>Die größte gezeichnete Entfernung in den Karteneinheiten des DGM; ohne Angabe das ganze DGM.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="75" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="77" />
         <source>Field of view from (degrees)</source>
         <translation>Blickfeld von (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="76" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="78" />
         <source>The field of view turns clockwise from this azimuth (from grid north) to the next. 0 to 360, the default, is all round.</source>
         <translation>Das Blickfeld dreht sich im Uhrzeigersinn von diesem Azimut (von Gitternord) zum nächsten. 0 bis 360, die Vorgabe, ist rundum.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="78" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="81" />
         <source>Field of view to (degrees)</source>
         <translation>Blickfeld bis (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="79" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="82" />
         <source>The azimuth the field of view ends at; equal azimuths make an empty field.</source>
         <translation>Das Azimut, bei dem das Blickfeld endet; gleiche Azimute ergeben ein leeres Blickfeld.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="80" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="83" />
         <source>Refraction coefficient</source>
         <translation>Refraktionskoeffizient</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="81" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="85" />
         <source>How much refraction lessens the earth's curvature (k): heights are lowered by (1 - k) d² / 2R at distance d. 0.13 is the usual value over land.</source>
         <translation>Wie stark die Refraktion die Erdkrümmung vermindert (k): Höhen werden in der Entfernung d um (1 - k) d² / 2R abgesenkt. 0,13 ist der übliche Wert über Land.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="91" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="95" />
         <source>Minimum stroke length (samples)</source>
         <translation>Mindestlänge der Striche (Abtastpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="93" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="97" />
         <source>Strokes of fewer samples are dropped.</source>
         <translation>Striche mit weniger Abtastpunkten werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="94" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="98" />
         <source>Formulated chaining window (samples)</source>
         <translation>Suchfenster der formulierten Verkettung (Abtastpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="96" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="100" />
         <source>How far along the next ray a formulated chain may step.</source>
         <translation>Wie weit eine formulierte Kette auf dem nächsten Strahl springen darf.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="98" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="102" />
         <source>Drawn (the default): a stroke is cut where its chain leaps along the rays, since a leap draws no line on the terrain. Exact: the thesis's strokes, each chain whole.</source>
         <translation>Gezeichnet (Standard): ein Strich wird getrennt, wo seine Kette entlang der Strahlen springt, denn ein Sprung zeichnet keine Linie im Gelände. Exakt: die Striche der Dissertation, jede Kette ganz.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="100" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="104" />
         <source>Panorama strokes on the map</source>
         <translation>Panoramastriche auf der Karte</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="102" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="106" />
         <source>The strokes in the DEM's CRS, with their class, distance and azimuths.</source>
         <translation>Die Striche im KBS des DGM, mit ihrer Klasse, Entfernung und ihren Azimuten.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="103" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="107" />
         <source>Panorama</source>
         <translation>Panorama</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="104" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="108" />
         <source>The same strokes in the panorama: x the azimuth and y the elevation angle, in degrees, without a CRS. Open it in a map of its own.</source>
         <translation>Dieselben Striche im Panorama: x das Azimut und y der Höhenwinkel, in Grad, ohne KBS. In einer eigenen Karte öffnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="107" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="111" />
         <source>Peaks to label</source>
         <translation>Zu beschriftende Gipfel</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="108" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="112" />
         <source>Optional: named points, the summits of a gazetteer. Those whose top the observer sees are labelled in the panorama.</source>
         <translation>Optional: benannte Punkte, die Gipfel eines Ortsverzeichnisses. Die, deren Spitze der Beobachter sieht, werden im Panorama beschriftet.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="111" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="115" />
         <source>Peak name field</source>
         <translation>Namensfeld der Gipfel</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="113" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="117" />
         <source>The field of the peaks holding their names.</source>
         <translation>Das Feld der Gipfel, das ihre Namen enthält.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="114" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="118" />
         <source>Peak labels</source>
         <translation>Gipfelbeschriftungen</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="116" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="120" />
         <source>The peaks in sight as leaders in the panorama, from each top straight up to its label, with the name, distance, azimuth and elevation.</source>
         <translation>Die sichtbaren Gipfel als Hinweislinien im Panorama, von jeder Spitze senkrecht hinauf zu ihrer Beschriftung, mit Name, Entfernung, Azimut und Höhenwinkel.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="118" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="122" />
         <source>Visibility</source>
         <translation>Sichtbarkeit</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="120" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="124" />
         <source>Optional: a raster on the DEM's grid, 1 where the ground is seen, 0 where it is hidden, nodata out of range.</source>
         <translation>Optional: ein Raster auf dem Gitter des DGM, 1 wo der Boden gesehen wird, 0 wo er verdeckt ist, NoData außerhalb der Reichweite.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="135" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="139" />
         <source>The observer lies outside the DEM: choose a point on it.</source>
         <translation>Der Beobachter liegt außerhalb des DGM: einen Punkt darauf wählen.</translation>
     </message>
@@ -575,7 +390,7 @@
         <translation>Die Gipfel haben kein Feld „%1“ für ihre Namen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="258" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="259" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -583,32 +398,32 @@
 <context>
     <name>ProfilePlotAlgorithm</name>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="20" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="18" />
         <source>Profile plot (ridgelines)</source>
         <translation>Profildarstellung (Kammlinien)</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="24" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="22" />
         <source>Draws every n-th cross-section across the line of sight as it appears in the oblique view: in plan-oblique geometry (each point moved along the view azimuth by exaggeration / base slope x (height - lowest height)), with the parts hidden behind nearer terrain removed. The classic ridgeline sketch; it overlays the plan-oblique silhouettes exactly. Each line carries its cross-section number and its distance from the front of the view.</source>
         <translation>Zeichnet jeden n-ten Querschnitt quer zur Blickrichtung so, wie er in der Schrägansicht erscheint: in Plan-oblique-Geometrie (jeder Punkt entlang der Blickrichtung um Überhöhung / Grundneigung x (Höhe - niedrigste Höhe) verschoben), ohne die hinter näherem Gelände verdeckten Teile. Die klassische Kammlinienskizze; sie deckt sich genau mit den Plan-oblique-Silhouetten. Jede Linie trägt die Nummer ihres Querschnitts und ihren Abstand vom vorderen Bildrand.</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="40" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="39" />
         <source>Every n-th cross-section</source>
         <translation>Jeder n-te Querschnitt</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="42" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="41" />
         <source>Distance between drawn cross-sections, in cells along the line of sight.</source>
         <translation>Abstand der gezeichneten Querschnitte in Zellen entlang der Blickrichtung.</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="43" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="42" />
         <source>Profile plot</source>
         <translation>Profildarstellung</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="45" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="44" />
         <source>Visible pieces of the cross-sections as lines.</source>
         <translation>Sichtbare Teile der Querschnitte als Linien.</translation>
     </message>
@@ -717,14 +532,202 @@
         <translation>Der Betrag der Neigung quer zur Blickrichtung in Prozent auf dem Gitter des DGM (zentrale Differenzen quer zur Ansicht). Hell, wo das Gelände quer zur Ansicht flach ist, dunkel, wo es steil ist: der Hintergrund, den die Dissertation unter ihre Silhouetten legt. Nur die Blickrichtung zählt.</translation>
     </message>
     <message>
-        <location filename="../plugin/row_slope_algorithm.cpp" line="34" />
+        <location filename="../plugin/row_slope_algorithm.cpp" line="35" />
         <source>Row slope</source>
         <translation>Zeilenneigung</translation>
     </message>
     <message>
-        <location filename="../plugin/row_slope_algorithm.cpp" line="35" />
+        <location filename="../plugin/row_slope_algorithm.cpp" line="36" />
         <source>Float32 raster of |row slope| in percent.</source>
         <translation>Float32-Raster der |Zeilenneigung| in Prozent.</translation>
+    </message>
+</context>
+<context>
+    <name>SharedParameters</name>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="26" />
+        <source>View azimuth (degrees)</source>
+        <translation>Blickrichtung (Grad)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="27" />
+        <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
+        <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="34" />
+        <source>Vertical exaggeration</source>
+        <translation>Überhöhung</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="35" />
+        <source>Factor applied to heights before occlusion is computed.</source>
+        <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="36" />
+        <source>Base slope (%)</source>
+        <translation>Grundneigung (%)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="38" />
+        <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
+        <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="44" />
+        <source>Elevation (DEM)</source>
+        <translation>Höhenmodell (DGM)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="45" />
+        <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
+        <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="48" />
+        <source>Band</source>
+        <translation>Kanal</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="50" />
+        <source>The band holding the heights (the first when none is chosen).</source>
+        <translation>Der Kanal mit den Höhen (der erste, wenn keiner gewählt ist).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="58" />
+        <source>Slope filter</source>
+        <translation>Neigungsfilter</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="60" />
+        <source>Adapted to the DEM</source>
+        <translation>An das DGM angepasst</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="61" />
+        <source>Fixed (the thesis's cut-offs)</source>
+        <translation>Fest (die Schwellen der Dissertation)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="64" />
+        <source>Adapted to the DEM (the default): the cut-offs below are scaled by the DEM's median slope over 24 %, that of the terrain the thesis tuned them on at 75 m cells (from 1/16 to 4 times), so that coarse, fine, flat and steep DEMs all give a balanced sketch; height steps within half the DEM's height unit count as flat, so the sketch holds still as the view turns. Fixed: the cut-offs as given, the thesis's filter.</source>
+        <translation>An das DGM angepasst (Standard): die Schwellen unten werden mit der mittleren Hangneigung (Median) des DGM geteilt durch 24 % skaliert, der des Geländes, auf das die Dissertation sie bei 75-m-Zellen abgestimmt hat (1/16- bis 4-fach), so dass grobe, feine, flache und steile DGM alle eine ausgewogene Skizze ergeben; Höhenstufen innerhalb der halben Höheneinheit des DGM gelten als flach, so dass die Skizze stehen bleibt, wenn sich die Blickrichtung dreht. Fest: die Schwellen wie angegeben, der Filter der Dissertation.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="71" />
+        <source>Adapt the filter to</source>
+        <translation>Filter anpassen an</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="73" />
+        <source>The whole DEM</source>
+        <translation>Das ganze DGM</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="74" />
+        <source>Each neighbourhood</source>
+        <translation>Jede Nachbarschaft</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="77" />
+        <source>With the adapted filter: one scale for the whole DEM, or a scale for each neighbourhood, so that a plain beside mountains keeps its subtle breaks of slope (this reads the DEM once more).</source>
+        <translation>Beim angepassten Filter: ein Maßstab für das ganze DGM oder einer für jede Nachbarschaft, so dass eine Ebene neben Bergen ihre feinen Gefällsknicke behält (dazu wird das DGM ein weiteres Mal gelesen).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="82" />
+        <source>Neighbourhood (cells)</source>
+        <translation>Nachbarschaft (Zellen)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="86" />
+        <source>With a scale for each neighbourhood: the side of a neighbourhood, in DEM cells. Scales are blended between neighbourhoods, so the filter has no seams.</source>
+        <translation>Bei einem Maßstab je Nachbarschaft: die Seitenlänge einer Nachbarschaft in DGM-Zellen. Zwischen Nachbarschaften werden die Maßstäbe überblendet, so dass der Filter keine Nähte hat.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="89" />
+        <source>Row slope cut-off (%)</source>
+        <translation>Grenzwert Zeilenneigung (%)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="91" />
+        <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
+        <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="94" />
+        <source>Column slope cut-off (%)</source>
+        <translation>Grenzwert Spaltenneigung (%)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="96" />
+        <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
+        <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="99" />
+        <source>Control point column slope (%)</source>
+        <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="101" />
+        <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
+        <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="105" />
+        <source>Allow for diagonals</source>
+        <translation>Diagonalen berücksichtigen</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="106" />
+        <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
+        <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="113" />
+        <source>Strokes</source>
+        <translation>Striche</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="115" />
+        <source>Drawn (joined, smoothed, tapered)</source>
+        <translation>Gezeichnet (verbunden, geglättet, verjüngt)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="116" />
+        <source>Exact (the thesis's, a point per cell)</source>
+        <translation>Exakt (wie in der Dissertation, ein Punkt je Zelle)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="131" />
+        <source>Geometry</source>
+        <translation>Geometrie</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="133" />
+        <source>Map (cell centres)</source>
+        <translation>Karte (Zellmittelpunkte)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="134" />
+        <source>Plan oblique (the sketch)</source>
+        <translation>Plan oblique (die Skizze)</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="137" />
+        <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
+        <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="191" />
+        <source>Slope filter adapted to the DEM: its median slope is %1 % against %2 % on the thesis's terrain, so the cut-offs are scaled by %3: row %4 %, column %5 %, control point %6 %.</source>
+        <translation>Neigungsfilter an das DGM angepasst: seine mittlere Hangneigung ist %1 % gegenüber %2 % im Gelände der Dissertation, daher werden die Schwellen mit %3 skaliert: Zeile %4 %, Spalte %5 %, Kontrollpunkt %6 %.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="201" />
+        <source>Each neighbourhood of %1 cells scales them from %2 to %3 times the thesis's.</source>
+        <translation>Jede Nachbarschaft von %1 Zellen skaliert sie auf das %2- bis %3-fache der Schwellen der Dissertation.</translation>
     </message>
 </context>
 <context>
@@ -774,162 +777,162 @@ Die Stufenkennzahlen (Protokoll und Ausgaben), in Prozent der Zellen mit Daten: 
 Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="109" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="110" />
         <source>Chaining window (cells)</source>
         <translation>Verkettungsfenster (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="110" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
         <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
         <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="112" />
         <source>Minimum stroke cells</source>
         <translation>Mindestzahl Zellen je Strich</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="112" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
         <source>Strokes with fewer cells are dropped (generalisation).</source>
         <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="118" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="118" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="120" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="121" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="121" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="126" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="127" />
         <source>Profiles per strip (0: automatic)</source>
         <translation>Profile je Streifen (0: automatisch)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="127" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="128" />
         <source>The DEM is read and processed this many profiles at a time, the next strip read while this one is processed, so DEMs larger than memory run too. 0 chooses 1024, more for profiles under 1024 cells (a million cells a strip), or fewer when profiles are so long that the strips would take more than 512 MB. Strips that would take more than half of this machine's memory are refused.</source>
         <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, mehr für Profile unter 1024 Zellen (eine Million Zellen je Streifen), oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="133" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="134" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="134" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="135" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="135" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="136" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="136" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="137" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="150" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="151" />
         <source>Drawn (the default): strokes a cartographer would publish. Pieces of one class that continue each other across a small gap are joined before short strokes are dropped; points lie between cells where the profile peaks or the slope breaks, and are smoothed along the stroke; every point carries a weight (its M value) that tapers the ends and thins the strokes towards the back of the view, which the layers' styles draw. Exact: the thesis's strokes, a point at each cell centre.</source>
         <translation>Gezeichnet (Voreinstellung): Striche, wie sie ein Kartograf veröffentlichen würde. Stücke einer Klasse, die einander über eine kleine Lücke fortsetzen, werden verbunden, bevor kurze Striche entfallen; Punkte liegen zwischen den Zellen, wo das Profil gipfelt oder die Neigung bricht, und werden entlang des Strichs geglättet; jeder Punkt trägt ein Gewicht (seinen M-Wert), das die Enden verjüngt und die Striche zum hinteren Rand der Ansicht hin dünner macht, wie es die Stile der Layer zeichnen. Exakt: die Striche der Dissertation, ein Punkt in jeder Zellmitte.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="156" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="157" />
         <source>Join gap (cells)</source>
         <translation>Verbindungslücke (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="157" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="158" />
         <source>Drawn strokes: ends of two strokes this close (in cells) are joined when their directions agree. 0 joins none.</source>
         <translation>Gezeichnete Striche: Enden zweier Striche, die so nahe beieinander liegen (in Zellen), werden verbunden, wenn ihre Richtungen übereinstimmen. 0 verbindet keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="159" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="160" />
         <source>Join angle (degrees)</source>
         <translation>Verbindungswinkel (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="160" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="161" />
         <source>Drawn strokes: the largest turn between two ends' directions, and the step between them, for them to be joined.</source>
         <translation>Gezeichnete Striche: die größte Drehung zwischen den Richtungen zweier Enden und dem Schritt zwischen ihnen, bei der sie noch verbunden werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="162" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="163" />
         <source>Smoothing (cells)</source>
         <translation>Glättung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="163" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="164" />
         <source>Drawn strokes: the width (sigma, in cells) of the Gaussian smoothing along each stroke. 0 keeps the points where they are.</source>
         <translation>Gezeichnete Striche: die Breite (Sigma, in Zellen) der Gaußschen Glättung entlang jedes Strichs. 0 lässt die Punkte, wo sie sind.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="165" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="166" />
         <source>Smoothing tolerance (cells)</source>
         <translation>Glättungstoleranz (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="166" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="167" />
         <source>Drawn strokes: no point moves farther than this (in cells) from its place on the exact chain, so smoothing never invents terrain.</source>
         <translation>Gezeichnete Striche: kein Punkt liegt weiter als dies (in Zellen) von seinem Platz auf der exakten Kette, so dass die Glättung nie Gelände erfindet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="168" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="169" />
         <source>Taper (share of the stroke)</source>
         <translation>Verjüngung (Anteil des Strichs)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="169" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="170" />
         <source>Drawn strokes: the share of a stroke's length over which each end thins.</source>
         <translation>Gezeichnete Striche: der Anteil der Strichlänge, über den jedes Ende dünner wird.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="170" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="171" />
         <source>Depth cue</source>
         <translation>Tiefenwirkung</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="171" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="172" />
         <source>Drawn strokes: the share of the weight strokes lose from the front of the view to its back.</source>
         <translation>Gezeichnete Striche: der Anteil des Gewichts, den Striche vom vorderen zum hinteren Rand der Ansicht verlieren.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="173" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="174" />
         <source>Over-extension (cells)</source>
         <translation>Überzeichnung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="174" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="175" />
         <source>Drawn strokes: each end runs on this far (in cells) along its direction, as a hand-drawn stroke does. 0: none.</source>
         <translation>Gezeichnete Striche: jedes Ende läuft so weit (in Zellen) in seiner Richtung weiter, wie es ein von Hand gezeichneter Strich tut. 0: keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="219" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="220" />
         <source>Processing the DEM in %1 strips of %2 profiles.</source>
         <translation>Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.</translation>
     </message>

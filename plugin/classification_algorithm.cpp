@@ -34,8 +34,9 @@ ClassificationAlgorithm* ClassificationAlgorithm::createInstance() const {
 }
 
 void ClassificationAlgorithm::initAlgorithm(const QVariantMap&) {
-  addDemAndViewParameters(true);
-  addFilterParameters();
+  addWithHelp(SharedParameters::dem());
+  addWithHelp(SharedParameters::view(true));
+  addWithHelp(SharedParameters::filter());
   addWithHelp(new QgsProcessingParameterRasterDestination(QStringLiteral("OUTPUT"),
                                                           tr("Silhouette stages")),
               tr("Byte raster of stage classes on the DEM's grid."));
@@ -47,8 +48,8 @@ void ClassificationAlgorithm::initAlgorithm(const QVariantMap&) {
 
 double ClassificationAlgorithm::readParameters(const QVariantMap& parameters,
                                                QgsProcessingContext& context) {
-  mParams.view = readView(parameters, context);
-  readFilter(parameters, context, mParams);
+  mParams.view = SharedParameters::readView(*this, parameters, context);
+  SharedParameters::readFilter(*this, parameters, context, mParams);
   mParams.validate();
   return mParams.view.azimuth_deg;
 }

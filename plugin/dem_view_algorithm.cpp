@@ -15,7 +15,6 @@
 
 #include "core/base/errors.h"
 #include "io/write/path_clashes.h"
-#include "plugin/choice_parameter.h"
 #include "plugin/line_output.h"
 #include "plugin/plugin_paths.h"
 #include "plugin/qgis_compat.h"
@@ -40,176 +39,12 @@ void DemViewAlgorithm::addWithHelp(QgsProcessingParameterDefinition* parameter, 
   addParameter(parameter);
 }
 
-QgsProcessingParameterNumber* DemViewAlgorithm::number(const QString& key, const QString& label,
-                                                       double value, double min, double max) {
-  auto* parameter =
-      new QgsProcessingParameterNumber(key, label, kDoubleNumber, value, false, min, max);
-  // The widget's six decimals by default would show 90 as 90.000000; enough to reach the minimum.
-  const int decimals = min > 0 && min < 0.01 ? 3 : 2;
-  parameter->setMetadata(
-      {{QStringLiteral("widget_wrapper"), QVariantMap{{QStringLiteral("decimals"), decimals}}}});
-  return parameter;
+void DemViewAlgorithm::addWithHelp(const HelpedParameter& parameter) {
+  addWithHelp(parameter.definition, parameter.help, parameter.advanced);
 }
 
-void DemViewAlgorithm::addDemAndViewParameters(bool exaggeration) {
-  addDemParameters();
-  const ViewParams defaults;
-  addWithHelp(
-      number(QStringLiteral("AZIMUTH"), tr("View azimuth (degrees)"), defaults.azimuth_deg, 0, 360),
-      tr("Compass bearing the viewer faces, clockwise from grid north: 0 (from the "
-         "south), 90 (from the west, the default), 180 (from the north), 270 (from the "
-         "east). These four are exact; any other azimuth resamples the DEM bilinearly "
-         "onto a grid aligned with the line of sight, and the strokes are mapped back "
-         "exactly into the DEM's CRS."));
-  if (!exaggeration) return;
-  addWithHelp(number(QStringLiteral("VE"), tr("Vertical exaggeration"), defaults.ve, 0.01, 1000),
-              tr("Factor applied to heights before occlusion is computed."));
-  addWithHelp(number(QStringLiteral("BASE_SLOPE"), tr("Base slope (%)"), defaults.base_slope_pct,
-                     0.01, 10000),
-              tr("Slope added along the line of sight, in percent: the view elevation angle is "
-                 "atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees)."));
-}
-
-void DemViewAlgorithm::addDemParameters() {
-  addWithHelp(new QgsProcessingParameterRasterLayer(QStringLiteral("INPUT"), tr("Elevation (DEM)")),
-              tr("Digital elevation model with heights in metres, in a projected CRS in metres."));
-  // Optional, so that qgis_process and models need not give it: QGIS 3.22 asks for a band
-  // parameter's value even when it has a default.
-  addWithHelp(new QgsProcessingParameterBand(QStringLiteral("BAND"), tr("Band"), 1,
-                                             QStringLiteral("INPUT"), true),
-              tr("The band holding the heights (the first when none is chosen)."));
-}
-
-void DemViewAlgorithm::addFilterParameters() {
-  const FilterParams defaults;
-  addWithHelp(choiceParameter(
-                  QStringLiteral("FILTER"), tr("Slope filter"), kFilterModeNames,
-                  [](FilterMode mode) {
-                    return mode == FilterMode::adaptive ? tr("Adapted to the DEM")
-                                                        : tr("Fixed (the thesis's cut-offs)");
-                  },
-                  FilterMode::adaptive),
-              tr("Adapted to the DEM (the default): the cut-offs below are scaled by the DEM's "
-                 "median slope over 24 %, that of the terrain the thesis tuned them on at 75 m "
-                 "cells (from 1/16 to 4 times), so that coarse, fine, flat and steep DEMs all "
-                 "give a balanced sketch; height steps within half the DEM's height unit count "
-                 "as flat, so the sketch holds still as the view turns. Fixed: the cut-offs as "
-                 "given, the thesis's filter."));
-  addWithHelp(choiceParameter(
-                  QStringLiteral("ADAPT"), tr("Adapt the filter to"), kAdaptivityNames,
-                  [](Adaptivity adapt) {
-                    return adapt == Adaptivity::whole ? tr("The whole DEM")
-                                                      : tr("Each neighbourhood");
-                  },
-                  Adaptivity::whole),
-              tr("With the adapted filter: one scale for the whole DEM, or a scale for each "
-                 "neighbourhood, so that a plain beside mountains keeps its subtle breaks of "
-                 "slope (this reads the DEM once more)."),
-              true);
-  auto* window =
-      new QgsProcessingParameterNumber(QStringLiteral("ADAPT_WINDOW"), tr("Neighbourhood (cells)"),
-                                       kIntegerNumber, AdaptiveParams().window, false, 8, 100000);
-  addWithHelp(window,
-              tr("With a scale for each neighbourhood: the side of a neighbourhood, in DEM "
-                 "cells. Scales are blended between neighbourhoods, so the filter has no seams."),
-              true);
-  addWithHelp(number(QStringLiteral("ROW_CUT"), tr("Row slope cut-off (%)"), defaults.row_cut_pct,
-                     0.01, 10000),
-              tr("Slope filter: row (across the view) slope below which weak candidates are "
-                 "removed; 20 % is Macgregor's critical slope."));
-  addWithHelp(number(QStringLiteral("COL_CUT"), tr("Column slope cut-off (%)"),
-                     defaults.col_cut_pct, 0.01, 10000),
-              tr("Slope filter: column (along the view) slope below which weak candidates are "
-                 "removed."));
-  addWithHelp(number(QStringLiteral("CTRL_COL"), tr("Control point column slope (%)"),
-                     defaults.ctrl_col_pct, 0.001, 10000),
-              tr("Slope filter: column slope of the control point joining the two cut-offs, on "
-                 "the perpendicular through the origin. Smaller values keep more diagonal "
-                 "features; it must be below the column cut-off."));
-  addWithHelp(new QgsProcessingParameterBoolean(QStringLiteral("DIAGONALS"),
-                                                tr("Allow for diagonals"), defaults.diagonals),
-              tr("If checked the removed region is the polygon through the control point; if "
-                 "not, the whole rectangle below both cut-offs is removed."));
-}
-
-void DemViewAlgorithm::addStrokeModeParameter(const QString& help) {
-  addWithHelp(choiceParameter(
-                  QStringLiteral("STROKES"), tr("Strokes"), kStrokeModeNames,
-                  [](StrokeMode mode) {
-                    return mode == StrokeMode::drawn ? tr("Drawn (joined, smoothed, tapered)")
-                                                     : tr("Exact (the thesis's, a point per cell)");
-                  },
-                  StrokeMode::drawn),
-              help, true);
-}
-
-StrokeMode DemViewAlgorithm::readStrokeMode(const QVariantMap& parameters,
-                                            QgsProcessingContext& context) const {
-  return parameterAsChoice(*this, parameters, QStringLiteral("STROKES"), context, kStrokeModeNames);
-}
-
-void DemViewAlgorithm::addGeometryParameter(Geometry defaultValue) {
-  addWithHelp(
-      choiceParameter(
-          QStringLiteral("GEOMETRY"), tr("Geometry"), kGeometryNames,
-          [](Geometry g) {
-            return g == Geometry::map ? tr("Map (cell centres)") : tr("Plan oblique (the sketch)");
-          },
-          defaultValue),
-      tr("Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved "
-         "along the view azimuth by (exaggeration / base slope) x (height - lowest height), so "
-         "the strokes draw the oblique sketch in the same CRS."));
-}
-
-Geometry DemViewAlgorithm::readGeometry(const QVariantMap& parameters,
-                                        QgsProcessingContext& context) const {
-  return parameterAsChoice(*this, parameters, QStringLiteral("GEOMETRY"), context, kGeometryNames);
-}
-
-ViewParams DemViewAlgorithm::readView(const QVariantMap& parameters,
-                                      QgsProcessingContext& context) const {
-  ViewParams view;
-  view.azimuth_deg = parameterAsDouble(parameters, QStringLiteral("AZIMUTH"), context);
-  if (parameterDefinition(QStringLiteral("VE"))) {
-    view.ve = parameterAsDouble(parameters, QStringLiteral("VE"), context);
-    view.base_slope_pct = parameterAsDouble(parameters, QStringLiteral("BASE_SLOPE"), context);
-  }
-  return view;
-}
-
-void DemViewAlgorithm::readFilter(const QVariantMap& parameters, QgsProcessingContext& context,
-                                  SilhouetteParams& params) const {
-  AdaptiveParams& adaptive = params.adaptive;
-  adaptive.mode =
-      parameterAsChoice(*this, parameters, QStringLiteral("FILTER"), context, kFilterModeNames);
-  adaptive.adapt =
-      parameterAsChoice(*this, parameters, QStringLiteral("ADAPT"), context, kAdaptivityNames);
-  adaptive.window = parameterAsInt(parameters, QStringLiteral("ADAPT_WINDOW"), context);
-  FilterParams& filter = params.filter;
-  filter.row_cut_pct = parameterAsDouble(parameters, QStringLiteral("ROW_CUT"), context);
-  filter.col_cut_pct = parameterAsDouble(parameters, QStringLiteral("COL_CUT"), context);
-  filter.ctrl_col_pct = parameterAsDouble(parameters, QStringLiteral("CTRL_COL"), context);
-  filter.diagonals = parameterAsBool(parameters, QStringLiteral("DIAGONALS"), context);
-}
-
-void DemViewAlgorithm::logFilter(const FilterReport& r, QgsProcessingFeedback* feedback) {
-  if (!feedback || r.choice.mode == FilterMode::fixed) return;
-  feedback->pushInfo(tr("Slope filter adapted to the DEM: its median slope is %1 % against %2 % "
-                        "on the thesis's terrain, so the cut-offs are scaled by %3: row %4 %, "
-                        "column %5 %, control point %6 %.")
-                         .arg(r.median_slope_pct, 0, 'g', 3)
-                         .arg(kReferenceSlopePct, 0, 'g', 3)
-                         .arg(r.scale, 0, 'g', 3)
-                         .arg(r.cutoffs.row_cut_pct, 0, 'g', 3)
-                         .arg(r.cutoffs.col_cut_pct, 0, 'g', 3)
-                         .arg(r.cutoffs.ctrl_col_pct, 0, 'g', 3));
-  if (r.choice.adapt == Adaptivity::local) {
-    feedback->pushInfo(tr("Each neighbourhood of %1 cells scales them from %2 to %3 times the "
-                          "thesis's.")
-                           .arg(r.choice.window)
-                           .arg(r.local_lowest, 0, 'g', 3)
-                           .arg(r.local_highest, 0, 'g', 3));
-  }
+void DemViewAlgorithm::addWithHelp(const std::vector<HelpedParameter>& parameters) {
+  for (const HelpedParameter& parameter : parameters) addWithHelp(parameter);
 }
 
 namespace {
@@ -325,7 +160,7 @@ SilhouetteResult DemViewAlgorithm::runSilhouettes(const SilhouetteParams& params
   return withCoreErrors([&] {
     SilhouetteResult result =
         sketch_held_dem(mRaster->held(), params, progressBetween(feedback, from, to));
-    logFilter(result.filter, feedback);
+    SharedParameters::logFilter(result.filter, feedback);
     return result;
   });
 }

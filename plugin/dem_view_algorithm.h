@@ -1,5 +1,7 @@
-// Base of the algorithms that look at a DEM from a viewpoint: the shared DEM, view and slope
-// filter parameters, their help, and reading the raster (prepared on the main thread).
+// Base of the algorithms that look at a DEM from a viewpoint: a run's life in QGIS (parameters
+// checked together before the run, outputs checked against inputs, the raster prepared on the
+// main thread and read on the worker), composed with the parameters it shares with the others
+// (shared_parameters.h).
 #pragma once
 
 #include <qgsprocessingalgorithm.h>
@@ -10,6 +12,7 @@
 #include "core/method/params.h"
 #include "core/method/silhouettes.h"
 #include "plugin/core_errors.h"
+#include "plugin/shared_parameters.h"
 
 namespace tsk::plugin {
 
@@ -29,27 +32,9 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   // Adds `parameter` with its help text, optionally as an advanced parameter.
   void addWithHelp(QgsProcessingParameterDefinition* parameter, const QString& help,
                    bool advanced = false);
-  // A decimal number parameter from `min` to `max`, its widget showing a few decimals.
-  static QgsProcessingParameterNumber* number(const QString& key, const QString& label,
-                                              double value, double min, double max);
-  // INPUT, BAND and AZIMUTH; with `exaggeration` also VE and BASE_SLOPE.
-  void addDemAndViewParameters(bool exaggeration);
-  // INPUT and BAND.
-  void addDemParameters();
-  // FILTER, ADAPT, ADAPT_WINDOW, ROW_CUT, COL_CUT, CTRL_COL, DIAGONALS.
-  void addFilterParameters();
-  // STROKES, advanced: drawn (the default) or exact strokes, explained by `help`.
-  void addStrokeModeParameter(const QString& help);
-  StrokeMode readStrokeMode(const QVariantMap& parameters, QgsProcessingContext& context) const;
-  // GEOMETRY: map or plan oblique, `defaultValue` chosen.
-  void addGeometryParameter(Geometry defaultValue);
-  Geometry readGeometry(const QVariantMap& parameters, QgsProcessingContext& context) const;
-  ViewParams readView(const QVariantMap& parameters, QgsProcessingContext& context) const;
-  // The filter's parameters into `params`: its cut-offs and whether they adapt to the DEM.
-  void readFilter(const QVariantMap& parameters, QgsProcessingContext& context,
-                  SilhouetteParams& params) const;
-  // Logs which cut-offs an adaptive filter chose, and why.
-  static void logFilter(const FilterReport& report, QgsProcessingFeedback* feedback);
+  // Adds the shared parameters (shared_parameters.h) an algorithm composes.
+  void addWithHelp(const HelpedParameter& parameter);
+  void addWithHelp(const std::vector<HelpedParameter>& parameters);
 
   // Subclasses read and validate their own parameters here (throw tsk::Error when invalid) and
   // return the azimuth the raster is read for.

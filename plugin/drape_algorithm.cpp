@@ -42,7 +42,8 @@ DrapeAlgorithm* DrapeAlgorithm::createInstance() const {
 }
 
 void DrapeAlgorithm::initAlgorithm(const QVariantMap&) {
-  addDemAndViewParameters(true);
+  addWithHelp(SharedParameters::dem());
+  addWithHelp(SharedParameters::view(true));
   addWithHelp(
       new QgsProcessingParameterRasterLayer(QStringLiteral("SOURCE"), tr("Raster to drape")),
       tr("A raster with the DEM's number of rows and columns; all its bands are draped."));
@@ -53,7 +54,7 @@ void DrapeAlgorithm::initAlgorithm(const QVariantMap&) {
 
 double DrapeAlgorithm::readParameters(const QVariantMap& parameters,
                                       QgsProcessingContext& context) {
-  mView = readView(parameters, context);
+  mView = SharedParameters::readView(*this, parameters, context);
   mView.validate();
   return mView.azimuth_deg;
 }

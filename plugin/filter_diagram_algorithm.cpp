@@ -34,8 +34,9 @@ FilterDiagramAlgorithm* FilterDiagramAlgorithm::createInstance() const {
 }
 
 void FilterDiagramAlgorithm::initAlgorithm(const QVariantMap&) {
-  addDemAndViewParameters(true);
-  addFilterParameters();
+  addWithHelp(SharedParameters::dem());
+  addWithHelp(SharedParameters::view(true));
+  addWithHelp(SharedParameters::filter());
   addWithHelp(new QgsProcessingParameterFileDestination(
                   QStringLiteral("OUTPUT"), tr("Slope filter diagram"), tr("HTML files (*.html)")),
               tr("HTML page with the diagram as SVG."));
@@ -43,8 +44,8 @@ void FilterDiagramAlgorithm::initAlgorithm(const QVariantMap&) {
 
 double FilterDiagramAlgorithm::readParameters(const QVariantMap& parameters,
                                               QgsProcessingContext& context) {
-  mParams.view = readView(parameters, context);
-  readFilter(parameters, context, mParams);
+  mParams.view = SharedParameters::readView(*this, parameters, context);
+  SharedParameters::readFilter(*this, parameters, context, mParams);
   mParams.validate();
   return mParams.view.azimuth_deg;
 }

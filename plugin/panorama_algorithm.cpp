@@ -64,29 +64,33 @@ void PanoramaAlgorithm::addViewParameters() {
   addWithHelp(new QgsProcessingParameterPoint(kObserver, tr("Observer")),
               tr("Where the viewer stands: click it on the map. It must lie on the DEM, on a "
                  "cell with data."));
-  addWithHelp(number(kObserverHeight, tr("Observer height (m)"), defaults.observer_height, 0, 1e5),
+  addWithHelp(SharedParameters::number(kObserverHeight, tr("Observer height (m)"),
+                                       defaults.observer_height, 0, 1e5),
               tr("The eye's height above the ground at the observer, in metres."));
   // Optional: not given, the range is the whole DEM (a number's widget cannot be left empty).
-  auto* range = number(kMaxDistance, tr("Range (map units)"), 1, 0.001, 1e9);
+  auto* range = SharedParameters::number(kMaxDistance, tr("Range (map units)"), 1, 0.001, 1e9);
   range->setFlags(range->flags() | kOptional);
   range->setDefaultValue(QVariant());
   addWithHelp(range, tr("The farthest distance drawn, in the DEM's map units; when not given, "
                         "the whole DEM."));
-  addWithHelp(number(kAzimuthFrom, tr("Field of view from (degrees)"), 0, -360, 720),
-              tr("The field of view turns clockwise from this azimuth (from grid north) to the "
-                 "next. 0 to 360, the default, is all round."));
-  addWithHelp(number(kAzimuthTo, tr("Field of view to (degrees)"), 360, -360, 720),
-              tr("The azimuth the field of view ends at; equal azimuths make an empty field."));
-  addWithHelp(number(kRefraction, tr("Refraction coefficient"), defaults.refraction, 0, 0.99),
+  addWithHelp(
+      SharedParameters::number(kAzimuthFrom, tr("Field of view from (degrees)"), 0, -360, 720),
+      tr("The field of view turns clockwise from this azimuth (from grid north) to the "
+         "next. 0 to 360, the default, is all round."));
+  addWithHelp(
+      SharedParameters::number(kAzimuthTo, tr("Field of view to (degrees)"), 360, -360, 720),
+      tr("The azimuth the field of view ends at; equal azimuths make an empty field."));
+  addWithHelp(SharedParameters::number(kRefraction, tr("Refraction coefficient"),
+                                       defaults.refraction, 0, 0.99),
               tr("How much refraction lessens the earth's curvature (k): heights are lowered by "
                  "(1 - k) d² / 2R at distance d. 0.13 is the usual value over land."),
               true);
 }
 
 void PanoramaAlgorithm::initAlgorithm(const QVariantMap&) {
-  addDemParameters();
+  addWithHelp(SharedParameters::dem());
   addViewParameters();
-  addFilterParameters();
+  addWithHelp(SharedParameters::filter());
   const ChainParams chain;
   addWithHelp(new QgsProcessingParameterNumber(kMinCells, tr("Minimum stroke length (samples)"),
                                                kIntegerNumber, chain.min_cells, false, 1, 1000000),
@@ -94,9 +98,9 @@ void PanoramaAlgorithm::initAlgorithm(const QVariantMap&) {
   addWithHelp(new QgsProcessingParameterNumber(kWindow, tr("Formulated chaining window (samples)"),
                                                kIntegerNumber, chain.window, false, 0, 1000),
               tr("How far along the next ray a formulated chain may step."), true);
-  addStrokeModeParameter(
+  addWithHelp(SharedParameters::strokeMode(
       tr("Drawn (the default): a stroke is cut where its chain leaps along the rays, since a "
-         "leap draws no line on the terrain. Exact: the thesis's strokes, each chain whole."));
+         "leap draws no line on the terrain. Exact: the thesis's strokes, each chain whole.")));
   addWithHelp(new QgsProcessingParameterFeatureSink(kMapOutput, tr("Panorama strokes on the map"),
                                                     kLineLayer),
               tr("The strokes in the DEM's CRS, with their class, distance and azimuths."));
@@ -123,10 +127,10 @@ void PanoramaAlgorithm::initAlgorithm(const QVariantMap&) {
 
 double PanoramaAlgorithm::readParameters(const QVariantMap& parameters,
                                          QgsProcessingContext& context) {
-  readFilter(parameters, context, mFilter);
+  SharedParameters::readFilter(*this, parameters, context, mFilter);
   mFilter.chain.min_cells = parameterAsInt(parameters, kMinCells, context);
   mFilter.chain.window = parameterAsInt(parameters, kWindow, context);
-  mFilter.strokes.mode = readStrokeMode(parameters, context);
+  mFilter.strokes.mode = SharedParameters::readStrokeMode(*this, parameters, context);
   mFilter.validate();
   QgsRasterLayer* dem = parameterAsRasterLayer(parameters, QStringLiteral("INPUT"), context);
   const QgsCoordinateReferenceSystem crs = dem ? dem->crs() : QgsCoordinateReferenceSystem();
@@ -155,7 +159,7 @@ PanoramaResult PanoramaAlgorithm::sketch(QgsProcessingFeedback* feedback) {
   const PanoramaChoice choice{mView, mFilter, !mVisibility.isEmpty()};
   return withCoreErrors([&] {
     PanoramaRun run = sketch_panorama_on(preparedRaster().held(), choice, progress);
-    logFilter(run.filter, feedback);
+    SharedParameters::logFilter(run.filter, feedback);
     return std::move(run.result);
   });
 }

@@ -33,7 +33,8 @@ ProfilePlotAlgorithm* ProfilePlotAlgorithm::createInstance() const {
 }
 
 void ProfilePlotAlgorithm::initAlgorithm(const QVariantMap&) {
-  addDemAndViewParameters(true);
+  addWithHelp(SharedParameters::dem());
+  addWithHelp(SharedParameters::view(true));
   addWithHelp(
       new QgsProcessingParameterNumber(QStringLiteral("EVERY"), tr("Every n-th cross-section"),
                                        kIntegerNumber, 10, false, 1, 100000),
@@ -45,7 +46,7 @@ void ProfilePlotAlgorithm::initAlgorithm(const QVariantMap&) {
 
 double ProfilePlotAlgorithm::readParameters(const QVariantMap& parameters,
                                             QgsProcessingContext& context) {
-  mView = readView(parameters, context);
+  mView = SharedParameters::readView(*this, parameters, context);
   mView.validate();
   mEvery = parameterAsInt(parameters, QStringLiteral("EVERY"), context);
   if (mEvery < 1) throw Error("the cross-section step must be at least 1");

@@ -36,11 +36,12 @@ PStrokeAlgorithm* PStrokeAlgorithm::createInstance() const {
 }
 
 void PStrokeAlgorithm::initAlgorithm(const QVariantMap&) {
-  addDemAndViewParameters(true);
-  addFilterParameters();
+  addWithHelp(SharedParameters::dem());
+  addWithHelp(SharedParameters::view(true));
+  addWithHelp(SharedParameters::filter());
   const PStrokeParams defaults;
   auto area = [this](const QString& key, const QString& label, double value, const QString& help) {
-    addWithHelp(number(key, label, value, 0.001, 1e12), help);
+    addWithHelp(SharedParameters::number(key, label, value, 0.001, 1e12), help);
   };
   area(QStringLiteral("CONVEX_COLUMN"), tr("Convex column tolerance (m²)"),
        defaults.convex_column_m2, tr("Effective area a convex bend along the view must reach."));
@@ -54,7 +55,7 @@ void PStrokeAlgorithm::initAlgorithm(const QVariantMap&) {
                                                tr("Stroke half length (cells)"), kIntegerNumber,
                                                defaults.half_length, false, 1, 100),
               tr("Cells drawn on each side of a seed along the cross-section."));
-  addGeometryParameter(Geometry::oblique);
+  addWithHelp(SharedParameters::geometry(Geometry::oblique));
   addWithHelp(
       new QgsProcessingParameterFeatureSink(QStringLiteral("OUTPUT"), tr("P-strokes"), kLineLayer),
       tr("P-strokes as lines with their class and score."));
@@ -62,8 +63,8 @@ void PStrokeAlgorithm::initAlgorithm(const QVariantMap&) {
 
 double PStrokeAlgorithm::readParameters(const QVariantMap& parameters,
                                         QgsProcessingContext& context) {
-  mParams.view = readView(parameters, context);
-  readFilter(parameters, context, mParams);
+  mParams.view = SharedParameters::readView(*this, parameters, context);
+  SharedParameters::readFilter(*this, parameters, context, mParams);
   mParams.validate();
   mPStrokes.convex_column_m2 =
       parameterAsDouble(parameters, QStringLiteral("CONVEX_COLUMN"), context);
@@ -73,7 +74,7 @@ double PStrokeAlgorithm::readParameters(const QVariantMap& parameters,
   mPStrokes.concave_row_m2 = parameterAsDouble(parameters, QStringLiteral("CONCAVE_ROW"), context);
   mPStrokes.half_length = parameterAsInt(parameters, QStringLiteral("HALF_LENGTH"), context);
   mPStrokes.validate();
-  mParams.geometry = readGeometry(parameters, context);
+  mParams.geometry = SharedParameters::readGeometry(*this, parameters, context);
   return mParams.view.azimuth_deg;
 }
 
@@ -84,7 +85,7 @@ QVariantMap PStrokeAlgorithm::processAlgorithm(const QVariantMap& parameters,
   const std::vector<PStroke> strokes = withCoreErrors([&] {
     PStrokeRun run =
         sketch_pstrokes(raster.held(), mParams, mPStrokes, progressBetween(feedback, 25, 40));
-    logFilter(run.filter, feedback);
+    SharedParameters::logFilter(run.filter, feedback);
     return std::move(run.strokes);
   });
   QgsFields fields;

@@ -29,7 +29,8 @@ RowSlopeAlgorithm* RowSlopeAlgorithm::createInstance() const {
 }
 
 void RowSlopeAlgorithm::initAlgorithm(const QVariantMap&) {
-  addDemAndViewParameters(false);
+  addWithHelp(SharedParameters::dem());
+  addWithHelp(SharedParameters::view(false));
   addWithHelp(
       new QgsProcessingParameterRasterDestination(QStringLiteral("OUTPUT"), tr("Row slope")),
       tr("Float32 raster of |row slope| in percent."));
@@ -37,7 +38,7 @@ void RowSlopeAlgorithm::initAlgorithm(const QVariantMap&) {
 
 double RowSlopeAlgorithm::readParameters(const QVariantMap& parameters,
                                          QgsProcessingContext& context) {
-  const ViewParams view = readView(parameters, context);
+  const ViewParams view = SharedParameters::readView(*this, parameters, context);
   view.validate();
   return view.azimuth_deg;
 }

@@ -99,8 +99,9 @@ SilhouettesAlgorithm* SilhouettesAlgorithm::createInstance() const {
 
 void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
   const SilhouetteParams defaults;
-  addDemAndViewParameters(true);
-  addFilterParameters();
+  addWithHelp(SharedParameters::dem());
+  addWithHelp(SharedParameters::view(true));
+  addWithHelp(SharedParameters::filter());
   auto add = [this](QgsProcessingParameterDefinition* p, const QString& help,
                     bool advanced = false) { addWithHelp(p, help, advanced); };
   auto integer = [](const QString& key, const QString& label, int value, int min, int max) {
@@ -110,7 +111,7 @@ void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
       tr("Formulated strokes link cells on neighbouring profiles at most this many cells apart."));
   add(integer(kMinCells, tr("Minimum stroke cells"), defaults.chain.min_cells, 2, 1000000),
       tr("Strokes with fewer cells are dropped (generalisation)."));
-  addGeometryParameter(Geometry::map);
+  addWithHelp(SharedParameters::geometry(Geometry::map));
   add(choiceParameter(
           kPlacement, tr("Formulated stroke placement"), kPlacementNames,
           [](Placement p) {
@@ -144,15 +145,15 @@ void SilhouettesAlgorithm::addStrokeParameters() {
   const DrawnParams defaults;
   auto add = [this](const QString& key, const QString& label, double value, double min, double max,
                     const QString& help) {
-    addWithHelp(number(key, label, value, min, max), help, true);
+    addWithHelp(SharedParameters::number(key, label, value, min, max), help, true);
   };
-  addStrokeModeParameter(
+  addWithHelp(SharedParameters::strokeMode(
       tr("Drawn (the default): strokes a cartographer would publish. Pieces of one class that "
          "continue each other across a small gap are joined before short strokes are dropped; "
          "points lie between cells where the profile peaks or the slope breaks, and are smoothed "
          "along the stroke; every point carries a weight (its M value) that tapers the ends and "
          "thins the strokes towards the back of the view, which the layers' styles draw. Exact: "
-         "the thesis's strokes, a point at each cell centre."));
+         "the thesis's strokes, a point at each cell centre.")));
   add(kJoinGap, tr("Join gap (cells)"), defaults.join_gap_cells, 0, 20,
       tr("Drawn strokes: ends of two strokes this close (in cells) are joined when their "
          "directions agree. 0 joins none."));
@@ -178,7 +179,7 @@ void SilhouettesAlgorithm::addStrokeParameters() {
 void SilhouettesAlgorithm::readStrokes(const QVariantMap& parameters,
                                        QgsProcessingContext& context) {
   DrawnParams& d = mParams.strokes;
-  d.mode = readStrokeMode(parameters, context);
+  d.mode = SharedParameters::readStrokeMode(*this, parameters, context);
   d.join_gap_cells = parameterAsDouble(parameters, kJoinGap, context);
   d.join_angle_deg = parameterAsDouble(parameters, kJoinAngle, context);
   d.smooth_cells = parameterAsDouble(parameters, kSmooth, context);
@@ -191,11 +192,11 @@ void SilhouettesAlgorithm::readStrokes(const QVariantMap& parameters,
 double SilhouettesAlgorithm::readParameters(const QVariantMap& parameters,
                                             QgsProcessingContext& context) {
   SilhouetteParams& p = mParams;
-  p.view = readView(parameters, context);
-  readFilter(parameters, context, p);
+  p.view = SharedParameters::readView(*this, parameters, context);
+  SharedParameters::readFilter(*this, parameters, context, p);
   p.chain.window = parameterAsInt(parameters, kWindow, context);
   p.chain.min_cells = parameterAsInt(parameters, kMinCells, context);
-  p.geometry = readGeometry(parameters, context);
+  p.geometry = SharedParameters::readGeometry(*this, parameters, context);
   p.placement = parameterAsChoice(*this, parameters, kPlacement, context, kPlacementNames);
   p.subcell = parameterAsBool(parameters, kSubcell, context);
   mStrips = parameterAsInt(parameters, kStrips, context);
@@ -231,7 +232,7 @@ QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters
       (stroke.cls == StrokeClass::factual ? factual : formulated).add(stroke);
     });
   });
-  logFilter(result.filter, feedback);
+  SharedParameters::logFilter(result.filter, feedback);
   factual.finish();
   formulated.finish();
   mFactualId = factual.destination();
