@@ -7,10 +7,11 @@ what=${1:-core}
 packages=(build-essential cmake catch2 libgdal-dev libsqlite3-dev gdal-bin clang libclang-rt-dev
   clang-format git poppler-utils librsvg2-bin)
 if [ "$what" = qgis ]; then
+  # mount: the chroots' /proc and /dev (a minimal Debian root has no mount command);
   # mmdebstrap: the chroots of the newer QGIS releases; qt6-*: the Qt6 readiness build;
   # dpkg-dev and file: the Debian package (CPack).
   # python3-gdal (with numpy): the front-end parity test reads and makes rasters.
-  packages+=(libqgis-dev qgis qgis-providers python3-gdal qttools5-dev-tools qttools5-dev xvfb xauth mmdebstrap
+  packages+=(mount libqgis-dev qgis qgis-providers python3-gdal qttools5-dev-tools qttools5-dev xvfb xauth mmdebstrap
     qt6-base-dev qt6-tools-dev qt6-l10n-tools dpkg-dev file)
 fi
 missing=()

@@ -215,6 +215,9 @@ TEST_CASE("panorama refuses a view it cannot draw, and writes nothing", "[cli][p
       {{kSample}, "needs --observer"},
       {{kSample, "--observer", "749008"}, "needs X,Y"},
       {{kSample, "--observer", kSummit, "--refraction", "1"}, "refraction coefficient"},
+      // The figures as given, not rounded to nothing.
+      {{kSample, "--observer", kSummit, "--max-distance", "1e-9"}, "the range of 1e-09 map units"},
+      {{kSample, "--observer", kSummit, "--azimuth-from", "1e20"}, "got 1e+20 and 360"},
       {{kSample, "--observer", kSummit, "--observer-height", "-2"}, "observer height"},
       {{kSample, "--observer", kSummit, "--visibility", dir / "seen.png"}, "GeoTIFF"},
       {{kSample, "--observer", kSummit, "--preview", dir / "p.png", "--page", "A3", "--page-scale",

@@ -15,11 +15,9 @@ constexpr double kRadPerDeg = kPi / 180.0;
 // Samples any DEM may take, whatever its size.
 constexpr std::size_t kMostSamplesAlways = std::size_t{1} << 27;
 
+// A number as a message shows it: all its significant digits, 1e-09 rather than 0.
 std::string number(double v) {
-  std::string s = std::to_string(v);
-  s.erase(s.find_last_not_of('0') + 1);
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
+  return number_text(v);
 }
 
 void require(bool ok, const std::string& message) {
@@ -72,7 +70,9 @@ void PanoramaView::validate() const {
 FieldOfView field_of_view(double azimuth_from, double azimuth_to) {
   require(std::isfinite(azimuth_from) && std::isfinite(azimuth_to) &&
               std::fabs(azimuth_from) <= 1e6 && std::fabs(azimuth_to) <= 1e6,
-          "the azimuths of the field of view must be numbers of degrees");
+          "the azimuths of the field of view must be numbers of degrees from -1000000 to "
+          "1000000, got " +
+              number(azimuth_from) + " and " + number(azimuth_to));
   const double width = azimuth_to - azimuth_from;
   require(width != 0.0, "the field of view from " + number(azimuth_from) + " to " +
                             number(azimuth_to) +
