@@ -231,3 +231,18 @@ TEST_CASE("a lock file planted as a link is refused, its target never made", "[i
   CHECK_FALSE(std::filesystem::exists(target));
   CHECK_FALSE(std::filesystem::exists(dir / "o.gpkg"));
 }
+
+TEST_CASE("an output named as a member of another dataset is refused, the dataset kept",
+          "[io][robustness]") {
+  ScratchDir dir("member");
+  REQUIRE(run_cli({"silhouettes", kSample, dir / "o.shp"}).code == 0);
+  const std::size_t files = dir.file_count();
+  // o.dbf is the shapefile's table: written as a GeoPackage, it took o.shp, .shx and .prj along.
+  const CliRun run = run_cli({"silhouettes", kSample, dir / "o.dbf", "--format", "GPKG"});
+  CHECK(run.code == 1);
+  CHECK_THAT(run.err, Catch::Contains("is part of the dataset"));
+  CHECK(dir.file_count() == files);
+  CHECK(features_read(dir / "o.shp") > 100);
+  // The shapefile itself is its own dataset: writing it again replaces it.
+  CHECK(run_cli({"silhouettes", kSample, dir / "o.shp"}).code == 0);
+}

@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <set>
 #include <string>
 #include <vector>
@@ -147,6 +148,14 @@ std::vector<std::string> listed_files(const std::string& path) {
 }
 
 }  // namespace
+
+std::string main_file_of_other_dataset(const std::string& path) {
+  GDALAllRegister();
+  const std::vector<std::string> files = listed_files(path);
+  if (files.empty()) return {};
+  std::error_code ec;
+  return std::filesystem::equivalent(files.front(), path, ec) || ec ? std::string() : files.front();
+}
 
 std::vector<std::string> dataset_files(const std::string& path) {
   GDALAllRegister();

@@ -63,6 +63,10 @@ void check_input_path(const std::string& path);
 // Opens `path` read-only as a raster or throws tsk::Error saying why not.
 DatasetPtr open_raster(const std::string& path);
 
+// The main file of the dataset `path` belongs to when that is another file (a shapefile's .shp for
+// its .dbf); empty when `path` is a dataset's own main file, or no dataset GDAL opens.
+std::string main_file_of_other_dataset(const std::string& path);
+
 // Every file GDAL reads for the raster or vector dataset at `path` (a VRT's sources included);
 // just `path` when GDAL cannot open it.
 std::vector<std::string> dataset_files(const std::string& path);

@@ -58,6 +58,15 @@ fs::path output_folder(const fs::path& destination) {
     throw Error("'" + destination.string() +
                 "' exists and is not a file (a folder, a device or a pipe); choose another name");
   }
+  // A member of another dataset (a shapefile's .dbf): writing it would replace that dataset's
+  // files too.
+  if (fs::exists(existing)) {
+    const std::string main = main_file_of_other_dataset(destination.string());
+    if (!main.empty()) {
+      throw Error("'" + destination.string() + "' is part of the dataset '" + main +
+                  "', whose files writing it would replace; choose another name");
+    }
+  }
   return folder;
 }
 
