@@ -1019,6 +1019,7 @@ TEST_CASE("COMMAND --help lists that command's options only", "[cli]") {
 
 TEST_CASE("an output is refused when an input reads it, however deeply nested or wrapped",
           "[cli][robustness]") {
+  GDALAllRegister();  // ctest runs each test in a process of its own
   ScratchDir dir("nested_inputs");
   const std::string src = dir / "src.tif";
   std::filesystem::copy_file(kSample, src);
