@@ -58,7 +58,8 @@ def run_as_dialog(alg_id, inputs):
     results, ran = alg.run(params, context, feedback)
     if not ran:
         return feedback.errors or ["the run failed"], []
-    handleAlgorithmResults(alg, context, feedback, False, params)
+    # By name: QGIS 3.22 has a showResults argument before the parameters, 3.40 has not.
+    handleAlgorithmResults(alg, context, feedback, parameters=params)
     loaded = {layer.source() for layer in project.mapLayers().values()}
     loaded |= {layer.id() for layer in project.mapLayers().values()}
     missing = [name for name, value in results.items()
