@@ -35,8 +35,11 @@ void refuse_clashing_paths(const Options& o) {
                                               {"--visibility", o.visibility}};
   std::vector<io::NamedFile> inputs = {
       {"INPUT", o.input}, {"--source", o.source}, {"--peaks", o.peaks}};
-  for (const io::NamedFile& input : inputs)
-    if (!input.path.empty()) io::check_input_path(input.path);
+  for (const io::NamedFile& input : inputs) {
+    if (input.path.empty()) continue;
+    io::check_input_path(input.path);
+    io::check_input_sources(input.path);
+  }
   // All the outputs can be written, or none is: the strokes are not left for a preview that then
   // fails.
   for (const io::NamedFile& output : outputs)

@@ -246,3 +246,31 @@ TEST_CASE("an output named as a member of another dataset is refused, the datase
   // The shapefile itself is its own dataset: writing it again replaces it.
   CHECK(run_cli({"silhouettes", kSample, dir / "o.shp"}).code == 0);
 }
+
+TEST_CASE("a VRT reading a named pipe is refused before GDAL hangs on it", "[io][robustness]") {
+  ScratchDir dir("fifo_source");
+  REQUIRE(mkfifo((dir / "pipe.tif").c_str(), 0600) == 0);
+  std::ofstream(dir / "v.vrt") << R"(<VRTDataset rasterXSize="10" rasterYSize="10">
+  <VRTRasterBand dataType="Float32" band="1">
+    <SimpleSource><SourceFilename relativeToVRT="1">pipe.tif</SourceFilename>
+      <SourceBand>1</SourceBand></SimpleSource>
+  </VRTRasterBand>
+</VRTDataset>)";
+  // Before the check, the run sat in GDAL's open of the pipe and heard no SIGTERM.
+  const pid_t run = start_cli({"classify", dir / "v.vrt", dir / "o.tif"});
+  int status = 0;
+  bool ended = false;
+  for (int k = 0; k < 300 && !ended; ++k) {
+    ended = waitpid(run, &status, WNOHANG) == run;
+    if (!ended) usleep(50000);
+  }
+  if (!ended) {
+    kill(run, SIGKILL);
+    waitpid(run, &status, 0);
+  }
+  REQUIRE(ended);  // else the run below would hang too
+  CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 1));
+  const CliRun told = run_cli({"classify", dir / "v.vrt", dir / "o.tif"});
+  CHECK_THAT(told.err, Catch::Contains("which is not a file (a pipe"));
+  CHECK_FALSE(std::filesystem::exists(dir / "o.tif"));
+}

@@ -58,6 +58,18 @@ void check_input_path(const std::string& path) {
   }
 }
 
+void check_input_sources(const std::string& path) {
+  for (const std::string& file : dataset_files(path)) {
+    if (file == path || file.rfind("/vsi", 0) == 0) continue;
+    struct stat info {};
+    if (stat(file.c_str(), &info) == 0 && !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode)) {
+      throw Error("'" + path + "' reads '" + file +
+                  "', which is not a file (a pipe, a socket or a device); give a raster whose "
+                  "sources are files");
+    }
+  }
+}
+
 DatasetPtr open_raster(const std::string& path) {
   check_input_path(path);
   GDALAllRegister();

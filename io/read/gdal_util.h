@@ -60,6 +60,11 @@ bool close_dataset(DatasetPtr& dataset);
 // paths (/vsizip/..., NETCDF:"file":var) pass.
 void check_input_path(const std::string& path);
 
+// Throws Error naming the file when the dataset at `path` reads, through its sources (a VRT's, all
+// the way down), a file that is not a regular file: a named pipe, a socket or a device, which
+// GDAL's read would hang on or misread.
+void check_input_sources(const std::string& path);
+
 // Opens `path` read-only as a raster or throws tsk::Error saying why not.
 DatasetPtr open_raster(const std::string& path);
 
