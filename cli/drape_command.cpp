@@ -18,6 +18,7 @@ int drape(const Args& args, std::ostream& out, std::ostream& err,
   if (o.source.empty()) throw Error("drape needs --source RASTER, the raster to drape");
   io::HeldDemFile held = load_dem(o, err);
   const io::Dem& dem = held.dem;
+  io::require_on_dem_grid(o.source, dem);  // before the work
   const PlanObliqueDrape drape = lay_out_drape(held.held(), o.params.view, o.params.threads);
   held.dem.oriented = HeightGrid();  // the DEM goes before the bands are read and draped
   std::vector<HeightGrid> source = io::read_bands(o.source);

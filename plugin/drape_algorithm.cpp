@@ -6,6 +6,8 @@
 #include <qgsrasterinterface.h>
 #include <qgsrasterlayer.h>
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "core/applications/drape.h"
@@ -74,6 +76,26 @@ bool DrapeAlgorithm::prepareAlgorithm(const QVariantMap& parameters, QgsProcessi
             .arg(source->height())
             .arg(dem->width())
             .arg(dem->height()));
+  }
+  // The same grid on the ground, not only the same size: a source shifted or in another CRS was
+  // draped silently onto the wrong ground.
+  const double cell = std::min(dem->rasterUnitsPerPixelX(), dem->rasterUnitsPerPixelY());
+  const QgsRectangle a = source->extent(), b = dem->extent();
+  const bool sameGrid = std::abs(a.xMinimum() - b.xMinimum()) <= 1e-6 * cell &&
+                        std::abs(a.yMaximum() - b.yMaximum()) <= 1e-6 * cell &&
+                        std::abs(a.width() - b.width()) <= 1e-6 * cell &&
+                        std::abs(a.height() - b.height()) <= 1e-6 * cell;
+  if (!sameGrid) {
+    throw QgsProcessingException(
+        tr("The raster to drape covers %1 and the DEM %2: warp it onto the DEM's grid first "
+           "(Raster > Projections > Warp with the DEM's extent and resolution).")
+            .arg(a.toString(3), b.toString(3)));
+  }
+  if (source->crs().isValid() && dem->crs().isValid() && source->crs() != dem->crs()) {
+    throw QgsProcessingException(
+        tr("The raster to drape is in %1, the DEM in %2: warp it onto the DEM's grid and CRS "
+           "first.")
+            .arg(source->crs().authid(), dem->crs().authid()));
   }
   mSource.reset(source->dataProvider()->clone());
   mSourceBands = source->bandCount();

@@ -691,6 +691,19 @@ TEST_CASE("drape projects every band of a raster on the DEM's grid", "[cli][drap
   CHECK(off.code == 1);
   CHECK_THAT(off.err, Catch::Contains("on the DEM's grid"));
   CHECK(run_cli({"drape", kSample, dir / "f.tif"}).code == 1);
+  // The same size is not enough: the same ground, in the same CRS. Both were draped silently.
+  const double shifted[6] = {732795.639415354, 75, 0, 4038415.4307843, 0, -75};
+  const double on_dem[6] = {731795.639415354467928, 75, 0, 4037415.430784302297980, 0, -75};
+  const auto flat = [](int, int, int) { return 1.0f; };
+  test::write_tiff(dir / "shifted.tif", 436, 414, 1, flat, shifted, 32616);
+  test::write_tiff(dir / "zone17.tif", 436, 414, 1, flat, on_dem, 32617);
+  const CliRun moved = run_cli({"drape", kSample, dir / "g.tif", "--source", dir / "shifted.tif"});
+  CHECK(moved.code == 1);
+  CHECK_THAT(moved.err, Catch::Contains("lies on another grid than the DEM: origin 732795.6394"));
+  const CliRun zone = run_cli({"drape", kSample, dir / "h.tif", "--source", dir / "zone17.tif"});
+  CHECK(zone.code == 1);
+  CHECK_THAT(zone.err, Catch::Contains("UTM zone 17N"));
+  CHECK(!std::filesystem::exists(dir / "g.tif"));
 }
 
 TEST_CASE("pstrokes writes classes and scores, and refuses bad tolerances", "[cli][pstrokes]") {

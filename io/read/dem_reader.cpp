@@ -1,8 +1,10 @@
 #include "io/read/dem_reader.h"
 
 #include <gdal_priv.h>
+#include <ogr_spatialref.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <future>
@@ -158,6 +160,39 @@ void refuse_too_large_to_turn(const std::string& path, const Dem& dem, double az
               " cells) is too large for this command, which holds the whole DEM turned to the "
               "view: that would take more than half of this machine's memory. `silhouettes` "
               "without `--preview` reads large DEMs strip by strip; or clip or resample the DEM");
+}
+
+void require_on_dem_grid(const std::string& path, const Dem& dem) {
+  GdalErrorCapture capture;
+  auto dataset = open_raster(path);
+  const auto rows = static_cast<std::size_t>(dataset->GetRasterYSize());
+  const auto cols = static_cast<std::size_t>(dataset->GetRasterXSize());
+  if (rows != dem.rows || cols != dem.cols) {
+    throw Error("'" + path + "' has " + std::to_string(cols) + " x " + std::to_string(rows) +
+                " cells, the DEM " + std::to_string(dem.cols) + " x " + std::to_string(dem.rows) +
+                ": it must lie on the DEM's grid (gdalwarp it with the DEM's -te and -tr)");
+  }
+  double gt[6];
+  const std::array<double, 6>& d = dem.geotransform.a;
+  const double cell = std::min(std::fabs(d[1]), std::fabs(d[5]));
+  if (dataset->GetGeoTransform(gt) == CE_None) {
+    for (int k = 0; k < 6; ++k) {
+      if (std::fabs(gt[k] - d[static_cast<std::size_t>(k)]) <= 1e-6 * cell) continue;
+      throw Error("'" + path + "' lies on another grid than the DEM: origin " + number_text(gt[0]) +
+                  ", " + number_text(gt[3]) + " and cells " + number_text(gt[1]) + " x " +
+                  number_text(-gt[5]) + " against the DEM's " + number_text(d[0]) + ", " +
+                  number_text(d[3]) + " and " + number_text(d[1]) + " x " + number_text(-d[5]) +
+                  ": gdalwarp it onto the DEM's grid first");
+    }
+  }
+  const OGRSpatialReference* srs = dataset->GetSpatialRef();
+  if (!srs || dem.srs_wkt.empty()) return;
+  OGRSpatialReference dem_srs;
+  if (dem_srs.importFromWkt(dem.srs_wkt.c_str()) != OGRERR_NONE || srs->IsSame(&dem_srs)) return;
+  const char* name = srs->GetName();
+  throw Error("'" + path + "' is in another CRS (" + (name ? name : "unnamed") +
+              ") than the DEM (" + (dem_srs.GetName() ? dem_srs.GetName() : "unnamed") +
+              "): gdalwarp it onto the DEM's grid and CRS first");
 }
 
 std::vector<HeightGrid> read_bands(const std::string& path) {

@@ -127,6 +127,11 @@ HeldDemFile hold_dem(const std::string& path, const DemOptions& options, double 
 // facing `azimuth_deg` (too_large_to_turn_whole): what every command but `silhouettes` needs.
 void refuse_too_large_to_turn(const std::string& path, const Dem& dem, double azimuth_deg);
 
+// Throws Error, with the figures, unless the raster at `path` lies on the grid of `dem`: its size,
+// and, when both are georeferenced, its origin and cell size (within a millionth of a cell) and
+// CRS. A raster to drape on another grid was draped silently onto the wrong ground.
+void require_on_dem_grid(const std::string& path, const Dem& dem);
+
 // Every band of a raster as grids on its own pixel grid (row 0 north), nodata as NaN: the
 // rasters to drape.
 std::vector<HeightGrid> read_bands(const std::string& path);

@@ -1,4 +1,6 @@
 // The drape algorithm against the core.
+#include <gdal_utils.h>
+
 #include "plugin_test_support.h"
 
 using namespace tsk::plugin_test;
@@ -48,5 +50,40 @@ TEST_CASE("the drape hears Cancel while it lays out, and its progress moves", "[
   const Run run = runAlgorithm(dem, {{"SOURCE", dem}}, dir, &feedback, QStringLiteral("drape"));
   CHECK_FALSE(run.ok);
   CHECK(run.error.contains(QStringLiteral("Cancel")));
+  CHECK_FALSE(QFileInfo::exists(dir.filePath("out.tif")));
+}
+
+TEST_CASE("a raster to drape on other ground or in another CRS is refused", "[plugin][drape]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/jacksboro_utm16n.tif";
+  // The same cells, shifted by a kilometre, and the same grid said to be in the next UTM zone.
+  const QString shifted = dir.filePath("shifted.tif"), zone17 = dir.filePath("zone17.tif");
+  for (const auto& [path, option] :
+       {std::pair{shifted, QStringList{"-a_ullr", "732795.639415354", "4038415.4307843",
+                                       "763845.639415354", "4005715.4307843"}},
+        std::pair{zone17, QStringList{"-a_srs", "EPSG:32617"}}}) {
+    QStringList args = option;
+    std::vector<QByteArray> bytes;
+    for (const QString& a : args) bytes.push_back(a.toUtf8());
+    std::vector<char*> argv;
+    for (QByteArray& b : bytes) argv.push_back(b.data());
+    argv.push_back(nullptr);
+    GDALTranslateOptions* options = GDALTranslateOptionsNew(argv.data(), nullptr);
+    GDALDatasetH in = GDALOpen(dem.toUtf8().constData(), GA_ReadOnly);
+    REQUIRE(in != nullptr);
+    GDALDatasetH out = GDALTranslate(path.toUtf8().constData(), in, options, nullptr);
+    GDALTranslateOptionsFree(options);
+    REQUIRE(out != nullptr);
+    GDALClose(out);
+    GDALClose(in);
+  }
+  const Run offGround =
+      runAlgorithm(dem, {{"SOURCE", shifted}}, dir, nullptr, QStringLiteral("drape"));
+  CHECK_FALSE(offGround.ok);
+  CHECK(offGround.error.contains("warp it onto the DEM's grid"));
+  const Run otherCrs =
+      runAlgorithm(dem, {{"SOURCE", zone17}}, dir, nullptr, QStringLiteral("drape"));
+  CHECK_FALSE(otherCrs.ok);
+  CHECK(otherCrs.error.contains("EPSG:32617"));
   CHECK_FALSE(QFileInfo::exists(dir.filePath("out.tif")));
 }
