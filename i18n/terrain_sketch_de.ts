@@ -39,17 +39,17 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="92" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="95" />
         <source>%1 and %2 would both be written to %3, one over the other; choose different files, or save both to one GeoPackage with a layer name each.</source>
         <translation>%1 und %2 würden beide nach %3 geschrieben, eines über das andere; wählen Sie verschiedene Dateien, oder speichern Sie beide in ein GeoPackage mit je einem Layernamen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="87" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="90" />
         <source>%1 would be written into %2, the file of %3, which this algorithm reads; choose another file.</source>
         <translation>%1 würde in %2 geschrieben, die Datei von %3, die dieser Algorithmus liest; wählen Sie eine andere Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="136" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="139" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -57,47 +57,57 @@
 <context>
     <name>DrapeAlgorithm</name>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="26" />
+        <location filename="../plugin/drape_algorithm.cpp" line="28" />
         <source>Drape raster (plan oblique)</source>
         <translation>Raster drapieren (Plan oblique)</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="30" />
+        <location filename="../plugin/drape_algorithm.cpp" line="32" />
         <source>Projects a raster on the DEM's grid (a hillshade, a slope or row slope map, an image; every band) into plan-oblique space: each visible cell moves along the view azimuth by exaggeration / base slope x (height - lowest height), terrain hidden behind nearer terrain is removed and slopes facing the viewer are stretched. The result lies exactly under the plan-oblique silhouettes and the profile plot made with the same view. The raster to drape must have the DEM's size (resample it to the DEM's grid first).</source>
         <translation>Projiziert ein Raster auf dem Gitter des DGM (eine Schummerung, eine Neigungs- oder Zeilenneigungskarte, ein Bild; alle Kanäle) in den Plan-oblique-Raum: jede sichtbare Zelle wird entlang der Blickrichtung um Überhöhung / Grundneigung x (Höhe - niedrigste Höhe) verschoben, hinter näherem Gelände verdecktes Gelände wird entfernt und dem Betrachter zugewandte Hänge werden gedehnt. Das Ergebnis liegt genau unter den Plan-oblique-Silhouetten und der Profildarstellung derselben Ansicht. Das Raster muss die Größe des DGM haben (zuerst auf das Gitter des DGM umtasten).</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="48" />
+        <location filename="../plugin/drape_algorithm.cpp" line="50" />
         <source>Raster to drape</source>
         <translation>Zu drapierendes Raster</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="49" />
+        <location filename="../plugin/drape_algorithm.cpp" line="51" />
         <source>A raster with the DEM's number of rows and columns; all its bands are draped.</source>
         <translation>Ein Raster mit der Zeilen- und Spaltenzahl des DGM; alle seine Kanäle werden drapiert.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="51" />
+        <location filename="../plugin/drape_algorithm.cpp" line="53" />
         <source>Draped raster</source>
         <translation>Drapiertes Raster</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="52" />
+        <location filename="../plugin/drape_algorithm.cpp" line="54" />
         <source>Float32 raster in plan-oblique space, one band per source band.</source>
         <translation>Float32-Raster im Plan-oblique-Raum, ein Kanal je Quellkanal.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="71" />
+        <location filename="../plugin/drape_algorithm.cpp" line="73" />
         <source>The raster to drape has %1 x %2 cells, the DEM %3 x %4: resample it to the DEM's grid first (Raster &gt; Projections &gt; Warp with the DEM's extent and resolution).</source>
         <translation>Das zu drapierende Raster hat %1 x %2 Zellen, das DGM %3 x %4: tasten Sie es zuerst auf das Gitter des DGM um (Raster &gt; Projektionen &gt; Transformieren mit Ausdehnung und Auflösung des DGM).</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="107" />
+        <location filename="../plugin/drape_algorithm.cpp" line="90" />
+        <source>The raster to drape covers %1 and the DEM %2: warp it onto the DEM's grid first (Raster &gt; Projections &gt; Warp with the DEM's extent and resolution).</source>
+        <translation>Das zu drapierende Raster deckt %1 ab, das DGM %2: transformieren Sie es zuerst auf das Raster des DGM (Raster &gt; Projektionen &gt; Transformieren mit Ausdehnung und Auflösung des DGM).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/drape_algorithm.cpp" line="96" />
+        <source>The raster to drape is in %1, the DEM in %2: warp it onto the DEM's grid and CRS first.</source>
+        <translation>Das zu drapierende Raster liegt in %1, das DGM in %2: transformieren Sie es zuerst auf Raster und KBS des DGM.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/drape_algorithm.cpp" line="129" />
         <source>Could not read band %1 of the raster to drape.</source>
         <translation>Kanal %1 des zu drapierenden Rasters konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="126" />
+        <location filename="../plugin/drape_algorithm.cpp" line="148" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>

@@ -494,6 +494,14 @@ GERMAN = {
         "Gezeichnet (Standard): ein Strich wird getrennt, wo seine Kette entlang der Strahlen "
         "springt, denn ein Sprung zeichnet keine Linie im Gelände. Exakt: die Striche der "
         "Dissertation, jede Kette ganz.",
+    "The raster to drape covers %1 and the DEM %2: warp it onto the DEM's grid first "
+    "(Raster > Projections > Warp with the DEM's extent and resolution).":
+        "Das zu drapierende Raster deckt %1 ab, das DGM %2: transformieren Sie es zuerst auf das "
+        "Raster des DGM (Raster > Projektionen > Transformieren mit Ausdehnung und Auflösung des "
+        "DGM).",
+    "The raster to drape is in %1, the DEM in %2: warp it onto the DEM's grid and CRS first.":
+        "Das zu drapierende Raster liegt in %1, das DGM in %2: transformieren Sie es zuerst auf "
+        "Raster und KBS des DGM.",
 }
 
 
