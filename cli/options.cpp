@@ -35,11 +35,8 @@ void refuse_clashing_paths(const Options& o) {
                                               {"--visibility", o.visibility}};
   std::vector<io::NamedFile> inputs = {
       {"INPUT", o.input}, {"--source", o.source}, {"--peaks", o.peaks}};
-  for (const io::NamedFile& input : inputs) {
-    if (input.path.empty()) continue;
-    io::check_input_path(input.path);
-    io::check_input_sources(input.path);
-  }
+  for (const io::NamedFile& input : inputs)
+    if (!input.path.empty()) io::check_input_path(input.path);
   // All the outputs can be written, or none is: the strokes are not left for a preview that then
   // fails.
   for (const io::NamedFile& output : outputs)
@@ -53,10 +50,6 @@ void refuse_clashing_paths(const Options& o) {
   }
   throw Error(named + clash->other.name + " too; choose another path");
 }
-
-}  // namespace
-
-namespace {
 
 bool looks_like_option(const std::string& arg) {
   return arg.size() > 1 && arg[0] == '-' && !std::isdigit(static_cast<unsigned char>(arg[1]));

@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "core/base/errors.h"
-#include "io/read/gdal_util.h"
 #include "io/write/path_clashes.h"
 #include "plugin/line_output.h"
 #include "plugin/plugin_paths.h"
@@ -78,10 +77,10 @@ void DemViewAlgorithm::refuseClashingOutputs(const QVariantMap& parameters,
                              .value(QStringLiteral("path"))
                              .toString();
     inputs.push_back({input->description().toStdString(), localPath(path)});
-    // A source GDAL would hang on (a pipe behind a VRT) is refused before any read.
-    if (!path.isEmpty()) withCoreErrors([&] { io::check_input_sources(inputs.back().path); });
   }
-  const std::optional<io::PathClash> clash = io::find_clash(outputs, inputs);
+  // Refuses too a source GDAL would hang on (a pipe behind a VRT), before any read.
+  const std::optional<io::PathClash> clash =
+      withCoreErrors([&] { return io::find_clash(outputs, inputs); });
   if (!clash) return;
   const QString output = QString::fromStdString(clash->output.name);
   const QString other = QString::fromStdString(clash->other.name);

@@ -58,8 +58,8 @@ void check_input_path(const std::string& path) {
   }
 }
 
-void check_input_sources(const std::string& path) {
-  for (const std::string& file : dataset_files(path)) {
+void check_sources_are_files(const std::string& path, const std::vector<std::string>& files) {
+  for (const std::string& file : files) {
     if (file == path || file.rfind("/vsi", 0) == 0) continue;
     struct stat info {};
     if (stat(file.c_str(), &info) == 0 && !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode)) {
@@ -170,6 +170,13 @@ std::string main_file_of_other_dataset(const std::string& path) {
 }
 
 std::vector<std::string> dataset_files(const std::string& path) {
+  GDALAllRegister();
+  std::vector<std::string> files = listed_files(path);
+  if (files.empty()) files.push_back(path);
+  return files;
+}
+
+std::vector<std::string> files_read_for(const std::string& path) {
   GDALAllRegister();
   // Followed all the way down: a VRT of a VRT lists the VRT it reads, not that one's sources.
   std::vector<std::string> files, to_visit{path};

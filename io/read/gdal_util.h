@@ -60,10 +60,10 @@ bool close_dataset(DatasetPtr& dataset);
 // paths (/vsizip/..., NETCDF:"file":var) pass.
 void check_input_path(const std::string& path);
 
-// Throws Error naming the file when the dataset at `path` reads, through its sources (a VRT's, all
-// the way down), a file that is not a regular file: a named pipe, a socket or a device, which
-// GDAL's read would hang on or misread.
-void check_input_sources(const std::string& path);
+// Throws Error naming the file when `files`, those read for the dataset at `path`
+// (files_read_for), hold one that is not a regular file: a named pipe, a socket or a device,
+// which GDAL's read would hang on or misread.
+void check_sources_are_files(const std::string& path, const std::vector<std::string>& files);
 
 // Opens `path` read-only as a raster or throws tsk::Error saying why not.
 DatasetPtr open_raster(const std::string& path);
@@ -75,5 +75,10 @@ std::string main_file_of_other_dataset(const std::string& path);
 // Every file GDAL reads for the raster or vector dataset at `path` (a VRT's sources included);
 // just `path` when GDAL cannot open it.
 std::vector<std::string> dataset_files(const std::string& path);
+
+// `path` and every file reading it reads, all the way down: a VRT's sources, the sources of a VRT
+// it reads, and the files GDAL's virtual paths wrap (/vsisubfile/, /vsigzip/, archives). A source
+// that is not a regular file is listed but never opened (GDAL's open would hang on a pipe).
+std::vector<std::string> files_read_for(const std::string& path);
 
 }  // namespace tsk::io

@@ -19,12 +19,12 @@ bool same_file(const std::string& a, const std::string& b) {
 
 std::optional<PathClash> find_clash(const std::vector<NamedFile>& outputs,
                                     const std::vector<NamedFile>& inputs) {
-  // Every file GDAL reads for each input.
+  // Every file read for each input, all the way down; none may be a pipe or a device.
   std::vector<std::vector<std::string>> read(inputs.size());
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     if (inputs[k].path.empty()) continue;
-    read[k] = dataset_files(inputs[k].path);
-    read[k].push_back(inputs[k].path);
+    read[k] = files_read_for(inputs[k].path);
+    check_sources_are_files(inputs[k].path, read[k]);
   }
   for (std::size_t k = 0; k < outputs.size(); ++k) {
     const NamedFile& output = outputs[k];

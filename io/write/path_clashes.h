@@ -27,8 +27,9 @@ struct PathClash {
 bool same_file(const std::string& a, const std::string& b);
 
 // The first clash: an output naming a file that an input reads (the input's file and every file
-// GDAL reads for it, a VRT's sources too), or two outputs naming one file unless both are added
-// layers. Inputs are checked first, outputs in their order.
+// read for it, all the way down: files_read_for), or two outputs naming one file unless both are
+// added layers. Inputs are checked first, outputs in their order. Throws Error when an input
+// reads a source that is not a file (check_sources_are_files): a pipe GDAL would hang on.
 std::optional<PathClash> find_clash(const std::vector<NamedFile>& outputs,
                                     const std::vector<NamedFile>& inputs);
 
