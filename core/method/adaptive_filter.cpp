@@ -36,12 +36,11 @@ ResolvedParams::ResolvedParams(const SilhouetteParams& fixed) : params_(fixed) {
 
 ResolvedParams adapt_filter(const SilhouetteParams& choice, const DemGrid& grid,
                             const WindowReader& read) {
+  if (choice.adaptive.mode == FilterMode::fixed) return ResolvedParams(choice);
   choice.validate();
+  if (!read) throw Error("an adaptive filter needs the DEM to survey");
   FilterReport report;
   report.choice = choice.adaptive;
-  report.cutoffs = choice.filter;
-  if (choice.adaptive.mode == FilterMode::fixed) return ResolvedParams(choice);
-  if (!read) throw Error("an adaptive filter needs the DEM to survey");
   const SlopeSurvey survey = survey_slopes(grid.rows, grid.cols, grid.dx, grid.dy, read);
   report.median_slope_pct = survey.median_slope_pct;
   report.heights = survey.heights;

@@ -20,13 +20,18 @@ void require_view(const HeldDem& dem, const ViewParams& view) {
   }
 }
 
+// The visibility of every cell of the held DEM for `view`, which must be the one it was turned for.
+CellFlags visibility_of(const HeldDem& dem, const ViewParams& view, unsigned threads) {
+  require_view(dem, view);
+  CellFlags flags;
+  classify_visibility(dem.oriented, dem.frame.d, view, flags, threads);
+  return flags;
+}
+
 }  // namespace
 
 WindowReader dem_windows(const HeldDem& dem) {
-  if (!dem.frame.as_it_lies()) {
-    if (!dem.source.read) throw Error("internal: a turned DEM needs its windows to survey");
-    return dem.source.read;
-  }
+  if (!dem.frame.as_it_lies()) return dem.source.read;
   const HeightGrid& grid = dem.oriented;
   return [&grid](const DemWindow& w, float* heights) {
     if (w.row0 + w.rows > grid.rows() || w.col0 + w.cols > grid.cols())
@@ -39,7 +44,6 @@ WindowReader dem_windows(const HeldDem& dem) {
 }
 
 ResolvedParams resolve_on(const HeldDem& dem, const SilhouetteParams& choice) {
-  if (choice.adaptive.mode == FilterMode::fixed) return ResolvedParams(choice);
   return adapt_filter(choice, dem.source.grid, dem_windows(dem));
 }
 
@@ -53,19 +57,14 @@ SilhouetteResult sketch_held_dem(const HeldDem& dem, const SilhouetteParams& cho
 
 PlanObliqueDrape lay_out_drape(const HeldDem& dem, const ViewParams& view, unsigned threads,
                                const ProgressFn& progress) {
-  require_view(dem, view);
-  CellFlags flags;
-  classify_visibility(dem.oriented, dem.frame.d, view, flags, threads);
-  return PlanObliqueDrape(dem.oriented, flags, dem.frame, view, dem.lowest_height, progress);
+  return PlanObliqueDrape(dem.oriented, visibility_of(dem, view, threads), dem.frame, view,
+                          dem.lowest_height, progress);
 }
 
 std::vector<ProfileLine> plot_profiles(const HeldDem& dem, const ViewParams& view,
                                        std::size_t every_n, unsigned threads) {
-  require_view(dem, view);
-  CellFlags flags;
-  classify_visibility(dem.oriented, dem.frame.d, view, flags, threads);
-  return profile_plot(dem.oriented, flags, dem.frame, view, dem.source.geotransform, every_n,
-                      dem.lowest_height);
+  return profile_plot(dem.oriented, visibility_of(dem, view, threads), dem.frame, view,
+                      dem.source.geotransform, every_n, dem.lowest_height);
 }
 
 PStrokeRun sketch_pstrokes(const HeldDem& dem, const SilhouetteParams& choice,
@@ -94,9 +93,8 @@ PanoramaRun sketch_panorama_on(const HeldDem& dem, const PanoramaChoice& choice,
   params.record_visibility = choice.record_visibility;
   // A leap along a ray draws no line on the terrain; SPEC's exact strokes are the chains.
   params.cut_leaps = method.strokes.drawn();
-  PanoramaRun run{sketch_panorama(dem.oriented, dem.source.geotransform, params, progress),
-                  resolved.filter()};
-  return run;
+  return {sketch_panorama(dem.oriented, dem.source.geotransform, params, progress),
+          resolved.filter()};
 }
 
 }  // namespace tsk

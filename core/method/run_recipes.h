@@ -26,7 +26,7 @@ struct HeldDem {
 };
 
 // Windows of the DEM on its own grid: from memory when the grid is the DEM as it lies, else
-// through the source. Throws Error when neither can give them.
+// through the source (empty when it has none: then only a fixed filter resolves).
 WindowReader dem_windows(const HeldDem& dem);
 
 // The user's choice resolved on the DEM (adapt_filter).
