@@ -25,22 +25,9 @@ Outputs are written whole or not at all and replace an earlier output of the sam
 input, and a GeoPackage holding anything else (a raster, other layers), are refused.
 )";
 
-// The usage of the program: its commands, and where their options are told.
+// The usage of the program: its commands, and the notes on inputs and outputs.
 std::string usage() {
-  std::string text =
-      "usage: terrain-sketch COMMAND INPUT OUTPUT [options]\n"
-      "       terrain-sketch COMMAND --help    (the options COMMAND takes)\n"
-      "       terrain-sketch --version\n\ncommands:\n";
-  for (const CommandSpec& command : command_table()) {
-    std::string summary = command.summary;
-    for (std::size_t at = summary.find('\n'); at != std::string::npos;
-         at = summary.find('\n', at + 1)) {
-      summary.insert(at + 1, 16, ' ');
-    }
-    const std::string name = command.name;
-    text += "  " + name + std::string(14 - name.size(), ' ') + summary + "\n";
-  }
-  return text + kNotes;
+  return program_usage() + kNotes;
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 
 #include "cli/options.h"
 #include "core/base/errors.h"
-#include "core/method/choice_names.h"
+#include "core/method/params.h"
 #include "io/write/output_files.h"
 
 namespace tsk::cli {
@@ -117,6 +117,8 @@ const char* const kFilter = "slope filter";
 const char* const kStrokes = "strokes";
 const char* const kInputOutput = "input and output";
 const char* const kPanoramaSection = "panorama";
+const char* const kPStrokesSection =
+    "P-strokes (effective areas in m2 of distance-height triangles)";
 
 #define TSK_SET(field, parser) \
   [](Options& o, const std::string& n, const std::string& v) { o.field = parser(n, v); }
@@ -138,7 +140,7 @@ const std::vector<OptionSpec> kOptionTable = {
      "fixed: the cut-offs as given, the thesis's filter (SPEC 1.5)",
      kFiltered,
      [](Options& o, const std::string&, const std::string& v) {
-       o.params.adaptive.mode = parse_choice(kFilterModeNames, v, "filter");
+       o.params.adaptive.mode = parse_filter_mode(v);
      }},
     {"--adapt", "A", kFilter,
      "whole (default): one scale for the DEM; local: each neighbourhood of\n"
@@ -146,7 +148,7 @@ const std::vector<OptionSpec> kOptionTable = {
      "subtle breaks of slope (reads the DEM once more)",
      kFiltered,
      [](Options& o, const std::string&, const std::string& v) {
-       o.params.adaptive.adapt = parse_choice(kAdaptivityNames, v, "adaptivity");
+       o.params.adaptive.adapt = parse_adaptivity(v);
      }},
     {"--adapt-window", "N", kFilter,
      "local adaptivity's neighbourhood, DEM cells, 8-100000 (default 100)", kFiltered,
@@ -166,7 +168,7 @@ const std::vector<OptionSpec> kOptionTable = {
      "values); exact: SPEC's strokes, one point per cell (the thesis's)",
      kStroked | kPanorama,
      [](Options& o, const std::string&, const std::string& v) {
-       o.params.strokes.mode = parse_choice(kStrokeModeNames, v, "strokes");
+       o.params.strokes.mode = parse_stroke_mode(v);
      }},
     {"--window", "N", kStrokes, "formulated chaining search window, cells (default 3)", kChained,
      TSK_SET(params.chain.window, parse_int)},
@@ -196,14 +198,14 @@ const std::vector<OptionSpec> kOptionTable = {
     {"--placement", "P", kStrokes,
      "far (default) or near_and_far: which end of an f-set zone to keep", kChained,
      [](Options& o, const std::string&, const std::string& v) {
-       o.params.placement = parse_choice(kPlacementNames, v, "placement");
+       o.params.placement = parse_placement(v);
      }},
     {"--subcell", nullptr, kStrokes, "place factual points at the sub-cell peak of the profile",
      kSilhouettes, TSK_FLAG(params.subcell)},
     {"--geometry", "G", kStrokes,
      "map (cell centres) or oblique (plan oblique sketch) (default map)", kSilhouettes | kPStrokes,
      [](Options& o, const std::string&, const std::string& v) {
-       o.params.geometry = parse_choice(kGeometryNames, v, "geometry");
+       o.params.geometry = parse_geometry(v);
      }},
     {"--band", "N", kInputOutput, "raster band (default 1)", kAll, TSK_SET(dem.band, parse_int)},
     {"--cell-size", "M", kInputOutput, "cell size in metres for a raster without georeferencing",
@@ -275,15 +277,15 @@ const std::vector<OptionSpec> kOptionTable = {
      [](Options& o, const std::string& n, const std::string& v) {
        o.every = parse_count(n, v, 1, " (every cross-section)");
      }},
-    {"--convex-column", "M2", "P-strokes (effective areas in m2 of distance-height triangles)",
-     "(default 15000)", kPStrokes, TSK_SET(pstrokes.convex_column_m2, parse_number)},
-    {"--concave-column", "M2", "P-strokes (effective areas in m2 of distance-height triangles)",
-     "(default 60000)", kPStrokes, TSK_SET(pstrokes.concave_column_m2, parse_number)},
-    {"--convex-row", "M2", "P-strokes (effective areas in m2 of distance-height triangles)",
-     "(default 30000)", kPStrokes, TSK_SET(pstrokes.convex_row_m2, parse_number)},
-    {"--concave-row", "M2", "P-strokes (effective areas in m2 of distance-height triangles)",
-     "(default 15000)", kPStrokes, TSK_SET(pstrokes.concave_row_m2, parse_number)},
-    {"--half-length", "N", "P-strokes (effective areas in m2 of distance-height triangles)",
+    {"--convex-column", "M2", kPStrokesSection, "(default 15000)", kPStrokes,
+     TSK_SET(pstrokes.convex_column_m2, parse_number)},
+    {"--concave-column", "M2", kPStrokesSection, "(default 60000)", kPStrokes,
+     TSK_SET(pstrokes.concave_column_m2, parse_number)},
+    {"--convex-row", "M2", kPStrokesSection, "(default 30000)", kPStrokes,
+     TSK_SET(pstrokes.convex_row_m2, parse_number)},
+    {"--concave-row", "M2", kPStrokesSection, "(default 15000)", kPStrokes,
+     TSK_SET(pstrokes.concave_row_m2, parse_number)},
+    {"--half-length", "N", kPStrokesSection,
      "cells drawn each side of a seed across the view (default 1)", kPStrokes,
      TSK_SET(pstrokes.half_length, parse_int)},
     {"--source", "RASTER", "drape", "the raster to drape, on the DEM's grid (required)", kDrape,
@@ -346,10 +348,24 @@ const CommandSpec* find_command(const std::string& name) {
   return nullptr;
 }
 
+std::string program_usage() {
+  constexpr std::size_t kSummaryColumn = 16;
+  std::string usage =
+      "usage: terrain-sketch COMMAND INPUT OUTPUT [options]\n"
+      "       terrain-sketch COMMAND --help    (the options COMMAND takes)\n"
+      "       terrain-sketch --version\n\ncommands:\n";
+  for (const CommandSpec& command : kCommandTable) {
+    const std::string name = command.name;
+    usage += "  " + name + std::string(kSummaryColumn - 2 - name.size(), ' ') +
+             indent_lines(command.summary, kSummaryColumn) + "\n";
+  }
+  return usage;
+}
+
 std::string command_help(const CommandSpec& command) {
   constexpr std::size_t kHelpColumn = 23;
   std::string help = std::string("usage: terrain-sketch ") + command.name +
-                     " INPUT OUTPUT [options]\n\n" + indent_lines(command.summary, 0) + "\n";
+                     " INPUT OUTPUT [options]\n\n" + command.summary + "\n";
   std::string section;
   for (const OptionSpec& option : kOptionTable) {
     if ((option.commands & command.bit) == 0) continue;

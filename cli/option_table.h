@@ -45,6 +45,9 @@ const std::vector<OptionSpec>& option_table();
 // The command of that name, or null.
 const CommandSpec* find_command(const std::string& name);
 
+// The program's usage: its commands, each with what it makes.
+std::string program_usage();
+
 // The help of one command: its usage, what it makes, and only the options it takes.
 std::string command_help(const CommandSpec& command);
 
