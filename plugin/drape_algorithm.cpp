@@ -106,11 +106,7 @@ PlanObliqueDrape DrapeAlgorithm::layOut(const RasterGrid& raster,
                                         QgsProcessingFeedback* feedback) const {
   // Laying out the drape takes as long as reading the DEM: progress from 30 to 60 %, and Cancel
   // heard within a few hundred profiles.
-  return lay_out_drape(raster.held(), mView, 0, [feedback](double done) {
-    if (!feedback) return true;
-    feedback->setProgress(30 + 30 * done);
-    return !feedback->isCanceled();
-  });
+  return lay_out_drape(raster.held(), mView, 0, progressBetween(feedback, 30, 60));
 }
 
 HeightGrid DrapeAlgorithm::readSourceBand(int band, std::size_t rows, std::size_t cols,
