@@ -16,20 +16,12 @@ import time
 build, dem = sys.argv[1], sys.argv[2]
 runs = int(sys.argv[3]) if len(sys.argv) > 3 else 5
 azimuth = float(sys.argv[4]) if len(sys.argv) > 4 else 90.0
-os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-sys.path.append("/usr/share/qgis/python/plugins")
-sys.path.insert(0, os.path.join(build, "qgis-plugin"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "e2e"))
+import headless_qgis  # noqa: E402
 
-from qgis.core import QgsApplication  # noqa: E402
-
-app = QgsApplication([], False)
-app.initQgis()
-from processing.core.Processing import Processing  # noqa: E402
+app = headless_qgis.start(build)
 from qgis import processing  # noqa: E402
-import terrain_sketch  # noqa: E402
 
-terrain_sketch.classFactory(None).initProcessing()
-Processing.initialize()
 cli = os.path.join(build, "cli", "terrain-sketch")
 
 qgis_times, cli_times = [], []

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <gdal_priv.h>
+#include <gdal_utils.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -108,6 +109,17 @@ inline void write_huge_vrt(const std::string& vrt) {
   <GeoTransform>500000, 10, 0, 4000000, 0, -10</GeoTransform>
   <VRTRasterBand dataType="Float32" band="1"><NoDataValue>-9999</NoDataValue></VRTRasterBand>
 </VRTDataset>)";
+}
+
+// Writes a VRT at `path` reading the raster `source` (GDAL then lists the VRT and `source` as its
+// files, not the sources of `source`).
+inline void build_vrt(const std::string& path, const std::string& source) {
+  GDALAllRegister();
+  const char* sources[] = {source.c_str()};
+  int failed = 0;
+  GDALDatasetH built = GDALBuildVRT(path.c_str(), 1, nullptr, sources, nullptr, &failed);
+  REQUIRE(built != nullptr);
+  GDALClose(built);
 }
 
 }  // namespace tsk::test

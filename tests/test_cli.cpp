@@ -1,7 +1,6 @@
 // The terrain-sketch command line, run in-process: outputs, formats, and every bad input it must
 // refuse with a message and without leaving a file behind.
 #include <fcntl.h>
-#include <gdal_utils.h>
 #include <ogrsf_frmts.h>
 #include <spawn.h>
 #include <sys/resource.h>
@@ -1032,21 +1031,12 @@ TEST_CASE("COMMAND --help lists that command's options only", "[cli]") {
 
 TEST_CASE("an output is refused when an input reads it, however deeply nested or wrapped",
           "[cli][robustness]") {
-  GDALAllRegister();  // ctest runs each test in a process of its own
   ScratchDir dir("nested_inputs");
   const std::string src = dir / "src.tif";
   std::filesystem::copy_file(kSample, src);
   // v.vrt reads src.tif; vv.vrt reads v.vrt, and GDAL lists only v.vrt for it.
-  const auto build_vrt = [](const std::string& path, const std::string& source) {
-    GDALDatasetH in = GDALOpen(source.c_str(), GA_ReadOnly);
-    REQUIRE(in != nullptr);
-    GDALDatasetH vrt = GDALBuildVRT(path.c_str(), 1, &in, nullptr, nullptr, nullptr);
-    REQUIRE(vrt != nullptr);
-    GDALClose(vrt);
-    GDALClose(in);
-  };
-  build_vrt(dir / "v.vrt", src);
-  build_vrt(dir / "vv.vrt", dir / "v.vrt");
+  test::build_vrt(dir / "v.vrt", src);
+  test::build_vrt(dir / "vv.vrt", dir / "v.vrt");
   const std::string before = slurp(src);
   const std::string subfile = "/vsisubfile/0_" + std::to_string(before.size()) + "," + src;
   const std::vector<std::vector<std::string>> cases = {

@@ -146,14 +146,7 @@ TEST_CASE("an output that names a file a VRT input reads is refused, the file ke
   ScratchDir dir("vrt");
   const std::string src = dir / "src.tif", vrt = dir / "v_src.vrt";
   std::filesystem::copy_file(kSample, src);
-  {
-    GDALAllRegister();
-    const char* sources[] = {src.c_str()};
-    int failed = 0;
-    GDALDatasetH built = GDALBuildVRT(vrt.c_str(), 1, nullptr, sources, nullptr, &failed);
-    REQUIRE(built != nullptr);
-    GDALClose(built);
-  }
+  build_vrt(vrt, src);
   const auto before = std::filesystem::file_size(src);
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"classify", vrt, src},
@@ -188,14 +181,7 @@ TEST_CASE("clashes between outputs and inputs are found alike for every front en
   const double gt[6] = {500000, 10, 0, 4000000, 0, -10};
   write_tiff(
       dir / "src.tif", 8, 8, 1, [](int, int r, int c) { return r + c; }, gt, 32616);
-  GDALDatasetH src = GDALOpen((dir / "src.tif").c_str(), GA_ReadOnly);
-  REQUIRE(src != nullptr);
-  GDALBuildVRTOptions* vrt_options = GDALBuildVRTOptionsNew(nullptr, nullptr);
-  GDALDatasetH vrt = GDALBuildVRT((dir / "v.vrt").c_str(), 1, &src, nullptr, vrt_options, nullptr);
-  GDALBuildVRTOptionsFree(vrt_options);
-  REQUIRE(vrt != nullptr);
-  GDALClose(vrt);
-  GDALClose(src);
+  build_vrt(dir / "v.vrt", dir / "src.tif");
   const std::vector<io::NamedFile> inputs = {{"INPUT", dir / "v.vrt"}, {"--source", ""}};
   const auto clash = [&](std::vector<io::NamedFile> outputs) {
     return io::find_clash(outputs, inputs);

@@ -15,22 +15,14 @@ import numpy as np
 
 build, repo, work = (os.path.abspath(a) for a in sys.argv[1:4])
 os.makedirs(work, exist_ok=True)
-os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-sys.path.append("/usr/share/qgis/python/plugins")
-sys.path.insert(0, os.path.join(build, "qgis-plugin"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import headless_qgis  # noqa: E402
 
+app = headless_qgis.start(build)
 from osgeo import gdal, ogr, osr  # noqa: E402
-from qgis.core import QgsApplication  # noqa: E402
+from qgis import processing  # noqa: E402
 
 gdal.UseExceptions()
-app = QgsApplication([], False)
-app.initQgis()
-from processing.core.Processing import Processing  # noqa: E402
-from qgis import processing  # noqa: E402
-import terrain_sketch  # noqa: E402
-
-terrain_sketch.classFactory(None).initProcessing()
-Processing.initialize()
 CLI = os.path.join(build, "cli", "terrain-sketch")
 SAMPLE = os.path.join(repo, "resources", "sample", "jacksboro_utm16n.tif")
 SUMMIT = (749008.1394, 4009477.9308)  # the sample's summit (scripts/demo.sh)

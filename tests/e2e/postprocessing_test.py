@@ -10,21 +10,14 @@ import os
 import sys
 
 build, repo = (os.path.abspath(a) for a in sys.argv[1:3])
-os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-sys.path.append("/usr/share/qgis/python/plugins")
-sys.path.insert(0, os.path.join(build, "qgis-plugin"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import headless_qgis  # noqa: E402
 
+app = headless_qgis.start(build)
+from processing.gui.Postprocessing import handleAlgorithmResults  # noqa: E402
 from qgis.core import (QgsApplication, QgsProcessingContext, QgsProcessingFeedback,  # noqa: E402
                        QgsProcessingOutputLayerDefinition, QgsProject)
 
-app = QgsApplication([], False)
-app.initQgis()
-from processing.core.Processing import Processing  # noqa: E402
-from processing.gui.Postprocessing import handleAlgorithmResults  # noqa: E402
-import terrain_sketch  # noqa: E402
-
-terrain_sketch.classFactory(None).initProcessing()
-Processing.initialize()
 SAMPLE = os.path.join(repo, "resources", "sample", "jacksboro_utm16n.tif")
 SUMMIT = "749008.1394,4009477.9308 [EPSG:32616]"
 
