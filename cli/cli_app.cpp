@@ -4,8 +4,10 @@
 #include <gdal.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 #include <new>
+#include <sstream>
 #include <string>
 
 #include "cli/commands.h"
@@ -14,6 +16,7 @@
 #include "cli/option_table.h"
 #include "cli/progress_line.h"
 #include "core/base/errors.h"
+#include "io/write/output_set.h"
 
 namespace tsk::cli {
 namespace {
@@ -30,6 +33,25 @@ std::string usage() {
   return program_usage() + kNotes;
 }
 
+using Command = int (*)(const Args&, std::ostream&, std::ostream&, const ProgressFn&);
+
+// Runs `command` with its outputs put in place together when it has done (output_set.h), and
+// what it says of them said only then. A run that must wait for another writing one of them says
+// so, and a signal ends the wait.
+int run_with_outputs(Command command, const Args& args, std::ostream& out, std::ostream& err,
+                     const ProgressFn& progress) {
+  const auto waiting = [&err](const std::filesystem::path& destination) {
+    err << "terrain-sketch: waiting for another run writing '" << destination.string() << "'\n";
+  };
+  io::OutputSet outputs({waiting, stop_if_interrupted});
+  std::ostringstream said;
+  const int code = command(args, said, err, progress);
+  stop_if_interrupted();  // the last chance to stop with nothing written
+  outputs.commit();
+  out << said.str();
+  return code;
+}
+
 }  // namespace
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
@@ -43,7 +65,6 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         << ")\n";
     return 0;
   }
-  using Command = int (*)(const Args&, std::ostream&, std::ostream&, const ProgressFn&);
   const std::map<std::string, Command> commands = {
       {"silhouettes", silhouettes}, {"profiles", profiles},       {"classify", classify},
       {"row-slope", row_slope},     {"filter-plot", filter_plot}, {"drape", drape},
@@ -68,7 +89,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     return !interrupted();
   };
   try {
-    return command->second(rest, out, err, progress);
+    return run_with_outputs(*command->second, rest, out, err, progress);
   } catch (const Cancelled&) {
     err << (line.started() ? "\n" : "") << "terrain-sketch: interrupted; no output written\n";
     return 130;

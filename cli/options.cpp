@@ -6,6 +6,7 @@
 #include "cli/interrupt.h"
 #include "cli/option_table.h"
 #include "core/base/errors.h"
+#include "io/pages/preview.h"
 #include "io/read/gdal_util.h"
 #include "io/write/output_files.h"
 #include "io/write/path_clashes.h"
@@ -20,8 +21,12 @@ void check_page(const Options& o) {
     throw Error("--page, --page-scale and --plotter shape the --preview picture: give --preview");
   if (o.page.scale > 0.0 && o.page.size.empty())
     throw Error("--page-scale needs a --page to draw the sketch on at that scale");
-  if (!o.page.size.empty()) io::parse_page_size(o.page.size);
-  if (o.page.plotter && io::lowercase_extension(o.preview) == ".png")
+  const bool png = io::lowercase_extension(o.preview) == ".png";
+  if (!o.page.size.empty()) {
+    const io::PageSize size = io::parse_page_size(o.page.size);
+    if (png) io::check_png_page(size);
+  }
+  if (o.page.plotter && png)
     throw Error("--plotter draws vector art for a pen: give --preview a .svg or .pdf name");
 }
 

@@ -32,10 +32,11 @@ void print_timings(const StageTimings& t, double write_s, double commit_s, std::
 
 // The preview draws the strokes over the whole DEM turned to the view, held for the run.
 io::PlotterReport write_preview(const Options& o, SilhouetteResult& result,
-                                std::vector<Stroke>&& drawn, const io::Dem& whole) {
+                                std::vector<Stroke>&& drawn, const io::Dem& whole,
+                                const ProgressFn& progress) {
   result.strokes = std::move(drawn);
   return io::write_preview(o.preview, result, whole.oriented, whole.frame, whole.geotransform,
-                           o.params.view, o.params.geometry, o.page);
+                           o.params.view, o.params.geometry, o.page, progress);
 }
 
 // The DEM of a run: held whole once for a preview, which draws over it too (refused when too
@@ -87,18 +88,18 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
           write_s += since(start);
           if (preview) drawn.push_back(std::move(stroke));
         });
-        stop_if_interrupted();  // the last chance to stop with nothing written
-        // The statistics and the preview go out before the strokes are committed, so that a failure
-        // to write them discards the strokes too.
-        if (!o.stats_json.empty())
-          io::write_text_file(o.stats_json, stats_json(result.stats, result.filter));
-        if (preview) plotter = write_preview(o, result, std::move(drawn), dem.info());
         produced = Clock::now();
       },
       io::kStrokeLayer, o.params.strokes.drawn());
+  const double commit_s = since(produced);
+  // All three go in place together when the run has done (io/write/output_set.h).
+  stop_if_interrupted();
+  if (!o.stats_json.empty())
+    io::write_text_file(o.stats_json, stats_json(result.stats, result.filter));
+  if (preview) plotter = write_preview(o, result, std::move(drawn), dem.info(), progress);
   print_filter(result.filter, err);
   if (o.page.plotter) print_plotter(plotter, !o.page.size.empty(), err);
-  if (o.timings) print_timings(result.timings, write_s, since(produced), err);
+  if (o.timings) print_timings(result.timings, write_s, commit_s, err);
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes
       << " formulated strokes (c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered)

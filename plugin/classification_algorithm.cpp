@@ -54,9 +54,9 @@ double ClassificationAlgorithm::readParameters(const QVariantMap& parameters,
   return mParams.view.azimuth_deg;
 }
 
-QVariantMap ClassificationAlgorithm::processAlgorithm(const QVariantMap& parameters,
-                                                      QgsProcessingContext& context,
-                                                      QgsProcessingFeedback* feedback) {
+QVariantMap ClassificationAlgorithm::writeOutputs(const QVariantMap& parameters,
+                                                  QgsProcessingContext& context,
+                                                  QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 25);
   const SilhouetteResult result = runSilhouettes(mParams, feedback, 25, 90);
   mOutput = parameterAsOutputLayer(parameters, QStringLiteral("OUTPUT"), context);

@@ -8,12 +8,14 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QIcon>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/base/errors.h"
+#include "io/write/output_set.h"
 #include "io/write/path_clashes.h"
 #include "plugin/line_output.h"
 #include "plugin/plugin_paths.h"
@@ -128,6 +130,24 @@ bool DemViewAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
     if (feedback) feedback->pushWarning(note);
   }
   return true;
+}
+
+QVariantMap DemViewAlgorithm::processAlgorithm(const QVariantMap& parameters,
+                                               QgsProcessingContext& context,
+                                               QgsProcessingFeedback* feedback) {
+  const auto waiting = [feedback](const std::filesystem::path& destination) {
+    if (feedback) {
+      feedback->pushInfo(
+          tr("Waiting for another run writing %1.").arg(QFile::decodeName(destination.c_str())));
+    }
+  };
+  const auto stop = [feedback] {
+    if (feedback && feedback->isCanceled()) throw Cancelled();
+  };
+  io::OutputSet outputs({waiting, stop});
+  const QVariantMap results = writeOutputs(parameters, context, feedback);
+  withCoreErrors([&] { outputs.commit(); });
+  return results;
 }
 
 void DemViewAlgorithm::addWithProgress(LineOutput& output, QgsFeature& feature,

@@ -48,6 +48,16 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   bool prepareAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,
                         QgsProcessingFeedback* feedback) override;
 
+  // Worker thread: runs writeOutputs and then puts every output it wrote to a file in place
+  // together (io/write/output_set.h), so that a run that fails, is cancelled or is killed leaves
+  // the earlier outputs of the same names whole. A run that must wait for another writing one of
+  // them says so, and Cancel ends the wait.
+  QVariantMap processAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,
+                               QgsProcessingFeedback* feedback) final;
+  // The algorithm's work and outputs, returning its results.
+  virtual QVariantMap writeOutputs(const QVariantMap& parameters, QgsProcessingContext& context,
+                                   QgsProcessingFeedback* feedback) = 0;
+
   // Adds `feature` to `output`. Every 500 features it checks for cancellation and moves progress
   // from `from` towards 100 %.
   void addWithProgress(LineOutput& output, QgsFeature& feature, QgsProcessingFeedback* feedback,

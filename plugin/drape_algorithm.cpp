@@ -128,9 +128,9 @@ HeightGrid DrapeAlgorithm::readSourceBand(int band, std::size_t rows, std::size_
   return values;
 }
 
-QVariantMap DrapeAlgorithm::processAlgorithm(const QVariantMap& parameters,
-                                             QgsProcessingContext& context,
-                                             QgsProcessingFeedback* feedback) {
+QVariantMap DrapeAlgorithm::writeOutputs(const QVariantMap& parameters,
+                                         QgsProcessingContext& context,
+                                         QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 30);
   const std::size_t rows = raster.frame().dem_rows, cols = raster.frame().dem_cols;
   const QgsCoordinateReferenceSystem crs = raster.crs();

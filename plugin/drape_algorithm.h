@@ -29,8 +29,8 @@ class DrapeAlgorithm : public DemViewAlgorithm {
   double readParameters(const QVariantMap& parameters, QgsProcessingContext& context) override;
   bool prepareAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,
                         QgsProcessingFeedback* feedback) override;
-  QVariantMap processAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,
-                               QgsProcessingFeedback* feedback) override;
+  QVariantMap writeOutputs(const QVariantMap& parameters, QgsProcessingContext& context,
+                           QgsProcessingFeedback* feedback) override;
 
  private:
   // The drape's layout over the DEM read (its flags let go once it is laid out).

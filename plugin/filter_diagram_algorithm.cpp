@@ -50,9 +50,9 @@ double FilterDiagramAlgorithm::readParameters(const QVariantMap& parameters,
   return mParams.view.azimuth_deg;
 }
 
-QVariantMap FilterDiagramAlgorithm::processAlgorithm(const QVariantMap& parameters,
-                                                     QgsProcessingContext& context,
-                                                     QgsProcessingFeedback* feedback) {
+QVariantMap FilterDiagramAlgorithm::writeOutputs(const QVariantMap& parameters,
+                                                 QgsProcessingContext& context,
+                                                 QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 40);
   const SilhouetteResult result = runSilhouettes(mParams, feedback, 40, 90);
   const std::string html = withCoreErrors([&] {

@@ -14,6 +14,7 @@
 #include <cctype>
 #include <exception>
 
+#include "io/write/output_set.h"
 #include "plugin/core_errors.h"
 #include "plugin/gpkg_line_sink.h"
 #include "plugin/qgis_compat.h"
@@ -75,6 +76,23 @@ bool endsWhole(const QString& path) {
   return compact.endsWith("}]}") || compact.endsWith("[]}");
 }
 
+// The value of an output parameter that writes to `path` instead, as the dialog's definition
+// (with its project and options) or as a plain path.
+QVariant redirected(const QVariant& value, const QString& path) {
+  if (value.userType() != qMetaTypeId<QgsProcessingOutputLayerDefinition>()) return path;
+  QgsProcessingOutputLayerDefinition definition = value.value<QgsProcessingOutputLayerDefinition>();
+  definition.sink = QgsProperty::fromValue(path);
+  return QVariant::fromValue(definition);
+}
+
+// The layer `context` is to load as `from` on completion loaded as `to` instead.
+void moveLayerToLoad(QgsProcessingContext& context, const QString& from, const QString& to) {
+  QMap<QString, QgsProcessingContext::LayerDetails> layers = context.layersToLoadOnCompletion();
+  if (!layers.contains(from)) return;
+  layers.insert(to, layers.take(from));
+  context.setLayersToLoadOnCompletion(layers);
+}
+
 void dropLayer(const QString& path, const QString& layer) {
   GDALDatasetH dataset = GDALOpenEx(QFile::encodeName(path).constData(),
                                     GDAL_OF_VECTOR | GDAL_OF_UPDATE, nullptr, nullptr, nullptr);
@@ -89,6 +107,13 @@ void dropLayer(const QString& path, const QString& layer) {
 }
 
 }  // namespace
+
+QString LineOutput::stagedFile(const QString& path) {
+  io::OutputSet* set = io::OutputSet::current();
+  if (!set) throw QgsProcessingException(tr("Internal error: no output set for %1.").arg(path));
+  return withCoreErrors(
+      [&] { return QFile::decodeName(set->stage(QFile::encodeName(path).toStdString()).c_str()); });
+}
 
 std::unique_ptr<io::DestinationLock> LineOutput::lockDestination(const QString& path,
                                                                  QgsProcessingFeedback* feedback) {
@@ -134,12 +159,23 @@ LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMa
   const QgsProcessingParameterDefinition* definition = algorithm.parameterDefinition(key);
   const QString target = outputTarget(algorithm, parameters, key, context);
   const FileTarget file = fileTarget(target);
-  // One run at a time writes a file, so that a run that fails removes only what it made.
-  if (!file.path.isEmpty()) mLock = lockDestination(file.path, feedback);
-  if (!file.path.isEmpty() && !file.addsLayer) mFilesBefore = filesNamedAfter(file.path);
+  // A file written whole is staged, and put in place with the run's other outputs when the run has
+  // done (DemViewAlgorithm::processAlgorithm): one that fails leaves the earlier file whole. A
+  // layer added to a file is written there, one run at a time, and dropped if the run fails.
+  const bool staged = !file.path.isEmpty() && !target.startsWith(QLatin1String("ogr:"));
+  QVariantMap sinkParameters = parameters;
+  QString stagedPath;
+  if (staged) {
+    stagedPath = stagedFile(file.path);
+    sinkParameters.insert(key, redirected(parameters.value(key), stagedPath));
+  } else if (!file.path.isEmpty()) {
+    mLock = lockDestination(file.path, feedback);
+    if (!file.addsLayer) mFilesBefore = filesNamedAfter(file.path);
+  }
+  mStaged = staged;
   const bool gpkg = !file.addsLayer && target.endsWith(QLatin1String(".gpkg"), Qt::CaseInsensitive);
   mSink.reset(QgsProcessingParameters::parameterAsSink(
-      definition, parameters, fields, measured ? kLineStringM : kLineString, crs, context,
+      definition, sinkParameters, fields, measured ? kLineStringM : kLineString, crs, context,
       mDestination, QgsFeatureSink::SinkFlags(), QVariantMap(), QStringList(),
       gpkg ? QStringList{QStringLiteral("SPATIAL_INDEX=NO")} : QStringList()));
   if (!mSink) throw QgsProcessingException(SinkErrors::invalidSinkError(parameters, key));
@@ -148,6 +184,12 @@ LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMa
   if (!file.path.isEmpty()) {
     mFile = parts.value(QStringLiteral("path")).toString();
     if (file.addsLayer) mAddedLayer = parts.value(QStringLiteral("layerName")).toString();
+  }
+  if (staged) {
+    // QGIS loads, and the results name, the file where it will be.
+    const QString staging = mDestination;
+    mDestination.replace(stagedPath, file.path);
+    moveLayerToLoad(context, staging, mDestination);
   }
   if (!gpkg) return;
   // QGIS made the file and its empty layer; closed, the lines go in through SQLite.
@@ -200,7 +242,8 @@ void LineOutput::failWriting() const {
 void LineOutput::discard() noexcept {
   mGpkg = nullptr;
   mSink.reset();  // rolls a GeoPackage's rows back; closes QGIS's writer
-  if (mFile.isEmpty() || !QFileInfo(mFile).isFile()) return;
+  // A staged file goes with its staging folder, when the run's output set does.
+  if (mStaged || mFile.isEmpty() || !QFileInfo(mFile).isFile()) return;
   if (mAddedLayer.isEmpty()) {
     // QGIS made the file, or wrote it over: it goes, with the files made beside it that GDAL
     // does not count as the dataset's (GML's .xsd, the journal that a write which failed on a

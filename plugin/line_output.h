@@ -1,9 +1,11 @@
 // A line output of an algorithm, whole or not at all. The features go to the sink QGIS makes for
-// the destination or, into a GeoPackage file, straight through SQLite (gpkg_line_sink.h). An
-// output that goes out of scope unfinished, or by an exception (the run failed or was cancelled,
-// perhaps after this output was finished), is discarded: a GeoPackage's rows roll back, and the
-// file QGIS created or overwrote for it is deleted, or the layer QGIS added to a file that already
-// existed is dropped. Features may be added from any one thread at a time.
+// the destination or, into a GeoPackage file, straight through SQLite (gpkg_line_sink.h). A file
+// written whole is staged, and put in place with the run's other outputs when the run has done
+// (io/write/output_set.h). An output that goes out of scope unfinished, or by an exception (the
+// run failed or was cancelled, perhaps after this output was finished), is discarded: a
+// GeoPackage's rows roll back, the staged file goes with its staging folder, and a layer QGIS
+// added to a file that already existed is dropped. Features may be added from any one thread at a
+// time.
 #pragma once
 
 #include <qgscoordinatereferencesystem.h>
@@ -65,9 +67,9 @@ class LineOutput {
  public:
   // Line output `key` of `algorithm` with `fields`, in `crs`, of LineString M when `measured`.
   // Throws QgsProcessingException with QGIS's message when the destination cannot be created. A
-  // file output is locked for as long as the output lives (io/destination_lock.h): another run
-  // writing it, from QGIS or the command line, is waited for (said on `feedback`, which can cancel
-  // the wait).
+  // layer added to a file is locked for as long as the output lives (io/destination_lock.h):
+  // another run writing the file, from QGIS or the command line, is waited for (said on
+  // `feedback`, which can cancel the wait).
   LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
              const QString& key, QgsProcessingContext& context, const QgsFields& fields,
              const QgsCoordinateReferenceSystem& crs, QgsProcessingFeedback* feedback,
@@ -87,6 +89,8 @@ class LineOutput {
   void finish();
 
  private:
+  // Stages `path` in the run's output set; returns where to write it.
+  static QString stagedFile(const QString& path);
   static std::unique_ptr<io::DestinationLock> lockDestination(const QString& path,
                                                               QgsProcessingFeedback* feedback);
   [[noreturn]] void failWriting() const;
@@ -99,8 +103,9 @@ class LineOutput {
   std::unique_ptr<QgsFeatureSink> mSink;
   GpkgLineSink* mGpkg = nullptr;  // mSink, when it writes through SQLite
   QString mDestination;
-  QString mFile;        // the file holding the output; empty for a memory layer or a database
-  QString mAddedLayer;  // the layer QGIS added to a file that existed before; empty: QGIS's file
+  QString mFile;  // the file holding the output (staged); empty for a memory layer or a database
+  bool mStaged = false;  // mFile is staged in the run's output set
+  QString mAddedLayer;   // the layer QGIS added to a file that existed before; empty: QGIS's file
   QStringList mFilesBefore;  // named after QGIS's file, there before it was made
   bool mFinished = false;
   int mExceptionsAtStart;  // exceptions in flight when the output was made

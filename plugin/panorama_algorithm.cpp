@@ -236,9 +236,9 @@ void PanoramaAlgorithm::writePeaks(const QVariantMap& parameters, QgsProcessingC
   mPeaksId = output.destination();
 }
 
-QVariantMap PanoramaAlgorithm::processAlgorithm(const QVariantMap& parameters,
-                                                QgsProcessingContext& context,
-                                                QgsProcessingFeedback* feedback) {
+QVariantMap PanoramaAlgorithm::writeOutputs(const QVariantMap& parameters,
+                                            QgsProcessingContext& context,
+                                            QgsProcessingFeedback* feedback) {
   const PanoramaResult result = sketch(feedback);
   const RasterGrid& raster = preparedRaster();
   // Asked for as the dialog asks (a QgsProcessingOutputLayerDefinition, whose toString() is

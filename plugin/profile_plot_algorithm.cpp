@@ -53,9 +53,9 @@ double ProfilePlotAlgorithm::readParameters(const QVariantMap& parameters,
   return mView.azimuth_deg;
 }
 
-QVariantMap ProfilePlotAlgorithm::processAlgorithm(const QVariantMap& parameters,
-                                                   QgsProcessingContext& context,
-                                                   QgsProcessingFeedback* feedback) {
+QVariantMap ProfilePlotAlgorithm::writeOutputs(const QVariantMap& parameters,
+                                               QgsProcessingContext& context,
+                                               QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 50);
   const std::vector<ProfileLine> lines = withCoreErrors(
       [&] { return plot_profiles(raster.held(), mView, static_cast<std::size_t>(mEvery), 0); });

@@ -18,8 +18,8 @@ class ProfilePlotAlgorithm : public DemViewAlgorithm {
  protected:
   void initAlgorithm(const QVariantMap& configuration = QVariantMap()) override;
   double readParameters(const QVariantMap& parameters, QgsProcessingContext& context) override;
-  QVariantMap processAlgorithm(const QVariantMap& parameters, QgsProcessingContext& context,
-                               QgsProcessingFeedback* feedback) override;
+  QVariantMap writeOutputs(const QVariantMap& parameters, QgsProcessingContext& context,
+                           QgsProcessingFeedback* feedback) override;
   QVariantMap postProcessAlgorithm(QgsProcessingContext& context,
                                    QgsProcessingFeedback* feedback) override;
 

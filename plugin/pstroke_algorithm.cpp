@@ -78,9 +78,9 @@ double PStrokeAlgorithm::readParameters(const QVariantMap& parameters,
   return mParams.view.azimuth_deg;
 }
 
-QVariantMap PStrokeAlgorithm::processAlgorithm(const QVariantMap& parameters,
-                                               QgsProcessingContext& context,
-                                               QgsProcessingFeedback* feedback) {
+QVariantMap PStrokeAlgorithm::writeOutputs(const QVariantMap& parameters,
+                                           QgsProcessingContext& context,
+                                           QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 25);
   const std::vector<PStroke> strokes = withCoreErrors([&] {
     PStrokeRun run =

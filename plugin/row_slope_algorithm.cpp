@@ -43,9 +43,9 @@ double RowSlopeAlgorithm::readParameters(const QVariantMap& parameters,
   return view.azimuth_deg;
 }
 
-QVariantMap RowSlopeAlgorithm::processAlgorithm(const QVariantMap& parameters,
-                                                QgsProcessingContext& context,
-                                                QgsProcessingFeedback* feedback) {
+QVariantMap RowSlopeAlgorithm::writeOutputs(const QVariantMap& parameters,
+                                            QgsProcessingContext& context,
+                                            QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 70);
   mOutput = parameterAsOutputLayer(parameters, QStringLiteral("OUTPUT"), context);
   writeFloatRaster(mOutput, {row_slope_map(raster.oriented(), raster.frame())},

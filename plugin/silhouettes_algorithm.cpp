@@ -205,9 +205,9 @@ double SilhouettesAlgorithm::readParameters(const QVariantMap& parameters,
   return p.view.azimuth_deg;
 }
 
-QVariantMap SilhouettesAlgorithm::processAlgorithm(const QVariantMap& parameters,
-                                                   QgsProcessingContext& context,
-                                                   QgsProcessingFeedback* feedback) {
+QVariantMap SilhouettesAlgorithm::writeOutputs(const QVariantMap& parameters,
+                                               QgsProcessingContext& context,
+                                               QgsProcessingFeedback* feedback) {
   RasterGrid& raster = preparedRaster();
   const DemSource dem = raster.source();
   const OrientedFrame frame =

@@ -8,7 +8,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <string>
 #include <vector>
@@ -43,15 +46,15 @@ long long features_read(const std::string& path, const OGREnvelope* filter = nul
   return errors.first_failure().empty() && (filter || declared == count) ? count : -1;
 }
 
-// Starts the command line on `args`, its output to /dev/null.
-pid_t start_cli(const std::vector<std::string>& args) {
+// Starts the command line on `args`, its output to /dev/null and its messages to `messages`.
+pid_t start_cli(const std::vector<std::string>& args, const std::string& messages = "/dev/null") {
   std::vector<char*> argv = {const_cast<char*>("terrain-sketch")};
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   posix_spawn_file_actions_t quiet;
   posix_spawn_file_actions_init(&quiet);
   posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&quiet, 2, messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   pid_t child = 0;
   const int started = posix_spawn(&child, TSK_CLI_BINARY, &quiet, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&quiet);
@@ -63,6 +66,29 @@ int exit_code(pid_t child) {
   int status = 0;
   waitpid(child, &status, 0);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string text_of(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(file), {});
+}
+
+// The staging folder run `pid` made in `dir`, or an empty path while there is none.
+std::filesystem::path staging_of(const std::filesystem::path& dir, pid_t pid) {
+  const std::string mark = ".partial-" + std::to_string(pid) + "-";
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.path().filename().string().find(mark) != std::string::npos) return entry.path();
+  return {};
+}
+
+// Waits until run `pid` has staged `file` in `dir` (its work done); false after 6 s.
+bool staged(const std::filesystem::path& dir, pid_t pid, const std::string& file) {
+  for (int k = 0; k < 300; ++k) {
+    const std::filesystem::path staging = staging_of(dir, pid);
+    if (!staging.empty() && std::filesystem::exists(staging / file)) return true;
+    usleep(20000);
+  }
+  return false;
 }
 
 }  // namespace
@@ -94,21 +120,72 @@ TEST_CASE("a run waits to put its output in place while another run holds it",
   // The other run is this test, holding the destination's lock: the command line's run must
   // finish its work and wait, leaving the destination alone, until the lock is released.
   ScratchDir dir("held");
-  const std::string out = dir / "held.shp";
+  const std::string out = dir / "held.shp", messages = dir / "messages.txt";
   pid_t run = 0;
   {
     const io::DestinationLock held(out);
-    run = start_cli({"silhouettes", kSample, out});
-    const std::string staged = dir / (".held.shp.partial-" + std::to_string(run) + "/held.dbf");
-    for (int k = 0; k < 300 && !std::filesystem::exists(staged); ++k) usleep(20000);
-    REQUIRE(std::filesystem::exists(staged));  // its strokes are written, in its staging folder
+    run = start_cli({"silhouettes", kSample, out}, messages);
+    REQUIRE(staged(dir.path, run, "held.dbf"));  // its strokes are written, in its staging folder
     usleep(300000);
-    CHECK(waitpid(run, nullptr, WNOHANG) == 0);  // still waiting
+    CHECK(waitpid(run, nullptr, WNOHANG) == 0);  // still waiting, and saying so
+    CHECK(text_of(messages).find("waiting for another run writing '" + out + "'") !=
+          std::string::npos);
     CHECK_FALSE(std::filesystem::exists(out));
   }
   CHECK(exit_code(run) == 0);
   CHECK(features_read(out) > 100);
   CHECK_FALSE(std::filesystem::exists(dir / ".held.shp.lock"));
+}
+
+TEST_CASE("a run waiting for another run's lock stops on a signal, writing nothing",
+          "[io][concurrency][interrupt]") {
+  ScratchDir dir("held_stopped");
+  const std::string out = dir / "held.gpkg", messages = dir / "messages.txt";
+  const io::DestinationLock held(out);
+  const pid_t run = start_cli({"silhouettes", kSample, out}, messages);
+  REQUIRE(staged(dir.path, run, "held.gpkg"));
+  usleep(200000);
+  kill(run, SIGTERM);
+  CHECK(exit_code(run) == 130);
+  CHECK(text_of(messages).find("interrupted; no output written") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(out));
+  CHECK(staging_of(dir.path, run).empty());
+}
+
+TEST_CASE("the outputs of a run killed before its commit are all the earlier run's",
+          "[io][concurrency]") {
+  // A run writes strokes, statistics and a preview; a second run of another view is held at its
+  // commit (this test holds the strokes' lock) and killed outright: not one of the three may be
+  // the second run's.
+  ScratchDir dir("one_commit");
+  const std::string out = dir / "o.gpkg", stats = dir / "s.json", preview = dir / "p.png";
+  const auto run_args = [&](const char* azimuth) {
+    return std::vector<std::string>{"silhouettes", kSample,        out,
+                                    "--azimuth",   azimuth,        "--preview",
+                                    preview,       "--stats-json", stats};
+  };
+  REQUIRE(run_cli(run_args("90")).code == 0);
+  const std::string stats_before = text_of(stats), preview_before = text_of(preview);
+  const long long strokes_before = features_read(out);
+  pid_t run = 0;
+  {
+    const io::DestinationLock held(out);
+    run = start_cli(run_args("0"));
+    REQUIRE(staged(dir.path, run, "o.gpkg"));
+    for (int k = 0; k < 100 && !std::filesystem::exists(staging_of(dir.path, run) / "p.png"); ++k)
+      usleep(20000);
+    usleep(300000);  // every output staged, the run waiting for the lock
+    kill(run, SIGKILL);
+    CHECK(exit_code(run) == -1);
+  }
+  CHECK(text_of(stats) == stats_before);
+  CHECK(text_of(preview) == preview_before);
+  CHECK(features_read(out) == strokes_before);
+  // The next run into the folder removes the dead run's staging folders, and writes all three.
+  REQUIRE(run_cli(run_args("0")).code == 0);
+  CHECK(text_of(stats) != stats_before);
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path))
+    CHECK(entry.path().filename().string().find(".partial-") == std::string::npos);
 }
 
 TEST_CASE("an output replaces every file of the earlier one, side files included", "[io]") {

@@ -91,20 +91,27 @@ void score_line(std::size_t count, double spacing, const HeightGrid& z, At at,
 std::vector<PStroke> pstroke_sketch(const HeightGrid& z, const CellFlags& flags,
                                     const OrientedFrame& frame, const ViewParams& view,
                                     const GeoTransform& geotransform, Geometry geometry,
-                                    const PStrokeParams& params, double z_ref, unsigned threads) {
+                                    const PStrokeParams& params, double z_ref, unsigned threads,
+                                    const ProgressFn& progress) {
   params.validate();
   const std::size_t P = frame.profiles, L = frame.length;
   std::vector<float> column(z.size(), 0.f), row(z.size(), 0.f);
-  parallel_for(P, threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t p = begin; p < end; ++p)
-      score_line(
-          L, frame.d, z, [&](std::size_t i) { return p * L + i; }, column);
-  });
-  parallel_for(L, threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      score_line(
-          P, frame.w, z, [&](std::size_t p) { return p * L + i; }, row);
-  });
+  parallel_for(
+      P, threads,
+      [&](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p)
+          score_line(
+              L, frame.d, z, [&](std::size_t i) { return p * L + i; }, column);
+      },
+      progress_part(progress, 0.0, 0.4));
+  parallel_for(
+      L, threads,
+      [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+          score_line(
+              P, frame.w, z, [&](std::size_t p) { return p * L + i; }, row);
+      },
+      progress_part(progress, 0.4, 0.8));
   const PlanObliqueShift shift(view, frame.d, z_ref);
   auto drawable = [&](std::size_t p, std::size_t i) {
     const std::uint8_t f = flags(p, i);
@@ -120,6 +127,8 @@ std::vector<PStroke> pstroke_sketch(const HeightGrid& z, const CellFlags& flags,
   };
   std::vector<PStroke> strokes;
   for (std::size_t p = 0; p < P; ++p) {
+    if (progress && !progress(0.8 + 0.2 * static_cast<double>(p) / static_cast<double>(P)))
+      throw Cancelled();
     for (std::size_t i = 0; i < L; ++i) {
       if (!drawable(p, i)) continue;
       const double c = column[p * L + i], r = row[p * L + i];

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/base/flags.h"
+#include "core/base/parallel.h"
 #include "core/method/orient.h"
 #include "core/method/params.h"
 #include "core/method/strokes.h"
@@ -40,11 +41,12 @@ struct PStroke {
 };
 
 // Needs the visibility and f-set flags of a silhouette run on the same grid; z_ref is the DEM's
-// lowest height, the plan-oblique reference (SPEC 1.9).
+// lowest height, the plan-oblique reference (SPEC 1.9). Reports to `progress`, and a false answer
+// throws Cancelled.
 std::vector<PStroke> pstroke_sketch(const HeightGrid& oriented, const CellFlags& flags,
                                     const OrientedFrame& frame, const ViewParams& view,
                                     const GeoTransform& geotransform, Geometry geometry,
-                                    const PStrokeParams& params, double z_ref,
-                                    unsigned threads = 0);
+                                    const PStrokeParams& params, double z_ref, unsigned threads = 0,
+                                    const ProgressFn& progress = {});
 
 }  // namespace tsk

@@ -12,6 +12,11 @@
 
 namespace tsk {
 
+ProgressFn progress_part(const ProgressFn& whole, double from, double to) {
+  if (!whole) return {};
+  return [whole, from, to](double fraction) { return whole(from + (to - from) * fraction); };
+}
+
 unsigned resolve_threads(unsigned threads) {
   return threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
 }

@@ -70,11 +70,11 @@ std::vector<ProfileLine> plot_profiles(const HeldDem& dem, const ViewParams& vie
 PStrokeRun sketch_pstrokes(const HeldDem& dem, const SilhouetteParams& choice,
                            const PStrokeParams& pstrokes, const ProgressFn& progress) {
   pstrokes.validate();
-  const SilhouetteResult result = sketch_held_dem(dem, choice, progress);
-  return {
-      pstroke_sketch(dem.oriented, result.flags, dem.frame, choice.view, dem.source.geotransform,
-                     choice.geometry, pstrokes, dem.lowest_height, choice.threads),
-      result.filter};
+  const SilhouetteResult result = sketch_held_dem(dem, choice, progress_part(progress, 0.0, 0.7));
+  return {pstroke_sketch(dem.oriented, result.flags, dem.frame, choice.view,
+                         dem.source.geotransform, choice.geometry, pstrokes, dem.lowest_height,
+                         choice.threads, progress_part(progress, 0.7, 1.0)),
+          result.filter};
 }
 
 PanoramaRun sketch_panorama_on(const HeldDem& dem, const PanoramaChoice& choice,

@@ -63,23 +63,26 @@ class Canvas {
   std::vector<float> ink_;
 };
 
-void write_png_preview(const std::string& path, SketchPage page) {
-  // A paper page is drawn at 150 dots per inch.
-  if (page.millimetres) {
-    const double px = 150.0 / 25.4;
-    page.width = std::ceil(page.width * px), page.height = std::ceil(page.height * px);
-    for (PagePath& p : page.paths) {
-      for (StrokePoint& q : p.points) q.x *= px, q.y *= px;
-      for (double& w : p.widths) w *= px;
-    }
-    for (PageLabel& l : page.labels)
-      for (StrokePoint* q : {&l.from, &l.to}) q->x *= px, q->y *= px;
-  }
-  Canvas canvas(static_cast<int>(page.width), static_cast<int>(page.height));
-  // Formulated first so factual strokes stay on top.
+// Goes on while `progress` says so (every path is a check), throwing Cancelled when it says no.
+void go_on(const ProgressFn& progress, double fraction) {
+  if (progress && !progress(fraction)) throw Cancelled();
+}
+
+// GDAL's progress while it writes the picture: the last fifth of the work.
+int CPL_STDCALL encoding_progress(double fraction, const char*, void* progress) {
+  const ProgressFn& report = *static_cast<const ProgressFn*>(progress);
+  return !report || report(0.8 + 0.2 * fraction) ? TRUE : FALSE;
+}
+
+// Draws the page's paths, formulated first so factual strokes stay on top, and the labels'
+// leaders: a picture has no text, so its peaks show as leaders alone.
+void draw_page(Canvas& canvas, const SketchPage& page, const ProgressFn& progress) {
+  std::size_t drawn = 0;
+  const double total = 2.0 * static_cast<double>(std::max<std::size_t>(1, page.paths.size()));
   for (StrokeClass cls : {StrokeClass::formulated, StrokeClass::factual}) {
     const bool factual = cls == StrokeClass::factual;
     for (const PagePath& s : page.paths) {
+      if (++drawn % 256 == 0) go_on(progress, 0.8 * static_cast<double>(drawn) / total);
       if (s.cls != cls) continue;
       for (std::size_t k = 1; k < s.points.size(); ++k) {
         const double radius = 0.25 * (s.widths[k - 1] + s.widths[k]);
@@ -88,8 +91,24 @@ void write_png_preview(const std::string& path, SketchPage page) {
       }
     }
   }
-  // Labels' leaders: a picture has no text, so its peaks show as leaders alone.
   for (const PageLabel& l : page.labels) canvas.line(l.from.x, l.from.y, l.to.x, l.to.y, 0.5, 0.5f);
+  go_on(progress, 0.8);
+}
+
+void write_png_preview(const std::string& path, SketchPage page, const ProgressFn& progress) {
+  if (page.millimetres) {
+    const double px = kPreviewDpi / 25.4;
+    page.width = std::ceil(page.width * px), page.height = std::ceil(page.height * px);
+    for (PagePath& p : page.paths) {
+      for (StrokePoint& q : p.points) q.x *= px, q.y *= px;
+      for (double& w : p.widths) w *= px;
+    }
+    for (PageLabel& l : page.labels)
+      for (StrokePoint* q : {&l.from, &l.to}) q->x *= px, q->y *= px;
+  }
+  check_png_pixels(page.width, page.height);
+  Canvas canvas(static_cast<int>(page.width), static_cast<int>(page.height));
+  draw_page(canvas, page, progress);
   GDALAllRegister();
   GdalErrorCapture capture;
   std::vector<GByte> pixels = canvas.pixels();
@@ -103,28 +122,45 @@ void write_png_preview(const std::string& path, SketchPage page) {
     throw Error("cannot draw the preview: " + capture.message());
   }
   write_atomically(path, [&](const std::filesystem::path& staged) {
-    DatasetPtr out(png->CreateCopy(staged.c_str(), image.get(), FALSE, nullptr, nullptr, nullptr));
+    DatasetPtr out(png->CreateCopy(staged.c_str(), image.get(), FALSE, nullptr, encoding_progress,
+                                   const_cast<ProgressFn*>(&progress)));
+    if (!out && progress && !progress(0.8)) throw Cancelled();
     if (!out) throw Error("cannot write preview '" + path + "': " + capture.message());
   });
 }
 
 }  // namespace
 
+void check_png_pixels(double width, double height) {
+  if (width * height <= kMaxPreviewPixels) return;
+  throw Error("a PNG preview of " + number_text(width) + " x " + number_text(height) +
+              " pixels would take " + number_text(std::ceil(width * height * 6 / 1e9)) +
+              " GB to draw; the most is " + number_text(kMaxPreviewPixels / 1e6) +
+              " million pixels (" + number_text(std::floor(std::sqrt(kMaxPreviewPixels))) +
+              " squared): give a smaller --page, or a .svg or .pdf preview");
+}
+
+void check_png_page(const PageSize& size) {
+  const double px = kPreviewDpi / 25.4;
+  check_png_pixels(std::ceil(size.width_mm * px), std::ceil(size.height_mm * px));
+}
+
 PlotterReport write_preview(const std::string& path, const SilhouetteResult& result,
                             const HeightGrid& z, const OrientedFrame& frame,
                             const GeoTransform& geotransform, const ViewParams& view,
-                            Geometry geometry, const PageOptions& options) {
+                            Geometry geometry, const PageOptions& options,
+                            const ProgressFn& progress) {
   return write_page(path, lay_out_sketch(result, z, frame, geotransform, view, geometry, options),
-                    options);
+                    options, progress);
 }
 
 PlotterReport write_page(const std::string& path, const SketchPage& page,
-                         const PageOptions& options) {
+                         const PageOptions& options, const ProgressFn& progress) {
   const std::string ext = lowercase_extension(path);
   if (options.plotter && ext == ".png")
     throw Error("--plotter draws vector art for a pen: give --preview a .svg or .pdf name");
   if (ext == ".png") {
-    write_png_preview(path, page);
+    write_png_preview(path, page, progress);
     return {};
   }
   PlotterPage plotter;

@@ -10,17 +10,30 @@
 
 namespace tsk::io {
 
+// The most pixels a PNG preview holds: drawing one takes 6 bytes a pixel (about 400 MB here).
+constexpr double kMaxPreviewPixels = 64e6;
+// A paper page's PNG preview is drawn at this many dots per inch.
+constexpr double kPreviewDpi = 150;
+
+// Throws Error, naming the size and the memory it would take, when a PNG preview of `width` x
+// `height` pixels would hold more than kMaxPreviewPixels.
+void check_png_pixels(double width, double height);
+// The same for a paper page of `size` (parse_page_size) drawn at kPreviewDpi.
+void check_png_page(const PageSize& size);
+
 // Renders the strokes of `result` as seen from the viewpoint (far side up): factual strokes bold
 // black, formulated strokes thinner, on white; drawn strokes tapered and weighted for depth. The
 // extension of `path` picks the format: .png a picture, .svg or .pdf vector art (sketch_page.h,
-// vector_art.h). Whole or not at all. Returns the plotter's figures for a plotter page.
+// vector_art.h). Whole or not at all. Returns the plotter's figures for a plotter page. A picture
+// reports its drawing to `progress`, and a false answer throws Cancelled.
 PlotterReport write_preview(const std::string& path, const SilhouetteResult& result,
                             const HeightGrid& z, const OrientedFrame& frame,
                             const GeoTransform& geotransform, const ViewParams& view,
-                            Geometry geometry, const PageOptions& options = {});
+                            Geometry geometry, const PageOptions& options = {},
+                            const ProgressFn& progress = {});
 
 // Writes a laid-out page in the format of `path`'s extension, as write_preview does.
 PlotterReport write_page(const std::string& path, const SketchPage& page,
-                         const PageOptions& options = {});
+                         const PageOptions& options = {}, const ProgressFn& progress = {});
 
 }  // namespace tsk::io

@@ -1,5 +1,6 @@
 // Writing outputs whole or not at all: everything goes to a private temporary folder beside the
-// destination and is moved into place only when complete.
+// destination and is moved into place only when complete, together with the run's other outputs
+// (output_set.h).
 #pragma once
 
 #include <filesystem>
@@ -9,13 +10,15 @@
 namespace tsk::io {
 
 // Throws Error, before any work, if write_atomically could not write `destination`: a path that
-// names no file, or a folder that does not exist or cannot be written.
-void check_output_path(const std::filesystem::path& destination);
+// names no file, a folder that does not exist or cannot be written, something other than a file
+// there, or a member of another dataset (a shapefile's .dbf). Returns the destination's folder.
+std::filesystem::path check_output_path(const std::filesystem::path& destination);
 
 // Calls write(temporary_path) where temporary_path has the destination's file name inside a
-// fresh temporary folder next to it; on success moves every file the writer made (a shapefile
-// makes several) beside the destination. On any exception nothing is left behind. The staging
-// folders that runs killed outright left in the destination's folder are removed first.
+// fresh staging folder next to it (OutputSet::stage). The output waits there for the commit of
+// the output set open on this thread, or, with none open, is committed at once: every file the
+// writer made (a shapefile makes several) is moved beside the destination. On any exception
+// nothing is left behind.
 void write_atomically(const std::filesystem::path& destination,
                       const std::function<void(const std::filesystem::path&)>& write);
 

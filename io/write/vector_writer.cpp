@@ -245,8 +245,7 @@ void fill_line_layer(GDALDataset& ds, const std::string& path, const std::string
 // GeoPackage is filled through SQLite and gets its spatial index in bulk; other formats through
 // OGR.
 void write_line_layers(const std::string& path, const std::string& format,
-                       const std::vector<LineLayer>& layers,
-                       const std::function<void()>& before_commit = {}) {
+                       const std::vector<LineLayer>& layers) {
   const std::string driver_name = check_vector_output(path, format);
   GdalErrorCapture capture;
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
@@ -266,7 +265,6 @@ void write_line_layers(const std::string& path, const std::string& format,
     if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
     const bool transaction = ds->StartTransaction() == OGRERR_NONE;
     for (const LineLayer& layer : layers) fill_line_layer(*ds, path, driver_name, layer, capture);
-    if (before_commit) before_commit();
     if (transaction) check(ds->CommitTransaction(), "committing '" + path + "'", capture);
     CPLErrorReset();
     ds.reset();  // closing flushes: a failure here means an incomplete file
@@ -364,8 +362,7 @@ void write_pstrokes(const std::string& path, const std::string& format,
 
 void write_panorama_strokes(const std::string& path, const std::string& format,
                             const std::vector<PanoramaStroke>& strokes, const std::string& srs_wkt,
-                            const std::vector<PeakLeader>* peaks,
-                            const std::function<void()>& before_commit) {
+                            const std::vector<PeakLeader>* peaks) {
   std::vector<Field> fields = stroke_fields();
   const int azimuth_field = static_cast<int>(fields.size());
   fields.push_back({"azimuth_min", OFTReal});
@@ -400,7 +397,7 @@ void write_panorama_strokes(const std::string& path, const std::string& format,
          {{"name", OFTString}, {"distance", OFTReal}, {"azimuth", OFTReal}, {"elevation", OFTReal}},
          add_peaks});
   }
-  write_line_layers(path, format, layers, before_commit);
+  write_line_layers(path, format, layers);
 }
 
 }  // namespace tsk::io

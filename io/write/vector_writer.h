@@ -59,11 +59,9 @@ void write_pstrokes(const std::string& path, const std::string& format,
 // CRS (WKT, may be empty), and `panorama`, without a CRS, x the azimuth and y the elevation angle
 // in degrees. Both have the stroke fields with azimuth_min and azimuth_max; the file must hold
 // two layers (a GeoPackage or SQLite file). With `peaks`, a third layer `peaks` holds their
-// leaders in the panorama, with name, distance, azimuth and elevation. before_commit runs when the
-// layers are filled and not yet committed: what it throws leaves nothing written.
+// leaders in the panorama, with name, distance, azimuth and elevation.
 void write_panorama_strokes(const std::string& path, const std::string& format,
                             const std::vector<PanoramaStroke>& strokes, const std::string& srs_wkt,
-                            const std::vector<PeakLeader>* peaks = nullptr,
-                            const std::function<void()>& before_commit = {});
+                            const std::vector<PeakLeader>* peaks = nullptr);
 
 }  // namespace tsk::io

@@ -91,20 +91,37 @@ TEST_CASE("a disk that fills up fails a raster or page output and leaves no file
   }
 }
 
-TEST_CASE("strokes written before a cancel are removed with their files", "[plugin][outputs]") {
+// The size of `file` staged by a run in `dir` (io/write/output_set.h), or 0 while there is none.
+qint64 stagedSize(const QTemporaryDir& dir, const QString& file) {
+  for (const QString& folder :
+       QDir(dir.path()).entryList({"." + file + ".partial-*"}, QDir::Dirs | QDir::Hidden))
+    return QFileInfo(QDir(dir.filePath(folder)).filePath(file)).size();
+  return 0;
+}
+
+TEST_CASE("a cancelled run removes the strokes it wrote and keeps the earlier output whole",
+          "[plugin][outputs]") {
   QTemporaryDir dir;
-  // Exact strokes go to the outputs as they complete: halfway, the shapefile holds some. (Drawn
-  // strokes wait until no later chain can join them, and are written from another thread: how
-  // many are in the file at a given moment is not fixed.)
-  qint64 shapefileBytes = 0;
-  CancelAt feedback(50, [&] { shapefileBytes = QFileInfo(dir.filePath("factual.shp")).size(); });
-  const Run run = runAlgorithm(
-      kData + "/gorillas_utm32n.tif",
-      {{"STRIPS", 17}, {"STROKES", 1}, {"FACTUAL", dir.filePath("factual.shp")}}, dir, &feedback);
+  const QString dem = kData + "/gorillas_utm32n.tif", shapefile = dir.filePath("factual.shp");
+  // An earlier run's output, the one a failed run of the same name must leave.
+  REQUIRE(runAlgorithm(dem, {{"AZIMUTH", 0}, {"FACTUAL", shapefile}}, dir).ok);
+  const QStringList before = QDir(dir.path()).entryList(QDir::Files | QDir::Hidden);
+  const long long featuresBefore = QgsVectorLayer(shapefile, "before", "ogr").featureCount();
+  REQUIRE(featuresBefore > 0);
+  // Exact strokes go to the outputs as they complete: halfway, the staged shapefile holds some.
+  // (Drawn strokes wait until no later chain can join them, and are written from another thread:
+  // how many are in the file at a given moment is not fixed.)
+  qint64 stagedBytes = 0;
+  CancelAt feedback(50, [&] { stagedBytes = stagedSize(dir, "factual.shp"); });
+  const Run run =
+      runAlgorithm(dem, {{"STRIPS", 17}, {"STROKES", 1}, {"FACTUAL", shapefile}}, dir, &feedback);
   CHECK_FALSE(run.ok);
   CHECK(run.error.contains("Cancelled"));
-  CHECK(shapefileBytes > 1000);
-  CHECK(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+  CHECK(stagedBytes > 1000);
+  CHECK(
+      QDir(dir.path()).entryList(QDir::Files | QDir::Hidden | QDir::Dirs | QDir::NoDotAndDotDot) ==
+      before);
+  CHECK(QgsVectorLayer(shapefile, "after", "ogr").featureCount() == featuresBefore);
 }
 
 TEST_CASE("a cancelled run drops the layer it added to an existing GeoPackage",
