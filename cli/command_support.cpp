@@ -27,10 +27,17 @@ void print_filter(const FilterReport& r, std::ostream& err) {
   if (r.choice.mode == FilterMode::fixed) return;
   const FilterParams& c = r.cutoffs;
   const auto old_precision = err.precision(3);
-  err << "note: adaptive slope filter: median slope " << r.median_slope_pct << " % against "
-      << kReferenceSlopePct << " % on the thesis's terrain, so the cut-offs are scaled by "
-      << r.scale << ": row " << c.row_cut_pct << " %, column " << c.col_cut_pct
-      << " %, control point " << c.ctrl_col_pct << " % (--filter fixed keeps 20, 12, 8.75)\n";
+  err << "note: adaptive slope filter: ";
+  if (std::isfinite(r.median_slope_pct)) {
+    err << "median slope " << r.median_slope_pct << " % against " << kReferenceSlopePct
+        << " % on the thesis's terrain, so the cut-offs are scaled by " << r.scale;
+  } else {
+    err << "no cell slopes (the DEM is flat, or too few of its cells are valid), so the cut-offs "
+           "are scaled by the least, "
+        << r.scale;
+  }
+  err << ": row " << c.row_cut_pct << " %, column " << c.col_cut_pct << " %, control point "
+      << c.ctrl_col_pct << " % (--filter fixed keeps 20, 12, 8.75)\n";
   if (r.choice.adapt == Adaptivity::local) {
     err << "note: local adaptivity over " << r.choice.window << " cells scales them from "
         << r.local_lowest << " to " << r.local_highest << " times the thesis's\n";

@@ -39,17 +39,27 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="95" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="103" />
         <source>%1 and %2 would both be written to %3, one over the other; choose different files, or save both to one GeoPackage with a layer name each.</source>
         <translation>%1 und %2 würden beide nach %3 geschrieben, eines über das andere; wählen Sie verschiedene Dateien, oder speichern Sie beide in ein GeoPackage mit je einem Layernamen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="90" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="98" />
         <source>%1 would be written into %2, the file of %3, which this algorithm reads; choose another file.</source>
         <translation>%1 würde in %2 geschrieben, die Datei von %3, die dieser Algorithmus liest; wählen Sie eine andere Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="139" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="73" />
+        <source>%1 must be a GeoTIFF (.tif): %2 is another format.</source>
+        <translation>%1 muss ein GeoTIFF (.tif) sein: %2 hat ein anderes Format.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="148" />
+        <source>Waiting for another run writing %1.</source>
+        <translation>Warte auf einen anderen Lauf, der %1 schreibt.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="165" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -102,12 +112,12 @@
         <translation>Das zu drapierende Raster liegt in %1, das DGM in %2: transformieren Sie es zuerst auf Raster und KBS des DGM.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="129" />
+        <location filename="../plugin/drape_algorithm.cpp" line="125" />
         <source>Could not read band %1 of the raster to drape.</source>
         <translation>Kanal %1 des zu drapierenden Rasters konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="148" />
+        <location filename="../plugin/drape_algorithm.cpp" line="144" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -144,17 +154,22 @@
 <context>
     <name>LineOutput</name>
     <message>
-        <location filename="../plugin/line_output.cpp" line="99" />
+        <location filename="../plugin/line_output.cpp" line="113" />
+        <source>Internal error: no output set for %1.</source>
+        <translation>Interner Fehler: keine Ausgabemenge für %1.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/line_output.cpp" line="124" />
         <source>Waiting for another run writing %1.</source>
         <translation>Warte auf einen anderen Lauf, der %1 schreibt.</translation>
     </message>
     <message>
-        <location filename="../plugin/line_output.cpp" line="102" />
+        <location filename="../plugin/line_output.cpp" line="127" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/line_output.cpp" line="191" />
+        <location filename="../plugin/line_output.cpp" line="233" />
         <source>Could not write %1 whole: the file ends cut short. Is the disk full?</source>
         <translation>%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der Datenträger voll?</translation>
     </message>
@@ -555,187 +570,192 @@
 <context>
     <name>SharedParameters</name>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="26" />
+        <location filename="../plugin/shared_parameters.cpp" line="28" />
         <source>View azimuth (degrees)</source>
         <translation>Blickrichtung (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="27" />
+        <location filename="../plugin/shared_parameters.cpp" line="29" />
         <source>Compass bearing the viewer faces, clockwise from grid north: 0 (from the south), 90 (from the west, the default), 180 (from the north), 270 (from the east). These four are exact; any other azimuth resamples the DEM bilinearly onto a grid aligned with the line of sight, and the strokes are mapped back exactly into the DEM's CRS.</source>
         <translation>Richtung, in die der Betrachter blickt, im Uhrzeigersinn von Gitternord: 0 (von Süden), 90 (von Westen, Vorgabe), 180 (von Norden), 270 (von Osten). Diese vier sind exakt; jede andere Richtung tastet das DGM bilinear auf ein an der Blickrichtung ausgerichtetes Gitter um, und die Striche werden exakt in das KBS des DGM zurückgeführt.</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="34" />
+        <location filename="../plugin/shared_parameters.cpp" line="36" />
         <source>Vertical exaggeration</source>
         <translation>Überhöhung</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="35" />
+        <location filename="../plugin/shared_parameters.cpp" line="37" />
         <source>Factor applied to heights before occlusion is computed.</source>
         <translation>Faktor, mit dem die Höhen vor der Verdeckungsberechnung multipliziert werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="36" />
+        <location filename="../plugin/shared_parameters.cpp" line="38" />
         <source>Base slope (%)</source>
         <translation>Grundneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="38" />
+        <location filename="../plugin/shared_parameters.cpp" line="40" />
         <source>Slope added along the line of sight, in percent: the view elevation angle is atan(base slope) above the exaggerated terrain (40 % = 21.8 degrees).</source>
         <translation>Entlang der Blickrichtung addierte Neigung in Prozent: der Blickwinkel über dem überhöhten Gelände ist atan(Grundneigung) (40 % = 21,8 Grad).</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="44" />
+        <location filename="../plugin/shared_parameters.cpp" line="46" />
         <source>Elevation (DEM)</source>
         <translation>Höhenmodell (DGM)</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="45" />
+        <location filename="../plugin/shared_parameters.cpp" line="47" />
         <source>Digital elevation model with heights in metres, in a projected CRS in metres.</source>
         <translation>Digitales Geländemodell mit Höhen in Metern, in einem in Metern projizierten KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="48" />
+        <location filename="../plugin/shared_parameters.cpp" line="50" />
         <source>Band</source>
         <translation>Kanal</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="50" />
+        <location filename="../plugin/shared_parameters.cpp" line="52" />
         <source>The band holding the heights (the first when none is chosen).</source>
         <translation>Der Kanal mit den Höhen (der erste, wenn keiner gewählt ist).</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="58" />
+        <location filename="../plugin/shared_parameters.cpp" line="60" />
         <source>Slope filter</source>
         <translation>Neigungsfilter</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="60" />
+        <location filename="../plugin/shared_parameters.cpp" line="62" />
         <source>Adapted to the DEM</source>
         <translation>An das DGM angepasst</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="61" />
+        <location filename="../plugin/shared_parameters.cpp" line="63" />
         <source>Fixed (the thesis's cut-offs)</source>
         <translation>Fest (die Schwellen der Dissertation)</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="64" />
+        <location filename="../plugin/shared_parameters.cpp" line="66" />
         <source>Adapted to the DEM (the default): the cut-offs below are scaled by the DEM's median slope over 24 %, that of the terrain the thesis tuned them on at 75 m cells (from 1/16 to 4 times), so that coarse, fine, flat and steep DEMs all give a balanced sketch; height steps within half the DEM's height unit count as flat, so the sketch holds still as the view turns. Fixed: the cut-offs as given, the thesis's filter.</source>
         <translation>An das DGM angepasst (Standard): die Schwellen unten werden mit der mittleren Hangneigung (Median) des DGM geteilt durch 24 % skaliert, der des Geländes, auf das die Dissertation sie bei 75-m-Zellen abgestimmt hat (1/16- bis 4-fach), so dass grobe, feine, flache und steile DGM alle eine ausgewogene Skizze ergeben; Höhenstufen innerhalb der halben Höheneinheit des DGM gelten als flach, so dass die Skizze stehen bleibt, wenn sich die Blickrichtung dreht. Fest: die Schwellen wie angegeben, der Filter der Dissertation.</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="71" />
+        <location filename="../plugin/shared_parameters.cpp" line="73" />
         <source>Adapt the filter to</source>
         <translation>Filter anpassen an</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="73" />
+        <location filename="../plugin/shared_parameters.cpp" line="75" />
         <source>The whole DEM</source>
         <translation>Das ganze DGM</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="74" />
+        <location filename="../plugin/shared_parameters.cpp" line="76" />
         <source>Each neighbourhood</source>
         <translation>Jede Nachbarschaft</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="77" />
+        <location filename="../plugin/shared_parameters.cpp" line="79" />
         <source>With the adapted filter: one scale for the whole DEM, or a scale for each neighbourhood, so that a plain beside mountains keeps its subtle breaks of slope (this reads the DEM once more).</source>
         <translation>Beim angepassten Filter: ein Maßstab für das ganze DGM oder einer für jede Nachbarschaft, so dass eine Ebene neben Bergen ihre feinen Gefällsknicke behält (dazu wird das DGM ein weiteres Mal gelesen).</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="82" />
+        <location filename="../plugin/shared_parameters.cpp" line="84" />
         <source>Neighbourhood (cells)</source>
         <translation>Nachbarschaft (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="86" />
+        <location filename="../plugin/shared_parameters.cpp" line="88" />
         <source>With a scale for each neighbourhood: the side of a neighbourhood, in DEM cells. Scales are blended between neighbourhoods, so the filter has no seams.</source>
         <translation>Bei einem Maßstab je Nachbarschaft: die Seitenlänge einer Nachbarschaft in DGM-Zellen. Zwischen Nachbarschaften werden die Maßstäbe überblendet, so dass der Filter keine Nähte hat.</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="89" />
+        <location filename="../plugin/shared_parameters.cpp" line="91" />
         <source>Row slope cut-off (%)</source>
         <translation>Grenzwert Zeilenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="91" />
+        <location filename="../plugin/shared_parameters.cpp" line="93" />
         <source>Slope filter: row (across the view) slope below which weak candidates are removed; 20 % is Macgregor's critical slope.</source>
         <translation>Neigungsfilter: Neigung quer zur Blickrichtung, unter der schwache Kandidaten entfernt werden; 20 % ist Macgregors kritische Neigung.</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="94" />
+        <location filename="../plugin/shared_parameters.cpp" line="96" />
         <source>Column slope cut-off (%)</source>
         <translation>Grenzwert Spaltenneigung (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="96" />
+        <location filename="../plugin/shared_parameters.cpp" line="98" />
         <source>Slope filter: column (along the view) slope below which weak candidates are removed.</source>
         <translation>Neigungsfilter: Neigung entlang der Blickrichtung, unter der schwache Kandidaten entfernt werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="99" />
+        <location filename="../plugin/shared_parameters.cpp" line="101" />
         <source>Control point column slope (%)</source>
         <translation>Spaltenneigung des Kontrollpunkts (%)</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="101" />
+        <location filename="../plugin/shared_parameters.cpp" line="103" />
         <source>Slope filter: column slope of the control point joining the two cut-offs, on the perpendicular through the origin. Smaller values keep more diagonal features; it must be below the column cut-off.</source>
         <translation>Neigungsfilter: Spaltenneigung des Kontrollpunkts, der die beiden Grenzwerte verbindet, auf der Senkrechten durch den Ursprung. Kleinere Werte erhalten mehr diagonale Formen; der Wert muss unter dem Grenzwert der Spaltenneigung liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="105" />
+        <location filename="../plugin/shared_parameters.cpp" line="107" />
         <source>Allow for diagonals</source>
         <translation>Diagonalen berücksichtigen</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="106" />
+        <location filename="../plugin/shared_parameters.cpp" line="108" />
         <source>If checked the removed region is the polygon through the control point; if not, the whole rectangle below both cut-offs is removed.</source>
         <translation>Wenn aktiviert, wird das Polygon durch den Kontrollpunkt entfernt; sonst das ganze Rechteck unter beiden Grenzwerten.</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="113" />
+        <location filename="../plugin/shared_parameters.cpp" line="115" />
         <source>Strokes</source>
         <translation>Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="115" />
+        <location filename="../plugin/shared_parameters.cpp" line="117" />
         <source>Drawn (joined, smoothed, tapered)</source>
         <translation>Gezeichnet (verbunden, geglättet, verjüngt)</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="116" />
+        <location filename="../plugin/shared_parameters.cpp" line="118" />
         <source>Exact (the thesis's, a point per cell)</source>
         <translation>Exakt (wie in der Dissertation, ein Punkt je Zelle)</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="131" />
+        <location filename="../plugin/shared_parameters.cpp" line="133" />
         <source>Geometry</source>
         <translation>Geometrie</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="133" />
+        <location filename="../plugin/shared_parameters.cpp" line="135" />
         <source>Map (cell centres)</source>
         <translation>Karte (Zellmittelpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="134" />
+        <location filename="../plugin/shared_parameters.cpp" line="136" />
         <source>Plan oblique (the sketch)</source>
         <translation>Plan oblique (die Skizze)</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="137" />
+        <location filename="../plugin/shared_parameters.cpp" line="139" />
         <source>Map: strokes at the cell centres in the DEM's CRS. Plan oblique: each point moved along the view azimuth by (exaggeration / base slope) x (height - lowest height), so the strokes draw the oblique sketch in the same CRS.</source>
         <translation>Karte: Striche durch die Zellmittelpunkte im KBS des DGM. Plan oblique: jeder Punkt wird entlang der Blickrichtung um (Überhöhung / Grundneigung) x (Höhe - niedrigste Höhe) verschoben, sodass die Striche die Schrägskizze im selben KBS zeichnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="191" />
+        <location filename="../plugin/shared_parameters.cpp" line="194" />
+        <source>No cell of the DEM slopes (it is flat, or too few of its cells are valid): the slope filter's cut-offs are scaled by the least, %1: row %2 %, column %3 %, control point %4 %.</source>
+        <translation>Keine Zelle des DGM ist geneigt (es ist flach, oder zu wenige seiner Zellen sind gültig): die Schwellen des Neigungsfilters werden mit dem kleinsten Faktor skaliert, %1: Zeile %2 %, Spalte %3 %, Kontrollpunkt %4 %.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/shared_parameters.cpp" line="203" />
         <source>Slope filter adapted to the DEM: its median slope is %1 % against %2 % on the thesis's terrain, so the cut-offs are scaled by %3: row %4 %, column %5 %, control point %6 %.</source>
         <translation>Neigungsfilter an das DGM angepasst: seine mittlere Hangneigung ist %1 % gegenüber %2 % im Gelände der Dissertation, daher werden die Schwellen mit %3 skaliert: Zeile %4 %, Spalte %5 %, Kontrollpunkt %6 %.</translation>
     </message>
     <message>
-        <location filename="../plugin/shared_parameters.cpp" line="201" />
+        <location filename="../plugin/shared_parameters.cpp" line="213" />
         <source>Each neighbourhood of %1 cells scales them from %2 to %3 times the thesis's.</source>
         <translation>Jede Nachbarschaft von %1 Zellen skaliert sie auf das %2- bis %3-fache der Schwellen der Dissertation.</translation>
     </message>

@@ -8,6 +8,11 @@ import sys
 import xml.etree.ElementTree as ET
 
 GERMAN = {
+    "Internal error: no output set for %1.": "Interner Fehler: keine Ausgabemenge für %1.",
+    "%1 must be a GeoTIFF (.tif): %2 is another format.":
+        "%1 muss ein GeoTIFF (.tif) sein: %2 hat ein anderes Format.",
+    "No cell of the DEM slopes (it is flat, or too few of its cells are valid): the slope filter's cut-offs are scaled by the least, %1: row %2 %, column %3 %, control point %4 %.":
+        "Keine Zelle des DGM ist geneigt (es ist flach, oder zu wenige seiner Zellen sind gültig): die Schwellen des Neigungsfilters werden mit dem kleinsten Faktor skaliert, %1: Zeile %2 %, Spalte %3 %, Kontrollpunkt %4 %.",
     "Could not apply style %1: %2": "Stil %1 konnte nicht angewendet werden: %2",
     "The input raster layer is not valid.": "Der Eingaberasterlayer ist ungültig.",
     "Band %1 does not exist: the raster has %2 band(s).":

@@ -66,6 +66,13 @@ void DemViewAlgorithm::refuseClashingOutputs(const QVariantMap& parameters,
   std::vector<io::NamedFile> outputs, inputs;
   for (const QgsProcessingParameterDefinition* output : destinationParameterDefinitions()) {
     const QString target = outputTarget(*this, parameters, output->name(), context);
+    // As on the command line: other formats lose the colour tables, or change the values.
+    const QString suffix = QFileInfo(target).suffix().toLower();
+    if (output->type() == QgsProcessingParameterRasterDestination::typeName() &&
+        !target.isEmpty() && suffix != QLatin1String("tif") && suffix != QLatin1String("tiff")) {
+      throw QgsProcessingException(tr("%1 must be a GeoTIFF (.tif): %2 is another format.")
+                                       .arg(output->description(), target));
+    }
     // A plain path is written whole; "ogr:..." adds a layer to the file.
     outputs.push_back({output->description().toStdString(), localPath(destinationFile(target)),
                        !target.startsWith(QLatin1String("ogr:"))});

@@ -81,7 +81,8 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
  private:
   // Throws when an output would write into the file of a raster the algorithm reads, or two
   // outputs into one file not both as added layers: QGIS writes over a plain path's file whole,
-  // and a layer added to the GeoPackage being read would race the reads.
+  // and a layer added to the GeoPackage being read would race the reads. Throws too for a raster
+  // output in another format than GeoTIFF.
   void refuseClashingOutputs(const QVariantMap& parameters, QgsProcessingContext& context) const;
 
   std::unique_ptr<RasterGrid> mRaster;

@@ -2,6 +2,8 @@
 
 #include <qgsprocessingfeedback.h>
 
+#include <cmath>
+
 #include "core/method/choice_names.h"
 #include "plugin/choice_parameter.h"
 #include "plugin/qgis_compat.h"
@@ -188,6 +190,16 @@ void SharedParameters::readFilter(const QgsProcessingAlgorithm& algorithm,
 
 void SharedParameters::logFilter(const FilterReport& r, QgsProcessingFeedback* feedback) {
   if (!feedback || r.choice.mode == FilterMode::fixed) return;
+  if (!std::isfinite(r.median_slope_pct)) {
+    feedback->pushWarning(tr("No cell of the DEM slopes (it is flat, or too few of its cells are "
+                             "valid): the slope filter's cut-offs are scaled by the least, %1: "
+                             "row %2 %, column %3 %, control point %4 %.")
+                              .arg(r.scale, 0, 'g', 3)
+                              .arg(r.cutoffs.row_cut_pct, 0, 'g', 3)
+                              .arg(r.cutoffs.col_cut_pct, 0, 'g', 3)
+                              .arg(r.cutoffs.ctrl_col_pct, 0, 'g', 3));
+    return;
+  }
   feedback->pushInfo(tr("Slope filter adapted to the DEM: its median slope is %1 % against %2 % "
                         "on the thesis's terrain, so the cut-offs are scaled by %3: row %4 %, "
                         "column %5 %, control point %6 %.")

@@ -490,6 +490,28 @@ TEST_CASE("edge-case rasters give valid, possibly empty, outputs", "[cli][robust
     REQUIRE(run.code == 0);
     CHECK(summarise(dir / (std::string(name) + ".gpkg")).features == 0);
   }
+  // The drape of rasters with no cell in sight (at an oblique azimuth, or no data at all) is one
+  // cell without data; GDAL refused to make the raster of no cells it was.
+  test::write_tiff(
+      dir / "row.tif", 1, 20, 1, [](int, int, int c) { return 5.f + c; }, kNorthUp, 32616);
+  test::write_tiff(
+      dir / "column.tif", 20, 1, 1, [](int, int r, int) { return 5.f + r; }, kNorthUp, 32616);
+  test::write_tiff(
+      dir / "onevalid.tif", 20, 20, 1,
+      [=](int, int r, int c) { return r == 5 && c == 5 ? 100.f : nan; }, kNorthUp, 32616);
+  for (const char* name : {"one.tif", "row.tif", "column.tif", "onevalid.tif", "allnan.tif"}) {
+    for (const char* azimuth : {"33", "90"}) {
+      CAPTURE(name, azimuth);
+      const std::string draped = dir / (std::string("draped_") + azimuth + name);
+      const CliRun run =
+          run_cli({"drape", dir / name, draped, "--source", dir / name, "--azimuth", azimuth});
+      INFO(run.err);
+      REQUIRE(run.code == 0);
+      io::DatasetPtr ds(static_cast<GDALDataset*>(GDALOpen(draped.c_str(), GA_ReadOnly)));
+      REQUIRE(ds);
+      CHECK(ds->GetRasterXSize() >= 1);
+    }
+  }
   const CliRun band2 = run_cli({"silhouettes", dir / "multi.tif", dir / "b2.gpkg", "--band", "2"});
   INFO(band2.err);
   CHECK(band2.code == 0);
@@ -501,6 +523,43 @@ TEST_CASE("edge-case rasters give valid, possibly empty, outputs", "[cli][robust
       run_cli({"silhouettes", kSample, dir / "ignored.gpkg", "--cell-size", "10"});
   CHECK(ignored.code == 0);
   CHECK_THAT(ignored.err, Catch::Contains("--cell-size 10 is ignored"));
+}
+
+TEST_CASE("a DEM with no sloping cell says so, not that its median slope is nan", "[cli]") {
+  ScratchDir dir("no_slope");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  test::write_tiff(
+      dir / "flat.tif", 20, 20, 1, [](int, int, int) { return 100.f; }, kNorthUp, 32616);
+  test::write_tiff(
+      dir / "allnan.tif", 20, 20, 1, [=](int, int, int) { return nan; }, kNorthUp, 32616);
+  for (const char* name : {"flat.tif", "allnan.tif"}) {
+    CAPTURE(name);
+    for (const char* command : {"filter-plot", "silhouettes"}) {
+      const std::string out = dir / (std::string(name) + (command[0] == 'f' ? ".html" : ".gpkg"));
+      const CliRun run = run_cli({command, dir / name, out});
+      REQUIRE(run.code == 0);
+      CHECK_THAT(run.err, Catch::Contains("no cell slopes") && !Catch::Contains("nan"));
+    }
+  }
+}
+
+TEST_CASE("a drape of heights beyond any terrain is refused with its size", "[cli][robustness]") {
+  // Heights of 1e30 beside 0 shift cells 1e29 cells away, or beyond any number: the size was
+  // cast to 9223372036854775808 x 0 cells, or to none at all.
+  ScratchDir dir("huge_heights");
+  test::write_tiff(
+      dir / "spike.tif", 20, 20, 1, [](int, int r, int c) { return r + c == 0 ? 0.f : 1e30f; },
+      kNorthUp, 32616);
+  for (const char* azimuth : {"33", "90", "200"}) {
+    CAPTURE(azimuth);
+    const CliRun run = run_cli({"drape", dir / "spike.tif", dir / "d.tif", "--source",
+                                dir / "spike.tif", "--azimuth", azimuth});
+    CHECK(run.code == 1);
+    CHECK_THAT(run.err, Catch::Contains("far larger than the DEM's 20 x 20 cells") &&
+                            Catch::Contains("check the DEM's heights"));
+    CHECK_THAT(run.err, !Catch::Contains("9223372036854775808"));
+    CHECK(dir.file_count() == 1);
+  }
 }
 
 TEST_CASE("an undeclared fill value among the heights gets a note", "[cli]") {

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -22,6 +23,7 @@
 #include "io/read/gdal_util.h"
 #include "io/write/destination_lock.h"
 #include "io/write/path_clashes.h"
+#include "io/write/raster_writer.h"
 
 using namespace tsk;
 using namespace tsk::test;
@@ -336,4 +338,27 @@ TEST_CASE("a VRT reading a named pipe is refused before GDAL hangs on it", "[io]
   const CliRun told = run_cli({"classify", dir / "v.vrt", dir / "o.tif"});
   CHECK_THAT(told.err, Catch::Contains("which is not a file (a pipe"));
   CHECK_FALSE(std::filesystem::exists(dir / "o.tif"));
+}
+
+TEST_CASE("a raster format that changes the values written fails the write, leaving nothing",
+          "[io][robustness]") {
+  // A GeoPackage keeps a paletted raster in PNG tiles, read back as 4 bands, or renumbered
+  // (nodata 255 read back as 2); before its colour table reached 255, libpng refused the write
+  // outright.
+  ScratchDir dir("values");
+  Grid<std::uint8_t> seen(40, 50, 0);
+  for (std::size_t r = 0; r < 40; ++r)
+    for (std::size_t c = 10; c < 50; ++c) seen(r, c) = c < 40 ? 1 : 255;
+  GeoTransform gt;
+  gt.a = {500000, 10, 0, 4000000, 0, -10};
+  CHECK_THROWS_WITH(io::write_visibility(dir / "seen.gpkg", seen, gt, ""),
+                    Catch::Contains("GPKG format") && Catch::Contains("use .tif"));
+  CHECK(dir.file_count() == 0);
+  io::write_visibility(dir / "seen.tif", seen, gt, "");
+  io::DatasetPtr ds(static_cast<GDALDataset*>(GDALOpen((dir / "seen.tif").c_str(), GA_ReadOnly)));
+  REQUIRE(ds);
+  std::vector<std::uint8_t> read(40 * 50);
+  REQUIRE(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, 50, 40, read.data(), 50, 40, GDT_Byte, 0,
+                                         0) == CE_None);
+  CHECK(std::equal(read.begin(), read.end(), seen.data()));
 }

@@ -2,6 +2,7 @@
 // GDAL's viewshed, and the bad input it refuses without writing anything.
 #include <gdal_alg.h>
 #include <ogrsf_frmts.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <array>
@@ -323,6 +324,17 @@ TEST_CASE("panorama labels the peaks in sight, from points in another CRS", "[cl
                dir / "lines.geojson", "--peak-names", "label"});
   CHECK(lines.code == 1);
   CHECK_THAT(lines.err, Catch::Contains("must be points"));
+  // A raster, and a pipe, given as peaks say what they are ("unknown GDAL error", "give a raster
+  // file" before).
+  const CliRun raster = run_cli(
+      {"panorama", dem, dir / "q.gpkg", "--observer", coordinates(at_col(0)), "--peaks", dem});
+  CHECK(raster.code == 1);
+  CHECK_THAT(raster.err, Catch::Contains("it is a raster; give points"));
+  REQUIRE(mkfifo((dir / "pipe.gpkg").c_str(), 0600) == 0);
+  const CliRun pipe = run_cli({"panorama", dem, dir / "q.gpkg", "--observer",
+                               coordinates(at_col(0)), "--peaks", dir / "pipe.gpkg"});
+  CHECK(pipe.code == 1);
+  CHECK_THAT(pipe.err, Catch::Contains("is not a file") && !Catch::Contains("raster"));
   CHECK_FALSE(test::fs::exists(dir / "q.gpkg"));
 }
 

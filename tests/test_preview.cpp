@@ -1,7 +1,9 @@
 // The command line's --preview as vector art: the SVG parsed back with GDAL's XML parser.
 #include <cpl_minixml.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -10,8 +12,11 @@
 
 #include "catch_compat.h"
 #include "cli_run.h"
+#include "core/method/run_recipes.h"
 #include "gdal_test_support.h"
 #include "io/pages/filter_diagram_page.h"
+#include "io/pages/preview.h"
+#include "io/read/dem_reader.h"
 
 using namespace tsk::test;
 
@@ -236,4 +241,46 @@ TEST_CASE("the filter diagram page draws the removal polygon and the control poi
   rectangle.diagonals = false;
   CHECK_THAT(filter_diagram_html(s, rectangle, "t"),
              Catch::Contains("points=\"60,620 172,620 172,433.3 60,433.3\""));
+}
+
+TEST_CASE("a PNG preview reports its drawing, stops when told and is bounded in size",
+          "[cli][preview][interrupt]") {
+  ScratchDir dir("preview_stop");
+  const CliRun run = run_cli(
+      {"silhouettes", kSample, dir / "s.gpkg", "--page", "A2", "--preview", dir / "whole.png"});
+  REQUIRE(run.code == 0);
+  // The same page drawn again, told to stop at several points of its drawing and encoding.
+  tsk::io::HeldDemFile held = tsk::io::hold_dem(kSample, {}, 90);
+  tsk::SilhouetteParams params;
+  const tsk::SilhouetteResult result = tsk::sketch_held_dem(held.held(), params);
+  const tsk::io::Dem& dem = held.dem;
+  tsk::io::PageOptions page;
+  page.size = "A2";
+  std::vector<double> seen;
+  tsk::io::write_preview(dir / "again.png", result, dem.oriented, dem.frame, dem.geotransform,
+                         params.view, params.geometry, page, [&](double fraction) {
+                           seen.push_back(fraction);
+                           return true;
+                         });
+  REQUIRE(seen.size() > 3);
+  CHECK(std::is_sorted(seen.begin(), seen.end()));
+  CHECK(seen.back() == Approx(1.0));
+  for (const double stop_at : {0.01, 0.5, 0.9}) {
+    CAPTURE(stop_at);
+    CHECK_THROWS_AS(tsk::io::write_preview(dir / "stopped.png", result, dem.oriented, dem.frame,
+                                           dem.geotransform, params.view, params.geometry, page,
+                                           [&](double fraction) { return fraction < stop_at; }),
+                    tsk::Cancelled);
+    CHECK_FALSE(std::filesystem::exists(dir / "stopped.png"));
+  }
+  // A page whose picture would take gigabytes is refused before any work, with its size; as
+  // vector art it is drawn.
+  const CliRun huge = run_cli({"silhouettes", kSample, dir / "h.gpkg", "--page", "5000x5000",
+                               "--preview", dir / "huge.png"});
+  CHECK(huge.code == 1);
+  CHECK_THAT(huge.err, Catch::Contains("29528 x 29528 pixels") && Catch::Contains("GB"));
+  CHECK_FALSE(std::filesystem::exists(dir / "h.gpkg"));
+  CHECK(run_cli({"silhouettes", kSample, dir / "h.gpkg", "--page", "5000x5000", "--preview",
+                 dir / "huge.svg"})
+            .code == 0);
 }

@@ -1,5 +1,6 @@
 // The P-stroke sketch: Visvalingam effective areas against a brute-force oracle, analytic
 // shapes, and the combination rule with the f-set.
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -108,4 +109,33 @@ TEST_CASE("no P-stroke is seeded in or extended into the f-set", "[pstrokes]") {
   PStrokeParams bad;
   bad.convex_row_m2 = 0;
   CHECK_THROWS_AS(bad.validate(), Error);
+}
+
+TEST_CASE("the P-stroke sketch reports its progress and stops when told", "[pstrokes][interrupt]") {
+  // A signal or Cancel after the silhouettes were done used to go unheard until the strokes were
+  // all made.
+  const HeightGrid dem = test::random_terrain(300, 300, 9);
+  SilhouetteParams params;
+  const SilhouetteResult r = test::run_on_dem(dem, params, 20, 20);
+  const OrientedFrame frame = make_frame(300, 300, 20, 20, 90);
+  const HeightGrid oriented = orient(dem, frame);
+  std::vector<double> seen;
+  const ProgressFn record = [&](double fraction) {
+    seen.push_back(fraction);
+    return true;
+  };
+  const auto sketch = [&](const ProgressFn& progress) {
+    return pstroke_sketch(oriented, r.flags, frame, params.view, GeoTransform{}, Geometry::map,
+                          PStrokeParams{}, lowest_height(dem), 2, progress);
+  };
+  const std::vector<PStroke> whole = sketch(record);
+  REQUIRE(!whole.empty());
+  REQUIRE(seen.size() > 10);
+  CHECK(std::is_sorted(seen.begin(), seen.end()));
+  CHECK(seen.back() > 0.95);
+  for (const double stop_at : {0.1, 0.5, 0.9}) {
+    CAPTURE(stop_at);
+    CHECK_THROWS_AS(sketch([&](double fraction) { return fraction < stop_at; }), Cancelled);
+  }
+  CHECK(sketch({}).size() == whole.size());
 }

@@ -20,6 +20,9 @@ void every_256(const ProgressFn& progress, std::size_t step, std::size_t count, 
     throw Cancelled();
 }
 
+// Beyond any drape: an extent reaching it is refused.
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+
 }  // namespace
 
 PlanObliqueDrape::PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& flags,
@@ -52,23 +55,15 @@ PlanObliqueDrape::PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& 
       position[p].push_back(s);
       cell[p].push_back(static_cast<std::uint32_t>(p * frame.length + i));
       const PixelPoint px = frame.to_pixel(static_cast<double>(p), s);
+      // A place beyond any number (heights of 1e30 shifted) is refused as an unbounded extent.
+      if (!std::isfinite(px.col) || !std::isfinite(px.row))
+        lay_out_extent(-kUnbounded, kUnbounded, -kUnbounded, kUnbounded);
       col_min = std::min(col_min, px.col), col_max = std::max(col_max, px.col);
       row_min = std::min(row_min, px.row), row_max = std::max(row_max, px.row);
     }
   }
-  if (col_min > col_max) return;   // nothing visible: an empty drape
-  constexpr double kSlack = 1e-6;  // positions a hair past a cell edge stay in that cell
-  col0_ = static_cast<std::int64_t>(std::floor(col_min - 0.5 + kSlack));
-  row0_ = static_cast<std::int64_t>(std::floor(row_min - 0.5 + kSlack));
-  cols_ = static_cast<std::size_t>(std::ceil(col_max + 0.5 - kSlack) - static_cast<double>(col0_));
-  rows_ = static_cast<std::size_t>(std::ceil(row_max + 0.5 - kSlack) - static_cast<double>(row0_));
-  const double dem_cells =
-      static_cast<double>(frame.dem_rows) * static_cast<double>(frame.dem_cols);
-  if (static_cast<double>(rows_) * static_cast<double>(cols_) > 16.0 * dem_cells + 1e6) {
-    throw Error(
-        "the plan-oblique drape would be far larger than the DEM; lower the vertical "
-        "exaggeration or raise the base slope");
-  }
+  lay_out_extent(col_min, col_max, row_min, row_max);
+  if (empty_) return;
   source_cell_.assign(checked_cell_count(rows_, cols_), kNone);
   for (std::size_t r = 0; r < rows_; ++r) {
     every_256(progress, r, rows_, 0.5, 0.5);
@@ -87,6 +82,38 @@ PlanObliqueDrape::PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& 
       source_cell_[r * cols_ + col] = cell[static_cast<std::size_t>(pf)][best];
     }
   }
+}
+
+void PlanObliqueDrape::lay_out_extent(double col_min, double col_max, double row_min,
+                                      double row_max) {
+  if (col_min > col_max) {
+    // Nothing visible: an empty drape, one cell without data at the DEM's corner (a raster of no
+    // cells is no raster).
+    empty_ = true;
+    rows_ = cols_ = 1;
+    source_cell_.assign(1, kNone);
+    return;
+  }
+  constexpr double kSlack = 1e-6;  // positions a hair past a cell edge stay in that cell
+  const double col0 = std::floor(col_min - 0.5 + kSlack), row0 = std::floor(row_min - 0.5 + kSlack);
+  const double cols = std::ceil(col_max + 0.5 - kSlack) - col0;
+  const double rows = std::ceil(row_max + 0.5 - kSlack) - row0;
+  // Checked before any cast: heights of 1e30 put a cell 1e30 cells away.
+  const double dem_cells =
+      static_cast<double>(frame_.dem_rows) * static_cast<double>(frame_.dem_cols);
+  if (!(cols >= 1 && rows >= 1 && rows * cols <= 16.0 * dem_cells + 1e6)) {
+    const bool bounded = std::isfinite(rows * cols) && rows * cols >= 1;
+    throw Error(
+        "the plan-oblique drape would be " +
+        (bounded ? number_text(cols) + " x " + number_text(rows) + " cells"
+                 : std::string("unbounded")) +
+        ", far larger than the DEM's " + std::to_string(frame_.dem_cols) + " x " +
+        std::to_string(frame_.dem_rows) +
+        " cells: check the DEM's heights, or lower the vertical exaggeration or raise the base "
+        "slope");
+  }
+  col0_ = static_cast<std::int64_t>(col0), row0_ = static_cast<std::int64_t>(row0);
+  cols_ = static_cast<std::size_t>(cols), rows_ = static_cast<std::size_t>(rows);
 }
 
 GeoTransform PlanObliqueDrape::geotransform(const GeoTransform& dem) const {

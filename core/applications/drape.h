@@ -23,7 +23,8 @@ class PlanObliqueDrape {
                    const ViewParams& view, double z_ref, const ProgressFn& progress = {});
 
   // The output lattice: north-up, the DEM's cell size, covering every visible cell's
-  // plan-oblique position; output cell (r, c) is DEM pixel cell (row0 + r, col0 + c).
+  // plan-oblique position; output cell (r, c) is DEM pixel cell (row0 + r, col0 + c). With no
+  // visible cell, one cell without data at the DEM's corner.
   std::size_t rows() const { return rows_; }
   std::size_t cols() const { return cols_; }
   GeoTransform geotransform(const GeoTransform& dem) const;
@@ -38,12 +39,16 @@ class PlanObliqueDrape {
  private:
   static constexpr std::uint32_t kNone = 0xffffffffu;  // an output cell no visible cell reaches
 
+  // Sets the lattice covering pixel columns col_min..col_max and rows row_min..row_max (none
+  // when col_min > col_max); throws Error when it would be far larger than the DEM.
+  void lay_out_extent(double col_min, double col_max, double row_min, double row_max);
   void check_on_dem_grid(const HeightGrid& source_on_dem) const;
   HeightGrid from_oriented(const HeightGrid& oriented) const;
 
   OrientedFrame frame_;  // a copy: the DEM may go once the drape is laid out
   std::int64_t row0_ = 0, col0_ = 0;
   std::size_t rows_ = 0, cols_ = 0;
+  bool empty_ = false;  // no visible cell
   // Per output cell: the oriented cell index (4 bytes: a DEM turned whole has fewer cells), kNone
   // for none.
   std::vector<std::uint32_t> source_cell_;

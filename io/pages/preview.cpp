@@ -69,9 +69,14 @@ void go_on(const ProgressFn& progress, double fraction) {
 }
 
 // GDAL's progress while it writes the picture: the last fifth of the work.
-int CPL_STDCALL encoding_progress(double fraction, const char*, void* progress) {
-  const ProgressFn& report = *static_cast<const ProgressFn*>(progress);
-  return !report || report(0.8 + 0.2 * fraction) ? TRUE : FALSE;
+struct Encoding {
+  const ProgressFn& progress;
+  bool stopped = false;
+};
+int CPL_STDCALL encoding_progress(double fraction, const char*, void* data) {
+  Encoding& encoding = *static_cast<Encoding*>(data);
+  encoding.stopped = encoding.progress && !encoding.progress(0.8 + 0.2 * fraction);
+  return encoding.stopped ? FALSE : TRUE;
 }
 
 // Draws the page's paths, formulated first so factual strokes stay on top, and the labels'
@@ -122,9 +127,10 @@ void write_png_preview(const std::string& path, SketchPage page, const ProgressF
     throw Error("cannot draw the preview: " + capture.message());
   }
   write_atomically(path, [&](const std::filesystem::path& staged) {
-    DatasetPtr out(png->CreateCopy(staged.c_str(), image.get(), FALSE, nullptr, encoding_progress,
-                                   const_cast<ProgressFn*>(&progress)));
-    if (!out && progress && !progress(0.8)) throw Cancelled();
+    Encoding encoding{progress};
+    DatasetPtr out(
+        png->CreateCopy(staged.c_str(), image.get(), FALSE, nullptr, encoding_progress, &encoding));
+    if (encoding.stopped) throw Cancelled();
     if (!out) throw Error("cannot write preview '" + path + "': " + capture.message());
   });
 }

@@ -54,7 +54,7 @@ void check_input_path(const std::string& path) {
     throw Error("cannot open '" + path + "': " + std::strerror(errno));
   }
   if (!S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode)) {
-    throw Error("'" + path + "' is not a file (a pipe, a socket or a device); give a raster file");
+    throw Error("'" + path + "' is not a file (a pipe, a socket or a device); name a file on disk");
   }
 }
 

@@ -34,6 +34,16 @@ std::string field_list(OGRFeatureDefn& defn) {
   return names.empty() ? "none" : names;
 }
 
+// Why `path` is no layer of points, GDAL having said nothing when it is another kind of file.
+std::string not_points(const std::string& path, const GdalErrorCapture& capture) {
+  const std::string why = "cannot open '" + path + "' as a layer of points: ";
+  if (!capture.first_failure().empty()) return why + capture.message();
+  DatasetPtr raster(static_cast<GDALDataset*>(
+      GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+  if (raster) return why + "it is a raster; give points (GeoPackage, shapefile, GeoJSON, CSV, ...)";
+  return why + "no vector format of GDAL reads it";
+}
+
 }  // namespace
 
 std::vector<NamedPoint> read_named_points(const std::string& path, const std::string& name_field,
@@ -42,8 +52,7 @@ std::vector<NamedPoint> read_named_points(const std::string& path, const std::st
   GdalErrorCapture capture;
   DatasetPtr ds(static_cast<GDALDataset*>(
       GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
-  if (!ds || ds->GetLayerCount() == 0)
-    throw Error("cannot open '" + path + "' as a layer of points: " + capture.message());
+  if (!ds || ds->GetLayerCount() == 0) throw Error(not_points(path, capture));
   OGRLayer& layer = *ds->GetLayer(0);
   const int field = layer.GetLayerDefn()->GetFieldIndex(name_field.c_str());
   if (field < 0) {

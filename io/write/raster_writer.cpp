@@ -3,6 +3,7 @@
 #include <gdal_priv.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -12,11 +13,25 @@
 namespace tsk::io {
 namespace {
 
-// Reads every band of the raster at `staged` back, a block of rows at a time. GDAL 3.10's
-// GeoTIFF driver leaves a full disk unsaid (libtiff prints it, no error is raised and the close
-// succeeds), so a raster is whole only when it reads back.
+// True when `count` values of `type` read back as they were written (NaN as NaN).
+bool same_values(GDALDataType type, const void* written, const void* read, std::size_t count) {
+  if (type == GDT_Byte)
+    return std::equal(static_cast<const GByte*>(written),
+                      static_cast<const GByte*>(written) + count, static_cast<const GByte*>(read));
+  const auto* a = static_cast<const float*>(written);
+  const auto* b = static_cast<const float*>(read);
+  for (std::size_t k = 0; k < count; ++k)
+    if (a[k] != b[k] && !(std::isnan(a[k]) && std::isnan(b[k]))) return false;
+  return true;
+}
+
+// Reads every band of the raster at `staged` back, a block of rows at a time, and compares it
+// with the `pixels` written (Byte or Float32). GDAL 3.10's GeoTIFF driver leaves a full disk
+// unsaid (libtiff prints it, no error is raised and the close succeeds), so a raster is whole only
+// when it reads back; and a format may change the values (a GeoPackage's PNG tiles renumber a
+// colour table), which no output may.
 void check_reads_back(const std::string& path, const std::filesystem::path& staged,
-                      GDALDataType type) {
+                      GDALDataType type, const std::vector<const void*>& pixels) {
   GdalErrorCapture capture;
   const NoAuxFiles no_aux;
   DatasetPtr ds(static_cast<GDALDataset*>(
@@ -28,16 +43,27 @@ void check_reads_back(const std::string& path, const std::filesystem::path& stag
                 ")");
   };
   if (!ds) fail();
+  if (ds->GetRasterCount() != static_cast<int>(pixels.size())) {
+    throw Error("writing '" + path + "' failed: the " + ds->GetDriver()->GetDescription() +
+                " format gave back " + std::to_string(ds->GetRasterCount()) + " bands for the " +
+                std::to_string(pixels.size()) + " written; use .tif");
+  }
   const int cols = ds->GetRasterXSize(), rows = ds->GetRasterYSize();
   const int block_rows = std::max(1, std::min(rows, (1 << 22) / std::max(1, cols)));
-  std::vector<double> buffer(static_cast<std::size_t>(cols) * static_cast<std::size_t>(block_rows));
+  const std::size_t value_bytes = type == GDT_Byte ? 1 : 4;
+  std::vector<GByte> buffer(static_cast<std::size_t>(cols) * block_rows * value_bytes);
   for (int b = 1; b <= ds->GetRasterCount(); ++b) {
     for (int top = 0; top < rows; top += block_rows) {
       const int count = std::min(block_rows, rows - top);
       if (ds->GetRasterBand(b)->RasterIO(GF_Read, 0, top, cols, count, buffer.data(), cols, count,
-                                         type == GDT_Byte ? GDT_Byte : GDT_Float64, 0,
-                                         0) != CE_None) {
+                                         type, 0, 0) != CE_None) {
         fail();
+      }
+      const std::size_t first = static_cast<std::size_t>(top) * cols;
+      const auto* written = static_cast<const GByte*>(pixels[b - 1]) + first * value_bytes;
+      if (!same_values(type, written, buffer.data(), static_cast<std::size_t>(count) * cols)) {
+        throw Error("writing '" + path + "' failed: the " + ds->GetDriver()->GetDescription() +
+                    " format changed the values written; use .tif");
       }
     }
   }
@@ -77,7 +103,7 @@ void write_bands(const std::string& path, const std::filesystem::path& staged, s
     throw Error("writing '" + path + "' failed: " + capture.first_failure());
   }
   if (!closed) throw Error("writing '" + path + "' failed as it was closed (is the disk full?)");
-  check_reads_back(path, staged, type);
+  check_reads_back(path, staged, type, pixels);
 }
 
 }  // namespace
@@ -139,8 +165,11 @@ void write_classification(const std::string& path, const Grid<std::uint8_t>& cla
 
 void write_visibility(const std::string& path, const Grid<std::uint8_t>& visibility,
                       const GeoTransform& gt, const std::string& srs_wkt) {
-  // Hidden ground greyed, visible ground clear, beyond the range left out.
-  static const GDALColorEntry hidden = {60, 60, 60, 150}, visible = {255, 255, 255, 0};
+  // Hidden ground greyed, visible ground clear, beyond the range left out. The table reaches the
+  // nodata value: a format that writes it as a PNG palette (GeoPackage tiles) refused an index
+  // beyond the table.
+  static const GDALColorEntry hidden = {60, 60, 60, 150}, visible = {255, 255, 255, 0},
+                              none = {0, 0, 0, 0};
   write_atomically(path, [&](const std::filesystem::path& staged) {
     write_bands(path, staged, visibility.rows(), visibility.cols(), GDT_Byte, {visibility.data()},
                 gt, srs_wkt, [](GDALRasterBand& band) {
@@ -148,6 +177,7 @@ void write_visibility(const std::string& path, const Grid<std::uint8_t>& visibil
                   GDALColorTable table;
                   table.SetColorEntry(0, &hidden);
                   table.SetColorEntry(1, &visible);
+                  table.SetColorEntry(255, &none);
                   band.SetColorTable(&table);
                   const char* names[] = {"hidden", "visible", nullptr};
                   band.SetCategoryNames(const_cast<char**>(names));

@@ -1,6 +1,8 @@
 // The drape algorithm against the core.
 #include <gdal_utils.h>
 
+#include <limits>
+
 #include "plugin_test_support.h"
 
 using namespace tsk::plugin_test;
@@ -86,4 +88,26 @@ TEST_CASE("a raster to drape on other ground or in another CRS is refused", "[pl
   CHECK_FALSE(otherCrs.ok);
   CHECK(otherCrs.error.contains("EPSG:32617"));
   CHECK_FALSE(QFileInfo::exists(dir.filePath("out.tif")));
+}
+
+TEST_CASE("a drape with nothing in sight is one empty cell; heights beyond terrain are refused",
+          "[plugin][drape]") {
+  QTemporaryDir dir;
+  const QString empty = dir.filePath("allnan.tif"), spike = dir.filePath("spike.tif");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  test::write_tiff(
+      empty.toStdString(), 30, 30, 1, [=](int, int, int) { return nan; }, test::kNorthUp, 32616);
+  test::write_tiff(
+      spike.toStdString(), 20, 20, 1, [](int, int r, int c) { return r + c == 0 ? 0.f : 1e30f; },
+      test::kNorthUp, 32616);
+  const Run run = runAlgorithm(empty, {{"SOURCE", empty}, {"AZIMUTH", 33}}, dir, nullptr, "drape");
+  INFO(run.error.toStdString());
+  REQUIRE(run.ok);
+  QgsRasterLayer layer(run.results.value("OUTPUT").toString(), "d", "gdal");
+  REQUIRE(layer.isValid());
+  CHECK(layer.width() == 1);
+  const Run refused =
+      runAlgorithm(spike, {{"SOURCE", spike}, {"AZIMUTH", 33}}, dir, nullptr, "drape");
+  CHECK_FALSE(refused.ok);
+  CHECK(refused.error.contains("far larger than the DEM's 20 x 20 cells"));
 }

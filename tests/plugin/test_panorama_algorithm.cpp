@@ -69,6 +69,27 @@ TEST_CASE("the panorama algorithm draws the core's panorama on the map and in th
   CHECK(same == raster.size());
 }
 
+TEST_CASE("a raster output in another format than GeoTIFF is refused before the run",
+          "[plugin][panorama][outputs]") {
+  // The visibility raster in a GeoPackage failed in libpng ("Wrote palette index exceeding
+  // num_palette"), and once its table reached the nodata value GDAL's PNG tiles renumbered it.
+  QTemporaryDir dir;
+  const QString dem = kData + "/jacksboro_utm16n.tif";
+  const Run run = runAlgorithm(dem,
+                               {{"OBSERVER", kSummit},
+                                {"MAP_OUTPUT", dir.filePath("map.gpkg")},
+                                {"PANORAMA_OUTPUT", dir.filePath("panorama.gpkg")},
+                                {"VISIBILITY", dir.filePath("seen.gpkg")}},
+                               dir, nullptr, QStringLiteral("panorama"));
+  CHECK_FALSE(run.ok);
+  CHECK(run.error.contains("GeoTIFF"));
+  CHECK(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
+  const Run classes = runAlgorithm(dem, {{"OUTPUT", dir.filePath("classes.gpkg")}}, dir, nullptr,
+                                   QStringLiteral("classification"));
+  CHECK_FALSE(classes.ok);
+  CHECK(classes.error.contains("GeoTIFF"));
+}
+
 TEST_CASE("the panorama algorithm refuses an observer off the DEM", "[plugin][panorama]") {
   QTemporaryDir dir;
   const QString dem = kData + "/jacksboro_utm16n.tif";
