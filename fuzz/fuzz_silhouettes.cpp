@@ -81,6 +81,25 @@ void fuzz_panorama(const tsk::HeightGrid& dem, double dx, double dy, Reader& in)
   }
 }
 
+// The plan-oblique drape of the DEM onto itself: heights of 1e38 put cells beyond any raster,
+// which must be refused, never cast; what is laid out is one cell at least, and bounded.
+void fuzz_drape(const tsk::HeightGrid& dem, const tsk::OrientedFrame& frame,
+                const tsk::ViewParams& view) {
+  try {
+    const tsk::HeightGrid oriented = tsk::orient(dem, frame);
+    tsk::CellFlags flags;
+    tsk::classify_visibility(oriented, frame.d, view, flags);
+    const tsk::PlanObliqueDrape drape(oriented, flags, frame, view, tsk::lowest_height(oriented));
+    const double cells = static_cast<double>(drape.rows()) * static_cast<double>(drape.cols());
+    if (drape.rows() < 1 || drape.cols() < 1 ||
+        cells > 16.0 * static_cast<double>(dem.size()) + 1e6)
+      __builtin_trap();
+    if (drape.drape(dem).size() != drape.rows() * drape.cols()) __builtin_trap();
+  } catch (const tsk::Error&) {
+    // Refused with a message: a drape far larger than the DEM.
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -158,6 +177,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         {}, [&](tsk::Stroke&&) { ++handed_on; });
     if (handed_on != r.strokes.size() || streamed.stats.generalised != r.stats.generalised)
       __builtin_trap();
+    fuzz_drape(dem, frame, p.view);
   } catch (const tsk::Error&) {
     // Refused with a message: the expected outcome for bad parameters.
   }
