@@ -75,6 +75,23 @@ for round in 1 2; do
     [ "$(features "$out/cc_m.gpkg")" -gt 100 ] 2>/dev/null; check "concurrent runs $round outputs" $?
 done
 
+# A run killed outright (kill -9) once it has begun writing keeps the earlier outputs whole (QGIS
+# had written over them when the run started, leaving them empty with a lock and a -journal);
+# it leaves a hidden staging folder, which the next run into the folder removes.
+staging() { ls -A "$out" | grep -c '^\.f\.gpkg\.partial-'; }
+before=$(features "$out/f.gpkg")
+/usr/bin/qgis_process.bin run terrainsketch:silhouettes --INPUT="$out/large.tif" \
+  --FACTUAL="$out/f.gpkg" --FORMULATED="$out/o.gpkg" > /dev/null 2>&1 &
+killed=$!
+# Staged as the run begins, seconds before its 25 million cells are sketched.
+for _ in $(seq 2400); do [ "$(staging)" -gt 0 ] && break; sleep 0.05; done
+kill -9 $killed; wait $killed 2> /dev/null
+[ "$(staging)" -eq 1 ] && [ "$(features "$out/f.gpkg")" = "$before" ] && \
+  [ ! -e "$out/f.gpkg-journal" ]; check "killed run keeps the earlier outputs" $?
+qp run terrainsketch:silhouettes --INPUT="$repo/resources/sample/jacksboro_utm16n.tif" \
+  --FACTUAL="$out/f2.gpkg" --FORMULATED="$out/o2.gpkg" > /dev/null
+[ "$(staging)" -eq 0 ]; check "the next run removes the killed run's staging" $?
+
 # The German translation loads when the profile's locale is German.
 printf '\n[locale]\noverrideFlag=true\nuserLocale=de\n' \
   >> "$HOME/.local/share/QGIS/QGIS3/profiles/default/QGIS/QGIS3.ini"
