@@ -489,11 +489,6 @@
         <translation>Das Raster hat kein KBS: Zellgrößen werden als Meter angenommen, die Ausgaben haben kein KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="162" />
-        <source>Mercator projection: map units are not ground metres here; cell sizes are scaled by cos(latitude of the centre) = %1.</source>
-        <translation>Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen werden mit cos(Breite der Mitte) = %1 skaliert.</translation>
-    </message>
-    <message>
         <location filename="../plugin/raster_grid.cpp" line="166" />
         <source>The CRS's unit is %1, not the metre: the heights must be in %1 too, and depths and lengths come out in %1.</source>
         <translation>Die Einheit des KBS ist %1, nicht der Meter: die Höhen müssen ebenfalls in %1 sein, und Tiefen und Längen werden in %1 ausgegeben.</translation>
@@ -522,6 +517,11 @@
         <location filename="../plugin/raster_grid.cpp" line="145" />
         <source>Could not open the raster's data provider.</source>
         <translation>Der Datenanbieter des Rasters konnte nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="162" />
+        <source>Mercator projection: map units are not ground metres here; cell sizes are scaled by cos(latitude of the centre) = %L1.</source>
+        <translation>Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen werden mit cos(Breite der Mitte) = %L1 skaliert.</translation>
     </message>
     <message>
         <location filename="../plugin/raster_grid.cpp" line="308" />
@@ -746,18 +746,18 @@
     </message>
     <message>
         <location filename="../plugin/shared_parameters.cpp" line="194" />
-        <source>No cell of the DEM slopes (it is flat, or too few of its cells are valid): the slope filter's cut-offs are scaled by the least, %1: row %2 %, column %3 %, control point %4 %.</source>
-        <translation>Keine Zelle des DGM ist geneigt (es ist flach, oder zu wenige seiner Zellen sind gültig): die Schwellen des Neigungsfilters werden mit dem kleinsten Faktor skaliert, %1: Zeile %2 %, Spalte %3 %, Kontrollpunkt %4 %.</translation>
+        <source>No cell of the DEM slopes (it is flat, or too few of its cells are valid): the slope filter's cut-offs are scaled by the least, %L1: row %L2 %, column %L3 %, control point %L4 %.</source>
+        <translation>Keine Zelle des DGM ist geneigt (es ist flach, oder zu wenige seiner Zellen sind gültig): die Schwellen des Neigungsfilters werden mit dem kleinsten Faktor skaliert, %L1: Zeile %L2 %, Spalte %L3 %, Kontrollpunkt %L4 %.</translation>
     </message>
     <message>
         <location filename="../plugin/shared_parameters.cpp" line="203" />
-        <source>Slope filter adapted to the DEM: its median slope is %1 % against %2 % on the thesis's terrain, so the cut-offs are scaled by %3: row %4 %, column %5 %, control point %6 %.</source>
-        <translation>Neigungsfilter an das DGM angepasst: seine mittlere Hangneigung ist %1 % gegenüber %2 % im Gelände der Dissertation, daher werden die Schwellen mit %3 skaliert: Zeile %4 %, Spalte %5 %, Kontrollpunkt %6 %.</translation>
+        <source>Slope filter adapted to the DEM: its median slope is %L1 % against %L2 % on the thesis's terrain, so the cut-offs are scaled by %L3: row %L4 %, column %L5 %, control point %L6 %.</source>
+        <translation>Neigungsfilter an das DGM angepasst: seine mittlere Hangneigung ist %L1 % gegenüber %L2 % im Gelände der Dissertation, daher werden die Schwellen mit %L3 skaliert: Zeile %L4 %, Spalte %L5 %, Kontrollpunkt %L6 %.</translation>
     </message>
     <message>
         <location filename="../plugin/shared_parameters.cpp" line="213" />
-        <source>Each neighbourhood of %1 cells scales them from %2 to %3 times the thesis's.</source>
-        <translation>Jede Nachbarschaft von %1 Zellen skaliert sie auf das %2- bis %3-fache der Schwellen der Dissertation.</translation>
+        <source>Each neighbourhood of %L1 cells scales them from %L2 to %L3 times the thesis's.</source>
+        <translation>Jede Nachbarschaft von %L1 Zellen skaliert sie auf das %L2- bis %L3-fache der Schwellen der Dissertation.</translation>
     </message>
 </context>
 <context>
@@ -785,20 +785,20 @@ Factual Silhouettes are occluding contours: cells beyond which the terrain hides
 
 The DEM's heights must be in metres and its CRS projected in metres; a geographic DEM is refused. Any view azimuth works; the four cardinal ones are exact.
 
-Two line outputs: Factual silhouettes (styled bold black, width by hidden depth) and Formulated silhouettes (thinner grey, width by slope). Separate layers so each can be styled, filtered or switched off on its own, and routed separately in models. Each stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth and max_depth (m, factual only), mean_dist (ground distance from the front edge of the view, in the CRS's unit) and mean_z (m).
+Two line outputs: Factual silhouettes (styled bold black, width by hidden depth) and Formulated silhouettes (thinner sepia, width by slope). Separate layers so each can be styled, filtered or switched off on its own, and routed separately in models. Each stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth and max_depth (m, factual only), mean_dist (ground distance from the front edge of the view, in the CRS's unit) and mean_z (m).
 
 The strokes are drawn by default, as a cartographer would publish them: joined where they continue each other, smoothed within a cell of the exact chain, and stored as LineString M whose M values weigh each point (thin at the ends, thinner at the back of the view); the styles draw those weights. The advanced parameter Strokes gives the thesis's exact strokes instead.
 
 The stage figures (log and outputs), in percent of the cells with data: HIDDEN_PCT (cells hidden behind nearer terrain), OCCLUDING_PCT (occluding cells), CSET_PCT (the candidate set: back-facing cells the raised view brings into sight), FSET_PCT (the filtered set: visible candidates the slope filter keeps), TSET_PCT (the thinned set: one cell per filtered zone) and GSET_PCT (the generalised set: cells of the strokes kept, those with at least the minimum number of cells); FACTUAL_STROKES and FORMULATED_STROKES count the strokes.
 
 Reference: Beyond Factual to Formulated Silhouettes, PhD thesis, Department of Computer Science, University of Hull (chapters 4 and 5), extending the occluding contours of Visvalingam and Whelan (1998).</source>
-        <translation>Findet die Linien, die ein Kartograph zuerst skizziert, wenn er Gelände schräg von oben zeichnet.
+        <translation>Findet die Linien, die ein Kartograf zuerst skizziert, wenn er Gelände schräg von oben zeichnet.
 
 Faktische Silhouetten sind Verdeckungskonturen: Zellen, hinter denen das Gelände verbirgt, was dahinter liegt, in einer Parallelansicht mit Überhöhung und einer entlang der Blickrichtung addierten Grundneigung. Formulierte Silhouetten sind abgewandte Hänge, die der erhöhte Blick sichtbar macht (die Kandidatenmenge); sie bleiben erhalten, wo der Neigungsfilter sie für bedeutsam hält (außerhalb der schwach/schwach-Ecke von Spalten- gegen Zeilenneigung), werden auf die vom Betrachter entfernteste Zelle ausgedünnt und über die Profile verkettet.
 
 Die Höhen des DGM müssen in Metern vorliegen und sein KBS in Metern projiziert sein; ein geographisches DGM wird abgelehnt. Jede Blickrichtung ist möglich; die vier Haupthimmelsrichtungen sind exakt.
 
-Zwei Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter Tiefe) und Formulierte Silhouetten (dünner grau, Breite nach Neigung). Getrennte Layer, damit jeder für sich gestaltet, gefiltert oder ausgeblendet und in Modellen getrennt weitergeleitet werden kann. Jeder Strich trägt: class, cells, length, mean_slope und mean_row_slope (%), mean_depth und max_depth (m, nur faktisch), mean_dist (Abstand im Gelände vom vorderen Bildrand, in der Einheit des KBS) und mean_z (m).
+Zwei Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter Tiefe) und Formulierte Silhouetten (dünner sepia, Breite nach Neigung). Getrennte Layer, damit jeder für sich gestaltet, gefiltert oder ausgeblendet und in Modellen getrennt weitergeleitet werden kann. Jeder Strich trägt: class, cells, length, mean_slope und mean_row_slope (%), mean_depth und max_depth (m, nur faktisch), mean_dist (Abstand im Gelände vom vorderen Bildrand, in der Einheit des KBS) und mean_z (m).
 
 Die Striche werden standardmäßig gezeichnet, wie sie ein Kartograf veröffentlichen würde: verbunden, wo sie einander fortsetzen, innerhalb einer Zelle der exakten Kette geglättet und als LineString M gespeichert, deren M-Werte jeden Punkt gewichten (dünn an den Enden, dünner zum hinteren Rand der Ansicht); die Stile zeichnen diese Gewichte. Der erweiterte Parameter Striche liefert stattdessen die exakten Striche der Dissertation.
 

@@ -11,8 +11,8 @@ GERMAN = {
     "Internal error: no output set for %1.": "Interner Fehler: keine Ausgabemenge für %1.",
     "%1 must be a GeoTIFF (.tif): %2 is another format.":
         "%1 muss ein GeoTIFF (.tif) sein: %2 hat ein anderes Format.",
-    "No cell of the DEM slopes (it is flat, or too few of its cells are valid): the slope filter's cut-offs are scaled by the least, %1: row %2 %, column %3 %, control point %4 %.":
-        "Keine Zelle des DGM ist geneigt (es ist flach, oder zu wenige seiner Zellen sind gültig): die Schwellen des Neigungsfilters werden mit dem kleinsten Faktor skaliert, %1: Zeile %2 %, Spalte %3 %, Kontrollpunkt %4 %.",
+    "No cell of the DEM slopes (it is flat, or too few of its cells are valid): the slope filter's cut-offs are scaled by the least, %L1: row %L2 %, column %L3 %, control point %L4 %.":
+        "Keine Zelle des DGM ist geneigt (es ist flach, oder zu wenige seiner Zellen sind gültig): die Schwellen des Neigungsfilters werden mit dem kleinsten Faktor skaliert, %L1: Zeile %L2 %, Spalte %L3 %, Kontrollpunkt %L4 %.",
     "Could not apply style %1: %2": "Stil %1 konnte nicht angewendet werden: %2",
     "The input raster layer is not valid.": "Der Eingaberasterlayer ist ungültig.",
     "Band %1 does not exist: the raster has %2 band(s).":
@@ -28,9 +28,9 @@ GERMAN = {
         "Das Raster hat kein KBS: Zellgrößen werden als Meter angenommen, die Ausgaben haben kein "
         "KBS.",
     "Mercator projection: map units are not ground metres here; cell sizes are scaled by "
-    "cos(latitude of the centre) = %1.":
+    "cos(latitude of the centre) = %L1.":
         "Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen "
-        "werden mit cos(Breite der Mitte) = %1 skaliert.",
+        "werden mit cos(Breite der Mitte) = %L1 skaliert.",
     "The CRS's unit is %1, not the metre: the heights must be in %1 too, and depths and lengths "
     "come out in %1.":
         "Die Einheit des KBS ist %1, nicht der Meter: die Höhen müssen ebenfalls in %1 sein, und "
@@ -76,7 +76,7 @@ GERMAN = {
     "metres and its CRS projected in metres; a geographic DEM is refused. Any view azimuth "
     "works; the four cardinal ones are exact.\n\nTwo line outputs: Factual silhouettes (styled "
     "bold black, width "
-    "by hidden depth) and Formulated silhouettes (thinner grey, width by slope). Separate layers "
+    "by hidden depth) and Formulated silhouettes (thinner sepia, width by slope). Separate layers "
     "so each can be styled, filtered or switched off on its own, and routed separately in models. "
     "Each stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth and "
     "max_depth (m, factual only), mean_dist (ground distance from the front edge of the view, in "
@@ -95,7 +95,7 @@ GERMAN = {
     "Reference: Beyond Factual to Formulated Silhouettes, PhD thesis, Department of Computer "
     "Science, University of Hull (chapters 4 and 5), extending the occluding contours of "
     "Visvalingam and Whelan (1998).":
-        "Findet die Linien, die ein Kartograph zuerst skizziert, wenn er Gelände schräg von oben "
+        "Findet die Linien, die ein Kartograf zuerst skizziert, wenn er Gelände schräg von oben "
         "zeichnet.\n\nFaktische Silhouetten sind Verdeckungskonturen: Zellen, hinter denen das "
         "Gelände verbirgt, was dahinter liegt, in einer Parallelansicht mit Überhöhung und einer "
         "entlang der Blickrichtung addierten Grundneigung. Formulierte Silhouetten sind "
@@ -107,7 +107,7 @@ GERMAN = {
         "abgelehnt. Jede Blickrichtung ist möglich; die vier Haupthimmelsrichtungen sind "
         "exakt.\n\nZwei "
         "Linienausgaben: Faktische Silhouetten (fett schwarz, Breite nach verdeckter Tiefe) und "
-        "Formulierte Silhouetten (dünner grau, Breite nach Neigung). Getrennte Layer, damit jeder "
+        "Formulierte Silhouetten (dünner sepia, Breite nach Neigung). Getrennte Layer, damit jeder "
         "für sich gestaltet, gefiltert oder ausgeblendet und in Modellen getrennt weitergeleitet "
         "werden kann. Jeder Strich trägt: class, cells, length, mean_slope und mean_row_slope (%), "
         "mean_depth und max_depth (m, nur faktisch), mean_dist (Abstand im Gelände vom vorderen "
@@ -200,13 +200,13 @@ GERMAN = {
         "Bei einem Maßstab je Nachbarschaft: die Seitenlänge einer Nachbarschaft in DGM-Zellen. "
         "Zwischen Nachbarschaften werden die Maßstäbe überblendet, so dass der Filter keine "
         "Nähte hat.",
-    "Slope filter adapted to the DEM: its median slope is %1 % against %2 % on the thesis's "
-    "terrain, so the cut-offs are scaled by %3: row %4 %, column %5 %, control point %6 %.":
-        "Neigungsfilter an das DGM angepasst: seine mittlere Hangneigung ist %1 % gegenüber "
-        "%2 % im Gelände der Dissertation, daher werden die Schwellen mit %3 skaliert: Zeile %4 %, "
-        "Spalte %5 %, Kontrollpunkt %6 %.",
-    "Each neighbourhood of %1 cells scales them from %2 to %3 times the thesis's.":
-        "Jede Nachbarschaft von %1 Zellen skaliert sie auf das %2- bis %3-fache der Schwellen der "
+    "Slope filter adapted to the DEM: its median slope is %L1 % against %L2 % on the thesis's "
+    "terrain, so the cut-offs are scaled by %L3: row %L4 %, column %L5 %, control point %L6 %.":
+        "Neigungsfilter an das DGM angepasst: seine mittlere Hangneigung ist %L1 % gegenüber "
+        "%L2 % im Gelände der Dissertation, daher werden die Schwellen mit %L3 skaliert: Zeile %L4 %, "
+        "Spalte %L5 %, Kontrollpunkt %L6 %.",
+    "Each neighbourhood of %L1 cells scales them from %L2 to %L3 times the thesis's.":
+        "Jede Nachbarschaft von %L1 Zellen skaliert sie auf das %L2- bis %L3-fache der Schwellen der "
         "Dissertation.",
     "Allow for diagonals": "Diagonalen berücksichtigen",
     "If checked the removed region is the polygon through the control point; if not, the whole "

@@ -160,7 +160,7 @@ QString RasterGrid::noteText(const io::DemNote& note) {
           "CRS.");
     case io::DemNoteCode::mercator_scaled:
       return tr("Mercator projection: map units are not ground metres here; cell sizes are "
-                "scaled by cos(latitude of the centre) = %1.")
+                "scaled by cos(latitude of the centre) = %L1.")
           .arg(number(0), 0, 'f', 4);
     case io::DemNoteCode::unit_not_metre:
       return tr("The CRS's unit is %1, not the metre: the heights must be in %1 too, and "

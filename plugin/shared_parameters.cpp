@@ -192,17 +192,17 @@ void SharedParameters::logFilter(const FilterReport& r, QgsProcessingFeedback* f
   if (!feedback || r.choice.mode == FilterMode::fixed) return;
   if (!std::isfinite(r.median_slope_pct)) {
     feedback->pushWarning(tr("No cell of the DEM slopes (it is flat, or too few of its cells are "
-                             "valid): the slope filter's cut-offs are scaled by the least, %1: "
-                             "row %2 %, column %3 %, control point %4 %.")
+                             "valid): the slope filter's cut-offs are scaled by the least, %L1: "
+                             "row %L2 %, column %L3 %, control point %L4 %.")
                               .arg(r.scale, 0, 'g', 3)
                               .arg(r.cutoffs.row_cut_pct, 0, 'g', 3)
                               .arg(r.cutoffs.col_cut_pct, 0, 'g', 3)
                               .arg(r.cutoffs.ctrl_col_pct, 0, 'g', 3));
     return;
   }
-  feedback->pushInfo(tr("Slope filter adapted to the DEM: its median slope is %1 % against %2 % "
-                        "on the thesis's terrain, so the cut-offs are scaled by %3: row %4 %, "
-                        "column %5 %, control point %6 %.")
+  feedback->pushInfo(tr("Slope filter adapted to the DEM: its median slope is %L1 % against %L2 % "
+                        "on the thesis's terrain, so the cut-offs are scaled by %L3: row %L4 %, "
+                        "column %L5 %, control point %L6 %.")
                          .arg(r.median_slope_pct, 0, 'g', 3)
                          .arg(kReferenceSlopePct, 0, 'g', 3)
                          .arg(r.scale, 0, 'g', 3)
@@ -210,7 +210,7 @@ void SharedParameters::logFilter(const FilterReport& r, QgsProcessingFeedback* f
                          .arg(r.cutoffs.col_cut_pct, 0, 'g', 3)
                          .arg(r.cutoffs.ctrl_col_pct, 0, 'g', 3));
   if (r.choice.adapt == Adaptivity::local) {
-    feedback->pushInfo(tr("Each neighbourhood of %1 cells scales them from %2 to %3 times the "
+    feedback->pushInfo(tr("Each neighbourhood of %L1 cells scales them from %L2 to %L3 times the "
                           "thesis's.")
                            .arg(r.choice.window)
                            .arg(r.local_lowest, 0, 'g', 3)

@@ -71,7 +71,7 @@ QString SilhouettesAlgorithm::shortHelpString() const {
       "The DEM's heights must be in metres and its CRS projected in metres; a geographic "
       "DEM is refused. Any view azimuth works; the four cardinal ones are exact.\n\n"
       "Two line outputs: Factual silhouettes (styled bold black, width by hidden depth) and "
-      "Formulated silhouettes (thinner grey, width by slope). Separate layers so each can be "
+      "Formulated silhouettes (thinner sepia, width by slope). Separate layers so each can be "
       "styled, filtered or switched off on its own, and routed separately in models. Each "
       "stroke carries: class, cells, length, mean_slope and mean_row_slope (%), mean_depth "
       "and max_depth (m, factual only), mean_dist (ground distance from the front edge of the "

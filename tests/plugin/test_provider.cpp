@@ -1,6 +1,7 @@
 // The provider: help for every algorithm and parameter, the German translation.
 #include <map>
 
+#include "plugin/shared_parameters.h"
 #include "plugin_test_support.h"
 
 using namespace tsk::plugin_test;
@@ -74,6 +75,26 @@ TEST_CASE("the German translation loads for the de locale", "[plugin][i18n]") {
   plugin::removeTranslation();
   CHECK(provider.name() == QStringLiteral("Terrain sketch"));
   CHECK_FALSE(plugin::installTranslation(QStringLiteral("xx"), folder));
+}
+
+TEST_CASE("numbers in the log are written as the user's locale writes them", "[plugin][i18n]") {
+  // German users read "23.9 %" with an English decimal point.
+  const QString folder = QStringLiteral(TSK_PLUGIN_DIR "/i18n");
+  REQUIRE(plugin::installTranslation(QStringLiteral("de"), folder));
+  const QLocale before;
+  QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+  FilterReport report;
+  report.choice.mode = FilterMode::adaptive;
+  report.median_slope_pct = 23.9;
+  report.scale = 0.996;
+  report.cutoffs.row_cut_pct = 19.9;
+  RecordingFeedback feedback;
+  plugin::SharedParameters::logFilter(report, &feedback);
+  QLocale::setDefault(before);
+  plugin::removeTranslation();
+  REQUIRE(feedback.infos.size() == 1);
+  CHECK(feedback.infos[0].contains(QStringLiteral("Hangneigung ist 23,9 %")));
+  CHECK(feedback.infos[0].contains(QStringLiteral("Zeile 19,9 %")));
 }
 
 TEST_CASE("the plugin speaks the language QGIS was started in", "[plugin][i18n]") {
