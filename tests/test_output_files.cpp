@@ -77,9 +77,14 @@ std::string text_of(const std::string& path) {
 
 // The staging folder run `pid` made in `dir`, or an empty path while there is none.
 std::filesystem::path staging_of(const std::filesystem::path& dir, pid_t pid) {
-  const std::string mark = ".partial-" + std::to_string(pid) + "-";
-  for (const auto& entry : std::filesystem::directory_iterator(dir))
-    if (entry.path().filename().string().find(mark) != std::string::npos) return entry.path();
+  const std::string mark = ".partial-" + std::to_string(pid);
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    const std::size_t at = name.find(mark);
+    if (at != std::string::npos &&
+        (at + mark.size() == name.size() || name[at + mark.size()] == '-'))
+      return entry.path();
+  }
   return {};
 }
 
