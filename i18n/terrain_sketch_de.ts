@@ -54,6 +54,11 @@
         <translation>%1 muss ein GeoTIFF (.tif) sein: %2 hat ein anderes Format.</translation>
     </message>
     <message>
+        <location filename="../plugin/dem_view_algorithm.cpp" line="135" />
+        <source>%1, band %2</source>
+        <translation>%1, Band %2</translation>
+    </message>
+    <message>
         <location filename="../plugin/dem_view_algorithm.cpp" line="148" />
         <source>Waiting for another run writing %1.</source>
         <translation>Warte auf einen anderen Lauf, der %1 schreibt.</translation>
@@ -456,7 +461,7 @@
 <context>
     <name>QmlStyler</name>
     <message>
-        <location filename="../plugin/layer_style.cpp" line="28" />
+        <location filename="../plugin/layer_style.cpp" line="33" />
         <source>Could not apply style %1: %2</source>
         <translation>Stil %1 konnte nicht angewendet werden: %2</translation>
     </message>
@@ -965,6 +970,46 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <location filename="../plugin/silhouettes_algorithm.cpp" line="220" />
         <source>Processing the DEM in %1 strips of %2 profiles.</source>
         <translation>Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="258" />
+        <source>from %L1°</source>
+        <translation>von %L1°</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="260" />
+        <source>Factual silhouettes, %1</source>
+        <translation>Faktische Silhouetten, %1</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="262" />
+        <source>Formulated silhouettes, %1</source>
+        <translation>Formulierte Silhouetten, %1</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="269" />
+        <source>%1. Seen from %L2° (azimuth), vertical exaggeration %L3, base slope %L4 %; %5: row %L6 %, column %L7 %, control point %L8 %; %9. Terrain Sketch %10.</source>
+        <translation>%1. Gesehen aus %L2° (Azimut), Überhöhung %L3, Grundneigung %L4 %; %5: Zeile %L6 %, Spalte %L7 %, Kontrollpunkt %L8 %; %9. Terrain Sketch %10.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="275" />
+        <source>the thesis's slope filter</source>
+        <translation>der Neigungsfilter der Dissertation</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="276" />
+        <source>the slope filter adapted to the DEM</source>
+        <translation>der an das DGM angepasste Neigungsfilter</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="280" />
+        <source>drawn strokes</source>
+        <translation>gezeichnete Striche</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="280" />
+        <source>the thesis's exact strokes</source>
+        <translation>die exakten Striche der Dissertation</translation>
     </message>
 </context>
 <context>

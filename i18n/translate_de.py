@@ -8,6 +8,16 @@ import sys
 import xml.etree.ElementTree as ET
 
 GERMAN = {
+    "%1, band %2": "%1, Band %2",
+    "from %L1°": "von %L1°",
+    "Factual silhouettes, %1": "Faktische Silhouetten, %1",
+    "Formulated silhouettes, %1": "Formulierte Silhouetten, %1",
+    "%1. Seen from %L2° (azimuth), vertical exaggeration %L3, base slope %L4 %; %5: row %L6 %, column %L7 %, control point %L8 %; %9. Terrain Sketch %10.":
+        "%1. Gesehen aus %L2° (Azimut), Überhöhung %L3, Grundneigung %L4 %; %5: Zeile %L6 %, Spalte %L7 %, Kontrollpunkt %L8 %; %9. Terrain Sketch %10.",
+    "the thesis's slope filter": "der Neigungsfilter der Dissertation",
+    "the slope filter adapted to the DEM": "der an das DGM angepasste Neigungsfilter",
+    "drawn strokes": "gezeichnete Striche",
+    "the thesis's exact strokes": "die exakten Striche der Dissertation",
     "Internal error: no output set for %1.": "Interner Fehler: keine Ausgabemenge für %1.",
     "%1 must be a GeoTIFF (.tif): %2 is another format.":
         "%1 muss ein GeoTIFF (.tif) sein: %2 hat ein anderes Format.",

@@ -130,9 +130,9 @@ bool DemViewAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
   refuseClashingOutputs(parameters, context);
   QgsRasterLayer* layer = parameterAsRasterLayer(parameters, QStringLiteral("INPUT"), context);
   if (!layer) throw QgsProcessingException(invalidRasterError(parameters, QStringLiteral("INPUT")));
-  mRaster = std::make_unique<RasterGrid>(
-      layer, parameterAsInt(parameters, QStringLiteral("BAND"), context),
-      context.transformContext());
+  const int band = parameterAsInt(parameters, QStringLiteral("BAND"), context);
+  mRaster = std::make_unique<RasterGrid>(layer, band, context.transformContext());
+  mDemName = tr("%1, band %2").arg(layer->name()).arg(band);
   for (const QString& note : mRaster->notes()) {
     if (feedback) feedback->pushWarning(note);
   }

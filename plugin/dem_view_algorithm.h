@@ -77,6 +77,8 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
                                   double from, double to);
   // The prepared raster, not read yet (for reading strip by strip).
   RasterGrid& preparedRaster() { return *mRaster; }
+  // The DEM as the user knows it: its layer's name and band ("jacksboro_utm16n, band 1").
+  const QString& demName() const { return mDemName; }
 
  private:
   // Throws when an output would write into the file of a raster the algorithm reads, or two
@@ -86,6 +88,7 @@ class DemViewAlgorithm : public QgsProcessingAlgorithm {
   void refuseClashingOutputs(const QVariantMap& parameters, QgsProcessingContext& context) const;
 
   std::unique_ptr<RasterGrid> mRaster;
+  QString mDemName;
   double mAzimuth = 90;
   std::size_t mWritten = 0;
 };

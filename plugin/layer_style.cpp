@@ -1,7 +1,10 @@
 #include "plugin/layer_style.h"
 
+#include <qgsexpressioncontextutils.h>
+#include <qgslayermetadata.h>
 #include <qgsmaplayer.h>
 #include <qgsprocessingfeedback.h>
+#include <qgsproject.h>
 #include <qgsrasterlayer.h>
 
 #include <QCoreApplication>
@@ -17,11 +20,13 @@ class QmlStyler : public QgsProcessingLayerPostProcessorInterface {
   Q_DECLARE_TR_FUNCTIONS(QmlStyler)
 
  public:
-  QmlStyler(const QString& qmlPath, RampRange range) : mQmlPath(qmlPath), mRange(range) {}
+  QmlStyler(const QString& qmlPath, RampRange range, const RunNote& note)
+      : mQmlPath(qmlPath), mRange(range), mNote(note) {}
 
-  void postProcessLayer(QgsMapLayer* layer, QgsProcessingContext&,
+  void postProcessLayer(QgsMapLayer* layer, QgsProcessingContext& context,
                         QgsProcessingFeedback* feedback) override {
     if (!layer) return;
+    record(*layer, context.project());
     bool ok = false;
     const QString message = layer->loadNamedStyle(mQmlPath, ok);
     if (!ok && feedback) {
@@ -37,18 +42,35 @@ class QmlStyler : public QgsProcessingLayerPostProcessorInterface {
   }
 
  private:
+  void record(QgsMapLayer& layer, QgsProject* project) const {
+    if (mNote.abstract.isEmpty()) return;
+    QgsLayerMetadata metadata = layer.metadata();
+    metadata.setTitle(mNote.title);
+    metadata.setAbstract(mNote.abstract);
+    layer.setMetadata(metadata);
+    if (!mNote.sketch || !project) return;
+    QgsExpressionContextUtils::setProjectVariable(project, QStringLiteral("terrain_sketch_layer"),
+                                                  layer.id());
+    QgsExpressionContextUtils::setProjectVariable(project, QStringLiteral("terrain_sketch_note"),
+                                                  mNote.abstract);
+  }
+
   QString mQmlPath;
   RampRange mRange;
+  RunNote mNote;
 };
 
 }  // namespace
 
 void styleOnCompletion(QgsProcessingContext& context, const QString& destinationId,
-                       const QString& style, RampRange range) {
+                       const QString& style, RampRange range, const RunNote& note) {
   if (destinationId.isEmpty() || !context.willLoadLayerOnCompletion(destinationId)) return;
   const QString qml = stylePath(style);
   if (!QFileInfo::exists(qml)) return;
-  context.layerToLoadOnCompletionDetails(destinationId).setPostProcessor(new QmlStyler(qml, range));
+  QgsProcessingContext::LayerDetails& details =
+      context.layerToLoadOnCompletionDetails(destinationId);
+  if (!note.title.isEmpty()) details.name = note.title;  // the layer's name says the view
+  details.setPostProcessor(new QmlStyler(qml, range, note));
 }
 
 }  // namespace tsk::plugin

@@ -13,8 +13,20 @@ enum class RampRange {
   data,   // from its own values, 2 % to 98 % of them: low relief shows as clearly as high
 };
 
-// Main thread: if QGIS will load `destinationId` on completion, applies styles/<style>.qml to it.
+// What a loaded output records of the run that made it: its layer's title and abstract (Layer
+// Properties > Metadata). For a sketch's factual strokes, the project's variables a print layout
+// reads too: @terrain_sketch_layer (the layer's id, whose extent the layout template's map
+// follows) and @terrain_sketch_note (the abstract, the template's note).
+struct RunNote {
+  QString title;
+  QString abstract;
+  bool sketch = false;
+};
+
+// Main thread: if QGIS will load `destinationId` on completion, applies styles/<style>.qml to it,
+// and `note` when it has an abstract.
 void styleOnCompletion(QgsProcessingContext& context, const QString& destinationId,
-                       const QString& style, RampRange range = RampRange::style);
+                       const QString& style, RampRange range = RampRange::style,
+                       const RunNote& note = {});
 
 }  // namespace tsk::plugin

@@ -13,6 +13,7 @@
 
 #include <QDomDocument>
 #include <QFile>
+#include <cmath>
 
 #include "plugin_test_support.h"
 
@@ -76,7 +77,7 @@ TEST_CASE("drawn strokes come out as LineString M and their styles draw them", "
   CHECK(drawn < exact * 2);
 }
 
-TEST_CASE("the A3 layout template holds the sketch map, its legend and a scale bar",
+TEST_CASE("the A3 layout template holds the sketch map, a key, a north arrow and a scale bar",
           "[plugin][layout]") {
   QFile file(QStringLiteral(TSK_PLUGIN_DIR "/layouts/terrain_sketch_a3.qpt"));
   REQUIRE(file.open(QIODevice::ReadOnly));
@@ -94,7 +95,17 @@ TEST_CASE("the A3 layout template holds the sketch map, its legend and a scale b
   const auto* map = qobject_cast<QgsLayoutItemMap*>(layout.itemById(QStringLiteral("sketch")));
   REQUIRE(map != nullptr);
   CHECK(map->rect().width() > 300);
-  CHECK(qobject_cast<QgsLayoutItemLegend*>(layout.itemById(QStringLiteral("legend"))) != nullptr);
+  // A finite extent of its own (it was NaN: the map stayed grey, and Set to Map Canvas Extent did
+  // nothing) in the frame's proportions, and one that follows the strokes once a run names them.
+  const QgsRectangle extent = map->extent();
+  CHECK((std::isfinite(extent.width()) && extent.width() > 0));
+  CHECK(extent.width() / extent.height() == Approx(map->rect().width() / map->rect().height()));
+  CHECK(map->dataDefinedProperties().isActive(QgsLayoutObject::MapXMin));
+  // A key of the two stroke classes, not a legend listing the hillshade's ramp.
+  for (QGraphicsItem* item : layout.items())
+    CHECK(dynamic_cast<QgsLayoutItemLegend*>(item) == nullptr);
+  for (const char* id : {"key_label_factual", "key_label_formulated", "note", "credits", "north"})
+    CHECK(layout.itemById(QString::fromLatin1(id)) != nullptr);
   // (Debian's qgslayoutitemscalebar.h includes a header it does not ship: the type will do.)
   const QgsLayoutItem* scale = layout.itemById(QStringLiteral("scale"));
   REQUIRE(scale != nullptr);
