@@ -9,6 +9,10 @@ std::string note_text(const io::DemNote& note) {
   switch (note.code) {
     case io::DemNoteCode::geographic_crs:
       return "the CRS is geographic";
+    case io::DemNoteCode::colour_image:
+      return "band " + number(1) + " of its " + number(0) +
+             " is a colour channel (red, green, blue or alpha) of an image, not heights: give a "
+             "DEM";
     case io::DemNoteCode::no_crs:
       return "no CRS: coordinates are written without one, cell sizes taken as metres";
     case io::DemNoteCode::mercator_scaled:
@@ -43,6 +47,8 @@ std::string note_text(const io::DemNote& note) {
 
 std::string refusal_text(const io::DemRefused& refused) {
   const io::DemNote& note = refused.note();
+  if (note.code == io::DemNoteCode::colour_image)
+    return "'" + refused.path() + "': " + note_text(note);
   if (note.code != io::DemNoteCode::geographic_crs) return refused.what();
   return "'" + refused.path() +
          "' is in a geographic CRS: its cell sizes are degrees, not metres like its heights. "

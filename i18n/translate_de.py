@@ -8,6 +8,8 @@ import sys
 import xml.etree.ElementTree as ET
 
 GERMAN = {
+    "Band %1 of the raster's %2 is a colour channel (red, green, blue or alpha) of an image, not heights: choose a DEM.":
+        "Band %1 der %2 Bänder des Rasters ist ein Farbkanal (Rot, Grün, Blau oder Alpha) eines Bildes, keine Höhen: wählen Sie ein DGM.",
     "%1, band %2": "%1, Band %2",
     "from %L1°": "von %L1°",
     "Factual silhouettes, %1": "Faktische Silhouetten, %1",

@@ -116,6 +116,13 @@ bool DemViewAlgorithm::checkParameterValues(const QVariantMap& parameters,
     const std::unique_ptr<QgsProcessingAlgorithm> probe(create());
     withCoreErrors(
         [&] { return static_cast<DemViewAlgorithm&>(*probe).readParameters(parameters, context); });
+    // A DEM the run would refuse (a geographic CRS, a colour image) is refused before the run,
+    // where the dialog shows it (it was said in the log after Run).
+    if (QgsRasterLayer* layer =
+            parameterAsRasterLayer(parameters, QStringLiteral("INPUT"), context)) {
+      const RasterGrid probeGrid(layer, parameterAsInt(parameters, QStringLiteral("BAND"), context),
+                                 context.transformContext());
+    }
   } catch (const QgsProcessingException& e) {
     if (message) *message = e.what();
     return false;

@@ -53,6 +53,10 @@ io::DemFacts layerFacts(QgsRasterLayer& layer, int band,
   f.cell_y = layer.extent().height() / layer.height();
   f.bands = layer.bandCount();
   f.band = band;
+  // QGIS numbers colour interpretations as GDAL does (3 to 6: red, green, blue, alpha), whatever
+  // its enum's name in this version.
+  const int colour = static_cast<int>(layer.dataProvider()->colorInterpretation(band));
+  f.colour_band = colour >= 3 && colour <= 6;
   const QgsCoordinateReferenceSystem crs = layer.crs();
   f.has_crs = crs.isValid();
   if (f.has_crs) {
@@ -149,6 +153,11 @@ QString RasterGrid::noteText(const io::DemNote& note) {
   const auto number = [&note](std::size_t k) { return note.numbers.at(k); };
   const QString text = QString::fromStdString(note.text);
   switch (note.code) {
+    case io::DemNoteCode::colour_image:
+      return tr("Band %1 of the raster's %2 is a colour channel (red, green, blue or alpha) of an "
+                "image, not heights: choose a DEM.")
+          .arg(number(1))
+          .arg(number(0));
     case io::DemNoteCode::geographic_crs:
       return tr("The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres "
                 "like its heights. Reproject it to a metric CRS first, for example with Raster > "

@@ -59,6 +59,17 @@ void write_tiff(const std::string& path, int rows, int cols, int bands, F f,
   GDALClose(ds);
 }
 
+// Marks the first three bands of the raster at `path` as an image's red, green and blue.
+inline void mark_rgb(const std::string& path) {
+  GDALAllRegister();
+  GDALDataset* ds = static_cast<GDALDataset*>(GDALOpen(path.c_str(), GA_Update));
+  if (!ds) throw std::runtime_error("cannot open " + path);
+  for (const auto& [band, colour] :
+       {std::pair{1, GCI_RedBand}, std::pair{2, GCI_GreenBand}, std::pair{3, GCI_BlueBand}})
+    ds->GetRasterBand(band)->SetColorInterpretation(colour);
+  GDALClose(ds);
+}
+
 // Copies the raster `from` into a new GeoPackage `to`, as a DEM kept in one.
 inline void copy_raster_to_gpkg(const std::string& from, const std::string& to) {
   GDALAllRegister();

@@ -512,6 +512,17 @@ TEST_CASE("edge-case rasters give valid, possibly empty, outputs", "[cli][robust
       CHECK(ds->GetRasterXSize() >= 1);
     }
   }
+  // An RGB image is refused whichever band is named (band 1 gave strokes of nonsense).
+  test::write_tiff(
+      dir / "rgb.tif", 40, 40, 3, [](int b, int r, int c) { return hill(b, r, c) * b; }, kNorthUp,
+      32616);
+  test::mark_rgb(dir / "rgb.tif");
+  for (const char* band : {"1", "3"}) {
+    const CliRun rgb = run_cli({"silhouettes", dir / "rgb.tif", dir / "rgb.gpkg", "--band", band});
+    CHECK(rgb.code == 1);
+    CHECK_THAT(rgb.err, Catch::Contains("is a colour channel") && Catch::Contains("give a DEM"));
+  }
+  CHECK_FALSE(std::filesystem::exists(dir / "rgb.gpkg"));
   const CliRun band2 = run_cli({"silhouettes", dir / "multi.tif", dir / "b2.gpkg", "--band", "2"});
   INFO(band2.err);
   CHECK(band2.code == 0);

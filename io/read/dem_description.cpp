@@ -113,6 +113,9 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
   facts.rows = dem.rows, facts.cols = dem.cols;
   facts.cell_x = dem.geotransform.a[1], facts.cell_y = -dem.geotransform.a[5];
   facts.bands = dataset.GetRasterCount(), facts.band = options.band;
+  const GDALColorInterp colour = dataset.GetRasterBand(options.band)->GetColorInterpretation();
+  facts.colour_band = colour == GCI_RedBand || colour == GCI_GreenBand || colour == GCI_BlueBand ||
+                      colour == GCI_AlphaBand;
   const OGRSpatialReference* srs = dataset.GetSpatialRef();
   if (srs) add_crs_facts(*srs, dem, facts);
   add_value_facts(*dataset.GetRasterBand(options.band), facts);

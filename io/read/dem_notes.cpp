@@ -62,6 +62,14 @@ DemAssessment assess_dem(const DemFacts& f) {
                        f.crs_id});
     return a;
   }
+  if (f.colour_band) {
+    // Sketched, a photograph's red channel gave a thousand strokes of nonsense without a word.
+    a.refused = true;
+    a.notes.push_back({DemNoteCode::colour_image,
+                       {static_cast<double>(f.bands), static_cast<double>(f.band)},
+                       {}});
+    return a;
+  }
   if (!f.has_crs) {
     a.notes.push_back({DemNoteCode::no_crs, {}, {}});
   } else {

@@ -13,6 +13,7 @@ struct DemFacts {
   std::size_t rows = 0, cols = 0;
   double cell_x = 0, cell_y = 0;  // cell width and height in map units
   int bands = 1, band = 1;
+  bool colour_band = false;  // the band is an image's red, green, blue or alpha channel
   bool has_crs = false;
   bool geographic = false;
   std::string crs_id;         // the CRS's authority id or name, for messages
@@ -28,6 +29,7 @@ struct DemFacts {
 
 enum class DemNoteCode {
   geographic_crs,      // refused; numbers: the EPSG code of the centre's UTM zone
+  colour_image,        // refused: the band is a colour channel; numbers: the band count, the band
   no_crs,              // cell sizes taken as metres, outputs without a CRS
   mercator_scaled,     // numbers: ground metres per map unit at the centre
   unit_not_metre,      // text: the unit's name

@@ -249,3 +249,25 @@ TEST_CASE("the band asked for is the band read from the file", "[plugin][strips]
   }
   CHECK(compared > 100);
 }
+
+TEST_CASE("an RGB image is refused before the run, in the dialog's check", "[plugin][robustness]") {
+  QTemporaryDir dir;
+  const QString rgb = dir.filePath("rgb.tif");
+  test::write_tiff(
+      rgb.toStdString(), 40, 40, 3, [](int b, int r, int c) { return 100.f * b + r + c; },
+      test::kNorthUp, 32616);
+  test::mark_rgb(rgb.toStdString());
+  std::unique_ptr<QgsProcessingAlgorithm> alg(algorithm()->create());
+  QgsProcessingContext context;
+  QString message;
+  const QVariantMap parameters = {{"INPUT", rgb},
+                                  {"BAND", 1},
+                                  {"FACTUAL", dir.filePath("f.gpkg")},
+                                  {"FORMULATED", dir.filePath("m.gpkg")}};
+  CHECK_FALSE(alg->checkParameterValues(parameters, context, &message));
+  INFO(message.toStdString());
+  CHECK(message.contains("colour channel"));
+  const Run run = runAlgorithm(rgb, {}, dir);
+  CHECK_FALSE(run.ok);
+  CHECK(run.error.contains("colour channel"));
+}
