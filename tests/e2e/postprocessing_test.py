@@ -78,6 +78,22 @@ for alg_id, inputs in CASES:
     passed, failed = passed + ok, failed + (not ok)
     print(("ok      " if ok else "FAILED  ") + alg_id +
           ("" if ok else f": errors {errors}, not loaded {missing}"), flush=True)
+# The peaks in sight come labelled: the style's label settings are on once the layer loads.
+peaks = os.path.join(os.environ.get("TMPDIR", "/tmp"), "tsk_postprocessing_peaks.geojson")
+with open(peaks, "w") as f:
+    f.write('{"type": "FeatureCollection", "crs": {"type": "name", "properties": {"name": '
+            '"urn:ogc:def:crs:EPSG::32616"}}, "features": [{"type": "Feature", "properties": '
+            '{"name": "Summit"}, "geometry": {"type": "Point", "coordinates": '
+            '[749008.1394, 4009477.9308]}}, {"type": "Feature", "properties": {"name": "East"}, '
+            '"geometry": {"type": "Point", "coordinates": [758000, 4012000]}}]}')
+errors, missing = run_as_dialog("panorama", {"INPUT": SAMPLE, "OBSERVER": SUMMIT,
+                                             "OBSERVER_HEIGHT": 2, "PEAKS": peaks})
+labelled = [layer for layer in QgsProject.instance().mapLayers().values()
+            if layer.type() == layer.VectorLayer and "name" in layer.fields().names()]
+ok = not errors and not missing and len(labelled) == 1 and labelled[0].labelsEnabled()
+passed, failed = passed + ok, failed + (not ok)
+print(("ok      " if ok else "FAILED  ") + "panorama peaks labelled" +
+      ("" if ok else f": errors {errors}, not loaded {missing}, layers {labelled}"), flush=True)
 print(f"post-processing: {passed} passed, {failed} failed")
 app.exitQgis()
 sys.exit(1 if failed else 0)
