@@ -1,8 +1,10 @@
 // terrain-sketch silhouettes: the strokes, written as they complete.
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <ostream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -10,6 +12,7 @@
 #include "cli/commands.h"
 #include "cli/dem_note_text.h"
 #include "cli/interrupt.h"
+#include "core/method/run_note.h"
 #include "io/pages/preview.h"
 #include "io/write/output_files.h"
 #include "io/write/vector_writer.h"
@@ -33,10 +36,18 @@ void print_timings(const StageTimings& t, double write_s, double commit_s, std::
 // The preview draws the strokes over the whole DEM turned to the view, held for the run.
 io::PlotterReport write_preview(const Options& o, SilhouetteResult& result,
                                 std::vector<Stroke>&& drawn, const io::Dem& whole,
-                                const ProgressFn& progress) {
+                                const std::string& note, const ProgressFn& progress) {
   result.strokes = std::move(drawn);
+  io::PageOptions page = o.page;
+  page.description = note;
   return io::write_preview(o.preview, result, whole.oriented, whole.frame, whole.geotransform,
-                           o.params.view, o.params.geometry, o.page, progress);
+                           o.params.view, o.params.geometry, page, progress);
+}
+
+// The run in a sentence, for the outputs' metadata.
+std::string note_of(const Options& o, const FilterReport& filter) {
+  return run_note({std::filesystem::path(o.input).filename().string(), o.dem.band, o.params.view,
+                   filter, o.params.strokes.drawn(), TSK_VERSION});
 }
 
 // The DEM of a run: held whole once for a preview, which draws over it too (refused when too
@@ -90,13 +101,15 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
         });
         produced = Clock::now();
       },
-      io::kStrokeLayer, o.params.strokes.drawn());
+      io::kStrokeLayer, o.params.strokes.drawn(), [&] { return note_of(o, result.filter); });
   const double commit_s = since(produced);
   // All three go in place together when the run has done (io/write/output_set.h).
   stop_if_interrupted();
   if (!o.stats_json.empty())
     io::write_text_file(o.stats_json, stats_json(result.stats, result.filter));
-  if (preview) plotter = write_preview(o, result, std::move(drawn), dem.info(), progress);
+  if (preview)
+    plotter =
+        write_preview(o, result, std::move(drawn), dem.info(), note_of(o, result.filter), progress);
   print_filter(result.filter, err);
   if (o.page.plotter) print_plotter(plotter, !o.page.size.empty(), err);
   if (o.timings) print_timings(result.timings, write_s, commit_s, err);

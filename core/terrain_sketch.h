@@ -15,7 +15,8 @@
 //                     scan_order.h (the strokes handed on in the order of the scan)
 //   plan_oblique.h    [1.9] the plan-oblique shift and its reference height
 //   silhouettes.h     [2] all stages in order with stage statistics and timings
-//   run_recipes.h     the door every front end goes through (with sketch_silhouettes)
+//   run_recipes.h     the door every front end goes through (with sketch_silhouettes);
+//                     run_note.h (the run in a sentence, for the outputs' metadata)
 //
 // drawn/: drawn strokes (docs/DRAWN_STROKES.md): grouping, joining, smoothing, weights, outlines,
 //   the pen plotter's order, and the three drawing threads (drawing_pipeline.h).

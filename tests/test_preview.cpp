@@ -1,5 +1,7 @@
 // The command line's --preview as vector art: the SVG parsed back with GDAL's XML parser.
 #include <cpl_minixml.h>
+#include <gdal_priv.h>
+#include <ogrsf_frmts.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -17,6 +19,7 @@
 #include "io/pages/filter_diagram_page.h"
 #include "io/pages/preview.h"
 #include "io/read/dem_reader.h"
+#include "io/read/gdal_util.h"
 
 using namespace tsk::test;
 
@@ -283,4 +286,24 @@ TEST_CASE("a PNG preview reports its drawing, stops when told and is bounded in 
   CHECK(run_cli({"silhouettes", kSample, dir / "h.gpkg", "--page", "5000x5000", "--preview",
                  dir / "huge.svg"})
             .code == 0);
+}
+
+TEST_CASE("the strokes and the vector art record the run that made them", "[cli][preview]") {
+  ScratchDir dir("run_note");
+  const CliRun run = run_cli({"silhouettes", kSample, dir / "s.gpkg", "--azimuth", "250",
+                              "--filter", "fixed", "--preview", dir / "p.svg"});
+  REQUIRE(run.code == 0);
+  const std::string expected =
+      "jacksboro_utm16n.tif, band 1. Seen from 250\xc2\xb0 (azimuth), vertical exaggeration 2.5, "
+      "base slope 40 %; the thesis's slope filter: row 20 %, column 12 %, control point 8.75 %; "
+      "drawn strokes. Terrain Sketch";
+  CHECK_THAT(read_all(dir / "p.svg"), Catch::Contains("<desc>" + expected));
+  // A GeoPackage keeps it as its layer's description (gpkg_contents), as GDAL reads it.
+  GDALAllRegister();
+  tsk::io::DatasetPtr ds(static_cast<GDALDataset*>(GDALOpenEx(
+      (dir / "s.gpkg").c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+  REQUIRE(ds);
+  const char* description = ds->GetLayer(0)->GetMetadataItem("DESCRIPTION");
+  REQUIRE(description != nullptr);
+  CHECK_THAT(std::string(description), Catch::Contains(expected));
 }

@@ -156,8 +156,9 @@ PlotterReport write_preview(const std::string& path, const SilhouetteResult& res
                             const GeoTransform& geotransform, const ViewParams& view,
                             Geometry geometry, const PageOptions& options,
                             const ProgressFn& progress) {
-  return write_page(path, lay_out_sketch(result, z, frame, geotransform, view, geometry, options),
-                    options, progress);
+  SketchPage page = lay_out_sketch(result, z, frame, geotransform, view, geometry, options);
+  page.description = options.description;
+  return write_page(path, page, options, progress);
 }
 
 PlotterReport write_page(const std::string& path, const SketchPage& page,

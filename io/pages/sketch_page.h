@@ -14,6 +14,7 @@ struct PageOptions {
   std::string size;      // A4, A3, A2, A1, A0, letter, tabloid or WxH in millimetres; empty: none
   double scale = 0.0;    // the page at 1:scale of the ground; 0: the sketch fits the page
   bool plotter = false;  // single-line paths for a pen plotter (vector art only)
+  std::string description;  // of the run (run_note.h), kept in vector art
 };
 
 // A page size in millimetres, portrait; throws Error naming what is wrong.
@@ -38,8 +39,9 @@ struct PageLabel {
 struct SketchPage {
   double width = 0.0, height = 0.0;  // page units: millimetres with a page size, else pixels
   bool millimetres = false;
-  std::vector<PagePath> paths;                                    // in the order of the strokes
-  std::vector<PageLabel> labels;                                  // a panorama's peaks
+  std::vector<PagePath> paths;    // in the order of the strokes
+  std::vector<PageLabel> labels;  // a panorama's peaks
+  std::string description;        // of the run (run_note.h): the vector art's <desc>
   double label_size() const { return millimetres ? 3.0 : 13.0; }  // the text's height
 };
 

@@ -165,6 +165,7 @@ void write_svg(const std::string& path, const SketchPage& page, const PlotterPag
          "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\""
       << page.width << unit << "\" height=\"" << page.height << unit << "\" viewBox=\"0 0 "
       << page.width << " " << page.height << "\">\n";
+  if (!page.description.empty()) svg << "<desc>" << xml_text(page.description) << "</desc>\n";
   if (!plotter) svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (std::size_t c = 0; c < 2; ++c) {
     const ClassLook l = look(kClassOrder[c]);

@@ -245,7 +245,8 @@ void fill_line_layer(GDALDataset& ds, const std::string& path, const std::string
 // GeoPackage is filled through SQLite and gets its spatial index in bulk; other formats through
 // OGR.
 void write_line_layers(const std::string& path, const std::string& format,
-                       const std::vector<LineLayer>& layers) {
+                       const std::vector<LineLayer>& layers,
+                       const std::function<std::string()>& describe = {}) {
   const std::string driver_name = check_vector_output(path, format);
   GdalErrorCapture capture;
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
@@ -265,6 +266,14 @@ void write_line_layers(const std::string& path, const std::string& format,
     if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
     const bool transaction = ds->StartTransaction() == OGRERR_NONE;
     for (const LineLayer& layer : layers) fill_line_layer(*ds, path, driver_name, layer, capture);
+    if (describe && database) {
+      // The layers' description (gpkg_contents), and the file's (gpkg_metadata).
+      const std::string description = describe();
+      for (const LineLayer& layer : layers)
+        if (OGRLayer* written = ds->GetLayerByName(layer.name.c_str()))
+          written->SetMetadataItem("DESCRIPTION", description.c_str());
+      ds->SetMetadataItem("TERRAIN_SKETCH_RUN", description.c_str());
+    }
     if (transaction) check(ds->CommitTransaction(), "committing '" + path + "'", capture);
     CPLErrorReset();
     ds.reset();  // closing flushes: a failure here means an incomplete file
@@ -294,8 +303,10 @@ void write_line_layers(const std::string& path, const std::string& format,
 void write_line_layer(const std::string& path, const std::string& format,
                       const std::string& srs_wkt, const std::string& layer_name,
                       const std::vector<Field>& fields,
-                      const std::function<void(LineOutput&)>& add_features, bool measured = false) {
-  write_line_layers(path, format, {{layer_name, srs_wkt, fields, add_features, measured}});
+                      const std::function<void(LineOutput&)>& add_features, bool measured = false,
+                      const std::function<std::string()>& describe = {}) {
+  write_line_layers(path, format, {{layer_name, srs_wkt, fields, add_features, measured}},
+                    describe);
 }
 
 // The fields of a stroke layer: class, cells and stroke_real_fields().
@@ -309,7 +320,8 @@ std::vector<Field> stroke_fields() {
 
 void write_strokes(const std::string& path, const std::string& format, const std::string& srs_wkt,
                    const std::function<void(const StrokeWriter& write)>& produce,
-                   const std::string& layer_name, bool weighted) {
+                   const std::string& layer_name, bool weighted,
+                   const std::function<std::string()>& describe) {
   write_line_layer(
       path, format, srs_wkt, layer_name, stroke_fields(),
       [&](LineOutput& output) {
@@ -321,7 +333,7 @@ void write_strokes(const std::string& path, const std::string& format, const std
           output.add(s.points, s.weights);
         });
       },
-      weighted);
+      weighted, describe);
 }
 
 void write_strokes(const std::string& path, const std::string& format,

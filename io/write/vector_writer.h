@@ -38,9 +38,12 @@ using StrokeWriter = std::function<void(const Stroke& stroke)>;
 // produce(write), which hands every stroke to `write` as it has it: strokes need not be held
 // until they are written. Whole or not at all: if produce throws, nothing is left behind.
 // weighted: the strokes are drawn ones, written as LineString M with their weights as M.
+// describe, when given, is asked once the strokes are all made for the file's description (a
+// GeoPackage keeps it in its metadata tables; formats without metadata drop it).
 void write_strokes(const std::string& path, const std::string& format, const std::string& srs_wkt,
                    const std::function<void(const StrokeWriter& write)>& produce,
-                   const std::string& layer_name = kStrokeLayer, bool weighted = false);
+                   const std::string& layer_name = kStrokeLayer, bool weighted = false,
+                   const std::function<std::string()>& describe = {});
 
 // Writes `strokes` to `path`, whole or not at all; with M values if they are drawn strokes.
 void write_strokes(const std::string& path, const std::string& format,

@@ -1,0 +1,27 @@
+// The run in one sentence, for what its outputs record of it (a GeoPackage's description, the
+// vector art's <desc>): the DEM, the view, the filter it ran and the strokes. The QGIS plugin
+// words the same in the user's language.
+#pragma once
+
+#include <string>
+
+#include "core/method/adaptive_filter.h"
+#include "core/method/params.h"
+
+namespace tsk {
+
+struct RunFacts {
+  std::string dem;  // as the user named it: a file's name, a layer's
+  int band = 1;
+  ViewParams view;
+  FilterReport filter;  // the filter the run ran
+  bool drawn = true;    // drawn strokes, or the thesis's exact ones
+  std::string version;  // of Terrain Sketch
+};
+
+// "jacksboro_utm16n.tif, band 1. Seen from 250° (azimuth), vertical exaggeration 2.5, base slope
+// 40 %; the slope filter adapted to the DEM: row 20 %, column 12 %, control point 8.73 %; drawn
+// strokes. Terrain Sketch 0.1.0."
+std::string run_note(const RunFacts& facts);
+
+}  // namespace tsk
