@@ -262,6 +262,11 @@ const std::vector<OptionSpec> kOptionTable = {
      TSK_SET(panorama.azimuth_to, parse_number)},
     {"--refraction", "K", kPanoramaSection, "refraction coefficient, 0 <= K < 1 (default 0.13)",
      kPanorama, TSK_SET(panorama.refraction, parse_number)},
+    {"--panorama-exaggeration", "K", kPanoramaSection,
+     "the panorama layer's elevation angles drawn K times as tall as its\n"
+     "azimuths are wide, 1-50 (default 0: chosen, up to 5, so that a wide\n"
+     "field is no flat strip)",
+     kPanorama, TSK_SET(panorama.exaggeration, parse_number)},
     {"--visibility", "FILE", kPanoramaSection,
      "write a Byte GeoTIFF on the DEM's grid: 1 visible, 0 hidden, 255 out\n"
      "of range",

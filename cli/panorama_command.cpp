@@ -45,11 +45,15 @@ io::HeldDemFile read_whole_dem(const Options& o, std::ostream& err) {
 }
 
 // The outputs, put in place together when the run has done (io/write/output_set.h).
-void write_outputs(const Options& o, const io::Dem& dem, const PanoramaResult& result,
-                   const std::vector<PeakLeader>& leaders, const FilterReport& report,
-                   const ProgressFn& progress, std::ostream& err) {
+void write_outputs(const Options& o, const io::Dem& dem, const PanoramaRun& run,
+                   const std::vector<PeakLeader>& leaders, const ProgressFn& progress,
+                   std::ostream& err) {
+  const PanoramaResult& result = run.result;
   const std::vector<PeakLeader>* peaks = o.peaks.empty() ? nullptr : &leaders;
-  io::write_panorama_strokes(o.output, o.format, result.strokes, dem.srs_wkt, peaks);
+  io::write_panorama_strokes(o.output, o.format, result.strokes, dem.srs_wkt, peaks,
+                             run.exaggeration);
+  err << "note: the panorama layer draws its elevation angles " << run.exaggeration
+      << " times as tall as its azimuths are wide (--panorama-exaggeration)\n";
   stop_if_interrupted();
   if (!o.visibility.empty()) {
     io::write_visibility(
@@ -57,7 +61,8 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaResult& r
         visibility_raster(result, dem.rows, dem.cols, dem.geotransform, o.params.threads),
         dem.geotransform, dem.srs_wkt);
   }
-  if (!o.stats_json.empty()) io::write_text_file(o.stats_json, stats_json(result.stats, report));
+  if (!o.stats_json.empty())
+    io::write_text_file(o.stats_json, stats_json(result.stats, run.filter));
   if (!o.preview.empty()) {
     const io::PanoramaPage page = lay_out_panorama(result, o.params.strokes, o.page, leaders);
     io::write_page(o.preview, page.page, o.page, progress);
@@ -86,7 +91,7 @@ int panorama(const Args& args, std::ostream& out, std::ostream& err, const Progr
   // The outputs need the DEM's grid and georeferencing, not its heights: freed, they make room
   // for the visibility raster.
   held.dem.oriented = HeightGrid();
-  write_outputs(o, dem, result, leaders, run.filter, progress, err);
+  write_outputs(o, dem, run, leaders, progress, err);
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes
       << " formulated strokes from " << result.rays.rays << " rays of " << result.rays.samples

@@ -255,174 +255,198 @@
 <context>
     <name>PanoramaAlgorithm</name>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="43" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="46" />
         <source>Panorama sketch</source>
         <translation>Panoramaskizze</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="47" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="50" />
         <source>The silhouettes of the terrain seen from a viewpoint, as a panorama board draws them: rays are cast from the observer all round (or over a field of view), every ray a profile of the silhouette method. Factual silhouettes are the occluding edges, the skyline and the ridges in front of it; Formulated silhouettes are back-facing slopes that the sight line, descending onto them, still reaches, kept by the slope filter. Heights are lowered by the earth's curvature, lessened by refraction. The strokes come on the map (the DEM's CRS) and in the panorama (x the azimuth, y the elevation angle, in degrees, without a CRS), far strokes drawn lighter.</source>
         <translation>Die Silhouetten des Geländes von einem Standpunkt aus, wie eine Panoramatafel sie zeichnet: Vom Beobachter werden Strahlen rundum (oder über ein Blickfeld) ausgesandt, jeder Strahl ein Profil der Silhouettenmethode. Faktische Silhouetten sind die verdeckenden Kanten, der Horizont und die Grate davor; formulierte Silhouetten sind abgewandte Hänge, die die Sichtlinie, auf sie hinabfallend, noch erreicht, vom Neigungsfilter ausgewählt. Die Höhen werden um die Erdkrümmung, vermindert durch die Refraktion, abgesenkt. Die Striche entstehen auf der Karte (im KBS des DGM) und im Panorama (x das Azimut, y der Höhenwinkel, in Grad, ohne KBS); ferne Striche sind heller gezeichnet.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="64" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="67" />
         <source>Observer</source>
         <translation>Beobachter</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="65" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="68" />
         <source>Where the viewer stands: click it on the map. It must lie on the DEM, on a cell with data.</source>
         <translation>Wo der Betrachter steht: in der Karte anklicken. Der Punkt muss auf dem DGM liegen, auf einer Zelle mit Daten.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="67" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="70" />
         <source>Observer height (m)</source>
         <translation>Beobachterhöhe (m)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="69" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="72" />
         <source>The eye's height above the ground at the observer, in metres.</source>
         <translation>Die Augenhöhe über dem Boden am Standpunkt, in Metern.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="71" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="74" />
         <source>Range (map units)</source>
         <translation>Reichweite (Karteneinheiten)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="74" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="77" />
         <source>The farthest distance drawn, in the DEM's map units; when not given, the whole DEM.</source>
         <translation>Die größte gezeichnete Entfernung in den Karteneinheiten des DGM; ohne Angabe das ganze DGM.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="77" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="80" />
         <source>Field of view from (degrees)</source>
         <translation>Blickfeld von (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="78" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="81" />
         <source>The field of view turns clockwise from this azimuth (from grid north) to the next. 0 to 360, the default, is all round.</source>
         <translation>Das Blickfeld dreht sich im Uhrzeigersinn von diesem Azimut (von Gitternord) zum nächsten. 0 bis 360, die Vorgabe, ist rundum.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="81" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="84" />
         <source>Field of view to (degrees)</source>
         <translation>Blickfeld bis (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="82" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="85" />
         <source>The azimuth the field of view ends at; equal azimuths make an empty field.</source>
         <translation>Das Azimut, bei dem das Blickfeld endet; gleiche Azimute ergeben ein leeres Blickfeld.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="83" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="86" />
         <source>Refraction coefficient</source>
         <translation>Refraktionskoeffizient</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="85" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="88" />
         <source>How much refraction lessens the earth's curvature (k): heights are lowered by (1 - k) d² / 2R at distance d. 0.13 is the usual value over land.</source>
         <translation>Wie stark die Refraktion die Erdkrümmung vermindert (k): Höhen werden in der Entfernung d um (1 - k) d² / 2R abgesenkt. 0,13 ist der übliche Wert über Land.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="95" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="91" />
+        <source>Panorama exaggeration</source>
+        <translation>Überhöhung des Panoramas</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="92" />
+        <source>How many times as tall as its azimuths are wide the Panorama layer draws its elevation angles, 1 to 50. 0, the default, chooses up to 5 so that a wide field of view is no flat strip. The Panorama layout draws it so.</source>
+        <translation>Wie viel Mal so hoch, wie seine Azimute breit sind, der Panorama-Layer seine Höhenwinkel zeichnet, 1 bis 50. 0, die Voreinstellung, wählt bis zu 5, damit ein weites Blickfeld kein flacher Streifen ist. Das Panorama-Layout zeichnet es so.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="102" />
         <source>Minimum stroke length (samples)</source>
         <translation>Mindestlänge der Striche (Abtastpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="97" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="104" />
         <source>Strokes of fewer samples are dropped.</source>
         <translation>Striche mit weniger Abtastpunkten werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="98" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="105" />
         <source>Formulated chaining window (samples)</source>
         <translation>Suchfenster der formulierten Verkettung (Abtastpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="100" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="107" />
         <source>How far along the next ray a formulated chain may step.</source>
         <translation>Wie weit eine formulierte Kette auf dem nächsten Strahl springen darf.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="102" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="109" />
         <source>Drawn (the default): a stroke is cut where its chain leaps along the rays, since a leap draws no line on the terrain. Exact: the thesis's strokes, each chain whole.</source>
         <translation>Gezeichnet (Standard): ein Strich wird getrennt, wo seine Kette entlang der Strahlen springt, denn ein Sprung zeichnet keine Linie im Gelände. Exakt: die Striche der Dissertation, jede Kette ganz.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="104" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="111" />
         <source>Panorama strokes on the map</source>
         <translation>Panoramastriche auf der Karte</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="106" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="113" />
         <source>The strokes in the DEM's CRS, with their class, distance and azimuths.</source>
         <translation>Die Striche im KBS des DGM, mit ihrer Klasse, Entfernung und ihren Azimuten.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="107" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="114" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="291" />
         <source>Panorama</source>
         <translation>Panorama</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="108" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="115" />
         <source>The same strokes in the panorama: x the azimuth and y the elevation angle, in degrees, without a CRS. Open it in a map of its own.</source>
         <translation>Dieselben Striche im Panorama: x das Azimut und y der Höhenwinkel, in Grad, ohne KBS. In einer eigenen Karte öffnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="111" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="118" />
         <source>Peaks to label</source>
         <translation>Zu beschriftende Gipfel</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="112" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="119" />
         <source>Optional: named points, the summits of a gazetteer. Those whose top the observer sees are labelled in the panorama.</source>
         <translation>Optional: benannte Punkte, die Gipfel eines Ortsverzeichnisses. Die, deren Spitze der Beobachter sieht, werden im Panorama beschriftet.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="115" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="122" />
         <source>Peak name field</source>
         <translation>Namensfeld der Gipfel</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="117" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="124" />
         <source>The field of the peaks holding their names.</source>
         <translation>Das Feld der Gipfel, das ihre Namen enthält.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="118" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="125" />
         <source>Peak labels</source>
         <translation>Gipfelbeschriftungen</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="120" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="127" />
         <source>The peaks in sight as leaders in the panorama, from each top straight up to its label, with the name, distance, azimuth and elevation.</source>
         <translation>Die sichtbaren Gipfel als Hinweislinien im Panorama, von jeder Spitze senkrecht hinauf zu ihrer Beschriftung, mit Name, Entfernung, Azimut und Höhenwinkel.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="122" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="129" />
         <source>Visibility</source>
         <translation>Sichtbarkeit</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="124" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="131" />
         <source>Optional: a raster on the DEM's grid, 1 where the ground is seen, 0 where it is hidden, nodata out of range.</source>
         <translation>Optional: ein Raster auf dem Gitter des DGM, 1 wo der Boden gesehen wird, 0 wo er verdeckt ist, NoData außerhalb der Reichweite.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="139" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="146" />
         <source>The observer lies outside the DEM: choose a point on it.</source>
         <translation>Der Beobachter liegt außerhalb des DGM: einen Punkt darauf wählen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="201" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="210" />
         <source>The peaks have no field '%1' for their names.</source>
         <translation>Die Gipfel haben kein Feld „%1“ für ihre Namen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="259" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="268" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="282" />
+        <source>Seen from %L1, %L2, %L3 m above the ground, from %L4° to %L5° (azimuths from grid north); elevation angles drawn %L6 times as tall as azimuths are wide. Terrain Sketch %7.</source>
+        <translation>Gesehen von %L1, %L2, %L3 m über dem Boden, von %L4° bis %L5° (Azimute von Gitternord); Höhenwinkel %L6-mal so hoch gezeichnet, wie Azimute breit sind. Terrain Sketch %7.</translation>
+    </message>
+</context>
+<context>
+    <name>PanoramaLayout</name>
+    <message>
+        <location filename="../plugin/panorama_layout.cpp" line="87" />
+        <source>%1 10 mm on the page: %L2° of azimuth.</source>
+        <translation>%1 10 mm auf der Seite: %L2° Azimut.</translation>
     </message>
 </context>
 <context>

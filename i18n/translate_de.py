@@ -8,6 +8,12 @@ import sys
 import xml.etree.ElementTree as ET
 
 GERMAN = {
+    "Panorama exaggeration": "Überhöhung des Panoramas",
+    "How many times as tall as its azimuths are wide the Panorama layer draws its elevation angles, 1 to 50. 0, the default, chooses up to 5 so that a wide field of view is no flat strip. The Panorama layout draws it so.":
+        "Wie viel Mal so hoch, wie seine Azimute breit sind, der Panorama-Layer seine Höhenwinkel zeichnet, 1 bis 50. 0, die Voreinstellung, wählt bis zu 5, damit ein weites Blickfeld kein flacher Streifen ist. Das Panorama-Layout zeichnet es so.",
+    "Seen from %L1, %L2, %L3 m above the ground, from %L4° to %L5° (azimuths from grid north); elevation angles drawn %L6 times as tall as azimuths are wide. Terrain Sketch %7.":
+        "Gesehen von %L1, %L2, %L3 m über dem Boden, von %L4° bis %L5° (Azimute von Gitternord); Höhenwinkel %L6-mal so hoch gezeichnet, wie Azimute breit sind. Terrain Sketch %7.",
+    "%1 10 mm on the page: %L2° of azimuth.": "%1 10 mm auf der Seite: %L2° Azimut.",
     "Band %1 of the raster's %2 is a colour channel (red, green, blue or alpha) of an image, not heights: choose a DEM.":
         "Band %1 der %2 Bänder des Rasters ist ein Farbkanal (Rot, Grün, Blau oder Alpha) eines Bildes, keine Höhen: wählen Sie ein DGM.",
     "%1, band %2": "%1, Band %2",

@@ -43,6 +43,7 @@ class QmlStyler : public QgsProcessingLayerPostProcessorInterface {
 
  private:
   void record(QgsMapLayer& layer, QgsProject* project) const {
+    if (mNote.layout && project) mNote.layout->add(*project, layer, mNote.panorama);
     if (mNote.abstract.isEmpty()) return;
     QgsLayerMetadata metadata = layer.metadata();
     metadata.setTitle(mNote.title);

@@ -4,6 +4,9 @@
 #include <qgsprocessingcontext.h>
 
 #include <QString>
+#include <memory>
+
+#include "plugin/panorama_layout.h"
 
 namespace tsk::plugin {
 
@@ -21,6 +24,9 @@ struct RunNote {
   QString title;
   QString abstract;
   bool sketch = false;
+  // A panorama's layers go to its layout as they load; its strokes (`panorama`) set the map.
+  std::shared_ptr<PanoramaLayout> layout;
+  bool panorama = false;
 };
 
 // Main thread: if QGIS will load `destinationId` on completion, applies styles/<style>.qml to it,

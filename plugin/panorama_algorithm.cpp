@@ -8,6 +8,8 @@
 #include <qgsprocessingutils.h>
 #include <qgsrasterlayer.h>
 
+#include <memory>
+
 #include "core/base/errors.h"
 #include "plugin/layer_style.h"
 #include "plugin/line_output.h"
@@ -25,6 +27,7 @@ const QString kMaxDistance = QStringLiteral("MAX_DISTANCE");
 const QString kAzimuthFrom = QStringLiteral("AZIMUTH_FROM");
 const QString kAzimuthTo = QStringLiteral("AZIMUTH_TO");
 const QString kRefraction = QStringLiteral("REFRACTION");
+const QString kExaggeration = QStringLiteral("PANORAMA_EXAGGERATION");
 const QString kMinCells = QStringLiteral("MIN_CELLS");
 const QString kWindow = QStringLiteral("WINDOW");
 const QString kMapOutput = QStringLiteral("MAP_OUTPUT");
@@ -85,6 +88,10 @@ void PanoramaAlgorithm::addViewParameters() {
               tr("How much refraction lessens the earth's curvature (k): heights are lowered by "
                  "(1 - k) d² / 2R at distance d. 0.13 is the usual value over land."),
               true);
+  addWithHelp(SharedParameters::number(kExaggeration, tr("Panorama exaggeration"), 0, 0, 50),
+              tr("How many times as tall as its azimuths are wide the Panorama layer draws its "
+                 "elevation angles, 1 to 50. 0, the default, chooses up to 5 so that a wide field "
+                 "of view is no flat strip. The Panorama layout draws it so."));
 }
 
 void PanoramaAlgorithm::initAlgorithm(const QVariantMap&) {
@@ -148,6 +155,7 @@ double PanoramaAlgorithm::readParameters(const QVariantMap& parameters,
   view.azimuth_from = parameterAsDouble(parameters, kAzimuthFrom, context);
   view.azimuth_to = parameterAsDouble(parameters, kAzimuthTo, context);
   view.refraction = parameterAsDouble(parameters, kRefraction, context);
+  view.exaggeration = parameterAsDouble(parameters, kExaggeration, context);
   view.validate();
   mVisibility = parameterAsOutputLayer(parameters, kVisibility, context);
   return 90.0;  // the DEM read as it lies: the view from the west is its own grid
@@ -160,6 +168,7 @@ PanoramaResult PanoramaAlgorithm::sketch(QgsProcessingFeedback* feedback) {
   return withCoreErrors([&] {
     PanoramaRun run = sketch_panorama_on(preparedRaster().held(), choice, progress);
     SharedParameters::logFilter(run.filter, feedback);
+    mExaggeration = run.exaggeration;
     return std::move(run.result);
   });
 }
@@ -180,7 +189,7 @@ void PanoramaAlgorithm::writeStrokes(const QVariantMap& parameters, QgsProcessin
     attributes << s.azimuth_min << s.azimuth_max;
     feature.setAttributes(attributes);
     addWithProgress(map, feature, feedback, 2 * result.strokes.size(), 80);
-    feature.setGeometry(lineGeometry(s.view));
+    feature.setGeometry(lineGeometry(exaggerated(s.view, mExaggeration)));
     addWithProgress(panorama, feature, feedback, 2 * result.strokes.size(), 80);
   }
   map.finish();
@@ -229,7 +238,7 @@ void PanoramaAlgorithm::writePeaks(const QVariantMap& parameters, QgsProcessingC
     attributes << QString::fromStdString(l.peak.name) << l.peak.distance << l.peak.azimuth_deg
                << l.peak.elevation_deg;
     feature.setAttributes(attributes);
-    feature.setGeometry(lineGeometry({l.top, l.label}));
+    feature.setGeometry(lineGeometry(exaggerated({l.top, l.label}, mExaggeration)));
     output.add(feature);
   }
   output.finish();
@@ -268,9 +277,24 @@ QVariantMap PanoramaAlgorithm::writeOutputs(const QVariantMap& parameters,
 
 QVariantMap PanoramaAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
                                                     QgsProcessingFeedback*) {
+  const PanoramaView& v = mView;
+  const QString note =
+      tr("Seen from %L1, %L2, %L3 m above the ground, from %L4° to %L5° (azimuths from grid "
+         "north); "
+         "elevation angles drawn %L6 times as tall as azimuths are wide. Terrain Sketch %7.")
+          .arg(v.observer_x, 0, 'f', 0)
+          .arg(v.observer_y, 0, 'f', 0)
+          .arg(v.observer_height, 0, 'g', 4)
+          .arg(v.azimuth_from, 0, 'g', 4)
+          .arg(v.azimuth_to, 0, 'g', 4)
+          .arg(mExaggeration, 0, 'g', 3)
+          .arg(QStringLiteral(TSK_VERSION));
+  const auto layout = std::make_shared<PanoramaLayout>(tr("Panorama"), note);
   styleOnCompletion(context, mMapId, QStringLiteral("panorama_map"));
-  styleOnCompletion(context, mPanoramaId, QStringLiteral("panorama"));
-  styleOnCompletion(context, mPeaksId, QStringLiteral("panorama_peaks"));
+  styleOnCompletion(context, mPanoramaId, QStringLiteral("panorama"), RampRange::style,
+                    {{}, {}, false, layout, true});
+  styleOnCompletion(context, mPeaksId, QStringLiteral("panorama_peaks"), RampRange::style,
+                    {{}, {}, false, layout, false});
   styleOnCompletion(context, mVisibility, QStringLiteral("visibility"));
   return {};
 }

@@ -38,6 +38,7 @@ class PanoramaAlgorithm : public DemViewAlgorithm {
 
   SilhouetteParams mFilter;  // the slope filter, chaining and strokes, as the silhouettes take them
   PanoramaView mView;
+  double mExaggeration = 1.0;  // the panorama layer's, as the run chose it
   QString mVisibility, mMapId, mPanoramaId, mPeaksId;
 };
 

@@ -16,6 +16,10 @@ QString stylePath(const QString& name) {
   return pluginDir() + "/styles/" + name + ".qml";
 }
 
+QString layoutPath(const QString& name) {
+  return pluginDir() + "/layouts/" + name + ".qpt";
+}
+
 QString iconPath() {
   return pluginDir() + "/icons/terrain_sketch.svg";
 }

@@ -257,9 +257,9 @@ QVariantMap SilhouettesAlgorithm::postProcessAlgorithm(QgsProcessingContext& con
   const QString drawn = mParams.strokes.drawn() ? QStringLiteral("_drawn") : QString();
   const QString from = tr("from %L1°").arg(mParams.view.azimuth_deg, 0, 'g', 4);
   styleOnCompletion(context, mFactualId, QStringLiteral("factual") + drawn, RampRange::style,
-                    {tr("Factual silhouettes, %1").arg(from), mNote, true});
+                    {tr("Factual silhouettes, %1").arg(from), mNote, true, nullptr, false});
   styleOnCompletion(context, mFormulatedId, QStringLiteral("formulated") + drawn, RampRange::style,
-                    {tr("Formulated silhouettes, %1").arg(from), mNote});
+                    {tr("Formulated silhouettes, %1").arg(from), mNote, false, nullptr, false});
   return {};
 }
 

@@ -25,6 +25,9 @@ from qgis.PyQt.QtGui import QColor, QFont, QPolygonF
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 OUT = os.path.join(HERE, "..", "resources", "layouts", "terrain_sketch_a3.qpt")
+# The page the plugin makes for a panorama: it sets the map's layers, extent and height, moves the
+# note under it and sets the layout's variable @terrain_sketch_panorama_note.
+PANORAMA_OUT = os.path.join(HERE, "..", "resources", "layouts", "terrain_sketch_panorama.qpt")
 MM = QgsUnitTypes.LayoutMillimeters
 INK, SEPIA = "17,17,17,255", "110,62,28,255"  # the factual and formulated styles' colours
 # The factual strokes' extent in the project's CRS, when the plugin has named their layer.
@@ -139,11 +142,31 @@ def main():
           (90, 90, 90))
 
     os.makedirs(os.path.dirname(OUT), exist_ok=True)
-    if not layout.saveAsTemplate(OUT, QgsReadWriteContext()):
-        raise RuntimeError("could not write " + OUT)
-    print("wrote", os.path.normpath(OUT))
+    save(layout, OUT)
+    save(panorama_layout(), PANORAMA_OUT)
     app.exitQgis()
     return 0
+
+
+def save(layout, path):
+    if not layout.saveAsTemplate(path, QgsReadWriteContext()):
+        raise RuntimeError("could not write " + path)
+    print("wrote", os.path.normpath(path))
+
+
+def panorama_layout():
+    layout = QgsPrintLayout(QgsProject.instance())
+    layout.initializeDefaults()
+    page = layout.pageCollection().page(0)
+    page.setPageSize("A3", page.Landscape)
+    view = QgsLayoutItemMap(layout)
+    view.setId("panorama")
+    view.setKeepLayerSet(True)
+    layout.addLayoutItem(view)
+    place(view, 10, 24, 400, 100)
+    label(layout, "title", "[% @layout_name %]", 20, 10, 6, 400, 14)
+    label(layout, "note", "[% @terrain_sketch_panorama_note %]", 9, 10, 128, 400, 20, (60, 60, 60))
+    return layout
 
 
 if __name__ == "__main__":

@@ -93,8 +93,9 @@ PanoramaRun sketch_panorama_on(const HeldDem& dem, const PanoramaChoice& choice,
   params.record_visibility = choice.record_visibility;
   // A leap along a ray draws no line on the terrain; SPEC's exact strokes are the chains.
   params.cut_leaps = method.strokes.drawn();
-  return {sketch_panorama(dem.oriented, dem.source.geotransform, params, progress),
-          resolved.filter()};
+  PanoramaResult result = sketch_panorama(dem.oriented, dem.source.geotransform, params, progress);
+  const double exaggeration = panorama_exaggeration(result, choice.view.exaggeration);
+  return {std::move(result), resolved.filter(), exaggeration};
 }
 
 }  // namespace tsk

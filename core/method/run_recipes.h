@@ -70,6 +70,8 @@ struct PanoramaChoice {
 struct PanoramaRun {
   PanoramaResult result;
   FilterReport filter;
+  // The panorama layer's: the view's, or one chosen for the panorama (panorama_exaggeration).
+  double exaggeration = 1.0;
 };
 
 // The panorama from the choice's viewpoint on a DEM held whole as it lies (the view from the west:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "core/base/errors.h"
 #include "core/method/profile_stages.h"
@@ -131,6 +132,21 @@ Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t r
     }
   });
   return raster;
+}
+
+double panorama_exaggeration(const PanoramaResult& result, double asked) {
+  if (asked > 0.0) return asked;
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (const PanoramaStroke& s : result.strokes) {
+    for (const StrokePoint& p : s.view) low = std::min(low, p.y), high = std::max(high, p.y);
+  }
+  if (!(high > low)) return 1.0;
+  return std::clamp(result.rays.field.width_deg / (8.0 * (high - low)), 1.0, 5.0);
+}
+
+std::vector<StrokePoint> exaggerated(std::vector<StrokePoint> view, double exaggeration) {
+  for (StrokePoint& p : view) p.y *= exaggeration;
+  return view;
 }
 
 }  // namespace tsk

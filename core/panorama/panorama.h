@@ -45,6 +45,13 @@ struct PanoramaResult {
 PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotransform,
                                const PanoramaParams& params, const ProgressFn& progress = {});
 
+// The panorama layer's exaggeration: `asked` when it is not 0, else one that draws the strokes'
+// span of elevation an eighth as tall as the field of view is wide, from 1 to 5 times (a field of
+// 360 degrees spans some 6 degrees of elevation: a flat strip drawn true).
+double panorama_exaggeration(const PanoramaResult& result, double asked);
+// Points of the panorama (x azimuth, y elevation angle) with their elevation `exaggeration` times.
+std::vector<StrokePoint> exaggerated(std::vector<StrokePoint> view, double exaggeration);
+
 // The leaders of the peaks `seen` over the strokes of `result`: their labels a little above the
 // highest stroke, in rows a tenth of the strokes' span of elevation apart, each label taking a
 // twentieth of the field of view.

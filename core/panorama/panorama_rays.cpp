@@ -64,6 +64,9 @@ void PanoramaView::validate() const {
           "the earth radius must be positive, got " + number(earth_radius));
   require(std::isfinite(metres_per_unit) && metres_per_unit > 0.0,
           "the metres per map unit must be positive");
+  require(exaggeration == 0.0 || (exaggeration >= 1.0 && exaggeration <= 50.0),
+          "the panorama's exaggeration must be from 1 to 50, or 0 to choose it, got " +
+              number(exaggeration));
   field_of_view(azimuth_from, azimuth_to);
 }
 

@@ -18,6 +18,9 @@ struct PanoramaView {
   double refraction = 0.13;                       // k, 0 <= k < 1
   double earth_radius = 6371000.0;                // R, metres
   double metres_per_unit = 1.0;                   // ground metres in a map unit of the DEM's CRS
+  // How many times as tall as its azimuths are wide the panorama layer draws its elevation
+  // angles, 1 to 50; 0: chosen for the panorama (panorama_exaggeration).
+  double exaggeration = 0.0;
   void validate() const;
 };
 

@@ -374,19 +374,19 @@ void write_pstrokes(const std::string& path, const std::string& format,
 
 void write_panorama_strokes(const std::string& path, const std::string& format,
                             const std::vector<PanoramaStroke>& strokes, const std::string& srs_wkt,
-                            const std::vector<PeakLeader>* peaks) {
+                            const std::vector<PeakLeader>* peaks, double exaggeration) {
   std::vector<Field> fields = stroke_fields();
   const int azimuth_field = static_cast<int>(fields.size());
   fields.push_back({"azimuth_min", OFTReal});
   fields.push_back({"azimuth_max", OFTReal});
   // Both stroke layers carry the same attributes; they differ in geometry.
   const auto layer = [&](bool panorama) {
-    return [&strokes, azimuth_field, panorama](LineOutput& output) {
+    return [&strokes, azimuth_field, panorama, exaggeration](LineOutput& output) {
       for (const PanoramaStroke& s : strokes) {
         set_stroke_attributes(output, s.map);
         output.set(azimuth_field, s.azimuth_min);
         output.set(azimuth_field + 1, s.azimuth_max);
-        output.add(panorama ? s.view : s.map.points);
+        output.add(panorama ? exaggerated(s.view, exaggeration) : s.map.points);
       }
     };
   };
@@ -394,13 +394,13 @@ void write_panorama_strokes(const std::string& path, const std::string& format,
                                    {kPanoramaLayer, "", fields, layer(true)}};
   if (peaks) {
     // The peaks in sight, each a leader from its top up to where its name goes.
-    const auto add_peaks = [peaks](LineOutput& output) {
+    const auto add_peaks = [peaks, exaggeration](LineOutput& output) {
       for (const PeakLeader& l : *peaks) {
         output.set(0, l.peak.name.c_str());
         output.set(1, l.peak.distance);
         output.set(2, l.peak.azimuth_deg);
         output.set(3, l.peak.elevation_deg);
-        output.add({l.top, l.label});
+        output.add(exaggerated({l.top, l.label}, exaggeration));
       }
     };
     layers.push_back(

@@ -8,6 +8,7 @@
 #include "core/applications/profile_plot.h"
 #include "core/applications/pstrokes.h"
 #include "core/method/strokes.h"
+#include "core/panorama/panorama.h"
 #include "core/panorama/panorama_peaks.h"
 #include "core/panorama/panorama_strokes.h"
 
@@ -62,9 +63,11 @@ void write_pstrokes(const std::string& path, const std::string& format,
 // CRS (WKT, may be empty), and `panorama`, without a CRS, x the azimuth and y the elevation angle
 // in degrees. Both have the stroke fields with azimuth_min and azimuth_max; the file must hold
 // two layers (a GeoPackage or SQLite file). With `peaks`, a third layer `peaks` holds their
-// leaders in the panorama, with name, distance, azimuth and elevation.
+// leaders in the panorama, with name, distance, azimuth and elevation. The panorama's elevation
+// angles, and the leaders', are drawn `exaggeration` times as tall as its azimuths are wide.
 void write_panorama_strokes(const std::string& path, const std::string& format,
                             const std::vector<PanoramaStroke>& strokes, const std::string& srs_wkt,
-                            const std::vector<PeakLeader>* peaks = nullptr);
+                            const std::vector<PeakLeader>* peaks = nullptr,
+                            double exaggeration = 1.0);
 
 }  // namespace tsk::io

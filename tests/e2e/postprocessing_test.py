@@ -15,8 +15,9 @@ import headless_qgis  # noqa: E402
 
 app = headless_qgis.start(build)
 from processing.gui.Postprocessing import handleAlgorithmResults  # noqa: E402
-from qgis.core import (QgsApplication, QgsProcessingContext, QgsProcessingFeedback,  # noqa: E402
-                       QgsProcessingOutputLayerDefinition, QgsProject)
+from qgis.core import (QgsApplication, QgsLayoutExporter, QgsProcessingContext,  # noqa: E402
+                       QgsProcessingFeedback, QgsProcessingOutputLayerDefinition, QgsProject)
+from qgis.PyQt.QtGui import QImage  # noqa: E402
 
 SAMPLE = os.path.join(repo, "resources", "sample", "jacksboro_utm16n.tif")
 SUMMIT = "749008.1394,4009477.9308 [EPSG:32616]"
@@ -38,6 +39,7 @@ def run_as_dialog(alg_id, inputs):
     returns (Processing's errors, the outputs not loaded into the project)."""
     project = QgsProject.instance()
     project.removeAllMapLayers()
+    project.layoutManager().clear()
     alg = QgsApplication.processingRegistry().createAlgorithmById("terrainsketch:" + alg_id)
     params = dict(inputs)
     for output in alg.destinationParameterDefinitions():
@@ -94,6 +96,29 @@ ok = not errors and not missing and len(labelled) == 1 and labelled[0].labelsEna
 passed, failed = passed + ok, failed + (not ok)
 print(("ok      " if ok else "FAILED  ") + "panorama peaks labelled" +
       ("" if ok else f": errors {errors}, not loaded {missing}, layers {labelled}"), flush=True)
+
+# The panorama gets a print layout of its own: the CRS-less layer in the DEM's project zoomed to
+# 1:6.7 billion. The page's map holds the panorama and its labels, and draws them.
+layouts = [layout for layout in QgsProject.instance().layoutManager().printLayouts()
+           if layout.name().startswith("Panorama")]
+page_png = os.path.join(os.environ.get("TMPDIR", "/tmp"), "tsk_postprocessing_panorama.png")
+drawn = 0
+if len(layouts) == 1:
+    view = layouts[0].itemById("panorama")
+    panorama = [layer for layer in view.layers() if "azimuth_min" in layer.fields().names()]
+    settings = QgsLayoutExporter.ImageExportSettings()
+    settings.dpi = 60
+    QgsLayoutExporter(layouts[0]).exportToImage(page_png, settings)
+    image = QImage(page_png)
+    drawn = sum(1 for y in range(0, image.height(), 2) for x in range(0, image.width(), 2)
+                if image.pixelColor(x, y).lightness() < 128)
+    note = layouts[0].itemById("note").currentText()
+ok = (len(layouts) == 1 and len(view.layers()) == 2 and len(panorama) == 1 and
+      view.extent().contains(panorama[0].extent()) and drawn > 100 and "times as tall" in note)
+passed, failed = passed + ok, failed + (not ok)
+print(("ok      " if ok else "FAILED  ") + "panorama layout" +
+      ("" if ok else f": layouts {[layout.name() for layout in layouts]}, drawn {drawn}"),
+      flush=True)
 print(f"post-processing: {passed} passed, {failed} failed")
 app.exitQgis()
 sys.exit(1 if failed else 0)
