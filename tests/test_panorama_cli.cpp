@@ -166,6 +166,34 @@ TEST_CASE("panorama writes its strokes on the map and in the panorama, and its p
   CHECK(shades.size() > 5);
 }
 
+TEST_CASE("the panorama layer draws its elevation angles exaggerated, as chosen or asked",
+          "[cli][panorama]") {
+  // A field of 360 degrees spans some 6 degrees of elevation: drawn true it was a flat strip.
+  ScratchDir dir("panorama-exaggeration");
+  const auto heights = [&](const std::string& name, const std::string& exaggeration) {
+    const CliRun run = run_cli({"panorama", kSample, dir / name, "--observer", kSummit,
+                                "--observer-height", "2", "--panorama-exaggeration", exaggeration});
+    REQUIRE(run.code == 0);
+    io::DatasetPtr ds(static_cast<GDALDataset*>(
+        GDALOpenEx((dir / name).c_str(), GDAL_OF_VECTOR, nullptr, nullptr, nullptr)));
+    REQUIRE(ds);
+    OGREnvelope box;
+    REQUIRE(ds->GetLayerByName("panorama")->GetExtent(&box) == OGRERR_NONE);
+    return std::make_pair(box, run.err);
+  };
+  const auto [true_box, true_said] = heights("one.gpkg", "1");
+  const auto [twice, twice_said] = heights("two.gpkg", "2");
+  const auto [chosen, chosen_said] = heights("chosen.gpkg", "0");
+  CHECK(twice.MinY == Approx(2 * true_box.MinY));
+  CHECK(twice.MaxY == Approx(2 * true_box.MaxY));
+  CHECK(twice.MaxX == Approx(true_box.MaxX));  // azimuths as they are
+  const double span = true_box.MaxY - true_box.MinY, field = true_box.MaxX - true_box.MinX;
+  const double k = (chosen.MaxY - chosen.MinY) / span;
+  CHECK(k == Approx(std::clamp(360.0 / (8.0 * span), 1.0, 5.0)).epsilon(0.01));
+  CHECK(field > 300);
+  CHECK_THAT(chosen_said, Catch::Contains("elevation angles") && Catch::Contains("times as tall"));
+}
+
 TEST_CASE("panorama visibility agrees with an exact line of sight and with GDAL's viewshed",
           "[cli][panorama][gdal]") {
   ScratchDir dir("panorama-viewshed");
@@ -216,6 +244,8 @@ TEST_CASE("panorama refuses a view it cannot draw, and writes nothing", "[cli][p
       {{kSample}, "needs --observer"},
       {{kSample, "--observer", "749008"}, "needs X,Y"},
       {{kSample, "--observer", kSummit, "--refraction", "1"}, "refraction coefficient"},
+      {{kSample, "--observer", kSummit, "--panorama-exaggeration", "0.5"},
+       "exaggeration must be from 1 to 50"},
       // The figures as given, not rounded to nothing.
       {{kSample, "--observer", kSummit, "--max-distance", "1e-9"}, "the range of 1e-09 map units"},
       {{kSample, "--observer", kSummit, "--azimuth-from", "1e20"}, "got 1e+20 and 360"},
