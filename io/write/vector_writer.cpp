@@ -267,12 +267,12 @@ void write_line_layers(const std::string& path, const std::string& format,
     const bool transaction = ds->StartTransaction() == OGRERR_NONE;
     for (const LineLayer& layer : layers) fill_line_layer(*ds, path, driver_name, layer, capture);
     if (describe && database) {
-      // The layers' description (gpkg_contents), and the file's (gpkg_metadata).
+      // The layers' description (gpkg_contents). Not the file's metadata (gpkg_metadata): GDAL
+      // 3.10 then writes an .aux.xml beside the GeoPackage whenever it opens it.
       const std::string description = describe();
       for (const LineLayer& layer : layers)
         if (OGRLayer* written = ds->GetLayerByName(layer.name.c_str()))
           written->SetMetadataItem("DESCRIPTION", description.c_str());
-      ds->SetMetadataItem("TERRAIN_SKETCH_RUN", description.c_str());
     }
     if (transaction) check(ds->CommitTransaction(), "committing '" + path + "'", capture);
     CPLErrorReset();

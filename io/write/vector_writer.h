@@ -40,7 +40,7 @@ using StrokeWriter = std::function<void(const Stroke& stroke)>;
 // until they are written. Whole or not at all: if produce throws, nothing is left behind.
 // weighted: the strokes are drawn ones, written as LineString M with their weights as M.
 // describe, when given, is asked once the strokes are all made for the file's description (a
-// GeoPackage keeps it in its metadata tables; formats without metadata drop it).
+// GeoPackage keeps it as its layer's description, in gpkg_contents; other formats drop it).
 void write_strokes(const std::string& path, const std::string& format, const std::string& srs_wkt,
                    const std::function<void(const StrokeWriter& write)>& produce,
                    const std::string& layer_name = kStrokeLayer, bool weighted = false,
