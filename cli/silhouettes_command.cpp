@@ -90,6 +90,7 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
   std::vector<Stroke> drawn;
   double write_s = 0;
   Clock::time_point produced;
+  std::string note;  // the run in a sentence, once it is made
   io::write_strokes(
       o.output, o.format, dem.info().srs_wkt,
       [&](const io::StrokeWriter& write) {
@@ -100,16 +101,15 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
           if (preview) drawn.push_back(std::move(stroke));
         });
         produced = Clock::now();
+        note = note_of(o, result.filter);
       },
-      io::kStrokeLayer, o.params.strokes.drawn(), [&] { return note_of(o, result.filter); });
+      io::kStrokeLayer, o.params.strokes.drawn(), [&] { return note; });
   const double commit_s = since(produced);
   // All three go in place together when the run has done (io/write/output_set.h).
   stop_if_interrupted();
   if (!o.stats_json.empty())
     io::write_text_file(o.stats_json, stats_json(result.stats, result.filter));
-  if (preview)
-    plotter =
-        write_preview(o, result, std::move(drawn), dem.info(), note_of(o, result.filter), progress);
+  if (preview) plotter = write_preview(o, result, std::move(drawn), dem.info(), note, progress);
   print_filter(result.filter, err);
   if (o.page.plotter) print_plotter(plotter, !o.page.size.empty(), err);
   if (o.timings) print_timings(result.timings, write_s, commit_s, err);

@@ -39,32 +39,27 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="103" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="102" />
         <source>%1 and %2 would both be written to %3, one over the other; choose different files, or save both to one GeoPackage with a layer name each.</source>
         <translation>%1 und %2 würden beide nach %3 geschrieben, eines über das andere; wählen Sie verschiedene Dateien, oder speichern Sie beide in ein GeoPackage mit je einem Layernamen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="98" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="97" />
         <source>%1 would be written into %2, the file of %3, which this algorithm reads; choose another file.</source>
         <translation>%1 würde in %2 geschrieben, die Datei von %3, die dieser Algorithmus liest; wählen Sie eine andere Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="73" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="72" />
         <source>%1 must be a GeoTIFF (.tif): %2 is another format.</source>
         <translation>%1 muss ein GeoTIFF (.tif) sein: %2 hat ein anderes Format.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="142" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="141" />
         <source>%1, band %2</source>
         <translation>%1, Band %2</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="155" />
-        <source>Waiting for another run writing %1.</source>
-        <translation>Warte auf einen anderen Lauf, der %1 schreibt.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="172" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="162" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -159,22 +154,17 @@
 <context>
     <name>LineOutput</name>
     <message>
-        <location filename="../plugin/line_output.cpp" line="113" />
+        <location filename="../plugin/line_output.cpp" line="114" />
         <source>Internal error: no output set for %1.</source>
         <translation>Interner Fehler: keine Ausgabemenge für %1.</translation>
     </message>
     <message>
-        <location filename="../plugin/line_output.cpp" line="124" />
+        <location filename="../plugin/line_output.cpp" line="123" />
         <source>Waiting for another run writing %1.</source>
         <translation>Warte auf einen anderen Lauf, der %1 schreibt.</translation>
     </message>
     <message>
-        <location filename="../plugin/line_output.cpp" line="127" />
-        <source>Cancelled.</source>
-        <translation>Abgebrochen.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/line_output.cpp" line="233" />
+        <location filename="../plugin/line_output.cpp" line="243" />
         <source>Could not write %1 whole: the file ends cut short. Is the disk full?</source>
         <translation>%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der Datenträger voll?</translation>
     </message>
@@ -371,7 +361,7 @@
     </message>
     <message>
         <location filename="../plugin/panorama_algorithm.cpp" line="114" />
-        <location filename="../plugin/panorama_algorithm.cpp" line="291" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="292" />
         <source>Panorama</source>
         <translation>Panorama</translation>
     </message>
@@ -444,7 +434,7 @@
 <context>
     <name>PanoramaLayout</name>
     <message>
-        <location filename="../plugin/panorama_layout.cpp" line="87" />
+        <location filename="../plugin/panorama_layout.cpp" line="88" />
         <source>%1 10 mm on the page: %L2° of azimuth.</source>
         <translation>%1 10 mm auf der Seite: %L2° Azimut.</translation>
     </message>

@@ -8,7 +8,6 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QIcon>
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -149,16 +148,7 @@ bool DemViewAlgorithm::prepareAlgorithm(const QVariantMap& parameters,
 QVariantMap DemViewAlgorithm::processAlgorithm(const QVariantMap& parameters,
                                                QgsProcessingContext& context,
                                                QgsProcessingFeedback* feedback) {
-  const auto waiting = [feedback](const std::filesystem::path& destination) {
-    if (feedback) {
-      feedback->pushInfo(
-          tr("Waiting for another run writing %1.").arg(QFile::decodeName(destination.c_str())));
-    }
-  };
-  const auto stop = [feedback] {
-    if (feedback && feedback->isCanceled()) throw Cancelled();
-  };
-  io::OutputSet outputs({waiting, stop});
+  io::OutputSet outputs(LineOutput::waitingOn(feedback));
   const QVariantMap results = writeOutputs(parameters, context, feedback);
   withCoreErrors([&] { outputs.commit(); });
   return results;

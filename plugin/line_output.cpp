@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cctype>
 #include <exception>
+#include <filesystem>
 
 #include "io/write/output_set.h"
 #include "plugin/core_errors.h"
@@ -115,17 +116,26 @@ QString LineOutput::stagedFile(const QString& path) {
       [&] { return QFile::decodeName(set->stage(QFile::encodeName(path).toStdString()).c_str()); });
 }
 
+io::OutputSet::Waiting LineOutput::waitingOn(QgsProcessingFeedback* feedback) {
+  const auto waiting = [feedback](const std::filesystem::path& destination) {
+    if (feedback) {
+      feedback->pushInfo(
+          tr("Waiting for another run writing %1.").arg(QFile::decodeName(destination.c_str())));
+    }
+  };
+  const auto stop = [feedback] {
+    if (feedback && feedback->isCanceled()) throw Cancelled();
+  };
+  return {waiting, stop};
+}
+
 std::unique_ptr<io::DestinationLock> LineOutput::lockDestination(const QString& path,
                                                                  QgsProcessingFeedback* feedback) {
+  const std::filesystem::path destination = QFile::encodeName(path).toStdString();
+  const io::OutputSet::Waiting wait = waitingOn(feedback);
   return withCoreErrors([&] {
     return std::make_unique<io::DestinationLock>(
-        QFile::encodeName(path).toStdString(),
-        [&] {
-          if (feedback) feedback->pushInfo(tr("Waiting for another run writing %1.").arg(path));
-        },
-        [&] {
-          if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
-        });
+        destination, [&] { wait.waiting(destination); }, wait.stop);
   });
 }
 

@@ -24,6 +24,7 @@
 
 #include "core/method/strokes.h"
 #include "io/write/destination_lock.h"
+#include "io/write/output_set.h"
 
 namespace tsk::plugin {
 
@@ -87,6 +88,10 @@ class LineOutput {
 
   // Completes the output: a GeoPackage's extent, count and spatial index, and its commit.
   void finish();
+
+  // How a run waits for another writing one of its files (io/destination_lock.h): said on
+  // `feedback`, and ended by its Cancel (Cancelled is thrown).
+  static io::OutputSet::Waiting waitingOn(QgsProcessingFeedback* feedback);
 
  private:
   // Stages `path` in the run's output set; returns where to write it.

@@ -68,13 +68,9 @@ VectorSummary summarise(const std::string& path) {
   return s;
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 using test::hill;
 using test::kNorthUp;
+using test::slurp;
 
 }  // namespace
 

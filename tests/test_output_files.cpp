@@ -70,11 +70,6 @@ int exit_code(pid_t child) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-std::string text_of(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(file), {});
-}
-
 // The staging folder run `pid` made in `dir`, or an empty path while there is none.
 std::filesystem::path staging_of(const std::filesystem::path& dir, pid_t pid) {
   const std::string mark = ".partial-" + std::to_string(pid);
@@ -91,7 +86,7 @@ std::filesystem::path staging_of(const std::filesystem::path& dir, pid_t pid) {
 // Waits until the file at `path` holds `text`; false after a minute.
 bool said(const std::string& path, const std::string& text) {
   for (int k = 0; k < 3000; ++k) {
-    if (text_of(path).find(text) != std::string::npos) return true;
+    if (slurp(path).find(text) != std::string::npos) return true;
     usleep(20000);
   }
   return false;
@@ -162,7 +157,7 @@ TEST_CASE("a run waiting for another run's lock stops on a signal, writing nothi
   REQUIRE(said(messages, "waiting for another run writing"));
   kill(run, SIGTERM);
   CHECK(exit_code(run) == 130);
-  CHECK(text_of(messages).find("interrupted; no output written") != std::string::npos);
+  CHECK(slurp(messages).find("interrupted; no output written") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(out));
   CHECK(staging_of(dir.path, run).empty());
 }
@@ -180,7 +175,7 @@ TEST_CASE("the outputs of a run killed before its commit are all the earlier run
                                     preview,       "--stats-json", stats};
   };
   REQUIRE(run_cli(run_args("90")).code == 0);
-  const std::string stats_before = text_of(stats), preview_before = text_of(preview);
+  const std::string stats_before = slurp(stats), preview_before = slurp(preview);
   const long long strokes_before = features_read(out);
   pid_t run = 0;
   {
@@ -191,12 +186,12 @@ TEST_CASE("the outputs of a run killed before its commit are all the earlier run
     kill(run, SIGKILL);
     CHECK(exit_code(run) == -1);
   }
-  CHECK(text_of(stats) == stats_before);
-  CHECK(text_of(preview) == preview_before);
+  CHECK(slurp(stats) == stats_before);
+  CHECK(slurp(preview) == preview_before);
   CHECK(features_read(out) == strokes_before);
   // The next run into the folder removes the dead run's staging folders, and writes all three.
   REQUIRE(run_cli(run_args("0")).code == 0);
-  CHECK(text_of(stats) != stats_before);
+  CHECK(slurp(stats) != stats_before);
   for (const auto& entry : std::filesystem::directory_iterator(dir.path))
     CHECK(entry.path().filename().string().find(".partial-") == std::string::npos);
 }

@@ -154,10 +154,7 @@ TEST_CASE("panorama writes its strokes on the map and in the panorama, and its p
   std::set<float> values(seen.values.begin(), seen.values.end());
   CHECK(values == std::set<float>{0, 1, 255});
   // Far strokes are lighter: the factual strokes come in more than one shade.
-  const std::string svg = [&] {
-    std::ifstream in(dir / "p.svg");
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }();
+  const std::string svg = test::slurp(dir / "p.svg");
   CHECK(svg.find("id=\"factual\"") != std::string::npos);
   std::set<std::string> shades;
   for (std::size_t at = svg.find("fill=\"#"); at != std::string::npos;
@@ -338,8 +335,7 @@ TEST_CASE("panorama labels the peaks in sight, from points in another CRS", "[cl
   }
   std::sort(names.begin(), names.end());
   CHECK(names == std::vector<std::string>{"Ridge", "Wall top"});
-  std::ifstream in(dir / "p.svg");
-  const std::string svg((std::istreambuf_iterator<char>(in)), {});
+  const std::string svg = test::slurp(dir / "p.svg");
   CHECK(svg.find(">Ridge</text>") != std::string::npos);
   CHECK(svg.find("In the shadow") == std::string::npos);
   // A name field that is not there, and lines where points belong, are refused.
@@ -376,8 +372,7 @@ TEST_CASE("panorama adapts its filter to each neighbourhood with --adapt local",
                                 "--adapt", adapt, "--stats-json", dir / (adapt + ".json")});
     INFO(run.err);
     REQUIRE(run.code == 0);
-    std::ifstream in(dir / (adapt + ".json"));
-    const std::string json((std::istreambuf_iterator<char>(in)), {});
+    const std::string json = test::slurp(dir / (adapt + ".json"));
     const std::size_t at = json.find("\"fset_pct\": ");
     REQUIRE(at != std::string::npos);
     return std::stod(json.substr(at + 12));

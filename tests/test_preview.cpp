@@ -27,13 +27,6 @@ namespace {
 
 const std::string kSample = TSK_SAMPLE_DEM;
 
-std::string read_all(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 long long json_count(const std::string& json, const std::string& key) {
   std::smatch m;
   REQUIRE(std::regex_search(json, m, std::regex("\"" + key + "\": ([0-9]+)")));
@@ -85,8 +78,8 @@ TEST_CASE("the SVG preview holds a layer per class and a path per stroke", "[cli
                               "--preview", dir / "s.svg", "--stats-json", dir / "s.json"});
   INFO(run.err);
   REQUIRE(run.code == 0);
-  const std::string json = read_all(dir / "s.json");
-  const SvgPaths svg = read_svg(read_all(dir / "s.svg"));
+  const std::string json = slurp(dir / "s.json");
+  const SvgPaths svg = read_svg(slurp(dir / "s.svg"));
   CHECK(svg.per_group.size() == 2);
   CHECK(svg.per_group.at("factual") == json_count(json, "factual_strokes"));
   CHECK(svg.per_group.at("formulated") == json_count(json, "formulated_strokes"));
@@ -109,8 +102,8 @@ TEST_CASE("drawn strokes are filled outlines in the vector art, exact strokes li
         run_cli({"silhouettes", kSample, dir / (name + ".gpkg"), "--strokes", strokes, "--preview",
                  dir / (name + ".svg"), "--stats-json", dir / (name + ".json")});
     REQUIRE(run.code == 0);
-    const std::string json = read_all(dir / (name + ".json"));
-    SvgPaths svg = read_svg(read_all(dir / (name + ".svg")));
+    const std::string json = slurp(dir / (name + ".json"));
+    SvgPaths svg = read_svg(slurp(dir / (name + ".svg")));
     const long long outlines = name == "drawn" ? 1 : 0;
     CHECK(svg.closed_per_group["factual"] == outlines * json_count(json, "factual_strokes"));
     CHECK(svg.closed_per_group["formulated"] == outlines * json_count(json, "formulated_strokes"));
@@ -136,7 +129,7 @@ TEST_CASE("the PDF preview is a page of the sketch with a layer per class", "[cl
       run_cli({"silhouettes", kSample, dir / "s.gpkg", "--preview", dir / "s.pdf", "--page", "A4"});
   INFO(run.err);
   REQUIRE(run.code == 0);
-  const std::string pdf = read_all(dir / "s.pdf");
+  const std::string pdf = slurp(dir / "s.pdf");
   CHECK_THAT(pdf, Catch::Contains("/Type /OCG /Name (Factual silhouettes)"));
   CHECK_THAT(pdf, Catch::Contains("/Type /OCG /Name (Formulated silhouettes)"));
   // The sample is about as tall as wide in the sketch: an A4 page, portrait, in points.
@@ -199,7 +192,7 @@ TEST_CASE("pages and scales are checked, and a sketch too large for its page is 
                                "--page", "A3", "--page-scale", "250000"});
   INFO(fits.err);
   REQUIRE(fits.code == 0);
-  CHECK_THAT(read_all(dir / "a.svg"), Catch::Contains("width=\"297.000mm\" height=\"420.000mm\""));
+  CHECK_THAT(slurp(dir / "a.svg"), Catch::Contains("width=\"297.000mm\" height=\"420.000mm\""));
 }
 
 TEST_CASE("the plotter page merges strokes that meet and cuts the pen's travel",
@@ -214,11 +207,11 @@ TEST_CASE("the plotter page merges strokes that meet and cuts the pen's travel",
                             std::regex("([0-9]+) strokes drawn as ([0-9]+) paths; pen-up travel "
                                        "([0-9]+) mm in the strokes' order, ([0-9]+) mm ordered")));
   const long long strokes = std::stoll(m[1]), paths = std::stoll(m[2]);
-  const std::string json = read_all(dir / "s.json");
+  const std::string json = slurp(dir / "s.json");
   CHECK(strokes == json_count(json, "factual_strokes") + json_count(json, "formulated_strokes"));
   CHECK(paths <= strokes);
   CHECK(std::stoll(m[4]) * 3 < std::stoll(m[3]));  // ordered, a third of the travel at most
-  SvgPaths svg = read_svg(read_all(dir / "p.svg"));
+  SvgPaths svg = read_svg(slurp(dir / "p.svg"));
   CHECK(svg.per_group["factual"] + svg.per_group["formulated"] == paths);
   CHECK(svg.closed_per_group["factual"] + svg.closed_per_group["formulated"] == 0);
   CHECK(svg.outside == 0);
@@ -297,7 +290,7 @@ TEST_CASE("the strokes and the vector art record the run that made them", "[cli]
       "jacksboro_utm16n.tif, band 1. Seen from 250\xc2\xb0 (azimuth), vertical exaggeration 2.5, "
       "base slope 40 %; the thesis's slope filter: row 20 %, column 12 %, control point 8.75 %; "
       "drawn strokes. Terrain Sketch";
-  CHECK_THAT(read_all(dir / "p.svg"), Catch::Contains("<desc>" + expected));
+  CHECK_THAT(slurp(dir / "p.svg"), Catch::Contains("<desc>" + expected));
   // A GeoPackage keeps it as its layer's description (gpkg_contents), as GDAL reads it.
   GDALAllRegister();
   tsk::io::DatasetPtr ds(static_cast<GDALDataset*>(GDALOpenEx(

@@ -15,9 +15,8 @@ namespace {
 // throws Cancelled when it says stop.
 void every_256(const ProgressFn& progress, std::size_t step, std::size_t count, double from,
                double span) {
-  if (!progress || step % 256 != 0) return;
-  if (!progress(from + span * static_cast<double>(step) / static_cast<double>(count)))
-    throw Cancelled();
+  if (step % 256 == 0)
+    tell_progress(progress, from + span * static_cast<double>(step) / static_cast<double>(count));
 }
 
 // Beyond any drape: an extent reaching it is refused.
@@ -62,8 +61,7 @@ PlanObliqueDrape::PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& 
       row_min = std::min(row_min, px.row), row_max = std::max(row_max, px.row);
     }
   }
-  lay_out_extent(col_min, col_max, row_min, row_max);
-  if (empty_) return;
+  if (!lay_out_extent(col_min, col_max, row_min, row_max)) return;
   source_cell_.assign(checked_cell_count(rows_, cols_), kNone);
   for (std::size_t r = 0; r < rows_; ++r) {
     every_256(progress, r, rows_, 0.5, 0.5);
@@ -84,15 +82,14 @@ PlanObliqueDrape::PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& 
   }
 }
 
-void PlanObliqueDrape::lay_out_extent(double col_min, double col_max, double row_min,
+bool PlanObliqueDrape::lay_out_extent(double col_min, double col_max, double row_min,
                                       double row_max) {
   if (col_min > col_max) {
     // Nothing visible: an empty drape, one cell without data at the DEM's corner (a raster of no
     // cells is no raster).
-    empty_ = true;
     rows_ = cols_ = 1;
     source_cell_.assign(1, kNone);
-    return;
+    return false;
   }
   constexpr double kSlack = 1e-6;  // positions a hair past a cell edge stay in that cell
   const double col0 = std::floor(col_min - 0.5 + kSlack), row0 = std::floor(row_min - 0.5 + kSlack);
@@ -114,6 +111,7 @@ void PlanObliqueDrape::lay_out_extent(double col_min, double col_max, double row
   }
   col0_ = static_cast<std::int64_t>(col0), row0_ = static_cast<std::int64_t>(row0);
   cols_ = static_cast<std::size_t>(cols), rows_ = static_cast<std::size_t>(rows);
+  return true;
 }
 
 GeoTransform PlanObliqueDrape::geotransform(const GeoTransform& dem) const {

@@ -39,16 +39,16 @@ class PlanObliqueDrape {
  private:
   static constexpr std::uint32_t kNone = 0xffffffffu;  // an output cell no visible cell reaches
 
-  // Sets the lattice covering pixel columns col_min..col_max and rows row_min..row_max (none
-  // when col_min > col_max); throws Error when it would be far larger than the DEM.
-  void lay_out_extent(double col_min, double col_max, double row_min, double row_max);
+  // Sets the lattice covering pixel columns col_min..col_max and rows row_min..row_max; returns
+  // false, the lattice one empty cell, when col_min > col_max (nothing visible). Throws Error when
+  // it would be far larger than the DEM.
+  bool lay_out_extent(double col_min, double col_max, double row_min, double row_max);
   void check_on_dem_grid(const HeightGrid& source_on_dem) const;
   HeightGrid from_oriented(const HeightGrid& oriented) const;
 
   OrientedFrame frame_;  // a copy: the DEM may go once the drape is laid out
   std::int64_t row0_ = 0, col0_ = 0;
   std::size_t rows_ = 0, cols_ = 0;
-  bool empty_ = false;  // no visible cell
   // Per output cell: the oriented cell index (4 bytes: a DEM turned whole has fewer cells), kNone
   // for none.
   std::vector<std::uint32_t> source_cell_;

@@ -127,8 +127,7 @@ std::vector<PStroke> pstroke_sketch(const HeightGrid& z, const CellFlags& flags,
   };
   std::vector<PStroke> strokes;
   for (std::size_t p = 0; p < P; ++p) {
-    if (progress && !progress(0.8 + 0.2 * static_cast<double>(p) / static_cast<double>(P)))
-      throw Cancelled();
+    tell_progress(progress, 0.8 + 0.2 * static_cast<double>(p) / static_cast<double>(P));
     for (std::size_t i = 0; i < L; ++i) {
       if (!drawable(p, i)) continue;
       const double c = column[p * L + i], r = row[p * L + i];

@@ -12,6 +12,10 @@
 
 namespace tsk {
 
+void tell_progress(const ProgressFn& progress, double fraction) {
+  if (progress && !progress(fraction)) throw Cancelled();
+}
+
 ProgressFn progress_part(const ProgressFn& whole, double from, double to) {
   if (!whole) return {};
   return [whole, from, to](double fraction) { return whole(from + (to - from) * fraction); };

@@ -16,6 +16,10 @@ namespace tsk {
 // Called with the fraction done (0..1) from the caller's thread; return false to cancel.
 using ProgressFn = std::function<bool(double fraction)>;
 
+// Tells `progress` (when there is one) that `fraction` of the work is done; throws Cancelled when
+// it says stop.
+void tell_progress(const ProgressFn& progress, double fraction);
+
 // Progress of a part of the work, from `from` to `to` of the whole: 0..1 of the part reported to
 // `whole` as from..to. Empty when `whole` is.
 ProgressFn progress_part(const ProgressFn& whole, double from, double to);

@@ -94,8 +94,7 @@ struct SilhouetteStream::State {
 
   // Tells `progress` that `done` profiles are done; throws Cancelled when it says stop.
   void report_progress(std::size_t done) const {
-    if (progress && !progress(static_cast<double>(done) / static_cast<double>(frame.profiles)))
-      throw Cancelled();
+    tell_progress(progress, static_cast<double>(done) / static_cast<double>(frame.profiles));
   }
 
   // Links the chain candidates of a batch of profiles, in order (SPEC 1.7).
@@ -274,7 +273,7 @@ SilhouetteResult SilhouetteStream::finish() {
   result.strokes.reserve(result.strokes.size() + st.formulated.handed_on.size());
   for (Stroke& stroke : st.formulated.handed_on) result.strokes.push_back(std::move(stroke));
   result.timings.strokes += seconds_since(start);
-  if (st.progress && !st.progress(1.0)) throw Cancelled();
+  tell_progress(st.progress, 1.0);
   return std::move(result);
 }
 

@@ -73,8 +73,7 @@ PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotra
     }
   };
   const auto after = [&](std::size_t done) {
-    if (progress && !progress(static_cast<double>(done) / static_cast<double>(rays.rays)))
-      throw Cancelled();
+    tell_progress(progress, static_cast<double>(done) / static_cast<double>(rays.rays));
   };
   pipeline_batches<Batch>(rays.rays, size, threads > 1, collect, link, after);
   add_strokes(factual.finish(), result, true);

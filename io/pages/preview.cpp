@@ -63,10 +63,8 @@ class Canvas {
   std::vector<float> ink_;
 };
 
-// Goes on while `progress` says so (every path is a check), throwing Cancelled when it says no.
-void go_on(const ProgressFn& progress, double fraction) {
-  if (progress && !progress(fraction)) throw Cancelled();
-}
+// A paper page's pixels in a millimetre, at kPreviewDpi.
+constexpr double kPixelsPerMm = kPreviewDpi / 25.4;
 
 // GDAL's progress while it writes the picture: the last fifth of the work.
 struct Encoding {
@@ -87,7 +85,7 @@ void draw_page(Canvas& canvas, const SketchPage& page, const ProgressFn& progres
   for (StrokeClass cls : {StrokeClass::formulated, StrokeClass::factual}) {
     const bool factual = cls == StrokeClass::factual;
     for (const PagePath& s : page.paths) {
-      if (++drawn % 256 == 0) go_on(progress, 0.8 * static_cast<double>(drawn) / total);
+      if (++drawn % 256 == 0) tell_progress(progress, 0.8 * static_cast<double>(drawn) / total);
       if (s.cls != cls) continue;
       for (std::size_t k = 1; k < s.points.size(); ++k) {
         const double radius = 0.25 * (s.widths[k - 1] + s.widths[k]);
@@ -97,12 +95,12 @@ void draw_page(Canvas& canvas, const SketchPage& page, const ProgressFn& progres
     }
   }
   for (const PageLabel& l : page.labels) canvas.line(l.from.x, l.from.y, l.to.x, l.to.y, 0.5, 0.5f);
-  go_on(progress, 0.8);
+  tell_progress(progress, 0.8);
 }
 
 void write_png_preview(const std::string& path, SketchPage page, const ProgressFn& progress) {
   if (page.millimetres) {
-    const double px = kPreviewDpi / 25.4;
+    const double px = kPixelsPerMm;
     page.width = std::ceil(page.width * px), page.height = std::ceil(page.height * px);
     for (PagePath& p : page.paths) {
       for (StrokePoint& q : p.points) q.x *= px, q.y *= px;
@@ -147,8 +145,8 @@ void check_png_pixels(double width, double height) {
 }
 
 void check_png_page(const PageSize& size) {
-  const double px = kPreviewDpi / 25.4;
-  check_png_pixels(std::ceil(size.width_mm * px), std::ceil(size.height_mm * px));
+  check_png_pixels(std::ceil(size.width_mm * kPixelsPerMm),
+                   std::ceil(size.height_mm * kPixelsPerMm));
 }
 
 PlotterReport write_preview(const std::string& path, const SilhouetteResult& result,

@@ -50,7 +50,7 @@ void check_reads_back(const std::string& path, const std::filesystem::path& stag
   }
   const int cols = ds->GetRasterXSize(), rows = ds->GetRasterYSize();
   const int block_rows = std::max(1, std::min(rows, (1 << 22) / std::max(1, cols)));
-  const std::size_t value_bytes = type == GDT_Byte ? 1 : 4;
+  const auto value_bytes = static_cast<std::size_t>(GDALGetDataTypeSizeBytes(type));
   std::vector<GByte> buffer(static_cast<std::size_t>(cols) * block_rows * value_bytes);
   for (int b = 1; b <= ds->GetRasterCount(); ++b) {
     for (int top = 0; top < rows; top += block_rows) {
