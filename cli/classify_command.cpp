@@ -1,5 +1,6 @@
 // terrain-sketch classify: the stage of every DEM cell as a GeoTIFF.
 #include <ostream>
+#include <string>
 
 #include "cli/command_support.h"
 #include "cli/commands.h"
@@ -10,7 +11,8 @@
 
 namespace tsk::cli {
 
-int classify(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress) {
+std::string classify(const Args& args, std::ostream& out, std::ostream& err,
+                     const ProgressFn& progress) {
   const Options o = parse("classify", args);
   require_geotiff(o.output);
   const io::HeldDemFile held = load_dem(o, err);
@@ -19,13 +21,13 @@ int classify(const Args& args, std::ostream& out, std::ostream& err, const Progr
   stop_if_interrupted();
   io::write_classification(o.output, classification_map(result.flags, dem.frame), dem.geotransform,
                            dem.srs_wkt);
-  if (!o.stats_json.empty())
-    io::write_text_file(o.stats_json, stats_json(result.stats, result.filter));
+  const std::string statistics = stats_json(result.stats, result.filter);
+  if (!o.stats_json.empty()) io::write_text_file(o.stats_json, statistics);
   const StageStats& s = result.stats;
   out << o.output << ": hidden " << s.pct(s.hidden) << " %, occluding " << s.pct(s.occluding)
       << " %, c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered) << " %, t-set "
       << s.pct(s.thinned) << " %\n";
-  return 0;
+  return statistics;
 }
 
 }  // namespace tsk::cli

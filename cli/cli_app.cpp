@@ -33,26 +33,33 @@ std::string usage() {
   return program_usage() + kNotes;
 }
 
-using Command = int (*)(const Args&, std::ostream&, std::ostream&, const ProgressFn&);
+using Command = std::string (*)(const Args&, std::ostream&, std::ostream&, const ProgressFn&);
 
-// Runs `command` with its outputs put in place together when it has done (output_set.h), and
-// what it says of them said only then. A run that must wait for another writing one of them says
-// so, and a signal ends the wait.
-int run_with_outputs(Command command, const Args& args, std::ostream& out, std::ostream& err,
-                     const ProgressFn& progress) {
+const std::map<std::string, Command>& commands() {
+  static const std::map<std::string, Command> table = {
+      {"silhouettes", silhouettes}, {"profiles", profiles},       {"classify", classify},
+      {"row-slope", row_slope},     {"filter-plot", filter_plot}, {"drape", drape},
+      {"pstrokes", pstrokes},       {"panorama", panorama}};
+  return table;
+}
+
+}  // namespace
+
+std::string run_command(const std::string& name, const std::vector<std::string>& args,
+                        std::ostream& out, std::ostream& err, const ProgressFn& progress) {
+  const auto command = commands().find(name);
+  if (command == commands().end()) throw Error("unknown command '" + name + "'");
   const auto waiting = [&err](const std::filesystem::path& destination) {
     err << "terrain-sketch: waiting for another run writing '" << destination.string() << "'\n";
   };
   io::OutputSet outputs({waiting, stop_if_interrupted});
   std::ostringstream said;
-  const int code = command(args, said, err, progress);
+  std::string statistics = command->second(args, said, err, progress);
   stop_if_interrupted();  // the last chance to stop with nothing written
   outputs.commit();
   out << said.str();
-  return code;
+  return statistics;
 }
-
-}  // namespace
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
         bool show_progress) {
@@ -65,12 +72,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         << ")\n";
     return 0;
   }
-  const std::map<std::string, Command> commands = {
-      {"silhouettes", silhouettes}, {"profiles", profiles},       {"classify", classify},
-      {"row-slope", row_slope},     {"filter-plot", filter_plot}, {"drape", drape},
-      {"pstrokes", pstrokes},       {"panorama", panorama}};
-  const auto command = commands.find(args[0]);
-  if (command == commands.end()) {
+  if (!commands().count(args[0])) {
     err << "terrain-sketch: unknown command '" << args[0] << "'\n" << usage();
     return 2;
   }
@@ -89,7 +91,8 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     return !interrupted();
   };
   try {
-    return run_with_outputs(*command->second, rest, out, err, progress);
+    run_command(args[0], rest, out, err, progress);
+    return 0;
   } catch (const Cancelled&) {
     err << (line.started() ? "\n" : "") << "terrain-sketch: interrupted; no output written\n";
     return 130;

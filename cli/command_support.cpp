@@ -99,13 +99,14 @@ std::string stats_json(const StageStats& s, const FilterReport& filter) {
 
 void require_geotiff(const std::string& path) {
   const std::string ext = io::lowercase_extension(path);
-  if (ext != ".tif" && ext != ".tiff") throw Error("the output raster must be a GeoTIFF (.tif)");
+  if (ext != ".tif" && ext != ".tiff")
+    throw UsageError("the output raster must be a GeoTIFF (.tif)");
 }
 
 void require_html(const std::string& path) {
   const std::string ext = io::lowercase_extension(path);
   if (ext != ".html" && ext != ".htm")
-    throw Error("the output is an HTML page: give it an .html name, got '" + path + "'");
+    throw UsageError("the output is an HTML page: give it an .html name, got '" + path + "'");
 }
 
 }  // namespace tsk::cli

@@ -1,5 +1,6 @@
 // terrain-sketch drape: a raster on the DEM's grid into plan-oblique space.
 #include <ostream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -11,11 +12,11 @@
 #include "io/write/raster_writer.h"
 
 namespace tsk::cli {
-int drape(const Args& args, std::ostream& out, std::ostream& err,
-          const ProgressFn& /* their steps report no progress */) {
+std::string drape(const Args& args, std::ostream& out, std::ostream& err,
+                  const ProgressFn& /* their steps report no progress */) {
   const Options o = parse("drape", args);
   require_geotiff(o.output);
-  if (o.source.empty()) throw Error("drape needs --source RASTER, the raster to drape");
+  if (o.source.empty()) throw UsageError("drape needs --source RASTER, the raster to drape");
   io::HeldDemFile held = load_dem(o, err);
   const io::Dem& dem = held.dem;
   io::require_on_dem_grid(o.source, dem);  // before the work
@@ -28,7 +29,7 @@ int drape(const Args& args, std::ostream& out, std::ostream& err,
   io::write_float_raster(o.output, bands, drape.geotransform(dem.geotransform), dem.srs_wkt);
   out << o.output << ": " << bands.size() << " band(s) draped, " << drape.cols() << " x "
       << drape.rows() << " cells\n";
-  return 0;
+  return {};
 }
 
 }  // namespace tsk::cli

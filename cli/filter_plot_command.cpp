@@ -1,6 +1,7 @@
 // terrain-sketch filter-plot: the slope filter diagram as an HTML page.
 #include <filesystem>
 #include <ostream>
+#include <string>
 
 #include "cli/command_support.h"
 #include "cli/commands.h"
@@ -10,8 +11,8 @@
 
 namespace tsk::cli {
 
-int filter_plot(const Args& args, std::ostream& out, std::ostream& err,
-                const ProgressFn& progress) {
+std::string filter_plot(const Args& args, std::ostream& out, std::ostream& err,
+                        const ProgressFn& progress) {
   const Options o = parse("filter-plot", args);
   require_html(o.output);
   const io::HeldDemFile held = load_dem(o, err);
@@ -24,7 +25,7 @@ int filter_plot(const Args& args, std::ostream& out, std::ostream& err,
                           "Slope filter: " + std::filesystem::path(o.input).filename().string()));
   out << o.output << ": c-set " << result.stats.pct(result.stats.candidate) << " %, f-set "
       << result.stats.pct(result.stats.filtered) << " %\n";
-  return 0;
+  return {};
 }
 
 }  // namespace tsk::cli

@@ -17,6 +17,10 @@ extern "C" void on_signal(int signal) {
   std::signal(signal, SIG_DFL);  // the next one ends the program
 }
 
+extern "C" void on_signal_in_scope(int) {
+  signalled.store(true);
+}
+
 }  // namespace
 
 void catch_interrupts() {
@@ -33,6 +37,23 @@ bool interrupted() {
 
 void stop_if_interrupted() {
   if (interrupted()) throw Cancelled();
+}
+
+InterruptScope::InterruptScope() {
+  signalled.store(false);
+  struct sigaction catcher = {};
+  catcher.sa_handler = on_signal_in_scope;
+  sigemptyset(&catcher.sa_mask);
+  sigaction(SIGINT, &catcher, &previous_);
+}
+
+InterruptScope::~InterruptScope() {
+  sigaction(SIGINT, &previous_, nullptr);
+  signalled.store(false);
+}
+
+bool InterruptScope::interrupted() const {
+  return signalled.load();
 }
 
 }  // namespace tsk::cli

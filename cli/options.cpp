@@ -76,14 +76,9 @@ const OptionSpec& find_option(const std::string& name, const CommandSpec& comman
               " --help` lists the options it takes");
 }
 
-}  // namespace
-
-Options parse(const std::string& command_name, const std::vector<std::string>& args) {
-  const CommandSpec* command = find_command(command_name);
-  if (!command) throw Error("internal: no command '" + command_name + "'");
-  Options o;
-  o.params.adaptive.mode = FilterMode::adaptive;  // the command line's default; SPEC's is fixed
-  o.params.strokes.mode = StrokeMode::drawn;      // likewise; SPEC's strokes are exact
+// The options in `args` set in `o`, the others kept as positional, and checked together.
+std::vector<std::string> set_options(const CommandSpec& command,
+                                     const std::vector<std::string>& args, Options& o) {
   std::vector<std::string> positional;
   for (std::size_t k = 0; k < args.size(); ++k) {
     if (!looks_like_option(args[k])) {
@@ -91,19 +86,51 @@ Options parse(const std::string& command_name, const std::vector<std::string>& a
       continue;
     }
     const std::string& name = args[k];
-    const OptionSpec& option = find_option(name, *command);
+    const OptionSpec& option = find_option(name, command);
     if (option.value && k + 1 >= args.size()) throw Error(name + " needs a value");
     const std::string value = option.value ? args[++k] : std::string();
     option.set(o, name, value);
   }
-  if (positional.size() != 2) throw Error("expected INPUT and OUTPUT");
-  o.input = positional[0];
-  o.output = positional[1];
-  o.dem.stop = stop_if_interrupted;  // Ctrl-C and SIGTERM stop the reading too
   o.params.validate();
   o.panorama.validate();
+  o.pstrokes.validate();
   check_page(o);
+  return positional;
+}
+
+// The options of `command` in `args` set in a fresh Options, with the positional arguments.
+Options choose(const std::string& command_name, const std::vector<std::string>& args,
+               std::vector<std::string>& positional) {
+  const CommandSpec* command = find_command(command_name);
+  if (!command) throw Error("internal: no command '" + command_name + "'");
+  Options o;
+  o.params.adaptive.mode = FilterMode::adaptive;  // the command line's default; SPEC's is fixed
+  o.params.strokes.mode = StrokeMode::drawn;      // likewise; SPEC's strokes are exact
+  o.dem.stop = stop_if_interrupted;               // Ctrl-C and SIGTERM stop the reading too
+  try {
+    positional = set_options(*command, args, o);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
+  return o;
+}
+
+}  // namespace
+
+Options parse(const std::string& command_name, const std::vector<std::string>& args) {
+  std::vector<std::string> positional;
+  Options o = choose(command_name, args, positional);
+  if (positional.size() != 2) throw UsageError("expected INPUT and OUTPUT");
+  o.input = positional[0];
+  o.output = positional[1];
   refuse_clashing_paths(o);
+  return o;
+}
+
+Options parse_choices(const std::string& command_name, const std::vector<std::string>& args) {
+  std::vector<std::string> positional;
+  Options o = choose(command_name, args, positional);
+  if (!positional.empty()) throw UsageError("unexpected argument '" + positional[0] + "'");
   return o;
 }
 

@@ -25,10 +25,10 @@ namespace {
 // Everything that can be refused before the DEM is read.
 void check_before_work(const Options& o) {
   if (!o.observer_given)
-    throw Error("panorama needs --observer X,Y: where the viewer stands, in the DEM's CRS");
+    throw UsageError("panorama needs --observer X,Y: where the viewer stands, in the DEM's CRS");
   const std::string driver = io::check_vector_output(o.output, o.format);
   if (driver != "GPKG" && driver != "SQLite")
-    throw Error(
+    throw UsageError(
         "a panorama's strokes go in two layers (map and panorama): name OUTPUT .gpkg or "
         ".sqlite");
   if (!o.visibility.empty()) require_geotiff(o.visibility);
@@ -61,8 +61,6 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaRun& run,
         visibility_raster(result, dem.rows, dem.cols, dem.geotransform, o.params.threads),
         dem.geotransform, dem.srs_wkt);
   }
-  if (!o.stats_json.empty())
-    io::write_text_file(o.stats_json, stats_json(result.stats, run.filter));
   if (!o.preview.empty()) {
     const io::PanoramaPage page = lay_out_panorama(result, o.params.strokes, o.page, leaders);
     io::write_page(o.preview, page.page, o.page, progress);
@@ -73,7 +71,8 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaRun& run,
 
 }  // namespace
 
-int panorama(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress) {
+std::string panorama(const Args& args, std::ostream& out, std::ostream& err,
+                     const ProgressFn& progress) {
   const Options o = parse("panorama", args);
   check_before_work(o);
   io::HeldDemFile held = read_whole_dem(o, err);
@@ -92,6 +91,8 @@ int panorama(const Args& args, std::ostream& out, std::ostream& err, const Progr
   // for the visibility raster.
   held.dem.oriented = HeightGrid();
   write_outputs(o, dem, run, leaders, progress, err);
+  const std::string statistics = stats_json(result.stats, run.filter);
+  if (!o.stats_json.empty()) io::write_text_file(o.stats_json, statistics);
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes
       << " formulated strokes from " << result.rays.rays << " rays of " << result.rays.samples
@@ -99,7 +100,7 @@ int panorama(const Args& args, std::ostream& out, std::ostream& err, const Progr
       << " %, f-set " << s.pct(s.filtered) << " %, t-set " << s.pct(s.thinned) << " %)\n";
   if (!o.peaks.empty())
     out << leaders.size() << " of the " << peaks.size() << " peaks are in sight, labelled\n";
-  return 0;
+  return statistics;
 }
 
 }  // namespace tsk::cli

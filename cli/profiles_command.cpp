@@ -1,5 +1,6 @@
 // terrain-sketch profiles: the profile plot as lines.
 #include <ostream>
+#include <string>
 
 #include "cli/command_support.h"
 #include "cli/commands.h"
@@ -8,8 +9,8 @@
 
 namespace tsk::cli {
 
-int profiles(const Args& args, std::ostream& out, std::ostream& err,
-             const ProgressFn& /* their steps report no progress */) {
+std::string profiles(const Args& args, std::ostream& out, std::ostream& err,
+                     const ProgressFn& /* their steps report no progress */) {
   const Options o = parse("profiles", args);
   io::check_vector_output(o.output, o.format);
   const io::HeldDemFile held = load_dem(o, err);
@@ -19,7 +20,7 @@ int profiles(const Args& args, std::ostream& out, std::ostream& err,
   stop_if_interrupted();
   io::write_profile_lines(o.output, o.format, lines, dem.srs_wkt);
   out << o.output << ": " << lines.size() << " visible cross-section pieces\n";
-  return 0;
+  return {};
 }
 
 }  // namespace tsk::cli

@@ -1,5 +1,6 @@
 // terrain-sketch pstrokes: the P-stroke sketch.
 #include <ostream>
+#include <string>
 #include <vector>
 
 #include "cli/command_support.h"
@@ -9,9 +10,9 @@
 
 namespace tsk::cli {
 
-int pstrokes(const Args& args, std::ostream& out, std::ostream& err, const ProgressFn& progress) {
+std::string pstrokes(const Args& args, std::ostream& out, std::ostream& err,
+                     const ProgressFn& progress) {
   const Options o = parse("pstrokes", args);
-  o.pstrokes.validate();
   io::check_vector_output(o.output, o.format);
   const io::HeldDemFile held = load_dem(o, err);
   const PStrokeRun run = sketch_pstrokes(held.held(), o.params, o.pstrokes, progress);
@@ -20,7 +21,7 @@ int pstrokes(const Args& args, std::ostream& out, std::ostream& err, const Progr
   stop_if_interrupted();
   io::write_pstrokes(o.output, o.format, strokes, held.dem.srs_wkt);
   out << o.output << ": " << strokes.size() << " P-strokes\n";
-  return 0;
+  return {};
 }
 
 }  // namespace tsk::cli

@@ -1,5 +1,6 @@
 // terrain-sketch row-slope: |slope across the line of sight| as a GeoTIFF.
 #include <ostream>
+#include <string>
 
 #include "cli/command_support.h"
 #include "cli/commands.h"
@@ -9,8 +10,8 @@
 
 namespace tsk::cli {
 
-int row_slope(const Args& args, std::ostream& out, std::ostream& err,
-              const ProgressFn& /* their steps report no progress */) {
+std::string row_slope(const Args& args, std::ostream& out, std::ostream& err,
+                      const ProgressFn& /* their steps report no progress */) {
   const Options o = parse("row-slope", args);
   require_geotiff(o.output);
   const io::HeldDemFile held = load_dem(o, err);
@@ -19,7 +20,7 @@ int row_slope(const Args& args, std::ostream& out, std::ostream& err,
   stop_if_interrupted();
   io::write_float_raster(o.output, {slope}, dem.geotransform, dem.srs_wkt);
   out << o.output << ": row slope in percent across azimuth " << dem.frame.azimuth_deg << "\n";
-  return 0;
+  return {};
 }
 
 }  // namespace tsk::cli

@@ -72,8 +72,8 @@ void print_plotter(const io::PlotterReport& r, bool millimetres, std::ostream& e
 
 }  // namespace
 
-int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
-                const ProgressFn& progress) {
+std::string silhouettes(const Args& args, std::ostream& out, std::ostream& err,
+                        const ProgressFn& progress) {
   const Options o = parse("silhouettes", args);
   io::check_vector_output(o.output, o.format);  // before any work
   const bool preview = !o.preview.empty();
@@ -107,8 +107,8 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
   const double commit_s = since(produced);
   // All three go in place together when the run has done (io/write/output_set.h).
   stop_if_interrupted();
-  if (!o.stats_json.empty())
-    io::write_text_file(o.stats_json, stats_json(result.stats, result.filter));
+  const std::string statistics = stats_json(result.stats, result.filter);
+  if (!o.stats_json.empty()) io::write_text_file(o.stats_json, statistics);
   if (preview) plotter = write_preview(o, result, std::move(drawn), dem.info(), note, progress);
   print_filter(result.filter, err);
   if (o.page.plotter) print_plotter(plotter, !o.page.size.empty(), err);
@@ -117,7 +117,7 @@ int silhouettes(const Args& args, std::ostream& out, std::ostream& err,
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes
       << " formulated strokes (c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered)
       << " %, t-set " << s.pct(s.thinned) << " %, g-set " << s.pct(s.generalised) << " %)\n";
-  return 0;
+  return statistics;
 }
 
 }  // namespace tsk::cli

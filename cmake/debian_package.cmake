@@ -1,5 +1,6 @@
-# The Debian package (CPack): the command-line tool, its man page and, when built, the QGIS
-# plugin in QGIS's system plugin folder, for the Debian and QGIS it is built on.
+# The Debian package (CPack): the command-line tool, its man page and, when built, the Python
+# package in Debian's Python path and the QGIS plugin in QGIS's system plugin folder, for the
+# Debian and QGIS it is built on.
 #   cmake --build build --target package    ->  build/terrain-sketch_VERSION-qgisX.Y-PLATFORM.deb
 # Its dependencies come from the libraries the binaries link (dpkg-shlibdeps).
 find_program(TSK_GZIP gzip REQUIRED)
@@ -27,7 +28,7 @@ set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS qgis)
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "qgis, python3-numpy")
 set(CPACK_DEBIAN_PACKAGE_VERSION "${PROJECT_VERSION}${TSK_DEB_FLAVOUR}")
 set(CPACK_DEBIAN_FILE_NAME "terrain-sketch_${PROJECT_VERSION}${TSK_DEB_FLAVOUR}-${TSK_DEBIAN_RELEASE}_amd64.deb")
 if(NOT CMAKE_SYSTEM_PROCESSOR STREQUAL x86_64)

@@ -38,6 +38,9 @@ chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
   test -s /usr/share/man/man1/terrain-sketch.1.gz
   test -s /usr/share/qgis/python/plugins/terrain_sketch/libterrain_sketch_provider.so
   test -s /usr/share/qgis/python/plugins/terrain_sketch/metadata.txt
+  # The Python package, in Debian'"'"'s Python path: the same run from Python.
+  apt-get install -y -q --no-install-recommends python3 > /tmp/apt.log
+  python3 -c "import terrain_sketch as t; s = t.silhouettes(\"/tmp/sample.tif\", \"/tmp/py.gpkg\"); assert s[\"formulated_strokes\"] > 0, s"
   dpkg -s terrain-sketch | grep "^Version"
 '
 echo "Debian package installed and ran: 1 passed, 0 failed"

@@ -264,9 +264,16 @@ void BandWindows::drop_block_rows_above(std::size_t keep) const {
 DemRefused::DemRefused(const std::string& path, DemNote note)
     : Error("'" + path + "' cannot be taken as it is"), path_(path), note_(std::move(note)) {}
 
-DemFile::DemFile(const std::string& path, const DemOptions& options) {
+DemFile::DemFile(const std::string& path, const DemOptions& options)
+    : DemFile(
+          [&] {
+            GdalErrorCapture capture;
+            return open_raster(path);
+          }(),
+          path, options) {}
+
+DemFile::DemFile(DatasetPtr dataset, const std::string& path, const DemOptions& options) {
   GdalErrorCapture capture;
-  DatasetPtr dataset = open_raster(path);
   dem_ = describe_dem(*dataset, path, options);
   file_ = std::make_unique<BandWindows>(std::move(dataset), path, options.band);
   // Describing it reads a sample of the DEM; a failure there is the reason for later ones.

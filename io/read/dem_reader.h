@@ -102,6 +102,8 @@ class BandWindows {
 class DemFile {
  public:
   DemFile(const std::string& path, const DemOptions& options);
+  // An open dataset (memory_raster.h), named in messages as `name`.
+  DemFile(DatasetPtr dataset, const std::string& name, const DemOptions& options);
   ~DemFile();
   const Dem& info() const { return dem_; }  // grid, georeferencing and notes; no heights, no frame
   // The DEM for the core; it reads through this object, which must outlive it.

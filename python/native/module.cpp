@@ -1,0 +1,141 @@
+// terrain_sketch._native: the Python package's door into the commands (cli_app.h) and the sketch
+// of an array (array_sketch.h). The package's Python side turns keyword options into the
+// command line's, so that both take the same options, defaults, checks and messages.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli/cli_app.h"
+#include "cli/option_table.h"
+#include "python/native/array_sketch.h"
+#include "python/native/python_run.h"
+
+namespace tsk::python {
+namespace {
+
+using Strings = std::vector<std::string>;
+
+// Runs a command; returns what it said of its outputs and its statistics as JSON.
+std::pair<std::string, std::string> run_command(const std::string& name, const Strings& args,
+                                                const RunHooks& hooks) {
+  std::ostringstream said;
+  std::string statistics;
+  run_from_python(hooks, [&](const ProgressFn& progress, std::ostream& err) {
+    statistics = cli::run_command(name, args, said, err, progress);
+  });
+  return {said.str(), statistics};
+}
+
+// The GDAL type of a numpy array's values, or GDT_Unknown for one GDAL does not hold as such.
+GDALDataType gdal_type(const py::dtype& type) {
+  const char kind = type.kind();
+  const auto size = type.itemsize();
+  if (kind == 'f') return size == 4 ? GDT_Float32 : size == 8 ? GDT_Float64 : GDT_Unknown;
+  if (kind == 'i') return size == 2 ? GDT_Int16 : size == 4 ? GDT_Int32 : GDT_Unknown;
+  if (kind == 'u') {
+    return size == 1 ? GDT_Byte : size == 2 ? GDT_UInt16 : size == 4 ? GDT_UInt32 : GDT_Unknown;
+  }
+  return GDT_Unknown;
+}
+
+io::MemoryBand memory_band(const py::array& heights) {
+  if (heights.ndim() != 2) throw py::value_error("heights must be a 2-D array (rows, columns)");
+  const GDALDataType type = gdal_type(heights.dtype());
+  if (type == GDT_Unknown || heights.strides(0) <= 0 || heights.strides(1) <= 0)
+    throw py::value_error("internal: heights must come as a native array of a GDAL type");
+  return {heights.data(),
+          type,
+          static_cast<std::size_t>(heights.shape(0)),
+          static_cast<std::size_t>(heights.shape(1)),
+          static_cast<std::size_t>(heights.strides(1)),
+          static_cast<std::size_t>(heights.strides(0))};
+}
+
+template <typename T>
+py::array_t<T> numpy_copy(const std::vector<T>& values) {
+  return py::array_t<T>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+py::dict columns_to_python(const StrokeColumns& c) {
+  py::dict columns;
+  columns["class"] = c.classes;
+  columns["cells"] = numpy_copy(c.cells);
+  for (std::size_t k = 0; k < c.real_names.size(); ++k)
+    columns[py::str(c.real_names[k])] = numpy_copy(c.reals[k]);
+  py::dict result;
+  result["x"] = numpy_copy(c.x);
+  result["y"] = numpy_copy(c.y);
+  result["m"] = c.measured ? py::object(numpy_copy(c.m)) : py::none();
+  result["offsets"] = numpy_copy(c.offsets);
+  result["columns"] = columns;
+  result["crs"] = c.crs_wkt;
+  result["statistics"] = c.statistics;
+  return result;
+}
+
+// Sketches `heights` (kept alive by the caller while the run reads it).
+py::dict sketch(const py::array& heights, const py::object& geotransform, const std::string& crs,
+                const py::object& nodata, const Strings& options, const RunHooks& hooks) {
+  const io::MemoryBand band = memory_band(heights);
+  io::MemoryRasterInfo info;
+  info.crs = crs;
+  if (!geotransform.is_none()) {
+    const auto values = geotransform.cast<std::vector<double>>();
+    if (values.size() != 6) throw py::value_error("transform needs 6 numbers (GDAL's order)");
+    GeoTransform gt;
+    for (std::size_t k = 0; k < 6; ++k) gt.a[k] = values[k];
+    info.geotransform = gt;
+  }
+  if (!nodata.is_none()) info.nodata = nodata.cast<double>();
+  StrokeColumns columns;
+  run_from_python(hooks, [&](const ProgressFn& progress, std::ostream& err) {
+    columns = sketch_array(band, info, options, progress, err);
+  });
+  return columns_to_python(columns);
+}
+
+py::list option_list() {
+  py::list options;
+  for (const cli::OptionSpec& spec : cli::option_table()) {
+    py::list commands;
+    for (const cli::CommandSpec& command : cli::command_table())
+      if (spec.commands & command.bit) commands.append(command.name);
+    options.append(py::dict(
+        py::arg("name") = spec.name,
+        py::arg("value") = spec.value ? py::object(py::str(spec.value)) : py::object(py::none()),
+        py::arg("section") = spec.section, py::arg("help") = spec.help,
+        py::arg("commands") = commands));
+  }
+  return options;
+}
+
+py::list command_list() {
+  py::list commands;
+  for (const cli::CommandSpec& spec : cli::command_table())
+    commands.append(py::dict(py::arg("name") = spec.name, py::arg("summary") = spec.summary));
+  return commands;
+}
+
+}  // namespace
+}  // namespace tsk::python
+
+PYBIND11_MODULE(_native, m) {
+  namespace py = pybind11;
+  using namespace tsk::python;
+  m.doc() = "Terrain Sketch's native door: the commands and the sketch of an array.";
+  register_exceptions(m);
+  py::class_<RunHooks>(m, "RunHooks")
+      .def(py::init<py::object, py::object, bool>(), py::arg("progress"), py::arg("log"),
+           py::arg("catch_interrupts"));
+  m.def("run_command", &run_command, py::arg("name"), py::arg("args"), py::arg("hooks"));
+  m.def("sketch", &sketch, py::arg("heights"), py::arg("transform"), py::arg("crs"),
+        py::arg("nodata"), py::arg("options"), py::arg("hooks"));
+  m.def("options", &option_list);
+  m.def("commands", &command_list);
+  m.attr("version") = TSK_VERSION;
+}

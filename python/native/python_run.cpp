@@ -1,0 +1,126 @@
+#include "python/native/python_run.h"
+
+#include <new>
+#include <streambuf>
+#include <string>
+
+#include "cli/dem_note_text.h"
+#include "cli/interrupt.h"
+#include "cli/options.h"
+#include "core/base/errors.h"
+
+namespace tsk::python {
+namespace {
+
+struct ErrorTag {};
+struct CancelledTag {};
+
+PyObject* error_type = nullptr;
+PyObject* cancelled_type = nullptr;
+
+// Hands each whole line written to it to a Python callable, taking the interpreter's lock.
+class LineLog : public std::streambuf {
+ public:
+  explicit LineLog(const py::object& log) : log_(log) {}
+  ~LineLog() override { flush_line(); }
+  void flush_line() {
+    if (line_.empty()) return;
+    py::gil_scoped_acquire lock;
+    try {
+      if (!log_.is_none()) log_(line_);
+    } catch (py::error_already_set& e) {
+      e.discard_as_unraisable("terrain_sketch: logging a note");
+    }
+    line_.clear();
+  }
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (c == traits_type::eof()) return traits_type::not_eof(c);
+    if (c == '\n') {
+      flush_line();
+    } else {
+      line_.push_back(static_cast<char>(c));
+    }
+    return c;
+  }
+
+ private:
+  const py::object& log_;
+  std::string line_;
+};
+
+[[noreturn]] void raise(PyObject* type, const std::string& message) {
+  PyErr_SetString(type, message.c_str());
+  throw py::error_already_set();
+}
+
+// Raises `failure` as Python's (see run_from_python).
+[[noreturn]] void raise_failure(std::exception_ptr failure,
+                                std::optional<py::error_already_set>& callback_error,
+                                bool interrupted) {
+  try {
+    std::rethrow_exception(failure);
+  } catch (const Cancelled&) {
+    if (callback_error) throw *callback_error;
+    if (interrupted)
+      raise(PyExc_KeyboardInterrupt, "terrain_sketch: interrupted; no output written");
+    raise(cancelled_type, "the progress callable asked to stop; no output written");
+  } catch (const cli::UsageError& e) {
+    raise(PyExc_ValueError, e.what());
+  } catch (const io::DemRefused& e) {
+    raise(error_type, cli::refusal_text(e));
+  } catch (const Error& e) {
+    raise(error_type, e.what());
+  } catch (const std::bad_alloc&) {
+    raise(PyExc_MemoryError, "out of memory");
+  }
+}
+
+}  // namespace
+
+void register_exceptions(py::module_& m) {
+  static py::exception<ErrorTag> error(m, "Error", PyExc_OSError);
+  static py::exception<CancelledTag> cancelled(m, "Cancelled", PyExc_Exception);
+  error.doc() = "A run that could not be done: the message names the cause (an OSError).";
+  cancelled.doc() = "The progress callable returned False: the run stopped, nothing written.";
+  error_type = error.ptr();
+  cancelled_type = cancelled.ptr();
+}
+
+void run_from_python(const RunHooks& hooks,
+                     const std::function<void(const ProgressFn&, std::ostream&)>& work) {
+  std::optional<cli::InterruptScope> interrupts;
+  if (hooks.catch_interrupts) interrupts.emplace();
+  std::optional<py::error_already_set> callback_error;
+  const ProgressFn progress = [&](double fraction) {
+    if (cli::interrupted()) return false;
+    if (hooks.progress.is_none()) return true;
+    py::gil_scoped_acquire lock;
+    if (callback_error) return false;
+    try {
+      const py::object answer = hooks.progress(fraction);
+      const int truth = answer.is_none() ? 1 : PyObject_IsTrue(answer.ptr());
+      if (truth < 0) throw py::error_already_set();
+      return truth == 1;
+    } catch (py::error_already_set& e) {
+      callback_error = e;
+      return false;
+    }
+  };
+  LineLog lines(hooks.log);
+  std::ostream err(&lines);
+  std::exception_ptr failure;
+  {
+    py::gil_scoped_release released;
+    try {
+      work(progress, err);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    lines.flush_line();
+  }
+  if (failure) raise_failure(failure, callback_error, interrupts && interrupts->interrupted());
+}
+
+}  // namespace tsk::python

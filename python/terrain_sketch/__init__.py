@@ -1,0 +1,126 @@
+"""Terrain Sketch: the silhouettes of a DEM seen obliquely from above, as vector strokes.
+
+The functions run the command line's commands in-process, with the same options (as keywords:
+``azimuth=90``, ``filter="fixed"``, ``strokes="exact"``), defaults, checks and messages, and
+write the same files::
+
+    import terrain_sketch
+    stats = terrain_sketch.silhouettes("dem.tif", "strokes.gpkg", azimuth=270)
+
+``sketch`` takes a 2-D numpy array (``rasterio``'s ``ds.read(1)`` with ``ds.transform``) and
+returns the strokes as numpy columns, with ``to_geodataframe()``.
+
+Every function releases the GIL while it works, reports ``progress(fraction)`` (return False to
+stop: ``Cancelled``), stops on Ctrl-C with ``KeyboardInterrupt``, and writes its outputs whole or
+not at all. Bad options raise ValueError with the command line's message; a run that cannot be
+done raises ``terrain_sketch.Error``, an OSError. Notes on the DEM go to the ``terrain_sketch``
+logger.
+"""
+
+import json
+
+from . import _native, _options
+from ._native import Cancelled, Error
+from ._strokes import Strokes
+
+__version__ = _native.version
+Error.__module__ = Cancelled.__module__ = __name__
+__all__ = ["silhouettes", "panorama", "classify", "row_slope", "drape", "pstrokes", "profiles",
+           "filter_plot", "sketch", "Strokes", "Error", "Cancelled"]
+
+_RETURNS = """
+Returns the run's stage statistics as a dict (as --stats-json writes them), or an empty dict for
+a command that counts none. Raises ValueError on bad options, terrain_sketch.Error (an OSError)
+when the run cannot be done, KeyboardInterrupt on Ctrl-C and terrain_sketch.Cancelled when
+progress returns False; nothing is written then.
+"""
+
+
+def _command_function(command):
+    def run(input, output, *, progress=None, **options):
+        arguments = [_options.path_argument(input), _options.path_argument(output)]
+        arguments += _options.to_arguments(options)
+        _said, statistics = _native.run_command(command, arguments, _options.hooks(progress))
+        return json.loads(statistics) if statistics else {}
+
+    run.__name__ = run.__qualname__ = command.replace("-", "_")
+    run.__doc__ = (f"{run.__name__}(input, output, *, progress=None, **options)\n\n"
+                   f"{_options.summary(command)} (terrain-sketch {command}).\n\n"
+                   f"Options:\n{_options.options_help(command)}\n"
+                   f"    progress (callable): called with the share done, 0 to 1; False stops\n"
+                   f"{_RETURNS}")
+    return run
+
+
+silhouettes = _command_function("silhouettes")
+panorama = _command_function("panorama")
+classify = _command_function("classify")
+row_slope = _command_function("row-slope")
+drape = _command_function("drape")
+pstrokes = _command_function("pstrokes")
+profiles = _command_function("profiles")
+filter_plot = _command_function("filter-plot")
+
+# The silhouettes' options that name or shape files, which sketch() neither reads nor writes.
+_FILE_OPTIONS = ("band", "format", "stats_json", "preview", "page", "page_scale", "plotter",
+                 "timings")
+
+
+def _heights_array(heights, nodata):
+    """The heights as an array GDAL can hold in place, and their nodata value."""
+    import numpy as np
+
+    if isinstance(heights, np.ma.MaskedArray):
+        heights = heights.astype(np.float64).filled(np.nan)
+    array = np.asarray(heights)
+    if nodata is None:
+        nodata = getattr(heights, "attrs", {}).get("_FillValue")  # xarray's
+    held = {"f4", "f8", "i2", "i4", "u1", "u2", "u4"}
+    if f"{array.dtype.kind}{array.dtype.itemsize}" not in held or not array.dtype.isnative:
+        array = array.astype(np.float64)
+    if array.ndim == 2 and (array.strides[0] <= 0 or array.strides[1] <= 0):
+        array = np.ascontiguousarray(array)
+    return array, nodata
+
+
+def _transform_numbers(transform):
+    """GDAL's six numbers from an affine.Affine (rasterio's, rioxarray's) or six numbers."""
+    if transform is None:
+        return None
+    if hasattr(transform, "to_gdal"):
+        return tuple(transform.to_gdal())
+    return tuple(float(v) for v in transform)
+
+
+def sketch(heights, transform=None, nodata=None, crs=None, *, progress=None, **options):
+    heights_array, nodata = _heights_array(heights, nodata)
+    for key in options:
+        if key in _FILE_OPTIONS:
+            raise ValueError(f"sketch() neither reads nor writes files: {key} is an option of "
+                             "silhouettes(), which does")
+    crs_text = "" if crs is None else crs.to_wkt() if hasattr(crs, "to_wkt") else str(crs)
+    native = _native.sketch(heights_array, _transform_numbers(transform), crs_text,
+                            None if nodata is None else float(nodata),
+                            _options.to_arguments(options), _options.hooks(progress))
+    return Strokes(native)
+
+
+sketch.__doc__ = f"""sketch(heights, transform=None, nodata=None, crs=None, *, progress=None, **options)
+
+The silhouettes of a DEM held as a 2-D array (rows from the north, heights in metres), returned
+as Strokes: coordinates and M values as numpy arrays, attributes as columns, and
+to_geodataframe(). The same recipe and options as silhouettes(), on the array in place.
+
+    heights: a 2-D array of any numeric type (a masked array's mask is nodata; NaN is nodata)
+    transform: GDAL's six numbers or an affine.Affine (rasterio's ds.transform); None for a grid
+        without georeferencing (then give cell_size)
+    nodata: the value that marks no data, if any
+    crs: the CRS, as WKT, "EPSG:N" or an object with to_wkt() (rasterio's, pyproj's)
+
+Options:
+{_options.options_help("silhouettes", _FILE_OPTIONS)}
+    progress (callable): called with the share done, 0 to 1; False stops
+
+Raises ValueError on bad options, terrain_sketch.Error when the array cannot be sketched,
+KeyboardInterrupt on Ctrl-C and terrain_sketch.Cancelled when progress returns False.
+"""

@@ -1,0 +1,96 @@
+"""Keyword options as the command line's: one table, the native module's, serves both.
+
+A keyword is the command line's option without its dashes, with underscores:
+``azimuth=90`` is ``--azimuth 90``, ``no_diagonals=True`` is ``--no-diagonals``. The values are
+checked by the command line's parser, so a bad one raises its message.
+"""
+
+import logging
+import os
+import threading
+
+from . import _native
+
+_OPTIONS = _native.options()
+_SUMMARIES = {command["name"]: command["summary"] for command in _native.commands()}
+_LOG = logging.getLogger("terrain_sketch")
+
+
+def keyword(option_name):
+    """``--base-slope`` -> ``base_slope``."""
+    return option_name.lstrip("-").replace("-", "_")
+
+
+def _option_named(key):
+    for spec in _OPTIONS:
+        if keyword(spec["name"]) == key:
+            return spec
+    return None
+
+
+def _value_text(key, spec, value):
+    if isinstance(value, bool):
+        raise ValueError(f"{key} takes {spec['value']}, not {value}")
+    if isinstance(value, (tuple, list)):
+        return ",".join(_value_text(key, spec, part) for part in value)
+    if isinstance(value, float):
+        return repr(value)
+    if isinstance(value, os.PathLike):
+        return os.fspath(value)
+    return str(value)
+
+
+def to_arguments(options):
+    """The command line's arguments for keyword options; None leaves an option at its default.
+    Options unknown here, or of another command, go on too: the parser refuses them by name."""
+    arguments = []
+    for key, value in options.items():
+        spec = _option_named(key)
+        if spec is None:
+            arguments.append("--" + key.replace("_", "-"))
+        elif spec["value"] is None:  # a switch
+            if value not in (True, False, None):
+                raise ValueError(f"{key} is a switch: pass True or False, not {value!r}")
+            if value:
+                arguments.append(spec["name"])
+        elif value is not None:
+            arguments += [spec["name"], _value_text(key, spec, value)]
+    return arguments
+
+
+def path_argument(path):
+    """A path as an argument that cannot be taken for an option."""
+    text = os.fspath(path)
+    return "./" + text if text.startswith("-") else text
+
+
+def _log_line(line):
+    _LOG.info(line)
+
+
+def hooks(progress):
+    """What the native run calls back: progress, the notes (the command line's on stderr, here
+    the terrain_sketch logger's at INFO), and whether it may catch Ctrl-C (only on Python's main
+    thread)."""
+    if progress is not None and not callable(progress):
+        raise ValueError("progress must be a callable taking a fraction from 0 to 1")
+    main = threading.current_thread() is threading.main_thread()
+    return _native.RunHooks(progress, _log_line, main)
+
+
+def options_help(command, leave_out=()):
+    """The options that `command` takes, as a docstring's section."""
+    lines = []
+    for spec in _OPTIONS:
+        key = keyword(spec["name"])
+        if command not in spec["commands"] or key in leave_out:
+            continue
+        value = spec["value"] or "True/False"
+        help_lines = spec["help"].splitlines()
+        lines.append(f"    {key} ({value}): {help_lines[0]}")
+        lines += [f"        {more}" for more in help_lines[1:]]
+    return "\n".join(lines)
+
+
+def summary(command):
+    return " ".join(_SUMMARIES[command].split())

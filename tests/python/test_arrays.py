@@ -1,0 +1,147 @@
+"""sketch() on an array gives the strokes the command line writes from the file it was read from:
+the same geometries (M values too) and attributes, in the same order."""
+
+import os
+import sqlite3
+import struct
+
+import numpy as np
+import pytest
+from osgeo import gdal
+
+import terrain_sketch
+from conftest import DATA, SAMPLE
+
+gdal.UseExceptions()
+
+
+def read_dem(path):
+    dataset = gdal.Open(path)
+    band = dataset.GetRasterBand(1)
+    return (band.ReadAsArray(), dataset.GetGeoTransform(), band.GetNoDataValue(),
+            dataset.GetProjection())
+
+
+def gpkg_lines(path):
+    """A GeoPackage line layer's points (x, y, m when measured) and attributes, read from its
+    geometry blobs (GeoPackage header, then WKB LineString or LineString M) independently of the
+    package."""
+    with sqlite3.connect(path) as db:
+        rows = db.execute("SELECT * FROM silhouettes ORDER BY fid").fetchall()
+        names = [c[1] for c in db.execute("PRAGMA table_info(silhouettes)")]
+    geometry = names.index("geom")
+    lines, attributes = [], []
+    for row in rows:
+        blob = row[geometry]
+        envelope = {0: 0, 1: 32, 2: 48, 3: 48, 4: 64}[(blob[3] >> 1) & 7]
+        wkb = blob[8 + envelope:]
+        kind, count = struct.unpack_from("<II", wkb, 1)
+        dims = 3 if kind == 2002 else 2
+        lines.append(np.array(struct.unpack_from(f"<{count * dims}d", wkb, 9)).reshape(count, dims))
+        attributes.append({n: v for n, v in zip(names, row) if n not in ("fid", "geom")})
+    return lines, attributes
+
+
+def same_strokes(strokes, path):
+    lines, attributes = gpkg_lines(path)
+    assert len(strokes) == len(lines) > 0
+    for k, line in enumerate(lines):
+        np.testing.assert_array_equal(strokes.coordinates(k), line)
+        for name, value in attributes[k].items():
+            column = strokes.columns[name][k]
+            assert (value is None and np.isnan(column)) or value == column, (k, name)
+
+
+@pytest.mark.parametrize("options", [
+    {"azimuth": 270},
+    {"azimuth": 200, "filter": "fixed", "strokes": "exact"},
+    {"azimuth": 35, "adapt": "local", "geometry": "oblique"},
+], ids=["defaults", "exact", "local"])
+def test_array_strokes_are_the_files(tmp_path, options):
+    heights, transform, nodata, crs = read_dem(SAMPLE)
+    strokes = terrain_sketch.sketch(heights, transform, nodata, crs, **options)
+    statistics = terrain_sketch.silhouettes(SAMPLE, tmp_path / "file.gpkg", **options)
+    same_strokes(strokes, str(tmp_path / "file.gpkg"))
+    assert (strokes.m is None) == (options.get("strokes") == "exact")
+    assert strokes.statistics == statistics
+
+
+def test_integer_heights_with_nodata_and_a_masked_array(tmp_path):
+    heights, transform, nodata, crs = read_dem(os.path.join(DATA, "gorillas_utm32n.tif"))
+    whole = terrain_sketch.sketch(heights, transform, nodata, crs, filter="fixed")
+    # Heights as whole metres with a nodata value, as an SRTM tile holds them.
+    metres = np.where(np.isnan(heights) | (heights == nodata), -32768, np.round(heights))
+    as_int16 = metres.astype(np.int16)
+    by_int = terrain_sketch.sketch(as_int16, transform, -32768, crs, filter="fixed")
+    by_float = terrain_sketch.sketch(metres.astype(np.float32), transform, -32768, crs,
+                                     filter="fixed")
+    np.testing.assert_array_equal(by_int.x, by_float.x)
+    assert len(by_int) == len(by_float) > 0
+    masked = np.ma.masked_equal(metres, -32768)
+    by_mask = terrain_sketch.sketch(masked, transform, crs=crs, filter="fixed")
+    np.testing.assert_array_equal(by_mask.y, by_float.y)
+    assert len(whole) > 0
+
+
+def test_a_transposed_view_reads_as_its_values(tmp_path):
+    heights, transform, nodata, crs = read_dem(SAMPLE)
+    view = np.ascontiguousarray(heights.T).T  # the same values, laid out column by column
+    assert not view.flags["C_CONTIGUOUS"]
+    a = terrain_sketch.sketch(view, transform, nodata, crs)
+    b = terrain_sketch.sketch(heights, transform, nodata, crs)
+    np.testing.assert_array_equal(a.x, b.x)
+
+
+def test_rasterio_style_affine_and_crs_objects():
+    heights, transform, nodata, crs = read_dem(SAMPLE)
+
+    class Affine:  # rasterio's and rioxarray's transform
+        def to_gdal(self):
+            return transform
+
+    class Crs:  # rasterio's and pyproj's
+        def to_wkt(self):
+            return crs
+
+    a = terrain_sketch.sketch(heights, Affine(), nodata, Crs())
+    b = terrain_sketch.sketch(heights, transform, nodata, "EPSG:32616")
+    np.testing.assert_array_equal(a.x, b.x)
+    assert "UTM zone 16N" in a.crs
+
+
+def test_bad_arrays_and_options():
+    heights, transform, nodata, crs = read_dem(SAMPLE)
+    with pytest.raises(ValueError, match="2-D"):
+        terrain_sketch.sketch(heights[0], transform, nodata, crs)
+    with pytest.raises(ValueError, match="neither reads nor writes files: preview"):
+        terrain_sketch.sketch(heights, transform, nodata, crs, preview="p.svg")
+    with pytest.raises(ValueError, match="does not take --observer"):
+        terrain_sketch.sketch(heights, transform, nodata, crs, observer=(1, 2))
+    with pytest.raises(ValueError, match="6 numbers"):
+        terrain_sketch.sketch(heights, transform[:4], nodata, crs)
+    with pytest.raises(terrain_sketch.Error, match="geographic"):
+        terrain_sketch.sketch(heights, (-97.0, 0.001, 0, 33.0, 0, -0.001), nodata, "EPSG:4326")
+    with pytest.raises(terrain_sketch.Error, match="CRS 'no such CRS'"):
+        terrain_sketch.sketch(heights, transform, nodata, "no such CRS")
+
+
+def test_a_grid_without_georeferencing_takes_a_cell_size():
+    heights, transform, nodata, _ = read_dem(SAMPLE)
+    strokes = terrain_sketch.sketch(heights, None, nodata, cell_size=75)
+    assert len(strokes) > 0 and strokes.crs == ""
+    with pytest.raises(terrain_sketch.Error, match="cell-size"):
+        terrain_sketch.sketch(heights, None, nodata)
+
+
+def test_geodataframe():
+    geopandas = pytest.importorskip("geopandas")
+    heights, transform, nodata, crs = read_dem(SAMPLE)
+    strokes = terrain_sketch.sketch(heights, transform, nodata, crs)
+    frame = strokes.to_geodataframe()
+    assert isinstance(frame, geopandas.GeoDataFrame)
+    assert len(frame) == len(strokes)
+    assert frame.crs.to_epsg() == 32616
+    first = np.asarray(frame.geometry.iloc[0].coords)
+    np.testing.assert_array_equal(first, strokes.coordinates(0)[:, :2])
+    np.testing.assert_array_equal(frame["weights"].iloc[0], strokes.coordinates(0)[:, 2])
+    assert list(frame.columns[:3]) == ["class", "cells", "length"]

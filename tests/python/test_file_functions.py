@@ -1,0 +1,139 @@
+"""The file functions write what the command line writes, byte for byte, and return its
+statistics; bad options raise ValueError with its words."""
+
+import json
+import os
+import sqlite3
+
+import pytest
+
+import terrain_sketch
+from conftest import DATA, SAMPLE
+
+# The sample's centre, where a panorama's viewer stands.
+OBSERVER = (747300.0, 4021100.0)
+
+# Each command with options of its own, and the outputs it writes (the first is OUTPUT).
+RUNS = [
+    ("silhouettes", {"azimuth": 270, "preview": "preview.svg", "stats_json": "stats.json"},
+     ["strokes.geojson", "preview.svg", "stats.json"]),
+    ("silhouettes", {"azimuth": 200, "filter": "fixed", "strokes": "exact", "no_diagonals": True},
+     ["strokes.fgb"]),
+    ("classify", {"azimuth": 0, "stats_json": "stats.json"}, ["classes.tif", "stats.json"]),
+    ("row-slope", {"azimuth": 180}, ["slope.tif"]),
+    ("drape", {"source": SAMPLE}, ["drape.tif"]),
+    ("pstrokes", {"half_length": 3}, ["pstrokes.geojson"]),
+    ("profiles", {"every": 5}, ["profiles.geojson"]),
+    ("filter-plot", {"filter": "fixed"}, ["filter.html"]),
+    ("panorama", {"observer": OBSERVER, "max_distance": 20000, "visibility": "seen.tif"},
+     ["panorama.gpkg", "seen.tif"]),
+]
+
+
+def cli_arguments(options, folder):
+    """The command line's spelling of the keyword options, files put in `folder`."""
+    arguments = []
+    for key, value in options.items():
+        name = "--" + key.replace("_", "-")
+        if value is True:
+            arguments.append(name)
+        elif isinstance(value, tuple):
+            arguments += [name, ",".join(map(str, value))]
+        else:
+            is_file = isinstance(value, str) and "." in value and "/" not in value
+            arguments += [name, os.path.join(folder, value) if is_file else str(value)]
+    return arguments
+
+
+def in_folder(options, folder):
+    return {key: os.path.join(folder, value) if isinstance(value, str) and "." in value
+            and "/" not in value else value for key, value in options.items()}
+
+
+def gpkg_rows(path):
+    """A GeoPackage's features, table by table (its contents table holds the time it was
+    written, which two runs cannot share)."""
+    with sqlite3.connect(path) as db:
+        tables = [name for (name,) in db.execute(
+            "SELECT table_name FROM gpkg_contents ORDER BY table_name")]
+        return {table: db.execute(f'SELECT * FROM "{table}" ORDER BY fid').fetchall()
+                for table in tables}
+
+
+def same_file(a, b):
+    if a.endswith(".gpkg"):
+        return gpkg_rows(a) == gpkg_rows(b)
+    with open(a, "rb") as fa, open(b, "rb") as fb:
+        return fa.read() == fb.read()
+
+
+@pytest.mark.parametrize("command,options,outputs", RUNS, ids=[r[0] for r in RUNS])
+def test_same_outputs_as_the_command_line(tmp_path, cli, command, options, outputs):
+    by_cli, by_python = tmp_path / "cli", tmp_path / "python"
+    by_cli.mkdir()
+    by_python.mkdir()
+    code, err = cli(command, SAMPLE, by_cli / outputs[0], *cli_arguments(options, str(by_cli)))
+    assert code == 0, err
+    function = getattr(terrain_sketch, command.replace("-", "_"))
+    statistics = function(SAMPLE, by_python / outputs[0], **in_folder(options, str(by_python)))
+    for name in outputs:
+        assert same_file(str(by_cli / name), str(by_python / name)), name
+    if "stats.json" in outputs:
+        with open(by_cli / "stats.json") as f:
+            assert statistics == json.load(f)
+    assert isinstance(statistics, dict)
+    assert bool(statistics) == (command in ("silhouettes", "classify", "panorama"))
+
+
+def test_statistics_follow_the_options(tmp_path):
+    fixed = terrain_sketch.silhouettes(SAMPLE, tmp_path / "a.gpkg", filter="fixed")
+    adaptive = terrain_sketch.silhouettes(SAMPLE, tmp_path / "b.gpkg")
+    assert fixed["filter"]["mode"] == "fixed"
+    assert adaptive["filter"]["mode"] == "adaptive"
+    assert fixed["formulated_strokes"] > 0 and fixed["factual_strokes"] > 0
+
+
+@pytest.mark.parametrize("options,words", [
+    ({"observer": (1, 2)}, "silhouettes does not take --observer (an option of panorama)"),
+    ({"azimut": 90}, "unknown option '--azimut'"),
+    ({"azimuth": "east"}, "--azimuth needs a number, got 'east'"),
+    ({"azimuth": True}, "azimuth takes DEG, not True"),
+    ({"no_diagonals": 3}, "no_diagonals is a switch"),
+    ({"filter": "clever"}, "filter must be 'adaptive' or 'fixed', got 'clever'"),
+    ({"ve": -1}, "exaggeration"),
+    ({"preview": "picture.bmp"}, "give it a .png, .svg or .pdf name"),
+])
+def test_bad_options_raise_value_error_with_the_command_lines_words(tmp_path, cli, options,
+                                                                     words):
+    with pytest.raises(ValueError) as raised:
+        terrain_sketch.silhouettes(SAMPLE, tmp_path / "out.gpkg", **options)
+    assert words in str(raised.value)
+    assert not os.listdir(tmp_path)
+    if not any(isinstance(value, (bool, int)) and key != "ve" for key, value in options.items()):
+        # Spelled for the command line, the same options get the same words.
+        code, err = cli("silhouettes", SAMPLE, tmp_path / "out.gpkg",
+                        *cli_arguments(options, str(tmp_path)))
+        assert code == 1 and f"terrain-sketch: {raised.value}\n" == err
+
+
+def test_a_run_that_cannot_be_done_raises_an_os_error(tmp_path):
+    with pytest.raises(OSError) as missing:
+        terrain_sketch.silhouettes(tmp_path / "none.tif", tmp_path / "out.gpkg")
+    assert "none.tif" in str(missing.value)
+    assert isinstance(missing.value, terrain_sketch.Error)
+    with pytest.raises(terrain_sketch.Error) as geographic:
+        terrain_sketch.silhouettes(os.path.join(DATA, "jacksboro_geo.tif"), tmp_path / "out.gpkg")
+    assert "geographic" in str(geographic.value)
+    with pytest.raises(terrain_sketch.Error) as onto_input:
+        terrain_sketch.row_slope(SAMPLE, SAMPLE)
+    assert "choose another path" in str(onto_input.value)
+    assert not os.listdir(tmp_path)
+
+
+def test_help_lists_each_commands_own_options():
+    assert "azimuth (DEG)" in terrain_sketch.silhouettes.__doc__
+    assert "observer" not in terrain_sketch.silhouettes.__doc__
+    assert "observer (X,Y)" in terrain_sketch.panorama.__doc__
+    assert "default 2.5" in terrain_sketch.silhouettes.__doc__  # ranges and defaults
+    assert "preview" not in terrain_sketch.sketch.__doc__
+    assert "azimuth (DEG)" in terrain_sketch.sketch.__doc__
