@@ -64,4 +64,19 @@ ResolvedParams adapt_filter(const SilhouetteParams& choice, const DemGrid& grid,
   return ResolvedParams(std::move(out), std::move(report));
 }
 
+ResolvedParams resolve_as_reported(const SilhouetteParams& choice, const FilterReport& report) {
+  choice.validate();
+  const AdaptiveParams& asked = choice.adaptive;
+  if (asked.mode != report.choice.mode || asked.adapt != report.choice.adapt)
+    throw Error("the filter's report is of another choice than this run's");
+  if (asked.mode == FilterMode::fixed) return ResolvedParams(choice);
+  if (asked.adapt == Adaptivity::local)
+    throw Error("local adaptivity needs the map of the whole DEM's scales on every machine");
+  SilhouetteParams out = choice;
+  out.adaptive.mode = FilterMode::fixed;
+  out.height_tolerance = report.heights.tolerance;
+  out.filter = report.cutoffs;
+  return ResolvedParams(std::move(out), report);
+}
+
 }  // namespace tsk

@@ -51,6 +51,8 @@ class ResolvedParams {
       : params_(std::move(params)), filter_(std::move(filter)) {}
   friend ResolvedParams adapt_filter(const SilhouetteParams& choice, const DemGrid& grid,
                                      const WindowReader& read);
+  friend ResolvedParams resolve_as_reported(const SilhouetteParams& choice,
+                                            const FilterReport& report);
   SilhouetteParams params_;
   FilterReport filter_;
 };
@@ -61,5 +63,10 @@ class ResolvedParams {
 // Throws Error on bad parameters, and what `read` throws.
 ResolvedParams adapt_filter(const SilhouetteParams& choice, const DemGrid& grid,
                             const WindowReader& read);
+
+// The choice resolved as adapt_filter resolved it on the same DEM, which `report` tells: a run
+// split among machines surveys the DEM once (bands.h). Throws Error when the report is another
+// choice's, or for local adaptivity, whose map of scales a report does not hold.
+ResolvedParams resolve_as_reported(const SilhouetteParams& choice, const FilterReport& report);
 
 }  // namespace tsk

@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <limits>
 
+#include "core/base/errors.h"
+
 namespace tsk {
 namespace {
 
@@ -100,6 +102,21 @@ const std::vector<ChainRef>& ChainLinker::add_profile(const ProfileCandidates& n
   last_.cell.assign(next.cell.begin(), next.cell.end());  // into storage of its own, reused
   last_.reach.assign(next.reach.begin(), next.reach.end());
   return joined_;
+}
+
+void ChainLinker::start_from(const ProfileCandidates& last,
+                             const std::vector<std::uint32_t>& order) {
+  if (order.size() != last.cell.size()) throw Error("a band's chain order does not fit its profile");
+  std::vector<std::uint8_t> seen(order.size(), 0);
+  open_.clear();
+  for (const std::uint32_t k : order) {
+    if (k >= order.size() || seen[k]) throw Error("a band's chain order does not fit its profile");
+    seen[k] = 1;
+    open_.push_back({ChainRef{started_++, take_slot()}, k});
+  }
+  closed_.clear();
+  last_.cell.assign(last.cell.begin(), last.cell.end());
+  last_.reach.assign(last.reach.begin(), last.reach.end());
 }
 
 const std::vector<ChainRef>& ChainLinker::close_all() {

@@ -62,11 +62,19 @@ class ChainLinker {
     return open_.empty() ? nullptr : &open_.front().chain;
   }
 
- private:
   struct Open {
     ChainRef chain;
     std::size_t k;  // index of the chain's last cell in the last profile
   };
+  // The chains open after the last profile, oldest first: one per candidate of that profile.
+  const std::vector<Open>& open() const { return open_; }
+  // Starts as if `last` had just been linked with its candidates' chains open in `order` (the
+  // candidates' indices, oldest chain first), as a run from the grid's first profile would have
+  // left them: what a band of profiles links from (bands.h). Throws Error unless `order` holds
+  // each candidate once.
+  void start_from(const ProfileCandidates& last, const std::vector<std::uint32_t>& order);
+
+ private:
   std::uint32_t take_slot();
 
   bool factual_;

@@ -10,6 +10,7 @@
 #include "core/base/stage_timing.h"
 #include "core/drawn/drawing_pipeline.h"
 #include "core/drawn/drawn_strokes.h"
+#include "core/method/bands.h"
 #include "core/method/chaining.h"
 #include "core/method/profile_stages.h"
 #include "core/method/scan_order.h"
@@ -60,6 +61,18 @@ struct SilhouetteStream::State {
   Strokes factual{true, 0}, formulated;
   CellFlags flags;  // the current strip's classification, its memory reused by the next strip
   SilhouetteResult result;
+  // A band of the run (bands.h): linked from `link_from`, owning [owned_first, owned_end).
+  struct BandLinks {
+    std::vector<std::int64_t> in;                // by slot: its cell's index at owned_first - 1
+    std::vector<std::vector<StrokeCell>> cells;  // by slot: its cells in the band
+  };
+  struct Band {
+    std::size_t link_from = 0, owned_first = 0, owned_end = 0;
+    std::optional<BandOrders> given;
+    BandLinks factual, formulated;
+    BandSketch sketch;
+  };
+  std::optional<Band> band;
   // Drawn strokes only. Declared last: stopped before what it delivers to goes.
   std::unique_ptr<DrawingPipeline> drawing;
 
@@ -94,12 +107,20 @@ struct SilhouetteStream::State {
 
   // Tells `progress` that `done` profiles are done; throws Cancelled when it says stop.
   void report_progress(std::size_t done) const {
-    tell_progress(progress, static_cast<double>(done) / static_cast<double>(frame.profiles));
+    const std::size_t from = band ? band->link_from : 0;
+    const std::size_t to = band ? band->owned_end : frame.profiles;
+    tell_progress(progress, static_cast<double>(done - from) / static_cast<double>(to - from));
   }
 
   // Links the chain candidates of a batch of profiles, in order (SPEC 1.7).
   void link(const std::vector<ProfileChainCells>& batch) {
     for (const ProfileChainCells& c : batch) {
+      if (band) {
+        link_band(factual, band->factual, c.factual, c.factual_cells);
+        link_band(formulated, band->formulated, c.formulated, c.formulated_cells);
+        ++next_linked;
+        continue;
+      }
       link(factual, c.factual, c.factual_cells);
       link(formulated, c.formulated, c.formulated_cells);
       ++next_linked;
@@ -169,6 +190,68 @@ struct SilhouetteStream::State {
     });
   }
 
+  // Links profile next_linked of a band: before its first, only to learn the order of the chains
+  // open where it starts; from its first on, keeping each chain's cells.
+  void link_band(Strokes& strokes, BandLinks& links, const ProfileCandidates& candidates,
+                 const std::vector<StrokeCell>& cells) {
+    const std::size_t p = next_linked;
+    const bool is_factual = strokes.cls == StrokeClass::factual;
+    ChainLinker& linker = strokes.linker;
+    const std::vector<ChainRef>* joined = nullptr;
+    if (p + 1 == band->owned_first && band->given) {
+      linker.start_from(candidates, is_factual ? band->given->factual : band->given->formulated);
+    } else {
+      joined = &linker.add_profile(candidates);
+    }
+    links.in.resize(linker.slot_count(), -1);
+    links.cells.resize(linker.slot_count());
+    if (p + 1 == band->owned_first) {
+      std::vector<std::uint32_t>& order = is_factual ? band->sketch.in.factual : band->sketch.in.formulated;
+      for (const ChainLinker::Open& o : linker.open()) {
+        links.in[o.chain.slot] = static_cast<std::int64_t>(o.k);
+        order.push_back(static_cast<std::uint32_t>(o.k));
+      }
+    }
+    if (p < band->owned_first) return;
+    for (std::size_t k = 0; k < joined->size(); ++k)
+      links.cells[(*joined)[k].slot].push_back(cells[k]);
+    for (const ChainRef& chain : linker.closed()) finish_piece(strokes.cls, links, chain.slot, -1);
+  }
+
+  // A chain of a band closed (out < 0) or going on into the next band from cell `out` of its last
+  // profile: a stroke when it lies wholly in the band, else a piece for the stitcher.
+  void finish_piece(StrokeClass cls, BandLinks& links, std::uint32_t slot, std::int64_t out) {
+    std::vector<StrokeCell> cells = std::move(links.cells[slot]);
+    links.cells[slot].clear();
+    const std::int64_t in = links.in[slot];
+    links.in[slot] = -1;
+    if (in >= 0 || out >= 0) {
+      band->sketch.pieces.push_back({cls, in, out, std::move(cells)});
+      return;
+    }
+    if (static_cast<int>(cells.size()) < params.chain.min_cells) return;
+    StrokeBuilder builder;
+    for (const StrokeCell& cell : cells) builder.add(cell);
+    band->sketch.strokes.push_back(builder.take(cls));
+  }
+
+  // At the band's end: its open chains go on into the next band, in their order, or close at the
+  // grid's end.
+  void finish_band(Strokes& strokes, BandLinks& links) {
+    ChainLinker& linker = strokes.linker;
+    if (band->owned_end == frame.profiles) {
+      for (const ChainRef& chain : linker.close_all()) finish_piece(strokes.cls, links, chain.slot, -1);
+      return;
+    }
+    std::vector<std::uint32_t>& order = strokes.cls == StrokeClass::factual
+                                            ? band->sketch.out.factual
+                                            : band->sketch.out.formulated;
+    for (const ChainLinker::Open& o : linker.open()) {
+      order.push_back(static_cast<std::uint32_t>(o.k));
+      finish_piece(strokes.cls, links, o.chain.slot, static_cast<std::int64_t>(o.k));
+    }
+  }
+
   void deliver(Strokes& strokes, Stroke&& stroke) {
     ++strokes.count;
     strokes.cells += static_cast<std::size_t>(stroke.cells);
@@ -186,6 +269,44 @@ SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransfor
     : state_(std::make_unique<State>(frame, geotransform, params.params(), z_ref, progress,
                                      std::move(sink))) {
   state_->result.filter = params.filter();
+}
+
+SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransform& geotransform,
+                                   const ResolvedParams& params, double z_ref,
+                                   const BandSpec& band, const ProgressFn& progress)
+    : SilhouetteStream(frame, geotransform, params, z_ref, progress) {
+  if (params->strokes.drawn()) throw Error("a run in bands draws exact strokes only");
+  if (band.count == 0 || band.first > frame.profiles || band.count > frame.profiles - band.first)
+    throw Error("the band of profiles " + std::to_string(band.first) + " + " +
+                std::to_string(band.count) + " does not lie in the grid's " +
+                std::to_string(frame.profiles));
+  State::Band b;
+  b.owned_first = band.first;
+  b.owned_end = band.first + band.count;
+  b.given = band.order;
+  const std::size_t halo = band.order ? 1 : std::max<std::size_t>(1, band.halo);
+  b.link_from = band.first - std::min(band.first, halo);
+  b.sketch.first = band.first;
+  b.sketch.count = band.count;
+  b.sketch.filter = params.filter();
+  state_->band = std::move(b);
+  state_->next_profile = state_->next_linked = state_->band->link_from;
+}
+
+std::size_t SilhouetteStream::next_profile() const {
+  return state_->next_profile;
+}
+
+BandSketch SilhouetteStream::finish_band() {
+  State& st = *state_;
+  if (!st.band || st.next_profile != st.band->owned_end)
+    throw Error("not every profile of the band was delivered");
+  st.finish_band(st.factual, st.band->factual);
+  st.finish_band(st.formulated, st.band->formulated);
+  BandSketch sketch = std::move(st.band->sketch);
+  sketch.stats = st.result.stats;
+  tell_progress(st.progress, 1.0);
+  return sketch;
 }
 
 SilhouetteStream::~SilhouetteStream() = default;
@@ -222,7 +343,8 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
         std::uint8_t* f = st.flags.row(row);
         const CellRange range = classify_profile(z, row, p, f, st.frame, st.params, clock);
         clock.time(&StageTimings::chaining, [&] {
-          count_profile(f + range.begin, range.size(), counts);
+          if (!st.band || p >= st.band->owned_first)
+            count_profile(f + range.begin, range.size(), counts);
           cells[k].collect(context, f, p, range);
         });
       }
@@ -251,6 +373,7 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
 
 SilhouetteResult SilhouetteStream::finish() {
   State& st = *state_;
+  if (st.band) throw Error("a band of a run ends with finish_band");
   if (st.next_profile != st.frame.profiles) throw Error("not every profile was delivered");
   const auto start = Clock::now();
   for (State::Strokes* strokes : {&st.factual, &st.formulated}) {

@@ -19,32 +19,37 @@ std::vector<StageFigure> stage_figures(const StageStats& s) {
           {"formulated_strokes", static_cast<double>(s.formulated_strokes), true}};
 }
 
-SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& geotransform,
-                               const ResolvedParams& params, double z_ref, std::size_t strip,
-                               const ProfileReader& read, const ProgressFn& progress,
-                               StrokeSink sink) {
+void stream_strips(SilhouetteStream& stream, const OrientedFrame& frame, std::size_t to,
+                   std::size_t strip, const ProfileReader& read, unsigned threads) {
   check_strip_fits(frame, strip);
-  SilhouetteStream stream(frame, geotransform, params, z_ref, progress, std::move(sink));
   // The strip starting at `first` with its neighbours.
   auto read_strip = [&](std::size_t first, HeightGrid& heights) {
     const std::size_t lo = first > 0 ? first - 1 : 0;
-    const std::size_t hi = std::min(frame.profiles, first + strip + 1);
+    const std::size_t hi = std::min(frame.profiles, std::min(first + strip, to) + 1);
     read(lo, hi - lo, heights);
   };
   // The next strip is read while this one is processed, into memory of its own, by a reader of
   // its own.
   HeightGrid current, next;
-  Worker reader(resolve_threads(params->threads) > 1);
-  reader.run([&] { read_strip(0, current); }).get();
-  for (std::size_t first = 0; first < frame.profiles; first += strip) {
+  Worker reader(threads > 1);
+  const std::size_t from = stream.next_profile();
+  reader.run([&] { read_strip(from, current); }).get();
+  for (std::size_t first = from; first < to; first += strip) {
     std::future<void> reading;
-    if (first + strip < frame.profiles)
-      reading = reader.run([&, first] { read_strip(first + strip, next); });
+    if (first + strip < to) reading = reader.run([&, first] { read_strip(first + strip, next); });
     // If processing throws, the reader finishes the read before it goes.
-    stream.add_strip(current, first, std::min(strip, frame.profiles - first));
+    stream.add_strip(current, first, std::min(strip, to - first));
     if (reading.valid()) reading.get();
     std::swap(current, next);
   }
+}
+
+SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& geotransform,
+                               const ResolvedParams& params, double z_ref, std::size_t strip,
+                               const ProfileReader& read, const ProgressFn& progress,
+                               StrokeSink sink) {
+  SilhouetteStream stream(frame, geotransform, params, z_ref, progress, std::move(sink));
+  stream_strips(stream, frame, frame.profiles, strip, read, resolve_threads(params->threads));
   return stream.finish();
 }
 

@@ -20,6 +20,9 @@
 
 namespace tsk {
 
+struct BandSpec;    // bands.h
+struct BandSketch;  // bands.h
+
 struct SilhouetteResult {
   std::vector<Stroke> strokes;  // factual first, then formulated
   StageStats stats;
@@ -45,7 +48,16 @@ class SilhouetteStream {
   SilhouetteStream(const OrientedFrame& frame, const GeoTransform& geotransform,
                    const ResolvedParams& params, double z_ref, const ProgressFn& progress = {},
                    StrokeSink sink = {});
+  // One band of a run split into bands (bands.h): its strips start at next_profile() and end
+  // with its last profile; finish_band() ends it. Throws Error on drawn strokes or a band beyond
+  // the grid.
+  SilhouetteStream(const OrientedFrame& frame, const GeoTransform& geotransform,
+                   const ResolvedParams& params, double z_ref, const BandSpec& band,
+                   const ProgressFn& progress = {});
   ~SilhouetteStream();
+
+  // The first profile of the next strip.
+  std::size_t next_profile() const;
 
   // Profiles [first, first + count) with their neighbours for the row slope: `z` holds profiles
   // [first - 1, first + count + 1), without the ones beyond the grid's ends. Strips must follow
@@ -54,6 +66,7 @@ class SilhouetteStream {
   void add_strip(const HeightGrid& z, std::size_t first, std::size_t count,
                  bool keep_flags = false);
   SilhouetteResult finish();
+  BandSketch finish_band();
 
  private:
   struct State;
@@ -71,6 +84,12 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
                                const ResolvedParams& params, double z_ref, std::size_t strip,
                                const ProfileReader& read, const ProgressFn& progress = {},
                                StrokeSink sink = {});
+
+// Feeds `stream` its profiles from stream.next_profile() to `to` in strips of `strip` profiles
+// read through `read`, reading the next strip while it works on one (on a thread of its own when
+// `threads` > 1).
+void stream_strips(SilhouetteStream& stream, const OrientedFrame& frame, std::size_t to,
+                   std::size_t strip, const ProfileReader& read, unsigned threads);
 
 // A DEM to read window by window (row 0 north, NaN for nodata), whatever the view: a raster file
 // through GDAL, a QGIS layer through its provider, a grid in memory. The view's frame is made from

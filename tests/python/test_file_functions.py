@@ -3,6 +3,7 @@ statistics; bad options raise ValueError with its words."""
 
 import json
 import os
+import shutil
 import sqlite3
 
 import pytest
@@ -124,10 +125,13 @@ def test_a_run_that_cannot_be_done_raises_an_os_error(tmp_path):
     with pytest.raises(terrain_sketch.Error) as geographic:
         terrain_sketch.silhouettes(os.path.join(DATA, "jacksboro_geo.tif"), tmp_path / "out.gpkg")
     assert "geographic" in str(geographic.value)
-    with pytest.raises(terrain_sketch.Error) as onto_input:
-        terrain_sketch.row_slope(SAMPLE, SAMPLE)
-    assert "choose another path" in str(onto_input.value)
     assert not os.listdir(tmp_path)
+    dem = tmp_path / "dem.tif"
+    shutil.copy(SAMPLE, dem)
+    with pytest.raises(terrain_sketch.Error) as onto_input:
+        terrain_sketch.row_slope(dem, dem)
+    assert "choose another path" in str(onto_input.value)
+    assert os.listdir(tmp_path) == ["dem.tif"]
 
 
 def test_help_lists_each_commands_own_options():

@@ -1,0 +1,123 @@
+// Band sketches as bytes (bands.h): what a cluster's worker hands its client.
+#include "core/base/byte_stream.h"
+#include "core/method/bands.h"
+
+namespace tsk {
+namespace {
+
+constexpr std::uint32_t kBandMagic = 0x54534b42;   // "TSKB"
+constexpr std::uint32_t kOrderMagic = 0x54534b4f;  // "TSKO"
+
+void put_orders(ByteWriter& w, const BandOrders& o) {
+  w.put(o.factual);
+  w.put(o.formulated);
+}
+
+void get_orders(ByteReader& r, BandOrders& o) {
+  r.get(o.factual);
+  r.get(o.formulated);
+}
+
+void get_class(ByteReader& r, StrokeClass& cls) {
+  r.get(cls);
+  if (cls != StrokeClass::factual && cls != StrokeClass::formulated)
+    throw Error("these bytes are not a band's sketch of Terrain Sketch: a stroke of no class");
+}
+
+void put_stroke(ByteWriter& w, const Stroke& s) {
+  w.put(s.cls);
+  w.put(s.points);
+  w.put(s.chain);
+  w.put(s.weights);
+  w.put(s.cells);
+  for (const double v : {s.length, s.mean_slope_pct, s.mean_row_slope_pct, s.mean_depth_m,
+                         s.max_depth_m, s.mean_dist, s.mean_z})
+    w.put(v);
+}
+
+void get_stroke(ByteReader& r, Stroke& s) {
+  get_class(r, s.cls);
+  r.get(s.points);
+  r.get(s.chain);
+  r.get(s.weights);
+  r.get(s.cells);
+  for (double* v : {&s.length, &s.mean_slope_pct, &s.mean_row_slope_pct, &s.mean_depth_m,
+                    &s.max_depth_m, &s.mean_dist, &s.mean_z})
+    r.get(*v);
+}
+
+}  // namespace
+
+std::string band_bytes(const BandSketch& band) {
+  ByteWriter w;
+  w.put(kBandMagic);
+  w.put(static_cast<std::uint64_t>(band.first));
+  w.put(static_cast<std::uint64_t>(band.count));
+  w.put(band.stats);
+  w.put(band.filter);
+  put_orders(w, band.in);
+  put_orders(w, band.out);
+  w.put(static_cast<std::uint64_t>(band.strokes.size()));
+  for (const Stroke& stroke : band.strokes) put_stroke(w, stroke);
+  w.put(static_cast<std::uint64_t>(band.pieces.size()));
+  for (const BandPiece& piece : band.pieces) {
+    w.put(piece.cls);
+    w.put(piece.in);
+    w.put(piece.out);
+    w.put(piece.cells);
+  }
+  return w.take();
+}
+
+BandSketch band_from_bytes(const std::string& bytes) {
+  ByteReader r(bytes, "a band's sketch");
+  std::uint32_t magic = 0;
+  r.get(magic);
+  if (magic != kBandMagic) throw Error("these bytes are not a band's sketch of Terrain Sketch");
+  BandSketch band;
+  std::uint64_t first = 0, count = 0, strokes = 0, pieces = 0;
+  r.get(first);
+  r.get(count);
+  band.first = static_cast<std::size_t>(first);
+  band.count = static_cast<std::size_t>(count);
+  r.get(band.stats);
+  r.get(band.filter);
+  get_orders(r, band.in);
+  get_orders(r, band.out);
+  r.get(strokes);
+  for (std::uint64_t k = 0; k < strokes; ++k) {
+    band.strokes.emplace_back();
+    get_stroke(r, band.strokes.back());
+  }
+  r.get(pieces);
+  for (std::uint64_t k = 0; k < pieces; ++k) {
+    band.pieces.emplace_back();
+    BandPiece& piece = band.pieces.back();
+    get_class(r, piece.cls);
+    r.get(piece.in);
+    r.get(piece.out);
+    r.get(piece.cells);
+  }
+  r.finish();
+  return band;
+}
+
+std::string orders_bytes(const BandOrders& orders) {
+  ByteWriter w;
+  w.put(kOrderMagic);
+  put_orders(w, orders);
+  return w.take();
+}
+
+BandOrders orders_from_bytes(const std::string& bytes) {
+  ByteReader r(bytes, "an order of chains");
+  std::uint32_t magic = 0;
+  r.get(magic);
+  if (magic != kOrderMagic) throw Error("these bytes are not an order of chains of Terrain Sketch");
+  BandOrders orders;
+  get_orders(r, orders);
+  r.finish();
+  return orders;
+}
+
+}  // namespace tsk

@@ -1,0 +1,104 @@
+// A run split into bands of profiles, for machines that each sketch a band (the Python package's
+// Dask runs): every band is sketched on its own, then the bands are stitched, in order, into the
+// strokes of the whole run, exactly as one run makes them (exact strokes).
+//
+// SPEC 1.7 links chains profile by profile, left to right, the older chains choosing first, so a
+// band's linking depends on the order of the chains open where it starts. A band guesses it by
+// linking `halo` profiles before its first from nothing; the stitcher knows the true order from
+// the band before, and a band whose guess was wrong is sketched again from the true order. The
+// chains that run across a band's edges leave it as pieces, their cells kept, which the stitcher
+// joins, building each stroke cell by cell as one run does.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/method/silhouettes.h"
+
+namespace tsk {
+
+// The chains open after a profile, oldest first, as the indices of their cells among the
+// profile's chain candidates: one order per class.
+struct BandOrders {
+  std::vector<std::uint32_t> factual, formulated;
+  bool operator==(const BandOrders& o) const {
+    return factual == o.factual && formulated == o.formulated;
+  }
+  bool operator!=(const BandOrders& o) const { return !(*this == o); }
+};
+
+struct BandSpec {
+  std::size_t first = 0, count = 0;  // the profiles the band owns: [first, first + count)
+  // The order of the chains open at profile first - 1, when known (from the band before); else
+  // the band guesses it by linking `halo` profiles before its first (at least one).
+  std::optional<BandOrders> order;
+  std::size_t halo = 64;
+};
+
+// A chain's cells in a band, when it runs in from the band before or on into the next.
+struct BandPiece {
+  StrokeClass cls = StrokeClass::factual;
+  std::int64_t in = -1;   // its cell's index among the candidates of profile first - 1, or -1
+  std::int64_t out = -1;  // its cell's index among the candidates of the band's last profile
+  std::vector<StrokeCell> cells;  // its cells in the band, in order (none when it ends at first)
+};
+
+struct BandSketch {
+  std::size_t first = 0, count = 0;
+  StageStats stats;             // the cells of the band's own profiles (no strokes counted)
+  std::vector<Stroke> strokes;  // the chains wholly in the band, at least min_cells long
+  std::vector<BandPiece> pieces;
+  BandOrders in;   // the order at first - 1 the band linked from, given or guessed
+  BandOrders out;  // the order after its last profile (none at the grid's end)
+  FilterReport filter;
+};
+
+// Sketches one band of the run of `params` (exact strokes) on the DEM read window by window:
+// what a machine of a cluster does. z_ref as sketch_silhouettes finds it (plan-oblique geometry).
+// Throws Error on drawn strokes, local adaptivity or a band beyond the grid, and what `read`
+// throws; Cancelled when `progress` says stop.
+BandSketch sketch_band(const DemSource& dem, const ResolvedParams& params, const BandSpec& band,
+                       double z_ref = 0.0, const ProgressFn& progress = {});
+
+// Joins bands, given in order, into the strokes of the whole run.
+class BandStitcher {
+ public:
+  explicit BandStitcher(const ResolvedParams& params);
+  // The first profile of the band to add next, and the order its linking must start from.
+  std::size_t next_first() const { return next_first_; }
+  const BandOrders& next_order() const { return order_; }
+  // Whether `band` is the next one and linked from the true order (else sketch it again, giving
+  // next_order()).
+  bool follows(const BandSketch& band) const;
+  // Throws Error unless it follows.
+  void add(BandSketch&& band);
+  // After the band holding the grid's last profile: the strokes in SPEC 1.7's order (factual,
+  // then formulated), and the statistics, as one run gives them. `profiles`: the grid's.
+  SilhouetteResult finish(std::size_t profiles);
+
+ private:
+  // A chain going on into the next band: its stroke so far.
+  struct Open {
+    StrokeBuilder builder;
+    bool live = false;
+  };
+  void join(BandPiece& piece, std::vector<Open>& next_open);
+
+  int min_cells_;
+  std::size_t next_first_ = 0;
+  BandOrders order_;
+  std::vector<Open> open_[2];  // by class, indexed by the cell's index in the last profile
+  SilhouetteResult result_;
+};
+
+// A band sketch as bytes and back, for a machine to hand it to another. Throws Error on bytes
+// that are not one.
+std::string band_bytes(const BandSketch& band);
+BandSketch band_from_bytes(const std::string& bytes);
+std::string orders_bytes(const BandOrders& orders);
+BandOrders orders_from_bytes(const std::string& bytes);
+
+}  // namespace tsk

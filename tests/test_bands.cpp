@@ -1,0 +1,140 @@
+// A run cut into bands of profiles and stitched (core/method/bands.h) against the same run made
+// whole by sketch_silhouettes: the same strokes, point for point and attribute for attribute, in
+// the same order, and the same statistics, on real DEMs, cardinal and resampled views, bands as
+// narrow as one profile, halos too short to guess the chains' order (so bands are sketched again)
+// and long enough, and the bands handed over as bytes.
+#include <cstring>
+
+#include "catch_compat.h"
+#include "core/method/bands.h"
+#include "io/read/dem_reader.h"
+
+using namespace tsk;
+
+namespace {
+
+const std::string kData = TSK_TEST_DATA;
+
+ResolvedParams exact_params(const io::DemFile& dem, double azimuth, FilterMode mode) {
+  SilhouetteParams p;
+  p.view.azimuth_deg = azimuth;
+  p.adaptive.mode = mode;
+  p.threads = 2;
+  return adapt_filter(p, dem.info().grid, dem.source().read);
+}
+
+struct Stitched {
+  SilhouetteResult result;
+  std::size_t bands = 0, sketched_again = 0;
+};
+
+// Sketches the bands of `width` profiles apart, as machines would, then stitches them in order,
+// sketching a band again from the true order when its guess was wrong. Each band goes through
+// bytes.
+Stitched in_bands(const io::DemFile& dem, const ResolvedParams& params, std::size_t width,
+                  std::size_t halo) {
+  const OrientedFrame frame = make_frame(dem.info().grid, params->view.azimuth_deg);
+  std::vector<std::string> sketches;
+  for (std::size_t first = 0; first < frame.profiles; first += width) {
+    BandSpec spec{first, std::min(width, frame.profiles - first), std::nullopt, halo};
+    sketches.push_back(band_bytes(sketch_band(dem.source(), params, spec)));
+  }
+  Stitched out{SilhouetteResult(), sketches.size(), 0};
+  BandStitcher stitcher(params);
+  for (const std::string& bytes : sketches) {
+    BandSketch band = band_from_bytes(bytes);
+    if (!stitcher.follows(band)) {
+      ++out.sketched_again;
+      const BandOrders order = orders_from_bytes(orders_bytes(stitcher.next_order()));
+      band = sketch_band(dem.source(), params, BandSpec{band.first, band.count, order, 0});
+      REQUIRE(stitcher.follows(band));
+    }
+    stitcher.add(std::move(band));
+  }
+  out.result = stitcher.finish(frame.profiles);
+  return out;
+}
+
+bool same_bits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+void require_same_strokes(const SilhouetteResult& whole, const SilhouetteResult& stitched) {
+  REQUIRE(stitched.strokes.size() == whole.strokes.size());
+  for (std::size_t k = 0; k < whole.strokes.size(); ++k) {
+    const Stroke& a = whole.strokes[k];
+    const Stroke& b = stitched.strokes[k];
+    INFO("stroke " << k);
+    REQUIRE(a.cls == b.cls);
+    REQUIRE(a.cells == b.cells);
+    REQUIRE(a.points.size() == b.points.size());
+    for (std::size_t i = 0; i < a.points.size(); ++i) {
+      REQUIRE(same_bits(a.points[i].x, b.points[i].x));
+      REQUIRE(same_bits(a.points[i].y, b.points[i].y));
+    }
+    for (const StrokeRealField& field : stroke_real_fields())
+      REQUIRE(same_bits(a.*(field.member), b.*(field.member)));
+  }
+  const StageStats& s = whole.stats;
+  const StageStats& t = stitched.stats;
+  CHECK(t.valid == s.valid);
+  CHECK(t.hidden == s.hidden);
+  CHECK(t.occluding == s.occluding);
+  CHECK(t.candidate == s.candidate);
+  CHECK(t.filtered == s.filtered);
+  CHECK(t.thinned == s.thinned);
+  CHECK(t.generalised == s.generalised);
+  CHECK(t.factual_strokes == s.factual_strokes);
+  CHECK(t.formulated_strokes == s.formulated_strokes);
+}
+
+}  // namespace
+
+TEST_CASE("bands stitched give the strokes of one run", "[bands]") {
+  struct Case {
+    const char* file;
+    double azimuth;
+    FilterMode mode;
+  };
+  const Case cases[] = {{"jacksboro_utm16n.tif", 90, FilterMode::fixed},
+                        {"jacksboro_utm16n.tif", 200, FilterMode::adaptive},
+                        {"gorillas_utm32n.tif", 270, FilterMode::adaptive},
+                        {"volcano.tif", 0, FilterMode::fixed}};
+  for (const Case& c : cases) {
+    const io::DemFile dem(kData + "/" + c.file, io::DemOptions());
+    const ResolvedParams params = exact_params(dem, c.azimuth, c.mode);
+    const SilhouetteResult whole = sketch_silhouettes(dem.source(), params.params());
+    REQUIRE(whole.stats.formulated_strokes > 0);
+    for (const std::size_t width : {1, 7, 40, 100000}) {
+      for (const std::size_t halo : {1, 64}) {
+        INFO(c.file << " from " << c.azimuth << ", bands of " << width << ", halo " << halo);
+        const Stitched stitched = in_bands(dem, params, width, halo);
+        require_same_strokes(whole, stitched.result);
+        // A halo of one profile guesses wrong somewhere among many bands, so the repair is tested.
+        if (halo == 1 && width <= 7) CHECK(stitched.sketched_again > 0);
+      }
+    }
+  }
+}
+
+TEST_CASE("bands refuse what they cannot stitch", "[bands]") {
+  const io::DemFile dem(kData + "/jacksboro_utm16n.tif", io::DemOptions());
+  const ResolvedParams params = exact_params(dem, 90, FilterMode::fixed);
+  BandSketch first = sketch_band(dem.source(), params, BandSpec{0, 50, std::nullopt, 8});
+  BandSketch third = sketch_band(dem.source(), params, BandSpec{100, 50, std::nullopt, 8});
+  BandStitcher stitcher(params);
+  CHECK_FALSE(stitcher.follows(third));
+  CHECK_THROWS_WITH(stitcher.add(std::move(third)), Catch::Contains("does not follow"));
+  stitcher.add(std::move(first));
+  CHECK_THROWS_WITH(stitcher.finish(1000), Catch::Contains("last profile"));
+  std::string bytes = band_bytes(sketch_band(dem.source(), params, BandSpec{0, 5, {}, 1}));
+  CHECK_THROWS_WITH(band_from_bytes(bytes.substr(0, bytes.size() - 3)),
+                    Catch::Contains("not a band's sketch"));
+  CHECK_THROWS_WITH(orders_from_bytes(bytes), Catch::Contains("not an order"));
+  SilhouetteParams drawn;
+  drawn.strokes.mode = StrokeMode::drawn;
+  CHECK_THROWS_WITH(sketch_band(dem.source(), ResolvedParams(drawn), BandSpec{0, 5, {}, 1}),
+                    Catch::Contains("exact strokes only"));
+  CHECK_THROWS_WITH(sketch_band(dem.source(), params, BandSpec{400, 100, {}, 1}),
+                    Catch::Contains("does not lie in the grid"));
+}
