@@ -27,7 +27,7 @@ void get_class(ByteReader& r, StrokeClass& cls) {
 void put_stroke(ByteWriter& w, const Stroke& s) {
   w.put(s.cls);
   w.put(s.points);
-  w.put(s.chain);
+  w.put(s.chain.front());
   w.put(s.weights);
   w.put(s.cells);
   for (const double v : {s.length, s.mean_slope_pct, s.mean_row_slope_pct, s.mean_depth_m,
@@ -38,7 +38,8 @@ void put_stroke(ByteWriter& w, const Stroke& s) {
 void get_stroke(ByteReader& r, Stroke& s) {
   get_class(r, s.cls);
   r.get(s.points);
-  r.get(s.chain);
+  s.chain.resize(1);
+  r.get(s.chain.front());
   r.get(s.weights);
   r.get(s.cells);
   for (double* v : {&s.length, &s.mean_slope_pct, &s.mean_row_slope_pct, &s.mean_depth_m,

@@ -37,8 +37,20 @@ BandSketch sketch_band(const DemSource& dem, const ResolvedParams& params, const
   return stream.finish_band();
 }
 
-BandStitcher::BandStitcher(const ResolvedParams& params) : min_cells_(params->chain.min_cells) {
+BandStitcher::BandStitcher(const ResolvedParams& params, StrokeSink sink)
+    : min_cells_(params->chain.min_cells), sink_(std::move(sink)) {
   result_.filter = params.filter();
+}
+
+void BandStitcher::keep(Stroke&& stroke) {
+  StageStats& stats = result_.stats;
+  stats.generalised += static_cast<std::size_t>(stroke.cells);
+  ++(stroke.cls == StrokeClass::factual ? stats.factual_strokes : stats.formulated_strokes);
+  if (sink_) {
+    sink_(std::move(stroke));
+  } else {
+    result_.strokes.push_back(std::move(stroke));
+  }
 }
 
 bool BandStitcher::follows(const BandSketch& band) const {
@@ -52,7 +64,7 @@ void BandStitcher::add(BandSketch&& band) {
                 "chains the band before ended with");
   }
   add_counts(band.stats, result_.stats);
-  for (Stroke& stroke : band.strokes) result_.strokes.push_back(std::move(stroke));
+  for (Stroke& stroke : band.strokes) keep(std::move(stroke));
   std::vector<Open> next[2];
   next[0].resize(band.out.factual.size());
   next[1].resize(band.out.formulated.size());
@@ -81,7 +93,7 @@ void BandStitcher::join(BandPiece& piece, std::vector<Open>& next_open) {
   // Cell after cell, as one run builds the stroke: the same sums in the same order.
   for (const StrokeCell& cell : piece.cells) builder.add(cell);
   if (piece.out < 0) {
-    if (builder.cells() >= min_cells_) result_.strokes.push_back(builder.take(piece.cls));
+    if (builder.cells() >= min_cells_) keep(builder.take(piece.cls));
     return;
   }
   const auto out = static_cast<std::size_t>(piece.out);
@@ -98,11 +110,6 @@ SilhouetteResult BandStitcher::finish(std::size_t profiles) {
   std::sort(strokes.begin(), strokes.end(), [](const Stroke& a, const Stroke& b) {
     return a.cls != b.cls ? a.cls == StrokeClass::factual : started_before(a, b);
   });
-  StageStats& stats = result_.stats;
-  for (const Stroke& stroke : strokes) {
-    stats.generalised += static_cast<std::size_t>(stroke.cells);
-    ++(stroke.cls == StrokeClass::factual ? stats.factual_strokes : stats.formulated_strokes);
-  }
   return std::move(result_);
 }
 

@@ -66,7 +66,9 @@ BandSketch sketch_band(const DemSource& dem, const ResolvedParams& params, const
 // Joins bands, given in order, into the strokes of the whole run.
 class BandStitcher {
  public:
-  explicit BandStitcher(const ResolvedParams& params);
+  // With a sink, each stroke goes to it as soon as its band is added (the bands' order, not SPEC
+  // 1.7's), and the result of finish() holds none.
+  explicit BandStitcher(const ResolvedParams& params, StrokeSink sink = {});
   // The first profile of the band to add next, and the order its linking must start from.
   std::size_t next_first() const { return next_first_; }
   const BandOrders& next_order() const { return order_; }
@@ -86,16 +88,19 @@ class BandStitcher {
     bool live = false;
   };
   void join(BandPiece& piece, std::vector<Open>& next_open);
+  void keep(Stroke&& stroke);
 
   int min_cells_;
+  StrokeSink sink_;
   std::size_t next_first_ = 0;
   BandOrders order_;
   std::vector<Open> open_[2];  // by class, indexed by the cell's index in the last profile
   SilhouetteResult result_;
 };
 
-// A band sketch as bytes and back, for a machine to hand it to another. Throws Error on bytes
-// that are not one.
+// A band sketch as bytes and back, for a machine to hand it to another: each stroke's chain
+// keeps only its first cell (its place in SPEC 1.7's order), which is all the stitcher reads of
+// it. Throws Error on bytes that are not one.
 std::string band_bytes(const BandSketch& band);
 BandSketch band_from_bytes(const std::string& bytes);
 std::string orders_bytes(const BandOrders& orders);

@@ -106,7 +106,8 @@ const std::vector<ChainRef>& ChainLinker::add_profile(const ProfileCandidates& n
 
 void ChainLinker::start_from(const ProfileCandidates& last,
                              const std::vector<std::uint32_t>& order) {
-  if (order.size() != last.cell.size()) throw Error("a band's chain order does not fit its profile");
+  if (order.size() != last.cell.size())
+    throw Error("a band's chain order does not fit its profile");
   std::vector<std::uint8_t> seen(order.size(), 0);
   open_.clear();
   for (const std::uint32_t k : order) {

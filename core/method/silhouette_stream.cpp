@@ -206,7 +206,8 @@ struct SilhouetteStream::State {
     links.in.resize(linker.slot_count(), -1);
     links.cells.resize(linker.slot_count());
     if (p + 1 == band->owned_first) {
-      std::vector<std::uint32_t>& order = is_factual ? band->sketch.in.factual : band->sketch.in.formulated;
+      std::vector<std::uint32_t>& order =
+          is_factual ? band->sketch.in.factual : band->sketch.in.formulated;
       for (const ChainLinker::Open& o : linker.open()) {
         links.in[o.chain.slot] = static_cast<std::int64_t>(o.k);
         order.push_back(static_cast<std::uint32_t>(o.k));
@@ -240,7 +241,8 @@ struct SilhouetteStream::State {
   void finish_band(Strokes& strokes, BandLinks& links) {
     ChainLinker& linker = strokes.linker;
     if (band->owned_end == frame.profiles) {
-      for (const ChainRef& chain : linker.close_all()) finish_piece(strokes.cls, links, chain.slot, -1);
+      for (const ChainRef& chain : linker.close_all())
+        finish_piece(strokes.cls, links, chain.slot, -1);
       return;
     }
     std::vector<std::uint32_t>& order = strokes.cls == StrokeClass::factual
@@ -272,8 +274,8 @@ SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransfor
 }
 
 SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransform& geotransform,
-                                   const ResolvedParams& params, double z_ref,
-                                   const BandSpec& band, const ProgressFn& progress)
+                                   const ResolvedParams& params, double z_ref, const BandSpec& band,
+                                   const ProgressFn& progress)
     : SilhouetteStream(frame, geotransform, params, z_ref, progress) {
   if (params->strokes.drawn()) throw Error("a run in bands draws exact strokes only");
   if (band.count == 0 || band.first > frame.profiles || band.count > frame.profiles - band.first)

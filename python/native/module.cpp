@@ -13,6 +13,7 @@
 #include "cli/cli_app.h"
 #include "cli/option_table.h"
 #include "python/native/array_sketch.h"
+#include "python/native/band_runs.h"
 #include "python/native/python_run.h"
 
 namespace tsk::python {
@@ -99,6 +100,53 @@ py::dict sketch(const py::array& heights, const py::object& geotransform, const 
   return columns_to_python(columns);
 }
 
+// Runs `work` as a run from Python without hooks: the GIL released, errors raised as Python's.
+template <typename Work>
+void quietly(Work&& work) {
+  run_from_python(RunHooks{py::none(), py::none(), false},
+                  [&](const ProgressFn&, std::ostream&) { work(); });
+}
+
+py::dict plan_run_in_bands(const std::string& input, const std::string& output,
+                           const Strings& options, const RunHooks& hooks) {
+  BandPlan plan;
+  run_from_python(hooks, [&](const ProgressFn&, std::ostream&) {
+    plan = tsk::python::plan_bands(input, output, options);
+  });
+  py::dict result;
+  result["profiles"] = plan.profiles;
+  result["filter"] = py::bytes(plan.filter);
+  return result;
+}
+
+py::bytes sketch_one_band(const std::string& input, const Strings& options,
+                          const std::string& filter, std::size_t first, std::size_t count,
+                          std::size_t halo, const std::string& order) {
+  std::string band;
+  quietly([&] { band = sketch_band_bytes(input, options, filter, first, count, halo, order); });
+  return py::bytes(band);
+}
+
+// Stitches the bands that `next()` hands back and writes OUTPUT (band_runs.h).
+std::string stitch(const std::string& input, const std::string& output, const Strings& options,
+                   const std::string& filter, std::size_t profiles, const py::object& next,
+                   const py::object& again, const RunHooks& hooks) {
+  // Called from the run, the interpreter's lock released: each call takes it.
+  const BandSource bands{[&next] {
+                           py::gil_scoped_acquire lock;
+                           return next().cast<std::string>();
+                         },
+                         [&again](std::size_t first, std::size_t count, const std::string& order) {
+                           py::gil_scoped_acquire lock;
+                           return again(first, count, py::bytes(order)).cast<std::string>();
+                         }};
+  std::string statistics;
+  run_from_python(hooks, [&](const ProgressFn&, std::ostream&) {
+    statistics = stitch_bands(input, output, options, filter, profiles, bands);
+  });
+  return statistics;
+}
+
 py::list option_list() {
   py::list options;
   for (const cli::OptionSpec& spec : cli::option_table()) {
@@ -135,6 +183,13 @@ PYBIND11_MODULE(_native, m) {
   m.def("run_command", &run_command, py::arg("name"), py::arg("args"), py::arg("hooks"));
   m.def("sketch", &sketch, py::arg("heights"), py::arg("transform"), py::arg("crs"),
         py::arg("nodata"), py::arg("options"), py::arg("hooks"));
+  m.def("plan_bands", &plan_run_in_bands, py::arg("input"), py::arg("output"), py::arg("options"),
+        py::arg("hooks"));
+  m.def("sketch_band", &sketch_one_band, py::arg("input"), py::arg("options"), py::arg("filter"),
+        py::arg("first"), py::arg("count"), py::arg("halo"), py::arg("order"));
+  m.def("stitch_bands", &stitch, py::arg("input"), py::arg("output"), py::arg("options"),
+        py::arg("filter"), py::arg("profiles"), py::arg("next"), py::arg("again"),
+        py::arg("hooks"));
   m.def("options", &option_list);
   m.def("commands", &command_list);
   m.attr("version") = TSK_VERSION;

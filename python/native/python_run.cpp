@@ -74,6 +74,10 @@ class LineLog : public std::streambuf {
     raise(error_type, e.what());
   } catch (const std::bad_alloc&) {
     raise(PyExc_MemoryError, "out of memory");
+  } catch (py::error_already_set&) {
+    throw;  // a Python callable's own exception
+  } catch (const std::exception& e) {
+    raise(PyExc_RuntimeError, std::string("unexpected failure: ") + e.what());
   }
 }
 

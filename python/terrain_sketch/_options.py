@@ -64,7 +64,7 @@ def path_argument(path):
     return "./" + text if text.startswith("-") else text
 
 
-def _log_line(line):
+def log_line(line):
     _LOG.info(line)
 
 
@@ -75,7 +75,7 @@ def hooks(progress):
     if progress is not None and not callable(progress):
         raise ValueError("progress must be a callable taking a fraction from 0 to 1")
     main = threading.current_thread() is threading.main_thread()
-    return _native.RunHooks(progress, _log_line, main)
+    return _native.RunHooks(progress, log_line, main)
 
 
 def options_help(command, leave_out=()):

@@ -1,0 +1,96 @@
+"""The distributed issue's benchmark: terrain_sketch.dask with single-threaded worker processes
+against the command line with as many threads, on the same DEM (exact strokes), and what a band
+costs: its sketch, its bytes, its edges, and the client's stitching.
+
+    /usr/bin/python3 bench/dask_bands.py BUILD_DIR DEM [WORKERS=2] [BAND_PROFILES...]
+
+Prints the CLI's wall time, then for each band width: the Dask run's wall time (cluster started
+beforehand, as a user keeps one), its ratio to the CLI, the bands sketched again, and per band
+the median sketch time on a worker, bytes, pieces crossing its edges and the stitching time on
+the client. Figures, not a test.
+"""
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+build, dem = os.path.abspath(sys.argv[1]), sys.argv[2]
+workers = int(sys.argv[3]) if len(sys.argv) > 3 else 2
+widths = [int(w) for w in sys.argv[4:]] or [250, 500, 1000, 2000, 4000]
+sys.path.insert(0, os.path.join(build, "python"))
+
+import distributed  # noqa: E402
+
+import terrain_sketch  # noqa: E402
+import terrain_sketch.dask as tsd  # noqa: E402
+from terrain_sketch import _native, _options  # noqa: E402
+
+OUT = "/tmp/tsk-dask-bench"
+
+
+def cli_seconds():
+    start = time.monotonic()
+    subprocess.run([os.path.join(build, "cli", "terrain-sketch"), "silhouettes", dem,
+                    f"{OUT}/cli.gpkg", "--strokes", "exact", "--threads", str(workers)],
+                   check=True, capture_output=True)
+    return time.monotonic() - start
+
+
+def timed_band(arguments, filter_report, first, count):
+    start = time.monotonic()
+    band = _native.sketch_band(dem, arguments, filter_report, first, count, tsd.HALO, b"")
+    return time.monotonic() - start, band
+
+
+def band_figures(client, width):
+    """Per-band figures: sketch seconds on a worker, bytes, and the client's stitching."""
+    arguments = _options.to_arguments({"strokes": "exact"})
+    plan = _native.plan_bands(dem, f"{OUT}/b.gpkg", arguments, _options.hooks(None))
+    profiles = plan["profiles"]
+    bands = [(f, min(width, profiles - f)) for f in range(0, profiles, width)]
+    results = client.gather([client.submit(timed_band, arguments, plan["filter"], f, c, pure=False)
+                             for f, c in bands])
+    start, again = time.monotonic(), 0
+    sketches = iter(results)
+
+    def next_band():
+        return next(sketches, (0, b""))[1]
+
+    def sketch_again(first, count, order):
+        nonlocal again
+        again += 1
+        return _native.sketch_band(dem, arguments, plan["filter"], first, count, 0, order)
+
+    _native.stitch_bands(dem, f"{OUT}/b.gpkg", arguments, plan["filter"], profiles, next_band,
+                         sketch_again, _native.RunHooks(None, None, False))
+    stitch = time.monotonic() - start
+    sizes = [len(b) for _, b in results]
+    return (statistics.median(s for s, _ in results), statistics.median(sizes), stitch, again,
+            len(bands))
+
+
+def main():
+    os.makedirs(OUT, exist_ok=True)
+    cli = statistics.median(cli_seconds() for _ in range(3))
+    print(f"CLI, {workers} threads, exact strokes: {cli:.2f} s")
+    with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                  dashboard_address=":0") as cluster, \
+            distributed.Client(cluster) as client:
+        client.run(lambda: __import__("terrain_sketch"))
+        for width in widths:
+            runs = []
+            for _ in range(3):
+                start = time.monotonic()
+                tsd.silhouettes(dem, f"{OUT}/dask.gpkg", client, width, strokes="exact")
+                runs.append(time.monotonic() - start)
+            wall = statistics.median(runs)
+            band_s, band_bytes, stitch_s, again, count = band_figures(client, width)
+            print(f"bands of {width:5d} profiles ({count:3d} bands): {wall:.2f} s = "
+                  f"{wall / cli:.2f}x the CLI; per band {band_s:.3f} s on a worker, "
+                  f"{band_bytes / 1e6:.2f} MB; stitching and writing {stitch_s:.2f} s on the "
+                  f"client ({stitch_s / count * 1000:.1f} ms a band); sketched again {again}")
+
+
+if __name__ == "__main__":
+    main()

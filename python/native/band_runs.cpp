@@ -1,0 +1,101 @@
+#include "python/native/band_runs.h"
+
+#include <filesystem>
+
+#include "cli/command_support.h"
+#include "cli/options.h"
+#include "core/base/byte_stream.h"
+#include "core/method/run_note.h"
+#include "io/write/vector_writer.h"
+
+namespace tsk::python {
+namespace {
+
+std::string filter_bytes(const FilterReport& report) {
+  ByteWriter w;
+  w.put(report);
+  return w.take();
+}
+
+FilterReport filter_from_bytes(const std::string& bytes) {
+  ByteReader r(bytes, "a filter's report");
+  FilterReport report;
+  r.get(report);
+  r.finish();
+  return report;
+}
+
+// The options of a run in bands: the silhouettes command's, but what it cannot take.
+cli::Options band_options(const std::vector<std::string>& options) {
+  const cli::Options o = cli::parse_choices("silhouettes", options);
+  if (o.params.strokes.drawn())
+    throw cli::UsageError("a run in bands draws the thesis's exact strokes: give strokes='exact'");
+  if (o.params.adaptive.mode == FilterMode::adaptive &&
+      o.params.adaptive.adapt == Adaptivity::local)
+    throw cli::UsageError("a run in bands adapts the filter to the whole DEM, not locally");
+  if (o.params.geometry == Geometry::oblique)
+    throw cli::UsageError("a run in bands draws in map geometry, not plan-oblique");
+  if (!o.preview.empty() || !o.stats_json.empty() || o.timings)
+    throw cli::UsageError("a run in bands writes OUTPUT only: no preview, stats_json or timings");
+  return o;
+}
+
+}  // namespace
+
+BandPlan plan_bands(const std::string& input, const std::string& output,
+                    const std::vector<std::string>& options) {
+  band_options(options);
+  std::vector<std::string> args = {input, output};
+  args.insert(args.end(), options.begin(), options.end());
+  const cli::Options o = cli::parse("silhouettes", args);  // the paths checked as the command does
+  io::check_vector_output(o.output, o.format);
+  const io::DemFile dem(o.input, o.dem);
+  const ResolvedParams params = adapt_filter(o.params, dem.info().grid, dem.source().read);
+  const OrientedFrame frame = make_frame(dem.info().grid, o.params.view.azimuth_deg);
+  return {frame.profiles, filter_bytes(params.filter())};
+}
+
+std::string sketch_band_bytes(const std::string& input, const std::vector<std::string>& options,
+                              const std::string& filter, std::size_t first, std::size_t count,
+                              std::size_t halo, const std::string& order) {
+  const cli::Options o = band_options(options);
+  const ResolvedParams params = resolve_as_reported(o.params, filter_from_bytes(filter));
+  const io::DemFile dem(input, o.dem);
+  BandSpec spec{first, count, std::nullopt, halo};
+  if (!order.empty()) spec.order = orders_from_bytes(order);
+  return band_bytes(sketch_band(dem.source(), params, spec));
+}
+
+std::string stitch_bands(const std::string& input, const std::string& output,
+                         const std::vector<std::string>& options, const std::string& filter,
+                         std::size_t profiles, const BandSource& bands) {
+  std::vector<std::string> args = {input, output};
+  args.insert(args.end(), options.begin(), options.end());
+  const cli::Options o = cli::parse("silhouettes", args);
+  const ResolvedParams params =
+      resolve_as_reported(band_options(options).params, filter_from_bytes(filter));
+  const io::DemFile dem(o.input, o.dem);  // its CRS
+  SilhouetteResult result;
+  io::write_strokes(
+      o.output, o.format, dem.info().srs_wkt,
+      [&](const io::StrokeWriter& write) {
+        BandStitcher stitcher(params, [&write](Stroke&& stroke) { write(stroke); });
+        for (std::string bytes = bands.next(); !bytes.empty(); bytes = bands.next()) {
+          BandSketch band = band_from_bytes(bytes);
+          if (!stitcher.follows(band)) {
+            band = band_from_bytes(
+                bands.again(band.first, band.count, orders_bytes(stitcher.next_order())));
+          }
+          stitcher.add(std::move(band));
+        }
+        result = stitcher.finish(profiles);
+      },
+      io::kStrokeLayer, false,
+      [&] {
+        return run_note({std::filesystem::path(o.input).filename().string(), o.dem.band,
+                         o.params.view, result.filter, false, TSK_VERSION});
+      });
+  return cli::stats_json(result.stats, result.filter);
+}
+
+}  // namespace tsk::python

@@ -1,0 +1,111 @@
+"""Silhouettes of DEMs beyond one machine, on a Dask cluster.
+
+The view's profiles are cut into bands. Each task reads its own band of the DEM from the file
+(a GeoTIFF, COG or VRT on storage every worker sees; no DEM goes through the scheduler), sketches
+it and returns its strokes and the chains that run across its edges. The client stitches the
+bands in order into one output, written whole, with the same strokes as one machine's run
+(``--strokes exact``; see docs/DISTRIBUTED.md)::
+
+    from dask.distributed import Client
+    import terrain_sketch.dask
+    stats = terrain_sketch.dask.silhouettes("dem.vrt", "strokes.gpkg", Client("tcp://host:8786"),
+                                            strokes="exact", azimuth=270)
+"""
+
+import json
+import math
+import uuid
+
+from . import _native, _options
+
+# Profiles linked before a band's first to guess the order of the chains open there: long enough
+# that a band seldom has to be sketched again from the true order.
+HALO = 64
+
+
+def _sketch_band(input, arguments, filter_report, first, count, halo, order):
+    """One task: a band of profiles sketched from the DEM's file, as bytes."""
+    return _native.sketch_band(input, arguments, filter_report, first, count, halo, order or b"")
+
+
+def _band_width(profiles, workers):
+    """About four bands a worker, so that a slow one holds up little, and none narrower than
+    four halos, so that guessing costs little."""
+    return max(4 * HALO, math.ceil(profiles / max(1, 4 * workers)))
+
+
+def silhouettes(input, output, client=None, band_profiles=None, *, progress=None, **options):
+    """silhouettes(input, output, client=None, band_profiles=None, *, progress=None, **options)
+
+    The silhouettes command on a Dask cluster: `client` (a dask.distributed.Client; None makes a
+    LocalCluster of one single-threaded worker process a core for the run), bands of
+    `band_profiles` profiles (None: about four a worker), and the options of
+    terrain_sketch.silhouettes() but those that need the whole DEM on one machine: exact strokes
+    only (strokes="exact"), map geometry, the filter fixed or adapted to the whole DEM (surveyed
+    once, by the client), and no files beyond OUTPUT. Returns the stage statistics as a dict.
+    Raises ValueError on bad options, terrain_sketch.Error when the run cannot be done (a worker
+    that cannot read the DEM ends it with its message); a worker lost mid-run has its band
+    sketched again by another. OUTPUT is written whole at the end, or not at all.
+    """
+    from dask.distributed import Client, LocalCluster
+
+    input_path, output_path = _options.path_argument(input), _options.path_argument(output)
+    arguments = _options.to_arguments(options)
+    hooks = _options.hooks(progress)
+    plan = _native.plan_bands(input_path, output_path, arguments, hooks)
+    cluster = None
+    if client is None:
+        import os
+
+        cluster = LocalCluster(n_workers=os.cpu_count() or 1, threads_per_worker=1,
+                               processes=True, dashboard_address=":0")
+        client = Client(cluster)
+    try:
+        profiles = plan["profiles"]
+        workers = len(client.scheduler_info()["workers"])
+        width = band_profiles or _band_width(profiles, workers)
+        if width < 1:
+            raise ValueError(f"band_profiles must be at least 1, got {width}")
+        statistics = _stitch(client, input_path, output_path, arguments, plan, width, progress)
+    finally:
+        if cluster is not None:
+            client.close()
+            cluster.close()
+    return json.loads(statistics)
+
+
+def _stitch(client, input_path, output_path, arguments, plan, width, progress):
+    """Submits every band, then stitches them as they come back, in order, writing each stroke
+    as soon as it is whole; a band whose guess of the chains' order was wrong is sketched again
+    from the true order."""
+    profiles, filter_report = plan["profiles"], plan["filter"]
+    token = uuid.uuid4().hex
+    bands = [(first, min(width, profiles - first)) for first in range(0, profiles, width)]
+    futures = [client.submit(_sketch_band, input_path, arguments, filter_report, first, count,
+                             HALO, None, key=f"terrain-sketch-band-{first}-{token}", pure=False)
+               for first, count in bands]
+    done = 0
+
+    def next_band():
+        nonlocal done
+        if done == len(futures):
+            return b""
+        band = futures[done].result()
+        futures[done].release()
+        done += 1
+        if progress is not None and progress(done / len(futures)) is False:
+            client.cancel(futures[done:])
+            raise _native.Cancelled("the progress callable asked to stop; no output written")
+        return band
+
+    def again(first, count, order):
+        return client.submit(_sketch_band, input_path, arguments, filter_report, first, count, 0,
+                             order, pure=False).result()
+
+    try:
+        # Ctrl-C reaches Python's own handler while the client waits for a band.
+        hooks = _native.RunHooks(None, _options.log_line, False)
+        return _native.stitch_bands(input_path, output_path, arguments, filter_report, profiles,
+                                    next_band, again, hooks)
+    finally:
+        client.cancel([f for f in futures[done:]])

@@ -1,0 +1,112 @@
+"""terrain_sketch.dask against the run on one machine: the same strokes (compared as sets of rows:
+geometry and attributes) and statistics, on the sample and a 4000^2 DEM made of it, bands down
+to a few profiles, a worker killed mid-run, and the refusals."""
+
+import os
+import sqlite3
+
+import numpy as np
+import pytest
+from osgeo import gdal
+
+import terrain_sketch
+import terrain_sketch.dask
+from conftest import SAMPLE
+
+distributed = pytest.importorskip("distributed")
+gdal.UseExceptions()
+
+
+def cluster(**options):
+    return distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                    dashboard_address=":0", **options)
+
+
+@pytest.fixture(scope="module")
+def client():
+    with cluster() as local, distributed.Client(local) as c:
+        yield c
+
+
+def rows(path):
+    """The strokes as a sorted list of rows: geometry blob and attributes, without the fid."""
+    with sqlite3.connect(path) as db:
+        return sorted(row[1:] for row in db.execute("SELECT * FROM silhouettes"))
+
+
+def same_run(tmp_path, client, dem, band_profiles, **options):
+    single = terrain_sketch.silhouettes(dem, tmp_path / "one.gpkg", strokes="exact", **options)
+    spread = terrain_sketch.dask.silhouettes(dem, tmp_path / "bands.gpkg", client, band_profiles,
+                                             strokes="exact", **options)
+    assert spread == single
+    one, bands = rows(tmp_path / "one.gpkg"), rows(tmp_path / "bands.gpkg")
+    assert len(one) == single["factual_strokes"] + single["formulated_strokes"] > 0
+    assert bands == one
+    return spread
+
+
+@pytest.mark.parametrize("band_profiles", [3, 50, None])
+@pytest.mark.parametrize("options", [{"azimuth": 90, "filter": "fixed"}, {"azimuth": 200}],
+                         ids=["fixed-90", "adaptive-200"])
+def test_bands_give_the_strokes_of_one_machine(tmp_path, client, band_profiles, options):
+    same_run(tmp_path, client, SAMPLE, band_profiles, **options)
+
+
+def test_a_dem_of_4000_squared(tmp_path, client):
+    # The sample mirrored into 10 x 10 copies: 4140 x 4360 cells of continuous terrain.
+    source = gdal.Open(SAMPLE)
+    tile = source.GetRasterBand(1).ReadAsArray()
+    row = np.hstack([tile if k % 2 == 0 else tile[:, ::-1] for k in range(10)])
+    heights = np.vstack([row if k % 2 == 0 else row[::-1, :] for k in range(10)])
+    path = str(tmp_path / "large.tif")
+    large = gdal.GetDriverByName("GTiff").Create(path, heights.shape[1], heights.shape[0], 1,
+                                                  gdal.GDT_Float32, ["TILED=YES"])
+    large.SetGeoTransform(source.GetGeoTransform())
+    large.SetProjection(source.GetProjection())
+    large.GetRasterBand(1).SetNoDataValue(-9999)
+    large.GetRasterBand(1).WriteArray(heights)
+    large = None
+    same_run(tmp_path, client, path, 700, azimuth=270)
+
+
+class KillFirstBand(distributed.WorkerPlugin):
+    """Ends its worker's process outright as the first band of a run begins there."""
+
+    def __init__(self, marker):
+        self.marker = marker
+
+    def transition(self, key, start, finish, **kwargs):
+        if (finish == "executing" and str(key).startswith("terrain-sketch-band")
+                and not os.path.exists(self.marker)):
+            open(self.marker, "w").close()
+            os._exit(1)
+
+
+def test_a_worker_killed_mid_run(tmp_path):
+    marker = str(tmp_path / "killed")
+    with cluster() as local, distributed.Client(local) as c:
+        c.register_worker_plugin(KillFirstBand(marker))
+        same_run(tmp_path, c, SAMPLE, 40, azimuth=0)
+    assert os.path.exists(marker)
+
+
+def test_options_a_run_in_bands_cannot_take(tmp_path, client):
+    out = tmp_path / "out.gpkg"
+    for options, words in [({}, "strokes='exact'"),
+                           ({"strokes": "exact", "adapt": "local"}, "not locally"),
+                           ({"strokes": "exact", "geometry": "oblique"}, "map geometry"),
+                           ({"strokes": "exact", "preview": "p.svg"}, "OUTPUT only"),
+                           ({"strokes": "exact", "observer": (1, 2)}, "does not take")]:
+        with pytest.raises(ValueError, match=words):
+            terrain_sketch.dask.silhouettes(SAMPLE, out, client, **options)
+    with pytest.raises(terrain_sketch.Error, match="no.tif"):
+        terrain_sketch.dask.silhouettes(tmp_path / "no.tif", out, client, strokes="exact")
+    assert not os.listdir(tmp_path)
+
+
+def test_a_worker_that_cannot_read_the_dem_ends_the_run_with_its_message(tmp_path):
+    # Workers whose GDAL reads no GeoTIFF, while the client's does.
+    with cluster(env={"GDAL_SKIP": "GTiff"}) as local, distributed.Client(local) as c:
+        with pytest.raises(terrain_sketch.Error, match="jacksboro_utm16n.tif"):
+            terrain_sketch.dask.silhouettes(SAMPLE, tmp_path / "out.gpkg", c, strokes="exact")
+    assert not os.listdir(tmp_path)
