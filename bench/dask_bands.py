@@ -39,7 +39,7 @@ def cli_seconds():
 
 def timed_band(arguments, filter_report, first, count):
     start = time.monotonic()
-    band = _native.sketch_band(dem, arguments, filter_report, first, count, tsd.HALO, b"")
+    band = _native.sketch_band(dem, arguments, filter_report, 0.0, first, count, tsd.HALO, b"")
     return time.monotonic() - start, band
 
 
@@ -60,7 +60,7 @@ def band_figures(client, width):
     def sketch_again(first, count, order):
         nonlocal again
         again += 1
-        return _native.sketch_band(dem, arguments, plan["filter"], first, count, 0, order)
+        return _native.sketch_band(dem, arguments, plan["filter"], 0.0, first, count, 0, order)
 
     _native.stitch_bands(dem, f"{OUT}/b.gpkg", arguments, plan["filter"], profiles, next_band,
                          sketch_again, _native.RunHooks(None, None, False))

@@ -126,6 +126,11 @@ class LowestHeight {
   double value() const {
     return std::isfinite(lowest_) ? static_cast<double>(lowest_) : 0.0;
   }
+  // The lowest height added, +infinity when none had data: a part of a DEM's, which the least of
+  // its parts' gives (value() of that, once the parts are in).
+  double lowest_or_infinity() const {
+    return static_cast<double>(lowest_);
+  }
 
  private:
   float lowest_ = std::numeric_limits<float>::infinity();

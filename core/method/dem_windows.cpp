@@ -135,6 +135,19 @@ double dem_lowest_height(std::size_t rows, std::size_t cols, const WindowReader&
   return lowest.value();
 }
 
+double lowest_height_of_rows(std::size_t first_row, std::size_t rows, std::size_t cols,
+                             const WindowReader& read) {
+  LowestHeight lowest;
+  const WindowReader part = [&read, first_row](const DemWindow& w, float* z) {
+    read({w.row0 + first_row, w.col0, w.rows, w.cols}, z);
+  };
+  read_row_blocks(rows, cols, part,
+                  [&lowest, cols](std::size_t, std::size_t count, const float* z) {
+                    lowest.add(z, count * cols);
+                  });
+  return lowest.lowest_or_infinity();
+}
+
 StripLoader::StripLoader(const OrientedFrame& frame, WindowReader read, unsigned threads)
     : frame_(frame), read_(std::move(read)), threads_(threads) {}
 

@@ -31,6 +31,12 @@ void read_row_blocks(
 // strip, the same as OrientedGridBuilder::dem_lowest_height() gives when it is read whole.
 double dem_lowest_height(std::size_t rows, std::size_t cols, const WindowReader& read);
 
+// The part of dem_lowest_height() of DEM rows [first_row, first_row + rows), for machines that each
+// read a part: +infinity when none of them has data. The DEM's lowest height is the least of its
+// parts' (0 when every part is +infinity), exactly as dem_lowest_height() finds it.
+double lowest_height_of_rows(std::size_t first_row, std::size_t rows, std::size_t cols,
+                             const WindowReader& read);
+
 // The DEM cells that the bilinear samples of profiles [first, first + count) of a resampled frame
 // read, and few others: DEM rows [first_row, first_row + rows), each with its own run of columns
 // (held with the columns of the runs of the rows read with it, at most an eighth more).

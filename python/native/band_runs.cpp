@@ -33,8 +33,6 @@ cli::Options band_options(const std::vector<std::string>& options) {
   if (o.params.adaptive.mode == FilterMode::adaptive &&
       o.params.adaptive.adapt == Adaptivity::local)
     throw cli::UsageError("a run in bands adapts the filter to the whole DEM, not locally");
-  if (o.params.geometry == Geometry::oblique)
-    throw cli::UsageError("a run in bands draws in map geometry, not plan-oblique");
   if (!o.preview.empty() || !o.stats_json.empty() || o.timings)
     throw cli::UsageError("a run in bands writes OUTPUT only: no preview, stats_json or timings");
   return o;
@@ -52,18 +50,30 @@ BandPlan plan_bands(const std::string& input, const std::string& output,
   const io::DemFile dem(o.input, o.dem);
   const ResolvedParams params = adapt_filter(o.params, dem.info().grid, dem.source().read);
   const OrientedFrame frame = make_frame(dem.info().grid, o.params.view.azimuth_deg);
-  return {frame.profiles, filter_bytes(params.filter())};
+  return {frame.profiles, filter_bytes(params.filter()), o.params.geometry == Geometry::oblique,
+          dem.info().rows};
+}
+
+double lowest_height_of(const std::string& input, const std::vector<std::string>& options,
+                        std::size_t first_row, std::size_t rows) {
+  const cli::Options o = band_options(options);
+  const io::DemFile dem(input, o.dem);
+  const io::Dem& info = dem.info();
+  if (first_row > info.rows || rows > info.rows - first_row)
+    throw Error("rows " + std::to_string(first_row) + " + " + std::to_string(rows) +
+                " do not lie in the DEM's " + std::to_string(info.rows));
+  return lowest_height_of_rows(first_row, rows, info.cols, dem.source().read);
 }
 
 std::string sketch_band_bytes(const std::string& input, const std::vector<std::string>& options,
-                              const std::string& filter, std::size_t first, std::size_t count,
-                              std::size_t halo, const std::string& order) {
+                              const std::string& filter, double z_ref, std::size_t first,
+                              std::size_t count, std::size_t halo, const std::string& order) {
   const cli::Options o = band_options(options);
   const ResolvedParams params = resolve_as_reported(o.params, filter_from_bytes(filter));
   const io::DemFile dem(input, o.dem);
   BandSpec spec{first, count, std::nullopt, halo};
   if (!order.empty()) spec.order = orders_from_bytes(order);
-  return band_bytes(sketch_band(dem.source(), params, spec));
+  return band_bytes(sketch_band(dem.source(), params, spec, z_ref));
 }
 
 std::string stitch_bands(const std::string& input, const std::string& output,

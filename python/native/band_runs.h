@@ -15,19 +15,27 @@ namespace tsk::python {
 struct BandPlan {
   std::size_t profiles = 0;  // of the view's grid
   std::string filter;        // the filter surveyed once, as bytes
+  bool oblique = false;      // plan-oblique geometry: the DEM's lowest height is needed first
+  std::size_t dem_rows = 0;
 };
 
 // Checks the silhouettes command's `options` (as typed) and paths for a run in bands, and surveys
 // the DEM's filter once. Throws cli::UsageError for options a run in bands cannot take (drawn
-// strokes, local adaptivity, plan-oblique geometry, outputs beyond OUTPUT) and as the command does.
+// strokes, local adaptivity, outputs beyond OUTPUT) and as the command does.
 BandPlan plan_bands(const std::string& input, const std::string& output,
                     const std::vector<std::string>& options);
 
+// The lowest height of the DEM's rows [first_row, first_row + rows), +infinity when none has
+// data: a part of a plan-oblique run's reference height (lowest_height_of_rows).
+double lowest_height_of(const std::string& input, const std::vector<std::string>& options,
+                        std::size_t first_row, std::size_t rows);
+
 // Sketches the band of profiles [first, first + count) from the DEM's file, with the filter of
-// the plan; from `order` (bytes, or empty to guess over `halo` profiles).
+// the plan and the DEM's lowest height `z_ref` (plan-oblique geometry); from `order` (bytes, or
+// empty to guess over `halo` profiles).
 std::string sketch_band_bytes(const std::string& input, const std::vector<std::string>& options,
-                              const std::string& filter, std::size_t first, std::size_t count,
-                              std::size_t halo, const std::string& order);
+                              const std::string& filter, double z_ref, std::size_t first,
+                              std::size_t count, std::size_t halo, const std::string& order);
 
 // The bands of a run as they come back, in order: the band as its worker guessed it, or an empty
 // string after the last; and the band sketched again from an order of chains (bytes).

@@ -116,15 +116,25 @@ py::dict plan_run_in_bands(const std::string& input, const std::string& output,
   py::dict result;
   result["profiles"] = plan.profiles;
   result["filter"] = py::bytes(plan.filter);
+  result["oblique"] = plan.oblique;
+  result["dem_rows"] = plan.dem_rows;
   return result;
 }
 
 py::bytes sketch_one_band(const std::string& input, const Strings& options,
-                          const std::string& filter, std::size_t first, std::size_t count,
-                          std::size_t halo, const std::string& order) {
+                          const std::string& filter, double z_ref, std::size_t first,
+                          std::size_t count, std::size_t halo, const std::string& order) {
   std::string band;
-  quietly([&] { band = sketch_band_bytes(input, options, filter, first, count, halo, order); });
+  quietly(
+      [&] { band = sketch_band_bytes(input, options, filter, z_ref, first, count, halo, order); });
   return py::bytes(band);
+}
+
+double lowest_height(const std::string& input, const Strings& options, std::size_t first_row,
+                     std::size_t rows) {
+  double lowest = 0.0;
+  quietly([&] { lowest = lowest_height_of(input, options, first_row, rows); });
+  return lowest;
 }
 
 // Stitches the bands that `next()` hands back and writes OUTPUT (band_runs.h).
@@ -186,7 +196,9 @@ PYBIND11_MODULE(_native, m) {
   m.def("plan_bands", &plan_run_in_bands, py::arg("input"), py::arg("output"), py::arg("options"),
         py::arg("hooks"));
   m.def("sketch_band", &sketch_one_band, py::arg("input"), py::arg("options"), py::arg("filter"),
-        py::arg("first"), py::arg("count"), py::arg("halo"), py::arg("order"));
+        py::arg("z_ref"), py::arg("first"), py::arg("count"), py::arg("halo"), py::arg("order"));
+  m.def("lowest_height", &lowest_height, py::arg("input"), py::arg("options"), py::arg("first_row"),
+        py::arg("rows"));
   m.def("stitch_bands", &stitch, py::arg("input"), py::arg("output"), py::arg("options"),
         py::arg("filter"), py::arg("profiles"), py::arg("next"), py::arg("again"),
         py::arg("hooks"));

@@ -23,9 +23,27 @@ from . import _native, _options
 HALO = 64
 
 
-def _sketch_band(input, arguments, filter_report, first, count, halo, order):
+def _sketch_band(input, arguments, filter_report, z_ref, first, count, halo, order):
     """One task: a band of profiles sketched from the DEM's file, as bytes."""
-    return _native.sketch_band(input, arguments, filter_report, first, count, halo, order or b"")
+    return _native.sketch_band(input, arguments, filter_report, z_ref, first, count, halo,
+                               order or b"")
+
+
+def _lowest_height_of_rows(input, arguments, first_row, rows):
+    """One task: the lowest height of some of the DEM's rows (+inf when none has data)."""
+    return _native.lowest_height(input, arguments, first_row, rows)
+
+
+def _lowest_height(client, input_path, arguments, plan):
+    """The DEM's lowest height, which plan-oblique geometry keeps in place: the least of its
+    parts' lowest, read by the workers (as one machine finds it, exactly)."""
+    rows = plan["dem_rows"]
+    step = max(1, math.ceil(rows / max(1, 4 * len(client.scheduler_info()["workers"]))))
+    parts = client.gather([client.submit(_lowest_height_of_rows, input_path, arguments, first,
+                                         min(step, rows - first), pure=False)
+                           for first in range(0, rows, step)])
+    lowest = min(parts)
+    return lowest if math.isfinite(lowest) else 0.0
 
 
 def _band_width(profiles, workers):
@@ -41,8 +59,9 @@ def silhouettes(input, output, client=None, band_profiles=None, *, progress=None
     LocalCluster of one single-threaded worker process a core for the run), bands of
     `band_profiles` profiles (None: about four a worker), and the options of
     terrain_sketch.silhouettes() but those that need the whole DEM on one machine: exact strokes
-    only (strokes="exact"), map geometry, the filter fixed or adapted to the whole DEM (surveyed
-    once, by the client), and no files beyond OUTPUT. Returns the stage statistics as a dict.
+    only (strokes="exact"), the filter fixed or adapted to the whole DEM (surveyed once, by the
+    client), and no files beyond OUTPUT; plan-oblique geometry reads the DEM once more for its
+    lowest height, on the workers. Returns the stage statistics as a dict.
     Raises ValueError on bad options, terrain_sketch.Error when the run cannot be done (a worker
     that cannot read the DEM ends it with its message); a worker lost mid-run has its band
     sketched again by another. OUTPUT is written whole at the end, or not at all.
@@ -79,10 +98,12 @@ def _stitch(client, input_path, output_path, arguments, plan, width, progress):
     as soon as it is whole; a band whose guess of the chains' order was wrong is sketched again
     from the true order."""
     profiles, filter_report = plan["profiles"], plan["filter"]
+    z_ref = _lowest_height(client, input_path, arguments, plan) if plan["oblique"] else 0.0
     token = uuid.uuid4().hex
     bands = [(first, min(width, profiles - first)) for first in range(0, profiles, width)]
-    futures = [client.submit(_sketch_band, input_path, arguments, filter_report, first, count,
-                             HALO, None, key=f"terrain-sketch-band-{first}-{token}", pure=False)
+    futures = [client.submit(_sketch_band, input_path, arguments, filter_report, z_ref, first,
+                             count, HALO, None, key=f"terrain-sketch-band-{first}-{token}",
+                             pure=False)
                for first, count in bands]
     done = 0
 
@@ -99,8 +120,8 @@ def _stitch(client, input_path, output_path, arguments, plan, width, progress):
         return band
 
     def again(first, count, order):
-        return client.submit(_sketch_band, input_path, arguments, filter_report, first, count, 0,
-                             order, pure=False).result()
+        return client.submit(_sketch_band, input_path, arguments, filter_report, z_ref, first,
+                             count, 0, order, pure=False).result()
 
     try:
         # Ctrl-C reaches Python's own handler while the client waits for a band.

@@ -46,8 +46,9 @@ def same_run(tmp_path, client, dem, band_profiles, **options):
 
 
 @pytest.mark.parametrize("band_profiles", [3, 50, None])
-@pytest.mark.parametrize("options", [{"azimuth": 90, "filter": "fixed"}, {"azimuth": 200}],
-                         ids=["fixed-90", "adaptive-200"])
+@pytest.mark.parametrize("options", [{"azimuth": 90, "filter": "fixed"}, {"azimuth": 200},
+                                     {"azimuth": 0, "geometry": "oblique", "subcell": True}],
+                         ids=["fixed-90", "adaptive-200", "oblique-0"])
 def test_bands_give_the_strokes_of_one_machine(tmp_path, client, band_profiles, options):
     same_run(tmp_path, client, SAMPLE, band_profiles, **options)
 
@@ -94,7 +95,6 @@ def test_options_a_run_in_bands_cannot_take(tmp_path, client):
     out = tmp_path / "out.gpkg"
     for options, words in [({}, "strokes='exact'"),
                            ({"strokes": "exact", "adapt": "local"}, "not locally"),
-                           ({"strokes": "exact", "geometry": "oblique"}, "map geometry"),
                            ({"strokes": "exact", "preview": "p.svg"}, "OUTPUT only"),
                            ({"strokes": "exact", "observer": (1, 2)}, "does not take")]:
         with pytest.raises(ValueError, match=words):
