@@ -2,7 +2,7 @@
 against the command line with as many threads, on the same DEM (exact strokes), and what a band
 costs: its sketch, its bytes, its edges, and the client's stitching.
 
-    /usr/bin/python3 bench/dask_bands.py BUILD_DIR DEM [WORKERS=2] [BAND_PROFILES...]
+    [RUNS=3] /usr/bin/python3 bench/dask_bands.py BUILD_DIR DEM [WORKERS=2] [BAND_PROFILES...]
 
 Prints the CLI's wall time, then for each band width: the Dask run's wall time (cluster started
 beforehand, as a user keeps one), its ratio to the CLI, the bands sketched again, and per band
@@ -27,6 +27,7 @@ import terrain_sketch.dask as tsd  # noqa: E402
 from terrain_sketch import _native, _options  # noqa: E402
 
 OUT = "/tmp/tsk-dask-bench"
+RUNS = int(os.environ.get("RUNS", "3"))  # runs of each kind, their median printed
 
 
 def cli_seconds():
@@ -66,13 +67,16 @@ def band_figures(client, width):
                          sketch_again, _native.RunHooks(None, None, False))
     stitch = time.monotonic() - start
     sizes = [len(b) for _, b in results]
+    edges = [_native.band_summary(b) for _, b in results]
+    edge_bytes = statistics.median(e["piece_bytes"] for e in edges)
+    pieces = statistics.median(e["pieces"] for e in edges)
     return (statistics.median(s for s, _ in results), statistics.median(sizes), stitch, again,
-            len(bands))
+            len(bands), pieces, edge_bytes)
 
 
 def main():
     os.makedirs(OUT, exist_ok=True)
-    cli = statistics.median(cli_seconds() for _ in range(3))
+    cli = statistics.median(cli_seconds() for _ in range(RUNS))
     print(f"CLI, {workers} threads, exact strokes: {cli:.2f} s")
     with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                   dashboard_address=":0") as cluster, \
@@ -80,16 +84,18 @@ def main():
         client.run(lambda: __import__("terrain_sketch"))
         for width in widths:
             runs = []
-            for _ in range(3):
+            for _ in range(RUNS):
                 start = time.monotonic()
                 tsd.silhouettes(dem, f"{OUT}/dask.gpkg", client, width, strokes="exact")
                 runs.append(time.monotonic() - start)
             wall = statistics.median(runs)
-            band_s, band_bytes, stitch_s, again, count = band_figures(client, width)
+            band_s, band_bytes, stitch_s, again, count, pieces, edge_bytes = band_figures(
+                client, width)
             print(f"bands of {width:5d} profiles ({count:3d} bands): {wall:.2f} s = "
                   f"{wall / cli:.2f}x the CLI; per band {band_s:.3f} s on a worker, "
                   f"{band_bytes / 1e6:.2f} MB; stitching and writing {stitch_s:.2f} s on the "
-                  f"client ({stitch_s / count * 1000:.1f} ms a band); sketched again {again}")
+                  f"client ({stitch_s / count * 1000:.1f} ms a band); sketched again {again}; "
+                  f"{pieces:.0f} pieces cross a band's edges, {edge_bytes / 1e3:.0f} kB")
 
 
 if __name__ == "__main__":

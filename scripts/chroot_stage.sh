@@ -14,7 +14,7 @@ cache=${TSK_CHROOT_CACHE:-/var/cache/terrain-sketch/chroots}
 root=$cache/$suite
 packages="qgis libqgis-dev qttools5-dev qttools5-dev-tools libsqlite3-dev cmake g++ make catch2
   libgdal-dev gdal-bin python3-gdal xvfb xauth poppler-utils pybind11-dev python3-dev
-  python3-pytest"
+  python3-pytest python3-distributed"
 packages=$(echo $packages)
 
 source "$repo/scripts/debian_root.sh"

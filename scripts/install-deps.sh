@@ -4,11 +4,12 @@
 set -euo pipefail
 what=${1:-core}
 # poppler-utils and librsvg2-bin: the vector previews' tests render the PDF and SVG they write.
-# pybind11-dev, python3-dev: the Python package; python3-pytest, python3-gdal (with numpy) and
-# python3-geopandas: its tests (python3-gdal: the front-end parity test's rasters too).
+# pybind11-dev, python3-dev: the Python package; python3-distributed: its runs on a Dask cluster;
+# python3-pytest, python3-gdal (with numpy) and python3-geopandas: its tests (python3-gdal: the
+# front-end parity test's rasters too).
 packages=(build-essential cmake catch2 libgdal-dev libsqlite3-dev gdal-bin clang libclang-rt-dev
   clang-format git poppler-utils librsvg2-bin pybind11-dev python3-dev python3-pytest python3-gdal
-  python3-geopandas)
+  python3-geopandas python3-distributed)
 if [ "$what" = qgis ]; then
   # mount: the chroots' /proc and /dev (a minimal Debian root has no mount command);
   # mmdebstrap: the chroots of the newer QGIS releases; qt6-*: the Qt6 readiness build;

@@ -130,6 +130,21 @@ py::bytes sketch_one_band(const std::string& input, const Strings& options,
   return py::bytes(band);
 }
 
+// What a band's bytes hold: its strokes, and the pieces of chains crossing its edges with their
+// cells and the bytes those take (for the benchmark of runs in bands).
+py::dict band_summary(const std::string& bytes) {
+  BandSketch band;
+  quietly([&] { band = band_from_bytes(bytes); });
+  std::size_t cells = 0;
+  for (const BandPiece& piece : band.pieces) cells += piece.cells.size();
+  py::dict summary;
+  summary["strokes"] = band.strokes.size();
+  summary["pieces"] = band.pieces.size();
+  summary["piece_cells"] = cells;
+  summary["piece_bytes"] = cells * sizeof(StrokeCell) + band.pieces.size() * sizeof(BandPiece);
+  return summary;
+}
+
 double lowest_height(const std::string& input, const Strings& options, std::size_t first_row,
                      std::size_t rows) {
   double lowest = 0.0;
@@ -197,6 +212,7 @@ PYBIND11_MODULE(_native, m) {
         py::arg("hooks"));
   m.def("sketch_band", &sketch_one_band, py::arg("input"), py::arg("options"), py::arg("filter"),
         py::arg("z_ref"), py::arg("first"), py::arg("count"), py::arg("halo"), py::arg("order"));
+  m.def("band_summary", &band_summary, py::arg("band"));
   m.def("lowest_height", &lowest_height, py::arg("input"), py::arg("options"), py::arg("first_row"),
         py::arg("rows"));
   m.def("stitch_bands", &stitch, py::arg("input"), py::arg("output"), py::arg("options"),
