@@ -201,7 +201,6 @@ PYBIND11_MODULE(_native, m) {
   namespace py = pybind11;
   using namespace tsk::python;
   m.doc() = "Terrain Sketch's native door: the commands and the sketch of an array.";
-  register_exceptions(m);
   py::class_<RunHooks>(m, "RunHooks")
       .def(py::init<py::object, py::object, bool>(), py::arg("progress"), py::arg("log"),
            py::arg("catch_interrupts"));

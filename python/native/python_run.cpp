@@ -12,11 +12,11 @@
 namespace tsk::python {
 namespace {
 
-struct ErrorTag {};
-struct CancelledTag {};
-
-PyObject* error_type = nullptr;
-PyObject* cancelled_type = nullptr;
+// The package's exception `name` (terrain_sketch/_errors.py), looked up when raised: no Python
+// object outlives the interpreter in a static.
+py::object package_exception(const char* name) {
+  return py::module_::import("terrain_sketch._errors").attr(name);
+}
 
 // Hands each whole line written to it to a Python callable, taking the interpreter's lock.
 class LineLog : public std::streambuf {
@@ -55,6 +55,11 @@ class LineLog : public std::streambuf {
   throw py::error_already_set();
 }
 
+[[noreturn]] void raise(const char* package_type, const std::string& message) {
+  const py::object type = package_exception(package_type);
+  raise(type.ptr(), message);
+}
+
 // Raises `failure` as Python's (see run_from_python).
 [[noreturn]] void raise_failure(std::exception_ptr failure,
                                 std::optional<py::error_already_set>& callback_error,
@@ -65,13 +70,13 @@ class LineLog : public std::streambuf {
     if (callback_error) throw *callback_error;
     if (interrupted)
       raise(PyExc_KeyboardInterrupt, "terrain_sketch: interrupted; no output written");
-    raise(cancelled_type, "the progress callable asked to stop; no output written");
+    raise("Cancelled", "the progress callable asked to stop; no output written");
   } catch (const cli::UsageError& e) {
     raise(PyExc_ValueError, e.what());
   } catch (const io::DemRefused& e) {
-    raise(error_type, cli::refusal_text(e));
+    raise("Error", cli::refusal_text(e));
   } catch (const Error& e) {
-    raise(error_type, e.what());
+    raise("Error", e.what());
   } catch (const std::bad_alloc&) {
     raise(PyExc_MemoryError, "out of memory");
   } catch (py::error_already_set&) {
@@ -82,15 +87,6 @@ class LineLog : public std::streambuf {
 }
 
 }  // namespace
-
-void register_exceptions(py::module_& m) {
-  static py::exception<ErrorTag> error(m, "Error", PyExc_OSError);
-  static py::exception<CancelledTag> cancelled(m, "Cancelled", PyExc_Exception);
-  error.doc() = "A run that could not be done: the message names the cause (an OSError).";
-  cancelled.doc() = "The progress callable returned False: the run stopped, nothing written.";
-  error_type = error.ptr();
-  cancelled_type = cancelled.ptr();
-}
 
 void run_from_python(const RunHooks& hooks,
                      const std::function<void(const ProgressFn&, std::ostream&)>& work) {

@@ -25,11 +25,9 @@ struct RunHooks {
   bool catch_interrupts = false;
 };
 
-// Registers the package's exceptions (Error, an OSError; Cancelled) in module `m`.
-void register_exceptions(py::module_& m);
-
 // Runs `work(progress, err)` with the interpreter's lock released, and raises its failure as
-// Python's: UsageError as ValueError, the run's Errors as terrain_sketch.Error (an OSError),
+// Python's: UsageError as ValueError, the run's Errors as terrain_sketch.Error (an OSError,
+// terrain_sketch/_errors.py),
 // Cancelled as KeyboardInterrupt (SIGINT), as the progress callable's own exception, or as
 // terrain_sketch.Cancelled (the callable's False).
 void run_from_python(const RunHooks& hooks,

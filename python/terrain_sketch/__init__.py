@@ -20,11 +20,10 @@ logger.
 import json
 
 from . import _native, _options
-from ._native import Cancelled, Error
+from ._errors import Cancelled, Error
 from ._strokes import Strokes
 
 __version__ = _native.version
-Error.__module__ = Cancelled.__module__ = __name__
 __all__ = ["silhouettes", "panorama", "classify", "row_slope", "drape", "pstrokes", "profiles",
            "filter_plot", "sketch", "Strokes", "Error", "Cancelled"]
 

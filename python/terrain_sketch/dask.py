@@ -16,7 +16,7 @@ import json
 import math
 import uuid
 
-from . import _native, _options
+from . import _errors, _native, _options
 
 # Profiles linked before a band's first to guess the order of the chains open there: long enough
 # that a band seldom has to be sketched again from the true order.
@@ -116,7 +116,7 @@ def _stitch(client, input_path, output_path, arguments, plan, width, progress):
         done += 1
         if progress is not None and progress(done / len(futures)) is False:
             client.cancel(futures[done:])
-            raise _native.Cancelled("the progress callable asked to stop; no output written")
+            raise _errors.Cancelled("the progress callable asked to stop; no output written")
         return band
 
     def again(first, count, order):

@@ -86,7 +86,9 @@ class KillFirstBand(distributed.WorkerPlugin):
 def test_a_worker_killed_mid_run(tmp_path):
     marker = str(tmp_path / "killed")
     with cluster() as local, distributed.Client(local) as c:
-        c.register_worker_plugin(KillFirstBand(marker))
+        # register_plugin from distributed 2023.9 on; register_worker_plugin before.
+        register = getattr(c, "register_plugin", None) or c.register_worker_plugin
+        register(KillFirstBand(marker))
         same_run(tmp_path, c, SAMPLE, 40, azimuth=0)
     assert os.path.exists(marker)
 
