@@ -63,8 +63,8 @@ def band_figures(client, width):
         again += 1
         return _native.sketch_band(dem, arguments, plan["filter"], 0.0, first, count, 0, order)
 
-    _native.stitch_bands(dem, f"{OUT}/b.gpkg", arguments, plan["filter"], profiles, next_band,
-                         sketch_again, _native.RunHooks(None, None, False))
+    _native.stitch_bands(dem, f"{OUT}/b.gpkg", arguments, plan["filter"], 0.0, profiles,
+                         next_band, sketch_again, _native.RunHooks(None, None, False))
     stitch = time.monotonic() - start
     sizes = [len(b) for _, b in results]
     edges = [_native.band_summary(b) for _, b in results]

@@ -1,11 +1,13 @@
 // A run cut into bands of profiles and stitched (core/method/bands.h) against the same run made
-// whole by sketch_silhouettes: the same strokes, point for point and attribute for attribute, in
-// the same order, and the same statistics, on real DEMs, cardinal and resampled views, bands as
-// narrow as one profile, halos too short to guess the chains' order (so bands are sketched again)
-// and long enough, and the bands handed over as bytes.
+// whole by sketch_silhouettes: the same strokes, exact and drawn, point for point, weight for
+// weight and attribute for attribute, in the same order, and the same statistics, on real DEMs,
+// cardinal and resampled views, bands as narrow as one profile, halos too short to guess the
+// chains' order (so bands are sketched again) and long enough, and the bands handed over as
+// bytes.
 #include <cstring>
 
 #include "catch_compat.h"
+#include "core/drawn/drawn_strokes.h"
 #include "core/method/bands.h"
 #include "io/read/dem_reader.h"
 
@@ -15,10 +17,12 @@ namespace {
 
 const std::string kData = TSK_TEST_DATA;
 
-ResolvedParams exact_params(const io::DemFile& dem, double azimuth, FilterMode mode) {
+ResolvedParams run_params(const io::DemFile& dem, double azimuth, FilterMode mode,
+                          StrokeMode strokes = StrokeMode::exact) {
   SilhouetteParams p;
   p.view.azimuth_deg = azimuth;
   p.adaptive.mode = mode;
+  p.strokes.mode = strokes;
   p.threads = 2;
   return adapt_filter(p, dem.info().grid, dem.source().read);
 }
@@ -40,7 +44,10 @@ Stitched in_bands(const io::DemFile& dem, const ResolvedParams& params, std::siz
     sketches.push_back(band_bytes(sketch_band(dem.source(), params, spec)));
   }
   Stitched out{SilhouetteResult(), sketches.size(), 0};
-  BandStitcher stitcher(params);
+  std::optional<DrawingSetup> drawing;
+  if (params->strokes.drawn())
+    drawing = drawing_setup(frame, dem.info().geotransform, params.params(), 0.0);
+  BandStitcher stitcher(params, {}, drawing);
   for (const std::string& bytes : sketches) {
     BandSketch band = band_from_bytes(bytes);
     if (!stitcher.follows(band)) {
@@ -72,6 +79,9 @@ void require_same_strokes(const SilhouetteResult& whole, const SilhouetteResult&
       REQUIRE(same_bits(a.points[i].x, b.points[i].x));
       REQUIRE(same_bits(a.points[i].y, b.points[i].y));
     }
+    REQUIRE(a.weights.size() == b.weights.size());
+    for (std::size_t i = 0; i < a.weights.size(); ++i)
+      REQUIRE(same_bits(a.weights[i], b.weights[i]));
     for (const StrokeRealField& field : stroke_real_fields())
       REQUIRE(same_bits(a.*(field.member), b.*(field.member)));
   }
@@ -95,19 +105,23 @@ TEST_CASE("bands stitched give the strokes of one run", "[bands]") {
     const char* file;
     double azimuth;
     FilterMode mode;
+    StrokeMode strokes;
   };
-  const Case cases[] = {{"jacksboro_utm16n.tif", 90, FilterMode::fixed},
-                        {"jacksboro_utm16n.tif", 200, FilterMode::adaptive},
-                        {"gorillas_utm32n.tif", 270, FilterMode::adaptive},
-                        {"volcano.tif", 0, FilterMode::fixed}};
+  const Case cases[] = {{"jacksboro_utm16n.tif", 90, FilterMode::fixed, StrokeMode::exact},
+                        {"jacksboro_utm16n.tif", 200, FilterMode::adaptive, StrokeMode::exact},
+                        {"gorillas_utm32n.tif", 270, FilterMode::adaptive, StrokeMode::exact},
+                        {"volcano.tif", 0, FilterMode::fixed, StrokeMode::exact},
+                        {"jacksboro_utm16n.tif", 90, FilterMode::adaptive, StrokeMode::drawn},
+                        {"gorillas_utm32n.tif", 135, FilterMode::adaptive, StrokeMode::drawn}};
   for (const Case& c : cases) {
     const io::DemFile dem(kData + "/" + c.file, io::DemOptions());
-    const ResolvedParams params = exact_params(dem, c.azimuth, c.mode);
+    const ResolvedParams params = run_params(dem, c.azimuth, c.mode, c.strokes);
     const SilhouetteResult whole = sketch_silhouettes(dem.source(), params.params());
     REQUIRE(whole.stats.formulated_strokes > 0);
     for (const std::size_t width : {1, 7, 40, 100000}) {
       for (const std::size_t halo : {1, 64}) {
-        INFO(c.file << " from " << c.azimuth << ", bands of " << width << ", halo " << halo);
+        INFO(c.file << " from " << c.azimuth << (c.strokes == StrokeMode::drawn ? ", drawn" : "")
+                    << ", bands of " << width << ", halo " << halo);
         const Stitched stitched = in_bands(dem, params, width, halo);
         require_same_strokes(whole, stitched.result);
         // A halo of one profile guesses wrong somewhere among many bands, so the repair is tested.
@@ -119,7 +133,7 @@ TEST_CASE("bands stitched give the strokes of one run", "[bands]") {
 
 TEST_CASE("bands refuse what they cannot stitch", "[bands]") {
   const io::DemFile dem(kData + "/jacksboro_utm16n.tif", io::DemOptions());
-  const ResolvedParams params = exact_params(dem, 90, FilterMode::fixed);
+  const ResolvedParams params = run_params(dem, 90, FilterMode::fixed);
   BandSketch first = sketch_band(dem.source(), params, BandSpec{0, 50, std::nullopt, 8});
   BandSketch third = sketch_band(dem.source(), params, BandSpec{100, 50, std::nullopt, 8});
   BandStitcher stitcher(params);
@@ -131,10 +145,6 @@ TEST_CASE("bands refuse what they cannot stitch", "[bands]") {
   CHECK_THROWS_WITH(band_from_bytes(bytes.substr(0, bytes.size() - 3)),
                     Catch::Contains("not a band's sketch"));
   CHECK_THROWS_WITH(orders_from_bytes(bytes), Catch::Contains("not an order"));
-  SilhouetteParams drawn;
-  drawn.strokes.mode = StrokeMode::drawn;
-  CHECK_THROWS_WITH(sketch_band(dem.source(), ResolvedParams(drawn), BandSpec{0, 5, {}, 1}),
-                    Catch::Contains("exact strokes only"));
   CHECK_THROWS_WITH(sketch_band(dem.source(), params, BandSpec{400, 100, {}, 1}),
                     Catch::Contains("does not lie in the grid"));
 }

@@ -27,7 +27,14 @@ void get_class(ByteReader& r, StrokeClass& cls) {
 void put_stroke(ByteWriter& w, const Stroke& s) {
   w.put(s.cls);
   w.put(s.points);
-  w.put(s.chain.front());
+  // A drawn stroke's piece is drawn from its whole chain; an exact stroke is placed by its first
+  // cell.
+  w.put(s.vertices);
+  if (s.vertices.empty()) {
+    w.put(s.chain.front());
+  } else {
+    w.put(s.chain);
+  }
   w.put(s.weights);
   w.put(s.cells);
   for (const double v : {s.length, s.mean_slope_pct, s.mean_row_slope_pct, s.mean_depth_m,
@@ -38,8 +45,13 @@ void put_stroke(ByteWriter& w, const Stroke& s) {
 void get_stroke(ByteReader& r, Stroke& s) {
   get_class(r, s.cls);
   r.get(s.points);
-  s.chain.resize(1);
-  r.get(s.chain.front());
+  r.get(s.vertices);
+  if (s.vertices.empty()) {
+    s.chain.resize(1);
+    r.get(s.chain.front());
+  } else {
+    r.get(s.chain);
+  }
   r.get(s.weights);
   r.get(s.cells);
   for (double* v : {&s.length, &s.mean_slope_pct, &s.mean_row_slope_pct, &s.mean_depth_m,
@@ -60,6 +72,7 @@ std::string band_bytes(const BandSketch& band) {
   put_orders(w, band.out);
   w.put(static_cast<std::uint64_t>(band.strokes.size()));
   for (const Stroke& stroke : band.strokes) put_stroke(w, stroke);
+  w.put(band.keys);
   w.put(static_cast<std::uint64_t>(band.pieces.size()));
   for (const BandPiece& piece : band.pieces) {
     w.put(piece.cls);
@@ -90,6 +103,7 @@ BandSketch band_from_bytes(const std::string& bytes) {
     band.strokes.emplace_back();
     get_stroke(r, band.strokes.back());
   }
+  r.get(band.keys);
   r.get(pieces);
   for (std::uint64_t k = 0; k < pieces; ++k) {
     band.pieces.emplace_back();

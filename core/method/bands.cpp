@@ -1,6 +1,7 @@
 #include "core/method/bands.h"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 #include "core/base/byte_stream.h"
@@ -37,9 +38,58 @@ BandSketch sketch_band(const DemSource& dem, const ResolvedParams& params, const
   return stream.finish_band();
 }
 
-BandStitcher::BandStitcher(const ResolvedParams& params, StrokeSink sink)
+// A chain's place in SPEC 1.7's order: by its first profile, then front to back.
+std::size_t order_key(std::int32_t p, std::int32_t i) {
+  return (static_cast<std::size_t>(static_cast<std::uint32_t>(p)) << 32) |
+         static_cast<std::uint32_t>(i);
+}
+
+BandStitcher::BandStitcher(const ResolvedParams& params, StrokeSink sink,
+                           std::optional<DrawingSetup> drawing)
     : min_cells_(params->chain.min_cells), sink_(std::move(sink)) {
   result_.filter = params.filter();
+  if (!drawing) return;
+  drawing_ = std::make_unique<DrawingPipeline>(
+      *drawing, resolve_threads(params->threads) > 1,
+      [this](StrokeClass, Stroke&& stroke) { keep(std::move(stroke)); });
+}
+
+BandStitcher::~BandStitcher() = default;
+
+void BandStitcher::hold(Stroke&& stroke, const StrokeKey& key) {
+  if (!drawing_) return keep(std::move(stroke));
+  held_[class_index(stroke.cls)].hold(order_key(key.p, key.i), key.piece, std::move(stroke));
+}
+
+// A chain complete: its exact stroke kept, or its drawn pieces held for the drawing.
+void BandStitcher::close(StrokeBuilder& builder, StrokeClass cls) {
+  if (!drawing_) {
+    if (builder.cells() >= min_cells_) keep(builder.take(cls));
+    return;
+  }
+  if (builder.cells() < kLeastDrawnCells) return;
+  const ChainCell first = builder.first_cell();
+  pieces_.clear();
+  builder.drawn_pieces(cls, drawing_->longest_step(), pieces_);
+  for (std::size_t k = 0; k < pieces_.size(); ++k)
+    hold(std::move(pieces_[k]), StrokeKey{first.p, first.i, static_cast<std::uint32_t>(k)});
+}
+
+// Hands the drawing the pieces of the chains started before the oldest one still open (or to
+// come), and lets it draw the groups no piece to come can join, as one run does after a profile.
+void BandStitcher::hand_to_drawing() {
+  for (std::size_t c = 0; c < 2; ++c) {
+    const StrokeClass cls = c == 0 ? StrokeClass::factual : StrokeClass::formulated;
+    std::size_t oldest = order_key(static_cast<std::int32_t>(next_first_), 0);
+    for (const Open& open : open_[c]) {
+      const ChainCell first = open.builder.first_cell();
+      oldest = std::min(oldest, order_key(first.p, first.i));
+    }
+    held_[c].release_before(oldest,
+                            [&](Stroke&& piece) { drawing_->add_piece(cls, std::move(piece)); });
+    drawing_->settle(cls, static_cast<double>(oldest >> 32));
+  }
+  drawing_->flush();
 }
 
 void BandStitcher::keep(Stroke&& stroke) {
@@ -63,8 +113,11 @@ void BandStitcher::add(BandSketch&& band) {
                 " does not follow: bands are stitched in order, each linked from the order of "
                 "chains the band before ended with");
   }
+  if (band.keys.size() != band.strokes.size())
+    throw Error("a band's strokes and their places in the order do not match");
   add_counts(band.stats, result_.stats);
-  for (Stroke& stroke : band.strokes) keep(std::move(stroke));
+  for (std::size_t k = 0; k < band.strokes.size(); ++k)
+    hold(std::move(band.strokes[k]), band.keys[k]);
   std::vector<Open> next[2];
   next[0].resize(band.out.factual.size());
   next[1].resize(band.out.formulated.size());
@@ -78,6 +131,7 @@ void BandStitcher::add(BandSketch&& band) {
   }
   order_ = std::move(band.out);
   next_first_ = band.first + band.count;
+  if (drawing_) hand_to_drawing();
 }
 
 void BandStitcher::join(BandPiece& piece, std::vector<Open>& next_open) {
@@ -91,11 +145,8 @@ void BandStitcher::join(BandPiece& piece, std::vector<Open>& next_open) {
     open[in].live = false;
   }
   // Cell after cell, as one run builds the stroke: the same sums in the same order.
-  for (const StrokeCell& cell : piece.cells) builder.add(cell);
-  if (piece.out < 0) {
-    if (builder.cells() >= min_cells_) keep(builder.take(piece.cls));
-    return;
-  }
+  for (const StrokeCell& cell : piece.cells) builder.add(cell, drawing_ != nullptr);
+  if (piece.out < 0) return close(builder, piece.cls);
   const auto out = static_cast<std::size_t>(piece.out);
   if (out >= next_open.size() || next_open[out].live)
     throw Error("a band hands on a chain from a cell it does not order");
@@ -105,11 +156,25 @@ void BandStitcher::join(BandPiece& piece, std::vector<Open>& next_open) {
 SilhouetteResult BandStitcher::finish(std::size_t profiles) {
   if (next_first_ != profiles || !order_.factual.empty() || !order_.formulated.empty())
     throw Error("the bands do not reach the grid's last profile");
+  // Exact strokes come in the bands' order; drawn ones are drawn in SPEC 1.7's.
+  if (drawing_) {
+    hand_to_drawing();  // every piece, as no chain is open or to come
+    for (const StrokeClass cls : {StrokeClass::factual, StrokeClass::formulated})
+      drawing_->settle(cls, std::numeric_limits<double>::infinity());
+    drawing_->flush();
+    drawing_->finish();
+  }
   std::vector<Stroke>& strokes = result_.strokes;
   // Factual first, then formulated, each in the order of the scan.
-  std::sort(strokes.begin(), strokes.end(), [](const Stroke& a, const Stroke& b) {
-    return a.cls != b.cls ? a.cls == StrokeClass::factual : started_before(a, b);
-  });
+  if (drawing_) {
+    // Drawn in one run's order already: factual first, as one run gives them.
+    std::stable_partition(strokes.begin(), strokes.end(),
+                          [](const Stroke& s) { return s.cls == StrokeClass::factual; });
+  } else {
+    std::sort(strokes.begin(), strokes.end(), [](const Stroke& a, const Stroke& b) {
+      return a.cls != b.cls ? a.cls == StrokeClass::factual : started_before(a, b);
+    });
+  }
   return std::move(result_);
 }
 

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "core/drawn/drawing_pipeline.h"
+#include "core/method/scan_order.h"
 #include "core/method/silhouettes.h"
 
 namespace tsk {
@@ -46,29 +48,41 @@ struct BandPiece {
   std::vector<StrokeCell> cells;  // its cells in the band, in order (none when it ends at first)
 };
 
+// Where a stroke of a band stands in SPEC 1.7's order: the first cell of its chain, and for a
+// drawn stroke's piece, its place among the chain's pieces.
+struct StrokeKey {
+  std::int32_t p = 0, i = 0;
+  std::uint32_t piece = 0;
+};
+
 struct BandSketch {
   std::size_t first = 0, count = 0;
-  StageStats stats;             // the cells of the band's own profiles (no strokes counted)
-  std::vector<Stroke> strokes;  // the chains wholly in the band, at least min_cells long
+  StageStats stats;  // the cells of the band's own profiles (no strokes counted)
+  // The chains wholly in the band: exact strokes at least min_cells long, or the pieces of drawn
+  // ones (StrokeBuilder::drawn_pieces), to be drawn by the stitcher; with their keys.
+  std::vector<Stroke> strokes;
+  std::vector<StrokeKey> keys;
   std::vector<BandPiece> pieces;
   BandOrders in;   // the order at first - 1 the band linked from, given or guessed
   BandOrders out;  // the order after its last profile (none at the grid's end)
   FilterReport filter;
 };
 
-// Sketches one band of the run of `params` (exact strokes) on the DEM read window by window:
-// what a machine of a cluster does. z_ref as sketch_silhouettes finds it (plan-oblique geometry).
-// Throws Error on drawn strokes, local adaptivity or a band beyond the grid, and what `read`
-// throws; Cancelled when `progress` says stop.
+// Sketches one band of the run of `params` on the DEM read window by window: what a machine of a
+// cluster does. z_ref as sketch_silhouettes finds it (plan-oblique geometry). Throws Error on a
+// band beyond the grid, and what `read` throws; Cancelled when `progress` says stop.
 BandSketch sketch_band(const DemSource& dem, const ResolvedParams& params, const BandSpec& band,
                        double z_ref = 0.0, const ProgressFn& progress = {});
 
 // Joins bands, given in order, into the strokes of the whole run.
 class BandStitcher {
  public:
-  // With a sink, each stroke goes to it as soon as its band is added (the bands' order, not SPEC
-  // 1.7's), and the result of finish() holds none.
-  explicit BandStitcher(const ResolvedParams& params, StrokeSink sink = {});
+  // With a sink, each stroke goes to it as soon as its band is added (exact strokes: the bands'
+  // order, not SPEC 1.7's), and the result of finish() holds none. Drawn strokes are drawn here,
+  // in SPEC 1.7's order as one run draws them, with `drawing` (drawing_setup of the run).
+  BandStitcher(const ResolvedParams& params, StrokeSink sink = {},
+               std::optional<DrawingSetup> drawing = std::nullopt);
+  ~BandStitcher();
   // The first profile of the band to add next, and the order its linking must start from.
   std::size_t next_first() const { return next_first_; }
   const BandOrders& next_order() const { return order_; }
@@ -88,6 +102,9 @@ class BandStitcher {
     bool live = false;
   };
   void join(BandPiece& piece, std::vector<Open>& next_open);
+  void close(StrokeBuilder& builder, StrokeClass cls);
+  void hold(Stroke&& stroke, const StrokeKey& key);
+  void hand_to_drawing();
   void keep(Stroke&& stroke);
 
   int min_cells_;
@@ -96,11 +113,17 @@ class BandStitcher {
   BandOrders order_;
   std::vector<Open> open_[2];  // by class, indexed by the cell's index in the last profile
   SilhouetteResult result_;
+  // Drawn strokes: the pieces held until every chain started before theirs is complete, then
+  // drawn in that order, as one run draws them. Declared last: stopped before what it delivers
+  // to goes.
+  ScanOrder held_[2];
+  std::vector<Stroke> pieces_;
+  std::unique_ptr<DrawingPipeline> drawing_;
 };
 
-// A band sketch as bytes and back, for a machine to hand it to another: each stroke's chain
-// keeps only its first cell (its place in SPEC 1.7's order), which is all the stitcher reads of
-// it. Throws Error on bytes that are not one.
+// A band sketch as bytes and back, for a machine to hand it to another: an exact stroke's chain
+// keeps only its first cell, which is all the stitcher reads of it (a drawn stroke's piece keeps
+// its whole chain, which the drawing joins). Throws Error on bytes that are not one.
 std::string band_bytes(const BandSketch& band);
 BandSketch band_from_bytes(const std::string& bytes);
 std::string orders_bytes(const BandOrders& orders);

@@ -68,6 +68,7 @@ struct SilhouetteStream::State {
   };
   struct Band {
     std::size_t link_from = 0, owned_first = 0, owned_end = 0;
+    double longest_step = 0.0;  // drawn strokes: where their chains are cut (> 0)
     std::optional<BandOrders> given;
     BandLinks factual, formulated;
     BandSketch sketch;
@@ -230,10 +231,24 @@ struct SilhouetteStream::State {
       band->sketch.pieces.push_back({cls, in, out, std::move(cells)});
       return;
     }
-    if (static_cast<int>(cells.size()) < params.chain.min_cells) return;
+    const bool drawn = band->longest_step > 0.0;
+    if (static_cast<int>(cells.size()) < (drawn ? kLeastDrawnCells : params.chain.min_cells))
+      return;
     StrokeBuilder builder;
-    for (const StrokeCell& cell : cells) builder.add(cell);
-    band->sketch.strokes.push_back(builder.take(cls));
+    for (const StrokeCell& cell : cells) builder.add(cell, drawn);
+    const ChainCell first = cells.front().cell;
+    if (!drawn) {
+      band->sketch.strokes.push_back(builder.take(cls));
+      band->sketch.keys.push_back({first.p, first.i, 0});
+      return;
+    }
+    // The pieces of a drawn stroke, drawn by the stitcher in the order of the scan.
+    std::vector<Stroke> pieces;
+    builder.drawn_pieces(cls, band->longest_step, pieces);
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      band->sketch.strokes.push_back(std::move(pieces[k]));
+      band->sketch.keys.push_back({first.p, first.i, static_cast<std::uint32_t>(k)});
+    }
   }
 
   // At the band's end: its open chains go on into the next band, in their order, or close at the
@@ -277,7 +292,6 @@ SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransfor
                                    const ResolvedParams& params, double z_ref, const BandSpec& band,
                                    const ProgressFn& progress)
     : SilhouetteStream(frame, geotransform, params, z_ref, progress) {
-  if (params->strokes.drawn()) throw Error("a run in bands draws exact strokes only");
   if (band.count == 0 || band.first > frame.profiles || band.count > frame.profiles - band.first)
     throw Error("the band of profiles " + std::to_string(band.first) + " + " +
                 std::to_string(band.count) + " does not lie in the grid's " +
@@ -291,6 +305,11 @@ SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransfor
   b.sketch.first = band.first;
   b.sketch.count = band.count;
   b.sketch.filter = params.filter();
+  if (state_->drawing) {
+    // The band cuts its chains into pieces; the stitcher draws them all, in order.
+    b.longest_step = state_->drawing->longest_step();
+    state_->drawing.reset();
+  }
   state_->band = std::move(b);
   state_->next_profile = state_->next_linked = state_->band->link_from;
 }

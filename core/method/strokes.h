@@ -120,6 +120,8 @@ class StrokeBuilder {
   int cells() const { return static_cast<int>(chain_.size()); }
   // The profile of the first cell (the builder must hold one).
   std::int32_t first_profile() const { return chain_.front().p; }
+  // The first cell (the builder must hold one): where the chain started.
+  ChainCell first_cell() const { return chain_.front(); }
   // The stroke so far with its attributes, its vectors sized to fit (cells added not drawn).
   Stroke stroke(StrokeClass cls) const;
   // The stroke so far, its vectors moved out of the builder, which is left empty.

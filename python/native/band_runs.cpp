@@ -5,6 +5,7 @@
 #include "cli/command_support.h"
 #include "cli/options.h"
 #include "core/base/byte_stream.h"
+#include "core/drawn/drawn_strokes.h"
 #include "core/method/run_note.h"
 #include "io/write/vector_writer.h"
 
@@ -28,8 +29,6 @@ FilterReport filter_from_bytes(const std::string& bytes) {
 // The options of a run in bands: the silhouettes command's, but what it cannot take.
 cli::Options band_options(const std::vector<std::string>& options) {
   const cli::Options o = cli::parse_choices("silhouettes", options);
-  if (o.params.strokes.drawn())
-    throw cli::UsageError("a run in bands draws the thesis's exact strokes: give strokes='exact'");
   if (o.params.adaptive.mode == FilterMode::adaptive &&
       o.params.adaptive.adapt == Adaptivity::local)
     throw cli::UsageError("a run in bands adapts the filter to the whole DEM, not locally");
@@ -78,18 +77,25 @@ std::string sketch_band_bytes(const std::string& input, const std::vector<std::s
 
 std::string stitch_bands(const std::string& input, const std::string& output,
                          const std::vector<std::string>& options, const std::string& filter,
-                         std::size_t profiles, const BandSource& bands) {
+                         double z_ref, std::size_t profiles, const BandSource& bands) {
   std::vector<std::string> args = {input, output};
   args.insert(args.end(), options.begin(), options.end());
   const cli::Options o = cli::parse("silhouettes", args);
   const ResolvedParams params =
       resolve_as_reported(band_options(options).params, filter_from_bytes(filter));
-  const io::DemFile dem(o.input, o.dem);  // its CRS
+  const io::DemFile dem(o.input, o.dem);  // its CRS, and its grid for the drawing
+  const bool drawn = params->strokes.drawn();
+  std::optional<DrawingSetup> drawing;
+  if (drawn) {
+    const OrientedFrame frame = make_frame(dem.info().grid, params->view.azimuth_deg);
+    drawing = drawing_setup(frame, dem.info().geotransform, params.params(), z_ref);
+  }
   SilhouetteResult result;
   io::write_strokes(
       o.output, o.format, dem.info().srs_wkt,
       [&](const io::StrokeWriter& write) {
-        BandStitcher stitcher(params, [&write](Stroke&& stroke) { write(stroke); });
+        BandStitcher stitcher(
+            params, [&write](Stroke&& stroke) { write(stroke); }, drawing);
         for (std::string bytes = bands.next(); !bytes.empty(); bytes = bands.next()) {
           BandSketch band = band_from_bytes(bytes);
           if (!stitcher.follows(band)) {
@@ -100,10 +106,10 @@ std::string stitch_bands(const std::string& input, const std::string& output,
         }
         result = stitcher.finish(profiles);
       },
-      io::kStrokeLayer, false,
+      io::kStrokeLayer, drawn,
       [&] {
         return run_note({std::filesystem::path(o.input).filename().string(), o.dem.band,
-                         o.params.view, result.filter, false, TSK_VERSION});
+                         o.params.view, result.filter, drawn, TSK_VERSION});
       });
   return cli::stats_json(result.stats, result.filter);
 }

@@ -20,8 +20,8 @@ struct BandPlan {
 };
 
 // Checks the silhouettes command's `options` (as typed) and paths for a run in bands, and surveys
-// the DEM's filter once. Throws cli::UsageError for options a run in bands cannot take (drawn
-// strokes, local adaptivity, outputs beyond OUTPUT) and as the command does.
+// the DEM's filter once. Throws cli::UsageError for options a run in bands cannot take (local
+// adaptivity, outputs beyond OUTPUT) and as the command does.
 BandPlan plan_bands(const std::string& input, const std::string& output,
                     const std::vector<std::string>& options);
 
@@ -44,11 +44,12 @@ struct BandSource {
   std::function<std::string(std::size_t first, std::size_t count, const std::string& order)> again;
 };
 
-// Stitches the bands of a run as they come and writes each stroke as soon as it is whole, into
-// OUTPUT written whole at the end (with its note, as the silhouettes command writes it). Returns
-// the stage statistics as JSON.
+// Stitches the bands of a run as they come and writes each stroke as soon as it is whole (drawn
+// strokes: drawn here, in one run's order), into OUTPUT written whole at the end, with its note,
+// as the silhouettes command writes it. z_ref: the DEM's lowest height (plan-oblique geometry).
+// Returns the stage statistics as JSON.
 std::string stitch_bands(const std::string& input, const std::string& output,
                          const std::vector<std::string>& options, const std::string& filter,
-                         std::size_t profiles, const BandSource& bands);
+                         double z_ref, std::size_t profiles, const BandSource& bands);
 
 }  // namespace tsk::python

@@ -154,8 +154,8 @@ double lowest_height(const std::string& input, const Strings& options, std::size
 
 // Stitches the bands that `next()` hands back and writes OUTPUT (band_runs.h).
 std::string stitch(const std::string& input, const std::string& output, const Strings& options,
-                   const std::string& filter, std::size_t profiles, const py::object& next,
-                   const py::object& again, const RunHooks& hooks) {
+                   const std::string& filter, double z_ref, std::size_t profiles,
+                   const py::object& next, const py::object& again, const RunHooks& hooks) {
   // Called from the run, the interpreter's lock released: each call takes it.
   const BandSource bands{[&next] {
                            py::gil_scoped_acquire lock;
@@ -167,7 +167,7 @@ std::string stitch(const std::string& input, const std::string& output, const St
                          }};
   std::string statistics;
   run_from_python(hooks, [&](const ProgressFn&, std::ostream&) {
-    statistics = stitch_bands(input, output, options, filter, profiles, bands);
+    statistics = stitch_bands(input, output, options, filter, z_ref, profiles, bands);
   });
   return statistics;
 }
@@ -215,7 +215,7 @@ PYBIND11_MODULE(_native, m) {
   m.def("lowest_height", &lowest_height, py::arg("input"), py::arg("options"), py::arg("first_row"),
         py::arg("rows"));
   m.def("stitch_bands", &stitch, py::arg("input"), py::arg("output"), py::arg("options"),
-        py::arg("filter"), py::arg("profiles"), py::arg("next"), py::arg("again"),
+        py::arg("filter"), py::arg("z_ref"), py::arg("profiles"), py::arg("next"), py::arg("again"),
         py::arg("hooks"));
   m.def("options", &option_list);
   m.def("commands", &command_list);

@@ -3,13 +3,13 @@
 The view's profiles are cut into bands. Each task reads its own band of the DEM from the file
 (a GeoTIFF, COG or VRT on storage every worker sees; no DEM goes through the scheduler), sketches
 it and returns its strokes and the chains that run across its edges. The client stitches the
-bands in order into one output, written whole, with the same strokes as one machine's run
-(``--strokes exact``; see docs/DISTRIBUTED.md)::
+bands in order into one output, written whole, with the same strokes as one machine's run, exact
+or drawn (see docs/DISTRIBUTED.md)::
 
     from dask.distributed import Client
     import terrain_sketch.dask
     stats = terrain_sketch.dask.silhouettes("dem.vrt", "strokes.gpkg", Client("tcp://host:8786"),
-                                            strokes="exact", azimuth=270)
+                                            azimuth=270)
 """
 
 import json
@@ -58,10 +58,10 @@ def silhouettes(input, output, client=None, band_profiles=None, *, progress=None
     The silhouettes command on a Dask cluster: `client` (a dask.distributed.Client; None makes a
     LocalCluster of one single-threaded worker process a core for the run), bands of
     `band_profiles` profiles (None: about four a worker), and the options of
-    terrain_sketch.silhouettes() but those that need the whole DEM on one machine: exact strokes
-    only (strokes="exact"), the filter fixed or adapted to the whole DEM (surveyed once, by the
-    client), and no files beyond OUTPUT; plan-oblique geometry reads the DEM once more for its
-    lowest height, on the workers. Returns the stage statistics as a dict.
+    terrain_sketch.silhouettes() but those that need the whole DEM on one machine: the filter
+    fixed or adapted to the whole DEM (surveyed once, by the client), not locally, and no files
+    beyond OUTPUT. Drawn strokes are drawn by the client as the bands come back; plan-oblique
+    geometry reads the DEM once more for its lowest height, on the workers. Returns the stage statistics as a dict.
     Raises ValueError on bad options, terrain_sketch.Error when the run cannot be done (a worker
     that cannot read the DEM ends it with its message); a worker lost mid-run has its band
     sketched again by another. OUTPUT is written whole at the end, or not at all.
@@ -126,7 +126,7 @@ def _stitch(client, input_path, output_path, arguments, plan, width, progress):
     try:
         # Ctrl-C reaches Python's own handler while the client waits for a band.
         hooks = _native.RunHooks(None, _options.log_line, False)
-        return _native.stitch_bands(input_path, output_path, arguments, filter_report, profiles,
-                                    next_band, again, hooks)
+        return _native.stitch_bands(input_path, output_path, arguments, filter_report, z_ref,
+                                    profiles, next_band, again, hooks)
     finally:
         client.cancel([f for f in futures[done:]])

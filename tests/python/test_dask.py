@@ -1,6 +1,7 @@
-"""terrain_sketch.dask against the run on one machine: the same strokes (compared as sets of rows:
-geometry and attributes) and statistics, on the sample and a 4000^2 DEM made of it, bands down
-to a few profiles, a worker killed mid-run, and the refusals."""
+"""terrain_sketch.dask against the run on one machine: the same strokes, exact and drawn
+(compared as sets of rows: geometry with M values, and attributes) and statistics, on the sample
+and a 4000^2 DEM made of it, bands down to a few profiles, a worker killed mid-run, and the
+refusals."""
 
 import os
 import sqlite3
@@ -35,9 +36,9 @@ def rows(path):
 
 
 def same_run(tmp_path, client, dem, band_profiles, **options):
-    single = terrain_sketch.silhouettes(dem, tmp_path / "one.gpkg", strokes="exact", **options)
+    single = terrain_sketch.silhouettes(dem, tmp_path / "one.gpkg", **options)
     spread = terrain_sketch.dask.silhouettes(dem, tmp_path / "bands.gpkg", client, band_profiles,
-                                             strokes="exact", **options)
+                                             **options)
     assert spread == single
     one, bands = rows(tmp_path / "one.gpkg"), rows(tmp_path / "bands.gpkg")
     assert len(one) == single["factual_strokes"] + single["formulated_strokes"] > 0
@@ -46,9 +47,14 @@ def same_run(tmp_path, client, dem, band_profiles, **options):
 
 
 @pytest.mark.parametrize("band_profiles", [3, 50, None])
-@pytest.mark.parametrize("options", [{"azimuth": 90, "filter": "fixed"}, {"azimuth": 200},
-                                     {"azimuth": 0, "geometry": "oblique", "subcell": True}],
-                         ids=["fixed-90", "adaptive-200", "oblique-0"])
+@pytest.mark.parametrize("options", [{"azimuth": 90, "filter": "fixed", "strokes": "exact"},
+                                     {"azimuth": 200, "strokes": "exact"},
+                                     {"azimuth": 0, "geometry": "oblique", "subcell": True,
+                                      "strokes": "exact"},
+                                     {},  # the defaults: adaptive filter, drawn strokes
+                                     {"azimuth": 135, "geometry": "oblique", "join_gap": 4}],
+                         ids=["exact-fixed-90", "exact-200", "exact-oblique-0", "defaults",
+                              "drawn-oblique-135"])
 def test_bands_give_the_strokes_of_one_machine(tmp_path, client, band_profiles, options):
     same_run(tmp_path, client, SAMPLE, band_profiles, **options)
 
@@ -67,7 +73,8 @@ def test_a_dem_of_4000_squared(tmp_path, client):
     large.GetRasterBand(1).SetNoDataValue(-9999)
     large.GetRasterBand(1).WriteArray(heights)
     large = None
-    same_run(tmp_path, client, path, 700, azimuth=270)
+    same_run(tmp_path, client, path, 700, azimuth=270, strokes="exact")
+    same_run(tmp_path, client, path, 1000, azimuth=90)
 
 
 class KillFirstBand(distributed.WorkerPlugin):
@@ -95,8 +102,7 @@ def test_a_worker_killed_mid_run(tmp_path):
 
 def test_options_a_run_in_bands_cannot_take(tmp_path, client):
     out = tmp_path / "out.gpkg"
-    for options, words in [({}, "strokes='exact'"),
-                           ({"strokes": "exact", "adapt": "local"}, "not locally"),
+    for options, words in [({"strokes": "exact", "adapt": "local"}, "not locally"),
                            ({"strokes": "exact", "preview": "p.svg"}, "OUTPUT only"),
                            ({"strokes": "exact", "observer": (1, 2)}, "does not take")]:
         with pytest.raises(ValueError, match=words):
@@ -110,5 +116,5 @@ def test_a_worker_that_cannot_read_the_dem_ends_the_run_with_its_message(tmp_pat
     # Workers whose GDAL reads no GeoTIFF, while the client's does.
     with cluster(env={"GDAL_SKIP": "GTiff"}) as local, distributed.Client(local) as c:
         with pytest.raises(terrain_sketch.Error, match="jacksboro_utm16n.tif"):
-            terrain_sketch.dask.silhouettes(SAMPLE, tmp_path / "out.gpkg", c, strokes="exact")
+            terrain_sketch.dask.silhouettes(SAMPLE, tmp_path / "out.gpkg", c)
     assert not os.listdir(tmp_path)
