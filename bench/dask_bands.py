@@ -2,7 +2,8 @@
 against the command line with as many threads, on the same DEM (exact strokes), and what a band
 costs: its sketch, its bytes, its edges, and the client's stitching.
 
-    [RUNS=3] /usr/bin/python3 bench/dask_bands.py BUILD_DIR DEM [WORKERS=2] [BAND_PROFILES...]
+    [RUNS=3] [STROKES=exact|drawn] /usr/bin/python3 bench/dask_bands.py BUILD_DIR DEM [WORKERS=2]
+        [BAND_PROFILES...]
 
 Prints the CLI's wall time, then for each band width: the Dask run's wall time (cluster started
 beforehand, as a user keeps one), its ratio to the CLI, the bands sketched again, and per band
@@ -28,12 +29,13 @@ from terrain_sketch import _native, _options  # noqa: E402
 
 OUT = "/tmp/tsk-dask-bench"
 RUNS = int(os.environ.get("RUNS", "3"))  # runs of each kind, their median printed
+STROKES = os.environ.get("STROKES", "exact")  # or drawn
 
 
 def cli_seconds():
     start = time.monotonic()
     subprocess.run([os.path.join(build, "cli", "terrain-sketch"), "silhouettes", dem,
-                    f"{OUT}/cli.gpkg", "--strokes", "exact", "--threads", str(workers)],
+                    f"{OUT}/cli.gpkg", "--strokes", STROKES, "--threads", str(workers)],
                    check=True, capture_output=True)
     return time.monotonic() - start
 
@@ -46,7 +48,7 @@ def timed_band(arguments, filter_report, first, count):
 
 def band_figures(client, width):
     """Per-band figures: sketch seconds on a worker, bytes, and the client's stitching."""
-    arguments = _options.to_arguments({"strokes": "exact"})
+    arguments = _options.to_arguments({"strokes": STROKES})
     plan = _native.plan_bands(dem, f"{OUT}/b.gpkg", arguments, _options.hooks(None))
     profiles = plan["profiles"]
     bands = [(f, min(width, profiles - f)) for f in range(0, profiles, width)]
@@ -77,7 +79,7 @@ def band_figures(client, width):
 def main():
     os.makedirs(OUT, exist_ok=True)
     cli = statistics.median(cli_seconds() for _ in range(RUNS))
-    print(f"CLI, {workers} threads, exact strokes: {cli:.2f} s")
+    print(f"CLI, {workers} threads, {STROKES} strokes: {cli:.2f} s")
     with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                   dashboard_address=":0") as cluster, \
             distributed.Client(cluster) as client:
@@ -86,7 +88,7 @@ def main():
             runs = []
             for _ in range(RUNS):
                 start = time.monotonic()
-                tsd.silhouettes(dem, f"{OUT}/dask.gpkg", client, width, strokes="exact")
+                tsd.silhouettes(dem, f"{OUT}/dask.gpkg", client, width, strokes=STROKES)
                 runs.append(time.monotonic() - start)
             wall = statistics.median(runs)
             band_s, band_bytes, stitch_s, again, count, pieces, edge_bytes = band_figures(
