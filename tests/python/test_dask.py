@@ -4,6 +4,7 @@ and a 4000^2 DEM made of it, bands down to a few profiles, a worker killed mid-r
 refusals."""
 
 import os
+import shutil
 import sqlite3
 
 import numpy as np
@@ -93,9 +94,7 @@ class KillFirstBand(distributed.WorkerPlugin):
 def test_a_worker_killed_mid_run(tmp_path):
     marker = str(tmp_path / "killed")
     with cluster() as local, distributed.Client(local) as c:
-        # register_plugin from distributed 2023.9 on; register_worker_plugin before.
-        register = getattr(c, "register_plugin", None) or c.register_worker_plugin
-        register(KillFirstBand(marker))
+        register(c, KillFirstBand(marker))
         same_run(tmp_path, c, SAMPLE, 40, azimuth=0)
     assert os.path.exists(marker)
 
@@ -112,9 +111,29 @@ def test_options_a_run_in_bands_cannot_take(tmp_path, client):
     assert not os.listdir(tmp_path)
 
 
-def test_a_worker_that_cannot_read_the_dem_ends_the_run_with_its_message(tmp_path):
-    # Workers whose GDAL reads no GeoTIFF, while the client's does.
-    with cluster(env={"GDAL_SKIP": "GTiff"}) as local, distributed.Client(local) as c:
-        with pytest.raises(terrain_sketch.Error, match="jacksboro_utm16n.tif"):
-            terrain_sketch.dask.silhouettes(SAMPLE, tmp_path / "out.gpkg", c)
-    assert not os.listdir(tmp_path)
+class WorkInFolder(distributed.WorkerPlugin):
+    """Moves its worker into another folder, where a relative path names nothing."""
+
+    def __init__(self, folder):
+        self.folder = folder
+
+    def setup(self, worker):
+        os.chdir(self.folder)
+
+
+def register(client, plugin):
+    # register_plugin from distributed 2023.9 on; register_worker_plugin before.
+    (getattr(client, "register_plugin", None) or client.register_worker_plugin)(plugin)
+
+
+def test_a_worker_that_cannot_read_the_dem_ends_the_run_with_its_message(tmp_path, monkeypatch):
+    here, elsewhere = tmp_path / "client", tmp_path / "workers"
+    here.mkdir()
+    elsewhere.mkdir()
+    shutil.copy(SAMPLE, here / "dem.tif")
+    monkeypatch.chdir(here)
+    with cluster() as local, distributed.Client(local) as c:
+        register(c, WorkInFolder(str(elsewhere)))
+        with pytest.raises(terrain_sketch.Error, match="dem.tif"):
+            terrain_sketch.dask.silhouettes("dem.tif", "out.gpkg", c)
+    assert os.listdir(here) == ["dem.tif"]
