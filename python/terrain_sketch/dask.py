@@ -47,9 +47,10 @@ def _lowest_height(client, input_path, arguments, plan):
 
 
 def _band_width(profiles, workers):
-    """About four bands a worker, so that a slow one holds up little, and none narrower than
-    four halos, so that guessing costs little."""
-    return max(4 * HALO, math.ceil(profiles / max(1, 4 * workers)))
+    """About eight bands a worker, so that the client starts early and a slow band holds up
+    little (the fastest width on the 8000^2 benchmark, docs/DISTRIBUTED.md), and none narrower
+    than four halos, so that guessing costs little."""
+    return max(4 * HALO, math.ceil(profiles / max(1, 8 * workers)))
 
 
 def silhouettes(input, output, client=None, band_profiles=None, *, progress=None, **options):
@@ -57,7 +58,7 @@ def silhouettes(input, output, client=None, band_profiles=None, *, progress=None
 
     The silhouettes command on a Dask cluster: `client` (a dask.distributed.Client; None makes a
     LocalCluster of one single-threaded worker process a core for the run), bands of
-    `band_profiles` profiles (None: about four a worker), and the options of
+    `band_profiles` profiles (None: about eight a worker), and the options of
     terrain_sketch.silhouettes() but those that need the whole DEM on one machine: the filter
     fixed or adapted to the whole DEM (surveyed once, by the client), not locally, and no files
     beyond OUTPUT. Drawn strokes are drawn by the client as the bands come back; plan-oblique
