@@ -6,7 +6,6 @@
 #include "cli/commands.h"
 #include "cli/interrupt.h"
 #include "core/applications/diagnostics.h"
-#include "io/write/output_files.h"
 #include "io/write/raster_writer.h"
 
 namespace tsk::cli {
@@ -21,8 +20,7 @@ std::string classify(const Args& args, std::ostream& out, std::ostream& err,
   stop_if_interrupted();
   io::write_classification(o.output, classification_map(result.flags, dem.frame), dem.geotransform,
                            dem.srs_wkt);
-  const std::string statistics = stats_json(result.stats, result.filter);
-  if (!o.stats_json.empty()) io::write_text_file(o.stats_json, statistics);
+  const std::string statistics = report_statistics(o, result.stats, result.filter);
   const StageStats& s = result.stats;
   out << o.output << ": hidden " << s.pct(s.hidden) << " %, occluding " << s.pct(s.occluding)
       << " %, c-set " << s.pct(s.candidate) << " %, f-set " << s.pct(s.filtered) << " %, t-set "

@@ -97,6 +97,12 @@ std::string stats_json(const StageStats& s, const FilterReport& filter) {
   return j.str();
 }
 
+std::string report_statistics(const Options& o, const StageStats& s, const FilterReport& filter) {
+  std::string statistics = stats_json(s, filter);
+  if (!o.stats_json.empty()) io::write_text_file(o.stats_json, statistics);
+  return statistics;
+}
+
 void require_geotiff(const std::string& path) {
   const std::string ext = io::lowercase_extension(path);
   if (ext != ".tif" && ext != ".tiff")

@@ -24,6 +24,10 @@ void print_filter(const FilterReport& report, std::ostream& err);
 // The stage statistics and the filter used as a JSON object (--stats-json).
 std::string stats_json(const StageStats& s, const FilterReport& filter);
 
+// The run's statistics as JSON (stats_json), also written to --stats-json when it was given:
+// what the commands that count return.
+std::string report_statistics(const Options& o, const StageStats& s, const FilterReport& filter);
+
 // Throws Error unless `path` names a GeoTIFF (.tif, .tiff).
 void require_geotiff(const std::string& path);
 

@@ -52,8 +52,4 @@ InterruptScope::~InterruptScope() {
   signalled.store(false);
 }
 
-bool InterruptScope::interrupted() const {
-  return signalled.load();
-}
-
 }  // namespace tsk::cli

@@ -18,15 +18,14 @@ void stop_if_interrupted();
 
 // Catches SIGINT for as long as it lives: a run called from Python, whose own handler cannot run
 // while the run holds its thread. Unlike catch_interrupts, a second signal does not end the
-// program, and the handler found is put back, the signal forgotten, when the scope ends.
+// program, and the handler found is put back, the signal forgotten, when the scope ends; while it
+// lives, interrupted() tells whether SIGINT came.
 class InterruptScope {
  public:
   InterruptScope();
   ~InterruptScope();
   InterruptScope(const InterruptScope&) = delete;
   InterruptScope& operator=(const InterruptScope&) = delete;
-  // True when SIGINT came while the scope lived.
-  bool interrupted() const;
 
  private:
   struct sigaction previous_;

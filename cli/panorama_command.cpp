@@ -15,7 +15,6 @@
 #include "io/pages/panorama_page.h"
 #include "io/pages/preview.h"
 #include "io/read/named_points.h"
-#include "io/write/output_files.h"
 #include "io/write/raster_writer.h"
 #include "io/write/vector_writer.h"
 
@@ -91,8 +90,7 @@ std::string panorama(const Args& args, std::ostream& out, std::ostream& err,
   // for the visibility raster.
   held.dem.oriented = HeightGrid();
   write_outputs(o, dem, run, leaders, progress, err);
-  const std::string statistics = stats_json(result.stats, run.filter);
-  if (!o.stats_json.empty()) io::write_text_file(o.stats_json, statistics);
+  const std::string statistics = report_statistics(o, result.stats, run.filter);
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes
       << " formulated strokes from " << result.rays.rays << " rays of " << result.rays.samples

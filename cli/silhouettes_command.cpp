@@ -14,7 +14,6 @@
 #include "cli/interrupt.h"
 #include "core/method/run_note.h"
 #include "io/pages/preview.h"
-#include "io/write/output_files.h"
 #include "io/write/vector_writer.h"
 
 namespace tsk::cli {
@@ -107,8 +106,7 @@ std::string silhouettes(const Args& args, std::ostream& out, std::ostream& err,
   const double commit_s = since(produced);
   // All three go in place together when the run has done (io/write/output_set.h).
   stop_if_interrupted();
-  const std::string statistics = stats_json(result.stats, result.filter);
-  if (!o.stats_json.empty()) io::write_text_file(o.stats_json, statistics);
+  const std::string statistics = report_statistics(o, result.stats, result.filter);
   if (preview) plotter = write_preview(o, result, std::move(drawn), dem.info(), note, progress);
   print_filter(result.filter, err);
   if (o.page.plotter) print_plotter(plotter, !o.page.size.empty(), err);

@@ -48,16 +48,13 @@ Stitched in_bands(const io::DemFile& dem, const ResolvedParams& params, std::siz
   if (params->strokes.drawn())
     drawing = drawing_setup(frame, dem.info().geotransform, params.params(), 0.0);
   BandStitcher stitcher(params, {}, drawing);
-  for (const std::string& bytes : sketches) {
-    BandSketch band = band_from_bytes(bytes);
-    if (!stitcher.follows(band)) {
-      ++out.sketched_again;
-      const BandOrders order = orders_from_bytes(orders_bytes(stitcher.next_order()));
-      band = sketch_band(dem.source(), params, BandSpec{band.first, band.count, order, 0});
-      REQUIRE(stitcher.follows(band));
-    }
-    stitcher.add(std::move(band));
-  }
+  const auto again = [&](std::size_t first, std::size_t count, const BandOrders& order) {
+    ++out.sketched_again;
+    const BandOrders sent = orders_from_bytes(orders_bytes(order));
+    return sketch_band(dem.source(), params, BandSpec{first, count, sent, 0});
+  };
+  // add() throws if the band sketched again does not follow either.
+  for (const std::string& bytes : sketches) stitcher.add(band_from_bytes(bytes), again);
   out.result = stitcher.finish(frame.profiles);
   return out;
 }

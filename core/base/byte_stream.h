@@ -54,6 +54,13 @@ class ByteReader {
     std::memcpy(values.data(), bytes_.data() + at_, values.size() * sizeof(T));
     at_ += values.size() * sizeof(T);
   }
+  // Reads a value and throws unless it is `expected`: the mark that begins bytes of one kind.
+  template <typename T>
+  void expect(const T& expected) {
+    T value{};
+    get(value);
+    if (value != expected) fail();
+  }
   // Throws unless every byte was read.
   void finish() const {
     if (at_ != bytes_.size()) fail();

@@ -74,8 +74,12 @@ StrokeDrawer::StrokeDrawer(const DrawingSetup& setup)
       rule_{setup.drawn.join_gap_cells * setup.cell, setup.drawn.join_angle_deg},
       groups_(rule_) {}
 
+double longest_step(const DrawingSetup& setup) {
+  return kLeapCells * setup.cell;
+}
+
 double StrokeDrawer::longest_step() const {
-  return kLeapCells * setup_.cell;
+  return tsk::longest_step(setup_);
 }
 
 void StrokeDrawer::add(Stroke&& piece) {

@@ -45,6 +45,10 @@ struct DrawingSetup {
 DrawingSetup drawing_setup(const OrientedFrame& frame, const GeoTransform& geotransform,
                            const SilhouetteParams& params, double z_ref);
 
+// The longest step between neighbouring points of a piece, map units: where a chain is cut
+// (StrokeBuilder::drawn_pieces).
+double longest_step(const DrawingSetup& setup);
+
 // Groups of pieces taken to draw: their pieces one group after another.
 struct StrokeGroups {
   std::vector<Stroke> pieces;

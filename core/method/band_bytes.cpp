@@ -85,9 +85,7 @@ std::string band_bytes(const BandSketch& band) {
 
 BandSketch band_from_bytes(const std::string& bytes) {
   ByteReader r(bytes, "a band's sketch");
-  std::uint32_t magic = 0;
-  r.get(magic);
-  if (magic != kBandMagic) throw Error("these bytes are not a band's sketch of Terrain Sketch");
+  r.expect(kBandMagic);
   BandSketch band;
   std::uint64_t first = 0, count = 0, strokes = 0, pieces = 0;
   r.get(first);
@@ -126,9 +124,7 @@ std::string orders_bytes(const BandOrders& orders) {
 
 BandOrders orders_from_bytes(const std::string& bytes) {
   ByteReader r(bytes, "an order of chains");
-  std::uint32_t magic = 0;
-  r.get(magic);
-  if (magic != kOrderMagic) throw Error("these bytes are not an order of chains of Terrain Sketch");
+  r.expect(kOrderMagic);
   BandOrders orders;
   get_orders(r, orders);
   r.finish();

@@ -134,6 +134,11 @@ void BandStitcher::add(BandSketch&& band) {
   if (drawing_) hand_to_drawing();
 }
 
+void BandStitcher::add(BandSketch&& band, const SketchAgain& again) {
+  if (!follows(band)) band = again(band.first, band.count, order_);
+  add(std::move(band));
+}
+
 void BandStitcher::join(BandPiece& piece, std::vector<Open>& next_open) {
   std::vector<Open>& open = open_[class_index(piece.cls)];
   StrokeBuilder builder;

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,6 +27,12 @@ namespace tsk {
 // profile's chain candidates: one order per class.
 struct BandOrders {
   std::vector<std::uint32_t> factual, formulated;
+  std::vector<std::uint32_t>& of(StrokeClass cls) {
+    return cls == StrokeClass::factual ? factual : formulated;
+  }
+  const std::vector<std::uint32_t>& of(StrokeClass cls) const {
+    return cls == StrokeClass::factual ? factual : formulated;
+  }
   bool operator==(const BandOrders& o) const {
     return factual == o.factual && formulated == o.formulated;
   }
@@ -83,14 +90,16 @@ class BandStitcher {
   BandStitcher(const ResolvedParams& params, StrokeSink sink = {},
                std::optional<DrawingSetup> drawing = std::nullopt);
   ~BandStitcher();
-  // The first profile of the band to add next, and the order its linking must start from.
-  std::size_t next_first() const { return next_first_; }
-  const BandOrders& next_order() const { return order_; }
-  // Whether `band` is the next one and linked from the true order (else sketch it again, giving
-  // next_order()).
+  // Whether `band` is the next one and linked from the true order (else it must be sketched
+  // again from that order: add() with `again`).
   bool follows(const BandSketch& band) const;
   // Throws Error unless it follows.
   void add(BandSketch&& band);
+  // The band sketched again from the true order at its first profile.
+  using SketchAgain =
+      std::function<BandSketch(std::size_t first, std::size_t count, const BandOrders& order)>;
+  // Adds `band`, or, when its guess of the order was wrong, the band `again` sketches.
+  void add(BandSketch&& band, const SketchAgain& again);
   // After the band holding the grid's last profile: the strokes in SPEC 1.7's order (factual,
   // then formulated), and the statistics, as one run gives them. `profiles`: the grid's.
   SilhouetteResult finish(std::size_t profiles);

@@ -85,10 +85,15 @@ struct SilhouetteStream::State {
         z_ref(z),
         progress(pr),
         sink(std::move(sk)),
-        formulated(false, p.chain.window) {
-    if (!p.strokes.drawn()) return;
+        formulated(false, p.chain.window) {}
+
+  // Drawn strokes are drawn alongside the linking (a whole run's; a band leaves its pieces to the
+  // stitcher).
+  void start_drawing() {
+    if (!params.strokes.drawn()) return;
     drawing = std::make_unique<DrawingPipeline>(
-        drawing_setup(f, gt, p, z), draws_alongside(p), [this](StrokeClass cls, Stroke&& stroke) {
+        drawing_setup(frame, geotransform, params, z_ref), draws_alongside(params),
+        [this](StrokeClass cls, Stroke&& stroke) {
           deliver(cls == StrokeClass::factual ? factual : formulated, std::move(stroke));
         });
   }
@@ -196,19 +201,17 @@ struct SilhouetteStream::State {
   void link_band(Strokes& strokes, BandLinks& links, const ProfileCandidates& candidates,
                  const std::vector<StrokeCell>& cells) {
     const std::size_t p = next_linked;
-    const bool is_factual = strokes.cls == StrokeClass::factual;
     ChainLinker& linker = strokes.linker;
     const std::vector<ChainRef>* joined = nullptr;
     if (p + 1 == band->owned_first && band->given) {
-      linker.start_from(candidates, is_factual ? band->given->factual : band->given->formulated);
+      linker.start_from(candidates, band->given->of(strokes.cls));
     } else {
       joined = &linker.add_profile(candidates);
     }
     links.in.resize(linker.slot_count(), -1);
     links.cells.resize(linker.slot_count());
     if (p + 1 == band->owned_first) {
-      std::vector<std::uint32_t>& order =
-          is_factual ? band->sketch.in.factual : band->sketch.in.formulated;
+      std::vector<std::uint32_t>& order = band->sketch.in.of(strokes.cls);
       for (const ChainLinker::Open& o : linker.open()) {
         links.in[o.chain.slot] = static_cast<std::int64_t>(o.k);
         order.push_back(static_cast<std::uint32_t>(o.k));
@@ -260,9 +263,7 @@ struct SilhouetteStream::State {
         finish_piece(strokes.cls, links, chain.slot, -1);
       return;
     }
-    std::vector<std::uint32_t>& order = strokes.cls == StrokeClass::factual
-                                            ? band->sketch.out.factual
-                                            : band->sketch.out.formulated;
+    std::vector<std::uint32_t>& order = band->sketch.out.of(strokes.cls);
     for (const ChainLinker::Open& o : linker.open()) {
       order.push_back(static_cast<std::uint32_t>(o.k));
       finish_piece(strokes.cls, links, o.chain.slot, static_cast<std::int64_t>(o.k));
@@ -286,12 +287,15 @@ SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransfor
     : state_(std::make_unique<State>(frame, geotransform, params.params(), z_ref, progress,
                                      std::move(sink))) {
   state_->result.filter = params.filter();
+  state_->start_drawing();
 }
 
 SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransform& geotransform,
                                    const ResolvedParams& params, double z_ref, const BandSpec& band,
                                    const ProgressFn& progress)
-    : SilhouetteStream(frame, geotransform, params, z_ref, progress) {
+    : state_(std::make_unique<State>(frame, geotransform, params.params(), z_ref, progress,
+                                     StrokeSink())) {
+  state_->result.filter = params.filter();
   if (band.count == 0 || band.first > frame.profiles || band.count > frame.profiles - band.first)
     throw Error("the band of profiles " + std::to_string(band.first) + " + " +
                 std::to_string(band.count) + " does not lie in the grid's " +
@@ -305,11 +309,9 @@ SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransfor
   b.sketch.first = band.first;
   b.sketch.count = band.count;
   b.sketch.filter = params.filter();
-  if (state_->drawing) {
-    // The band cuts its chains into pieces; the stitcher draws them all, in order.
-    b.longest_step = state_->drawing->longest_step();
-    state_->drawing.reset();
-  }
+  // A band cuts its drawn chains into pieces where they leap; the stitcher draws them, in order.
+  if (params->strokes.drawn())
+    b.longest_step = longest_step(drawing_setup(frame, geotransform, params.params(), z_ref));
   state_->band = std::move(b);
   state_->next_profile = state_->next_linked = state_->band->link_from;
 }

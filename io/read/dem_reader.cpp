@@ -210,12 +210,7 @@ std::vector<HeightGrid> read_bands(const std::string& path) {
 }
 
 BandWindows::BandWindows(const std::string& path, int band)
-    : BandWindows(
-          [&] {
-            GdalErrorCapture capture;
-            return open_raster(path);
-          }(),
-          path, band) {}
+    : BandWindows(open_raster(path), path, band) {}
 
 BandWindows::BandWindows(DatasetPtr dataset, const std::string& path, int band)
     : dataset_(std::move(dataset)) {
@@ -265,12 +260,7 @@ DemRefused::DemRefused(const std::string& path, DemNote note)
     : Error("'" + path + "' cannot be taken as it is"), path_(path), note_(std::move(note)) {}
 
 DemFile::DemFile(const std::string& path, const DemOptions& options)
-    : DemFile(
-          [&] {
-            GdalErrorCapture capture;
-            return open_raster(path);
-          }(),
-          path, options) {}
+    : DemFile(open_raster(path), path, options) {}
 
 DemFile::DemFile(DatasetPtr dataset, const std::string& path, const DemOptions& options) {
   GdalErrorCapture capture;

@@ -37,14 +37,21 @@ cli::Options band_options(const std::vector<std::string>& options) {
   return o;
 }
 
+// The run's options and paths as the silhouettes command parses them, after refusing what a run
+// in bands cannot take (before the paths, as the command checks its options first).
+cli::Options band_run(const std::string& input, const std::string& output,
+                      const std::vector<std::string>& options) {
+  band_options(options);
+  std::vector<std::string> args = {input, output};
+  args.insert(args.end(), options.begin(), options.end());
+  return cli::parse("silhouettes", args);
+}
+
 }  // namespace
 
 BandPlan plan_bands(const std::string& input, const std::string& output,
                     const std::vector<std::string>& options) {
-  band_options(options);
-  std::vector<std::string> args = {input, output};
-  args.insert(args.end(), options.begin(), options.end());
-  const cli::Options o = cli::parse("silhouettes", args);  // the paths checked as the command does
+  const cli::Options o = band_run(input, output, options);
   io::check_vector_output(o.output, o.format);
   const io::DemFile dem(o.input, o.dem);
   const ResolvedParams params = adapt_filter(o.params, dem.info().grid, dem.source().read);
@@ -78,11 +85,8 @@ std::string sketch_band_bytes(const std::string& input, const std::vector<std::s
 std::string stitch_bands(const std::string& input, const std::string& output,
                          const std::vector<std::string>& options, const std::string& filter,
                          double z_ref, std::size_t profiles, const BandSource& bands) {
-  std::vector<std::string> args = {input, output};
-  args.insert(args.end(), options.begin(), options.end());
-  const cli::Options o = cli::parse("silhouettes", args);
-  const ResolvedParams params =
-      resolve_as_reported(band_options(options).params, filter_from_bytes(filter));
+  const cli::Options o = band_run(input, output, options);
+  const ResolvedParams params = resolve_as_reported(o.params, filter_from_bytes(filter));
   const io::DemFile dem(o.input, o.dem);  // its CRS, and its grid for the drawing
   const bool drawn = params->strokes.drawn();
   std::optional<DrawingSetup> drawing;
@@ -96,14 +100,11 @@ std::string stitch_bands(const std::string& input, const std::string& output,
       [&](const io::StrokeWriter& write) {
         BandStitcher stitcher(
             params, [&write](Stroke&& stroke) { write(stroke); }, drawing);
-        for (std::string bytes = bands.next(); !bytes.empty(); bytes = bands.next()) {
-          BandSketch band = band_from_bytes(bytes);
-          if (!stitcher.follows(band)) {
-            band = band_from_bytes(
-                bands.again(band.first, band.count, orders_bytes(stitcher.next_order())));
-          }
-          stitcher.add(std::move(band));
-        }
+        const auto again = [&bands](std::size_t first, std::size_t count, const BandOrders& order) {
+          return band_from_bytes(bands.again(first, count, orders_bytes(order)));
+        };
+        for (std::string bytes = bands.next(); !bytes.empty(); bytes = bands.next())
+          stitcher.add(band_from_bytes(bytes), again);
         result = stitcher.finish(profiles);
       },
       io::kStrokeLayer, drawn,

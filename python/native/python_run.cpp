@@ -120,7 +120,7 @@ void run_from_python(const RunHooks& hooks,
     }
     lines.flush_line();
   }
-  if (failure) raise_failure(failure, callback_error, interrupts && interrupts->interrupted());
+  if (failure) raise_failure(failure, callback_error, interrupts && cli::interrupted());
 }
 
 }  // namespace tsk::python

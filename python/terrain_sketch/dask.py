@@ -14,6 +14,7 @@ or drawn (see docs/DISTRIBUTED.md)::
 
 import json
 import math
+import os
 import uuid
 
 from . import _errors, _native, _options
@@ -62,10 +63,11 @@ def silhouettes(input, output, client=None, band_profiles=None, *, progress=None
     terrain_sketch.silhouettes() but those that need the whole DEM on one machine: the filter
     fixed or adapted to the whole DEM (surveyed once, by the client), not locally, and no files
     beyond OUTPUT. Drawn strokes are drawn by the client as the bands come back; plan-oblique
-    geometry reads the DEM once more for its lowest height, on the workers. Returns the stage statistics as a dict.
-    Raises ValueError on bad options, terrain_sketch.Error when the run cannot be done (a worker
-    that cannot read the DEM ends it with its message); a worker lost mid-run has its band
-    sketched again by another. OUTPUT is written whole at the end, or not at all.
+    geometry reads the DEM once more for its lowest height, on the workers. Returns the stage
+    statistics as a dict. Raises ValueError on bad options, terrain_sketch.Error when the run
+    cannot be done (a worker that cannot read the DEM ends it with its message); a worker lost
+    mid-run has its band sketched again by another. OUTPUT is written whole at the end, or not
+    at all.
     """
     from dask.distributed import Client, LocalCluster
 
@@ -75,8 +77,6 @@ def silhouettes(input, output, client=None, band_profiles=None, *, progress=None
     plan = _native.plan_bands(input_path, output_path, arguments, hooks)
     cluster = None
     if client is None:
-        import os
-
         cluster = LocalCluster(n_workers=os.cpu_count() or 1, threads_per_worker=1,
                                processes=True, dashboard_address=":0")
         client = Client(cluster)
