@@ -224,7 +224,7 @@ QVariantMap SilhouettesAlgorithm::writeOutputs(const QVariantMap& parameters,
   LineOutput factual(*this, parameters, kFactual, context, fields, raster.crs(), feedback, drawn);
   LineOutput formulated(*this, parameters, kFormulated, context, fields, raster.crs(), feedback,
                         drawn);
-  // Each stroke goes to its output as it completes, from the thread that links the chains, while
+  // Each stroke goes to its output as it completes, from one thread alongside the linking, while
   // the other threads work on the next profiles. A failure or cancel discards both outputs.
   const ProgressFn progress = progressBetween(feedback, 0, kCoreEnd);
   const SilhouetteResult result = withCoreErrors([&] {

@@ -164,6 +164,8 @@ TEST_CASE("strokes written straight into a GeoPackage read back as OGR writes th
     std::unique_ptr<OGRFeature> fb(b.GetNextFeature());
     REQUIRE(fb);
     INFO("feature " << rows);
+    // Rows go in many to a statement, with their ids given: 1, 2, ... in the order written.
+    CHECK(fa->GetFID() == static_cast<GIntBig>(rows + 1));
     const auto* la = fa->GetGeometryRef()->toLineString();
     const auto* lb = fb->GetGeometryRef()->toLineString();
     REQUIRE(la->getNumPoints() == lb->getNumPoints());

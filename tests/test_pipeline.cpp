@@ -331,39 +331,48 @@ TEST_CASE("strips must arrive in order and cover the grid", "[pipeline][strips]"
 TEST_CASE("a stroke sink gets every stroke as its chain completes, each class in scan order",
           "[pipeline][strips]") {
   const HeightGrid dem = test::random_terrain(300, 280, 21, 0.01);
-  for (double az : {90.0, 30.0}) {
-    CAPTURE(az);
-    SilhouetteParams params;
-    params.view.azimuth_deg = az;
-    params.subcell = true;
-    const OrientedFrame frame = make_frame(dem.rows(), dem.cols(), 10, 10, az);
-    const HeightGrid z = orient(dem, frame);
-    const SilhouetteResult held = run_silhouettes(z, frame, GeoTransform{}, ResolvedParams(params));
-    REQUIRE(held.strokes.size() > 50);
-    std::vector<Stroke> received;
-    std::size_t received_before_finish = 0;
-    SilhouetteStream stream(frame, GeoTransform{}, ResolvedParams(params), lowest_height(z), {},
-                            [&](Stroke&& s) { received.push_back(std::move(s)); });
-    const std::size_t width = 20;
-    for (std::size_t first = 0; first < frame.profiles; first += width) {
-      const std::size_t count = std::min(width, frame.profiles - first);
-      stream.add_strip(strip_of(z, first, count), first, count);
+  // With threads, strokes are handed to the sink from a thread of their own, a batch at a time.
+  for (const unsigned threads : {1u, 2u}) {
+    for (double az : {90.0, 30.0}) {
+      CAPTURE(az, threads);
+      SilhouetteParams params;
+      params.view.azimuth_deg = az;
+      params.subcell = true;
+      params.threads = threads;
+      const OrientedFrame frame = make_frame(dem.rows(), dem.cols(), 10, 10, az);
+      const HeightGrid z = orient(dem, frame);
+      const SilhouetteResult held =
+          run_silhouettes(z, frame, GeoTransform{}, ResolvedParams(params));
+      REQUIRE(held.strokes.size() > 50);
+      std::vector<Stroke> received;  // read once the run has finished
+      std::atomic<std::size_t> received_count{0};
+      SilhouetteStream stream(frame, GeoTransform{}, ResolvedParams(params), lowest_height(z), {},
+                              [&](Stroke&& s) {
+                                received.push_back(std::move(s));
+                                ++received_count;
+                              });
+      const std::size_t width = 20;
+      for (std::size_t first = 0; first < frame.profiles; first += width) {
+        const std::size_t count = std::min(width, frame.profiles - first);
+        stream.add_strip(strip_of(z, first, count), first, count);
+      }
+      const std::size_t received_before_finish = received_count.load();
+      const SilhouetteResult streamed = stream.finish();
+      CHECK(streamed.strokes.empty());
+      CHECK(streamed.stats.factual_strokes == held.stats.factual_strokes);
+      CHECK(streamed.stats.formulated_strokes == held.stats.formulated_strokes);
+      CHECK(streamed.stats.generalised == held.stats.generalised);
+      // Strokes leave as they complete, not at the end: only chains still open at the last
+      // profile (and the strokes started after them) wait for finish(), and with threads the
+      // last batches handed to the sink's thread.
+      CHECK(received_before_finish > received.size() / 3);
+      // Each class arrives in the order of the held result; the classes are interleaved.
+      SilhouetteResult regrouped;
+      for (StrokeClass cls : {StrokeClass::factual, StrokeClass::formulated})
+        for (const Stroke& s : received)
+          if (s.cls == cls) regrouped.strokes.push_back(s);
+      test::require_same_strokes(held, regrouped);
     }
-    received_before_finish = received.size();
-    const SilhouetteResult streamed = stream.finish();
-    CHECK(streamed.strokes.empty());
-    CHECK(streamed.stats.factual_strokes == held.stats.factual_strokes);
-    CHECK(streamed.stats.formulated_strokes == held.stats.formulated_strokes);
-    CHECK(streamed.stats.generalised == held.stats.generalised);
-    // Strokes leave as they complete, not at the end: only chains still open at the last
-    // profile (and the strokes started after them) wait for finish().
-    CHECK(received_before_finish > received.size() / 2);
-    // Each class arrives in the order of the held result; the classes are interleaved.
-    SilhouetteResult regrouped;
-    for (StrokeClass cls : {StrokeClass::factual, StrokeClass::formulated})
-      for (const Stroke& s : received)
-        if (s.cls == cls) regrouped.strokes.push_back(s);
-    test::require_same_strokes(held, regrouped);
   }
 }
 
@@ -371,7 +380,7 @@ TEST_CASE("what a stroke sink throws ends the run", "[pipeline][strips]") {
   const HeightGrid dem = test::random_terrain(60, 60, 4);
   const OrientedFrame frame = make_frame(60, 60, 10, 10, 90);
   const HeightGrid z = orient(dem, frame);
-  // Drawn strokes are handed on from a thread of their own when there are threads.
+  // Strokes are handed on from a thread of their own when there are threads.
   for (const StrokeMode mode : {StrokeMode::exact, StrokeMode::drawn}) {
     for (const unsigned threads : {1u, 2u}) {
       CAPTURE(mode == StrokeMode::drawn, threads);
@@ -424,6 +433,40 @@ TEST_CASE("tasks behind run in turn, fall at most so far behind, and pass on a f
   in_turn.run([&ran] { ran = true; });
   CHECK(ran);
   CHECK_THROWS_WITH(in_turn.run([] { throw Error("at once"); }), "at once");
+}
+
+TEST_CASE("a hand-off takes every item in order, a batch at a time, and passes on a failure",
+          "[pipeline]") {
+  for (const bool alongside : {true, false}) {
+    CAPTURE(alongside);
+    std::vector<int> taken;
+    std::thread::id taker;
+    HandOff<int> hand_off(
+        [&](int&& item) {
+          taken.push_back(item);
+          taker = std::this_thread::get_id();
+        },
+        alongside);
+    for (int batch = 0; batch < 5; ++batch) {
+      for (int k = 0; k < 7; ++k) hand_off.add(batch * 7 + k);
+      hand_off.flush();
+    }
+    hand_off.add(35);
+    hand_off.finish();  // hands on the last item, not flushed yet
+    REQUIRE(taken.size() == 36);
+    for (int k = 0; k < 36; ++k) CHECK(taken[static_cast<std::size_t>(k)] == k);
+    CHECK((taker != std::this_thread::get_id()) == alongside);
+  }
+  HandOff<int> failing([](int&&) { throw Error("disk full"); }, true);
+  CHECK_THROWS_WITH(
+      [&] {
+        for (int batch = 0; batch < 4; ++batch) {
+          failing.add(1);
+          failing.flush();
+        }
+        failing.finish();
+      }(),
+      "disk full");
 }
 
 TEST_CASE("strips too wide for the machine's memory are refused before any read",

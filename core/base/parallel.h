@@ -2,14 +2,17 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
 #include <functional>
 #include <future>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <utility>
+#include <vector>
 
 namespace tsk {
 
@@ -80,6 +83,47 @@ class TasksBehind {
   std::size_t most_behind_;
   std::deque<std::future<void>> unfinished_;
   Worker worker_;  // declared last: stopped first, its tasks done
+};
+
+// Items handed to `take`, in order, a batch at a time, on a thread of its own when `alongside`:
+// so that the caller's next work goes on while the last batch is taken (strokes written while the
+// next profiles are linked). Used from one thread at a time; what `take` throws is rethrown by a
+// later flush() or finish(). Destroyed unfinished (a run cancelled or failed), the batches not yet
+// taken are dropped.
+template <typename Item>
+class HandOff {
+ public:
+  HandOff(std::function<void(Item&&)> take, bool alongside)
+      : take_(std::move(take)), batches_(kBatchesBehind, alongside) {}
+  ~HandOff() { abandoned_ = true; }
+  HandOff(const HandOff&) = delete;
+  HandOff& operator=(const HandOff&) = delete;
+
+  void add(Item&& item) { batch_.push_back(std::move(item)); }
+  // Hands on the items added since the last flush; waits when a few batches are still untaken.
+  void flush() {
+    if (batch_.empty()) return;
+    auto taken = std::make_shared<std::vector<Item>>(std::move(batch_));
+    batch_.clear();
+    batches_.run([this, taken] {
+      for (Item& item : *taken) {
+        if (abandoned_) return;
+        take_(std::move(item));
+      }
+    });
+  }
+  // Hands on what is left and waits until every item is taken.
+  void finish() {
+    flush();
+    batches_.finish();
+  }
+
+ private:
+  static constexpr std::size_t kBatchesBehind = 2;
+  std::function<void(Item&&)> take_;
+  std::vector<Item> batch_;
+  std::atomic<bool> abandoned_{false};
+  TasksBehind batches_;  // declared last: its tasks done before the rest goes
 };
 
 // Runs the batches [0, size), [size, 2 size), ... of `count` items through two steps in order:

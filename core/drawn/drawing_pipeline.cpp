@@ -12,8 +12,11 @@ constexpr std::size_t kBatchesBehind = 2;
 
 DrawingPipeline::DrawingPipeline(const DrawingSetup& setup, bool alongside, Deliver deliver)
     : drawers_{std::make_unique<StrokeDrawer>(setup), std::make_unique<StrokeDrawer>(setup)},
-      deliver_(std::move(deliver)),
-      writing_(kBatchesBehind, alongside),
+      writing_(
+          [deliver = std::move(deliver)](std::pair<StrokeClass, Stroke>&& drawn) {
+            deliver(drawn.first, std::move(drawn.second));
+          },
+          alongside),
       finishing_(kBatchesBehind, alongside),
       grouping_(kBatchesBehind, alongside) {}
 
@@ -51,21 +54,12 @@ void DrawingPipeline::group(std::vector<Step>& steps) {
 }
 
 void DrawingPipeline::draw(Settled& settled) {
-  auto drawn = std::make_shared<std::vector<std::pair<StrokeClass, Stroke>>>();
-  std::size_t pieces = 0;
-  for (const auto& taken : settled) pieces += taken.second.pieces.size();
-  drawn->reserve(pieces);  // as many strokes at most
   for (auto& [cls, groups] : settled) {
     if (abandoned_) return;
     const StrokeClass of = cls;
-    drawer(of).draw(groups, [&](Stroke&& stroke) { drawn->emplace_back(of, std::move(stroke)); });
+    drawer(of).draw(groups, [&](Stroke&& stroke) { writing_.add({of, std::move(stroke)}); });
   }
-  writing_.run([this, drawn] {
-    for (auto& [cls, stroke] : *drawn) {
-      if (abandoned_) return;
-      deliver_(cls, std::move(stroke));
-    }
-  });
+  writing_.flush();
 }
 
 void DrawingPipeline::finish() {

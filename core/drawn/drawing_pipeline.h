@@ -7,6 +7,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "core/base/parallel.h"
@@ -55,11 +56,10 @@ class DrawingPipeline {
   void draw(Settled& settled);
 
   std::unique_ptr<StrokeDrawer> drawers_[2];  // factual, formulated
-  Deliver deliver_;
-  std::vector<Step> steps_;  // not given to the drawing yet
+  std::vector<Step> steps_;                   // not given to the drawing yet
   std::atomic<bool> abandoned_{false};
   // Declared last, in reverse order: each is stopped before the one it gives its work to.
-  TasksBehind writing_;
+  HandOff<std::pair<StrokeClass, Stroke>> writing_;
   TasksBehind finishing_;
   TasksBehind grouping_;
 };

@@ -74,8 +74,10 @@ struct SilhouetteStream::State {
     BandSketch sketch;
   };
   std::optional<Band> band;
-  // Drawn strokes only. Declared last: stopped before what it delivers to goes.
-  std::unique_ptr<DrawingPipeline> drawing;
+  // Declared last, stopped before what they deliver to goes. Exact strokes of a whole run are
+  // written alongside the linking, a batch at a time (writing took longer than the linking).
+  std::unique_ptr<HandOff<Stroke>> writing;
+  std::unique_ptr<DrawingPipeline> drawing;  // drawn strokes only
 
   State(const OrientedFrame& f, const GeoTransform& gt, const SilhouetteParams& p, double z,
         const ProgressFn& pr, StrokeSink sk)
@@ -87,10 +89,14 @@ struct SilhouetteStream::State {
         sink(std::move(sk)),
         formulated(false, p.chain.window) {}
 
-  // Drawn strokes are drawn alongside the linking (a whole run's; a band leaves its pieces to the
-  // stitcher).
-  void start_drawing() {
-    if (!params.strokes.drawn()) return;
+  // A whole run's strokes are drawn, or written to the sink, alongside the linking (a band leaves
+  // its pieces to the stitcher).
+  void start_handing_on() {
+    if (!params.strokes.drawn()) {
+      if (sink && resolve_threads(params.threads) > 1)
+        writing = std::make_unique<HandOff<Stroke>>(sink, true);
+      return;
+    }
     drawing = std::make_unique<DrawingPipeline>(
         drawing_setup(frame, geotransform, params, z_ref), draws_alongside(params),
         [this](StrokeClass cls, Stroke&& stroke) {
@@ -137,6 +143,7 @@ struct SilhouetteStream::State {
       }
     }
     if (drawing) drawing->flush();
+    if (writing) writing->flush();
   }
 
   // Adds the cells of a profile's candidates to the strokes of their chains, finishes the closed
@@ -273,7 +280,9 @@ struct SilhouetteStream::State {
   void deliver(Strokes& strokes, Stroke&& stroke) {
     ++strokes.count;
     strokes.cells += static_cast<std::size_t>(stroke.cells);
-    if (sink) {
+    if (writing) {
+      writing->add(std::move(stroke));
+    } else if (sink) {
       sink(std::move(stroke));
     } else {
       strokes.handed_on.push_back(std::move(stroke));
@@ -287,7 +296,7 @@ SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransfor
     : state_(std::make_unique<State>(frame, geotransform, params.params(), z_ref, progress,
                                      std::move(sink))) {
   state_->result.filter = params.filter();
-  state_->start_drawing();
+  state_->start_handing_on();
 }
 
 SilhouetteStream::SilhouetteStream(const OrientedFrame& frame, const GeoTransform& geotransform,
@@ -408,6 +417,7 @@ SilhouetteResult SilhouetteStream::finish() {
     st.drawing->flush();
     st.drawing->finish();
   }
+  if (st.writing) st.writing->finish();
   SilhouetteResult& result = st.result;
   StageStats& stats = result.stats;
   stats.generalised = st.factual.cells + st.formulated.cells;

@@ -66,8 +66,6 @@ class Connection {
 
   // Runs statements that return no rows.
   void run(const std::string& sql) const;
-  // The rowid of the last row inserted.
-  std::int64_t last_rowid() const { return sqlite3_last_insert_rowid(db_); }
   [[noreturn]] void fail(const std::string& why) const;
 
  private:

@@ -33,12 +33,28 @@ void append(std::vector<unsigned char>& out, T value) {
 
 }  // namespace
 
-// The connection and the statement that inserts a row.
+// Rows inserted by one statement, within the 999 values SQLite takes before release 3.32.
+constexpr std::size_t kRowsPerInsert = 64, kMostValues = 999;
+
+// The connection and the statements that insert rows.
 class GpkgLineAppender::Rows {
  public:
-  Rows(GDALDataset& dataset, const std::string& sql) : db(dataset, kWhat), insert(db, sql) {}
+  // `into`: "INSERT INTO table (columns) VALUES "; `row`: a row's "(?, ...)".
+  Rows(GDALDataset& dataset, std::string into, std::string row, std::size_t rows)
+      : db(dataset, kWhat), into_(std::move(into)), row_(std::move(row)), many(db, sql(rows)) {}
+  // The statement inserting `rows` rows.
+  std::string sql(std::size_t rows) const {
+    std::string text = into_;
+    for (std::size_t k = 0; k < rows; ++k) text += (k ? ", " : "") + row_;
+    return text;
+  }
   Connection db;
-  Connection::Statement insert;
+
+ private:
+  std::string into_, row_;
+
+ public:
+  Connection::Statement many;  // a full batch of rows
 };
 
 GpkgLineAppender::GpkgLineAppender(GDALDataset& dataset, const std::string& table)
@@ -49,12 +65,25 @@ GpkgLineAppender::GpkgLineAppender(GDALDataset& dataset, const std::string& tabl
   if (layer->SyncToDisk() != OGRERR_NONE) {
     throw Error(std::string(kWhat) + " failed: " + CPLGetLastErrorMsg());
   }
-  std::string columns = quoted_identifier(layer->GetGeometryColumn()), values = "?";
+  const std::string id_column = quoted_identifier(layer->GetFIDColumn());
+  std::string columns = id_column + ", " + quoted_identifier(layer->GetGeometryColumn());
+  std::string row = "(?, ?";
   const OGRFeatureDefn* fields = layer->GetLayerDefn();
-  for (int k = 0; k < fields->GetFieldCount(); ++k)
-    columns += ", " + quoted_identifier(fields->GetFieldDefn(k)->GetNameRef()), values += ", ?";
-  rows_ = std::make_unique<Rows>(dataset, "INSERT INTO " + quoted_identifier(table) + " (" +
-                                              columns + ") VALUES (" + values + ")");
+  fields_ = static_cast<std::size_t>(fields->GetFieldCount());
+  for (std::size_t k = 0; k < fields_; ++k) {
+    columns += ", " + quoted_identifier(fields->GetFieldDefn(static_cast<int>(k))->GetNameRef());
+    row += ", ?";
+  }
+  const std::size_t rows =
+      std::max<std::size_t>(1, std::min(kRowsPerInsert, kMostValues / (fields_ + 2)));
+  rows_ = std::make_unique<Rows>(
+      dataset, "INSERT INTO " + quoted_identifier(table) + " (" + columns + ") VALUES ", row + ")",
+      rows);
+  waiting_.resize(rows, Row{{}, std::vector<Value>(fields_)});
+  // Feature ids follow those the layer has (none, as made).
+  Connection::Statement last_id(rows_->db,
+                                "SELECT max(" + id_column + ") FROM " + quoted_identifier(table));
+  if (last_id.step()) next_id_ = last_id.integer(0) + 1;
   Connection::Statement srs(rows_->db,
                             "SELECT srs_id FROM gpkg_geometry_columns WHERE table_name = ?");
   srs.bind(1, table_.c_str());
@@ -71,30 +100,39 @@ GpkgLineAppender::GpkgLineAppender(GDALDataset& dataset, const std::string& tabl
   }
   // The blob's header: magic, version, flags (byte order, an x-y envelope), the CRS id.
   constexpr unsigned char kEnvelopeXY = 1 << 1;
-  blob_ = {'G', 'P', 0, static_cast<unsigned char>(kLittleEndian | kEnvelopeXY)};
-  append(blob_, srs_id);
+  header_ = {'G', 'P', 0, static_cast<unsigned char>(kLittleEndian | kEnvelopeXY)};
+  append(header_, srs_id);
 }
 
 GpkgLineAppender::~GpkgLineAppender() = default;
 
+GpkgLineAppender::Value& GpkgLineAppender::value(int field) {
+  if (field < 0 || static_cast<std::size_t>(field) >= fields_)
+    rows_->db.fail("no attribute field " + std::to_string(field));
+  return waiting_[waiting_count_].values[static_cast<std::size_t>(field)];
+}
+
 void GpkgLineAppender::set_null(int field) {
-  rows_->insert.bind_null(field + 2);
+  value(field).kind = Value::Kind::null;
 }
 
 void GpkgLineAppender::set(int field, std::int64_t value) {
-  rows_->insert.bind(field + 2, value);
+  Value& v = this->value(field);
+  v.kind = Value::Kind::integer;
+  v.integer = value;
 }
 
 void GpkgLineAppender::set(int field, double value) {
-  if (std::isfinite(value)) {
-    rows_->insert.bind(field + 2, value);
-  } else {
-    set_null(field);
-  }
+  if (!std::isfinite(value)) return set_null(field);
+  Value& v = this->value(field);
+  v.kind = Value::Kind::real;
+  v.real = value;
 }
 
 void GpkgLineAppender::set(int field, const char* text) {
-  rows_->insert.bind(field + 2, text);
+  Value& v = value(field);
+  v.kind = Value::Kind::text;
+  v.text = text;
 }
 
 void GpkgLineAppender::add(const std::vector<StrokePoint>& points, const std::vector<double>& m) {
@@ -108,36 +146,72 @@ void GpkgLineAppender::add(const std::vector<StrokePoint>& points, const std::ve
     x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
     y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
   }
-  constexpr std::size_t kHeader = 8;
-  blob_.resize(kHeader);
-  for (double v : {x0, x1, y0, y1}) append(blob_, v);
+  std::vector<unsigned char>& blob = waiting_[waiting_count_].blob;
+  blob.assign(header_.begin(), header_.end());
+  for (double v : {x0, x1, y0, y1}) append(blob, v);
   // Well-known binary: byte order, type 2 (LineString) or 2002 (LineString M), the number of
   // points, the points.
-  append(blob_, kLittleEndian);
-  append(blob_, std::uint32_t{measured ? 2002u : 2u});
-  append(blob_, static_cast<std::uint32_t>(points.size()));
+  append(blob, kLittleEndian);
+  append(blob, std::uint32_t{measured ? 2002u : 2u});
+  append(blob, static_cast<std::uint32_t>(points.size()));
   static_assert(sizeof(StrokePoint) == 2 * sizeof(double), "points are x, y pairs");
   if (measured) {
-    std::size_t at = blob_.size();
-    blob_.resize(at + points.size() * 3 * sizeof(double));
+    std::size_t at = blob.size();
+    blob.resize(at + points.size() * 3 * sizeof(double));
     for (std::size_t k = 0; k < points.size(); ++k) {
       const double xym[3] = {points[k].x, points[k].y, m[k]};
-      std::memcpy(blob_.data() + at, xym, sizeof xym);
+      std::memcpy(blob.data() + at, xym, sizeof xym);
       at += sizeof xym;
     }
   } else {
-    const std::size_t at = blob_.size();
-    blob_.resize(at + points.size() * sizeof(StrokePoint));
-    std::memcpy(blob_.data() + at, points.data(), points.size() * sizeof(StrokePoint));
+    const std::size_t at = blob.size();
+    blob.resize(at + points.size() * sizeof(StrokePoint));
+    std::memcpy(blob.data() + at, points.data(), points.size() * sizeof(StrokePoint));
   }
-  rows_->insert.bind(1, blob_);
-  rows_->insert.step();
-  boxes_.push_back({rows_->db.last_rowid(), x0, x1, y0, y1});
+  boxes_.push_back({next_id_++, x0, x1, y0, y1});
   min_x_ = std::min(min_x_, x0), max_x_ = std::max(max_x_, x1);
   min_y_ = std::min(min_y_, y0), max_y_ = std::max(max_y_, y1);
+  if (++waiting_count_ == waiting_.size()) insert_waiting();
+}
+
+void GpkgLineAppender::insert_waiting() {
+  if (waiting_count_ == 0) return;
+  // A last batch short of full has a statement of its own.
+  std::unique_ptr<Connection::Statement> short_batch;
+  if (waiting_count_ < waiting_.size())
+    short_batch = std::make_unique<Connection::Statement>(rows_->db, rows_->sql(waiting_count_));
+  Connection::Statement& insert = short_batch ? *short_batch : rows_->many;
+  int at = 1;
+  std::int64_t id = next_id_ - static_cast<std::int64_t>(waiting_count_);
+  for (std::size_t r = 0; r < waiting_count_; ++r) {
+    Row& row = waiting_[r];
+    insert.bind(at++, id++);
+    insert.bind(at++, row.blob);
+    for (Value& v : row.values) {
+      switch (v.kind) {
+        case Value::Kind::null:
+          insert.bind_null(at);
+          break;
+        case Value::Kind::integer:
+          insert.bind(at, v.integer);
+          break;
+        case Value::Kind::real:
+          insert.bind(at, v.real);
+          break;
+        case Value::Kind::text:
+          insert.bind(at, v.text.c_str());
+          break;
+      }
+      ++at;
+      v.kind = Value::Kind::null;  // unless the next row sets it
+    }
+  }
+  insert.step();
+  waiting_count_ = 0;
 }
 
 void GpkgLineAppender::finish() {
+  insert_waiting();
   const Connection& db = rows_->db;
   if (!boxes_.empty()) {
     Connection::Statement extent(db,
