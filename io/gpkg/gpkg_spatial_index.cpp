@@ -6,10 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <memory>
+#include <thread>
 
 #include "core/base/errors.h"
+#include "core/base/parallel.h"
 #include "io/gpkg/gpkg_connection.h"
 
 namespace tsk::io {
@@ -53,6 +56,23 @@ Cell cover(const Node& node, std::int64_t ref) {
   return c;
 }
 
+// Sorts [first, last) by `less`, its two halves at once on two threads, then merged: the index is
+// built after the last stroke, when nothing else runs. `less` is a total order, so the result is
+// std::sort's.
+template <typename Iterator, typename Less>
+void sort_in_halves(Iterator first, Iterator last, Less less) {
+  constexpr std::ptrdiff_t kWorthAThread = 1 << 14;
+  if (last - first < kWorthAThread || resolve_threads(0) < 2) {
+    std::sort(first, last, less);
+    return;
+  }
+  const Iterator middle = first + (last - first) / 2;
+  std::thread other([&] { std::sort(first, middle, less); });
+  std::sort(middle, last, less);
+  other.join();
+  std::inplace_merge(first, middle, last, less);
+}
+
 // Sort-Tile-Recursive: vertical slices by centre x, each cut into nodes by centre y, so that a
 // node holds boxes that lie close together.
 std::vector<Node> tile(std::vector<Cell> cells, std::size_t per_node) {
@@ -60,18 +80,25 @@ std::vector<Node> tile(std::vector<Cell> cells, std::size_t per_node) {
   auto slices = static_cast<std::size_t>(std::sqrt(static_cast<double>(node_count)));
   while (slices * slices < node_count) ++slices;
   const std::size_t slice_cells = std::max<std::size_t>(1, slices) * per_node;
-  std::sort(cells.begin(), cells.end(), [](const Cell& a, const Cell& b) {
+  sort_in_halves(cells.begin(), cells.end(), [](const Cell& a, const Cell& b) {
     return a.centre_x() != b.centre_x() ? a.centre_x() < b.centre_x() : a.ref < b.ref;
   });
   const auto at = [&cells](std::size_t i) {
-    return cells.begin() + static_cast<std::ptrdiff_t>(i);
+    return cells.begin() + static_cast<std::ptrdiff_t>(std::min(i, cells.size()));
   };
+  parallel_for((cells.size() + slice_cells - 1) / slice_cells, 0,
+               [&](std::size_t lo, std::size_t hi) {
+                 for (std::size_t slice = lo; slice < hi; ++slice) {
+                   std::sort(at(slice * slice_cells), at((slice + 1) * slice_cells),
+                             [](const Cell& a, const Cell& b) {
+                               return a.centre_y() != b.centre_y() ? a.centre_y() < b.centre_y()
+                                                                   : a.ref < b.ref;
+                             });
+                 }
+               });
   std::vector<Node> nodes;
   for (std::size_t start = 0; start < cells.size(); start += slice_cells) {
     const std::size_t end = std::min(cells.size(), start + slice_cells);
-    std::sort(at(start), at(end), [](const Cell& a, const Cell& b) {
-      return a.centre_y() != b.centre_y() ? a.centre_y() < b.centre_y() : a.ref < b.ref;
-    });
     for (std::size_t k = start; k < end; k += per_node) {
       nodes.emplace_back(at(k), at(std::min(end, k + per_node)));
     }
@@ -264,7 +291,7 @@ void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
       parents);
   // In the order of the ids, so that each row lands at the end of the table's B-tree.
   std::vector<std::pair<std::int64_t, std::int64_t>> leaf_of = packed.leaf_of;
-  std::sort(leaf_of.begin(), leaf_of.end());
+  sort_in_halves(leaf_of.begin(), leaf_of.end(), std::less<>());
   insert_pairs(db, "INSERT INTO " + quoted_identifier(rtree + "_rowid") + "(rowid, nodeno) VALUES ",
                leaf_of);
 
