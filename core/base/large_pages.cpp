@@ -2,10 +2,6 @@
 
 #include <cstdlib>
 
-#ifdef __linux__
-#include <sys/mman.h>
-#endif
-
 namespace tsk {
 namespace {
 
@@ -23,9 +19,6 @@ void* allocate_large(std::size_t bytes) {
   const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
   void* block = std::aligned_alloc(kHugePage, rounded);
   if (!block) throw std::bad_alloc();
-#ifdef MADV_HUGEPAGE
-  madvise(block, rounded, MADV_HUGEPAGE);  // advice only: without it the block is still good
-#endif
   return block;
 }
 
