@@ -3,7 +3,8 @@
 // weight and attribute for attribute, in the same order, and the same statistics, on real DEMs,
 // cardinal and resampled views, bands as narrow as one profile, halos too short to guess the
 // chains' order (so bands are sketched again) and long enough, and the bands handed over as
-// bytes.
+// bytes. Drawn strokes are drawn partly by the bands (the groups far from their edges) and
+// partly by the stitcher.
 #include <cstring>
 
 #include "catch_compat.h"
@@ -30,6 +31,8 @@ ResolvedParams run_params(const io::DemFile& dem, double azimuth, FilterMode mod
 struct Stitched {
   SilhouetteResult result;
   std::size_t bands = 0, sketched_again = 0;
+  // Drawn strokes: those the bands drew, and the pieces they left to the stitcher.
+  std::size_t drawn_by_bands = 0, pieces_left = 0;
 };
 
 // Sketches the bands of `width` profiles apart, as machines would, then stitches them in order,
@@ -39,11 +42,15 @@ Stitched in_bands(const io::DemFile& dem, const ResolvedParams& params, std::siz
                   std::size_t halo) {
   const OrientedFrame frame = make_frame(dem.info().grid, params->view.azimuth_deg);
   std::vector<std::string> sketches;
+  Stitched out;
   for (std::size_t first = 0; first < frame.profiles; first += width) {
     BandSpec spec{first, std::min(width, frame.profiles - first), std::nullopt, halo};
-    sketches.push_back(band_bytes(sketch_band(dem.source(), params, spec)));
+    const BandSketch band = sketch_band(dem.source(), params, spec);
+    for (const DrawnGroup& group : band.drawn) out.drawn_by_bands += group.strokes.size();
+    out.pieces_left += band.strokes.size();
+    sketches.push_back(band_bytes(band));
   }
-  Stitched out{SilhouetteResult(), sketches.size(), 0};
+  out.bands = sketches.size();
   std::optional<DrawingSetup> drawing;
   if (params->strokes.drawn())
     drawing = drawing_setup(frame, dem.info().geotransform, params.params(), 0.0);
@@ -123,6 +130,12 @@ TEST_CASE("bands stitched give the strokes of one run", "[bands]") {
         require_same_strokes(whole, stitched.result);
         // A halo of one profile guesses wrong somewhere among many bands, so the repair is tested.
         if (halo == 1 && width <= 7) CHECK(stitched.sketched_again > 0);
+        if (c.strokes != StrokeMode::drawn) continue;
+        // A band draws the groups no other band can reach, and leaves the rest to the stitcher:
+        // one band of the whole grid draws every one, bands of a profile none.
+        if (width == 100000) CHECK(stitched.pieces_left == 0);
+        if (width == 40) CHECK((stitched.drawn_by_bands > 0 && stitched.pieces_left > 0));
+        if (width == 1) CHECK(stitched.drawn_by_bands == 0);
       }
     }
   }

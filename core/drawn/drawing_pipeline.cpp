@@ -13,8 +13,8 @@ constexpr std::size_t kBatchesBehind = 2;
 DrawingPipeline::DrawingPipeline(const DrawingSetup& setup, bool alongside, Deliver deliver)
     : drawers_{std::make_unique<StrokeDrawer>(setup), std::make_unique<StrokeDrawer>(setup)},
       writing_(
-          [deliver = std::move(deliver)](std::pair<StrokeClass, Stroke>&& drawn) {
-            deliver(drawn.first, std::move(drawn.second));
+          [deliver = std::move(deliver)](Drawn&& drawn) {
+            deliver(drawn.cls, drawn.group, std::move(drawn.stroke));
           },
           alongside),
       finishing_(kBatchesBehind, alongside),
@@ -57,7 +57,9 @@ void DrawingPipeline::draw(Settled& settled) {
   for (auto& [cls, groups] : settled) {
     if (abandoned_) return;
     const StrokeClass of = cls;
-    drawer(of).draw(groups, [&](Stroke&& stroke) { writing_.add({of, std::move(stroke)}); });
+    drawer(of).draw(groups, [&](std::size_t group, Stroke&& stroke) {
+      writing_.add({of, group, std::move(stroke)});
+    });
   }
   writing_.flush();
 }

@@ -18,8 +18,10 @@ namespace tsk {
 
 class DrawingPipeline {
  public:
-  // Takes each drawn stroke, in order, on the writing step's thread.
-  using Deliver = std::function<void(StrokeClass cls, Stroke&& stroke)>;
+  // Takes each drawn stroke, in order, on the writing step's thread, with its group (named by
+  // its first piece: a class's pieces are numbered from 0 as add_piece queues them, those the
+  // drawing drops, shorter than kLeastDrawnCells, not counted).
+  using Deliver = std::function<void(StrokeClass cls, std::size_t group, Stroke&& stroke)>;
   // `alongside`: each step on a thread of its own; otherwise each runs as it is given.
   DrawingPipeline(const DrawingSetup& setup, bool alongside, Deliver deliver);
   // A run that ends early (cancelled, failed) leaves what is still to draw undrawn.
@@ -59,7 +61,12 @@ class DrawingPipeline {
   std::vector<Step> steps_;                   // not given to the drawing yet
   std::atomic<bool> abandoned_{false};
   // Declared last, in reverse order: each is stopped before the one it gives its work to.
-  HandOff<std::pair<StrokeClass, Stroke>> writing_;
+  struct Drawn {
+    StrokeClass cls;
+    std::size_t group;
+    Stroke stroke;
+  };
+  HandOff<Drawn> writing_;
   TasksBehind finishing_;
   TasksBehind grouping_;
 };

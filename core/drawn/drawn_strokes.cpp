@@ -109,6 +109,7 @@ StrokeGroups StrokeDrawer::take_settled(double frontier) {
       drawn_[id - first_pending_] = true;
     }
     groups.ends.push_back(groups.pieces.size());
+    groups.firsts.push_back(first);
     while (!drawn_.empty() && drawn_.front()) {
       pending_.pop_front();
       drawn_.pop_front();
@@ -120,14 +121,15 @@ StrokeGroups StrokeDrawer::take_settled(double frontier) {
 }
 
 void StrokeDrawer::draw(StrokeGroups& groups, const Out& out) const {
-  const auto finish = [&](Stroke& stroke) {
-    // The generalisation comes after joining: only pieces still short and alone are dropped.
-    if (stroke.cells < setup_.min_cells) return;
-    finish_stroke(stroke, setup_);
-    out(std::move(stroke));
-  };
-  std::size_t begin = 0;
+  std::size_t begin = 0, group = 0;
   for (std::size_t end : groups.ends) {
+    const std::size_t first_piece = groups.firsts[group++];
+    const auto finish = [&](Stroke& stroke) {
+      // The generalisation comes after joining: only pieces still short and alone are dropped.
+      if (stroke.cells < setup_.min_cells) return;
+      finish_stroke(stroke, setup_);
+      out(first_piece, std::move(stroke));
+    };
     const auto first = groups.pieces.begin() + static_cast<std::ptrdiff_t>(begin);
     if (end - begin > 1) {
       std::vector<Stroke> members(std::make_move_iterator(first),

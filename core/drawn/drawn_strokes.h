@@ -52,7 +52,8 @@ double longest_step(const DrawingSetup& setup);
 // Groups of pieces taken to draw: their pieces one group after another.
 struct StrokeGroups {
   std::vector<Stroke> pieces;
-  std::vector<std::size_t> ends;  // one past each group's last piece
+  std::vector<std::size_t> ends;    // one past each group's last piece
+  std::vector<std::size_t> firsts;  // each group's first piece, by the order pieces were added
 };
 
 // Draws the strokes of one class as their chains complete, so that drawing and writing go on
@@ -63,7 +64,9 @@ struct StrokeGroups {
 // its vertices, whatever the moments draw_settled is called at.
 class StrokeDrawer {
  public:
-  using Out = std::function<void(Stroke&& stroke)>;
+  // Takes a drawn stroke and its group, named by the group's first piece: pieces are numbered
+  // from 0 in the order add() took them (those it drops not counted).
+  using Out = std::function<void(std::size_t group, Stroke&& stroke)>;
   explicit StrokeDrawer(const DrawingSetup& setup);
 
   // The longest step between neighbouring points of a piece, map units.

@@ -24,13 +24,15 @@ void get_class(ByteReader& r, StrokeClass& cls) {
     throw Error("these bytes are not a band's sketch of Terrain Sketch: a stroke of no class");
 }
 
-void put_stroke(ByteWriter& w, const Stroke& s) {
+// `whole_chain`: a stroke drawn by its band keeps its chain, as one run's does.
+void put_stroke(ByteWriter& w, const Stroke& s, bool whole_chain = false) {
   w.put(s.cls);
   w.put(s.points);
   // A drawn stroke's piece is drawn from its whole chain; an exact stroke is placed by its first
   // cell.
   w.put(s.vertices);
-  if (s.vertices.empty()) {
+  w.put(static_cast<std::uint8_t>(whole_chain));
+  if (s.vertices.empty() && !whole_chain) {
     w.put(s.chain.front());
   } else {
     w.put(s.chain);
@@ -46,7 +48,11 @@ void get_stroke(ByteReader& r, Stroke& s) {
   get_class(r, s.cls);
   r.get(s.points);
   r.get(s.vertices);
-  if (s.vertices.empty()) {
+  std::uint8_t whole_chain = 0;
+  r.get(whole_chain);
+  if (whole_chain > 1)
+    throw Error("these bytes are not a band's sketch of Terrain Sketch: a stroke's chain unmarked");
+  if (s.vertices.empty() && !whole_chain) {
     s.chain.resize(1);
     r.get(s.chain.front());
   } else {
@@ -57,6 +63,23 @@ void get_stroke(ByteReader& r, Stroke& s) {
   for (double* v : {&s.length, &s.mean_slope_pct, &s.mean_row_slope_pct, &s.mean_depth_m,
                     &s.max_depth_m, &s.mean_dist, &s.mean_z})
     r.get(*v);
+}
+
+void get_drawn_groups(ByteReader& r, std::vector<DrawnGroup>& groups) {
+  std::uint64_t count = 0;
+  r.get(count);
+  for (std::uint64_t g = 0; g < count; ++g) {
+    groups.emplace_back();
+    DrawnGroup& group = groups.back();
+    get_class(r, group.cls);
+    r.get(group.key);
+    std::uint64_t strokes = 0;
+    r.get(strokes);
+    for (std::uint64_t k = 0; k < strokes; ++k) {
+      group.strokes.emplace_back();
+      get_stroke(r, group.strokes.back());
+    }
+  }
 }
 
 }  // namespace
@@ -73,6 +96,13 @@ std::string band_bytes(const BandSketch& band) {
   w.put(static_cast<std::uint64_t>(band.strokes.size()));
   for (const Stroke& stroke : band.strokes) put_stroke(w, stroke);
   w.put(band.keys);
+  w.put(static_cast<std::uint64_t>(band.drawn.size()));
+  for (const DrawnGroup& group : band.drawn) {
+    w.put(group.cls);
+    w.put(group.key);
+    w.put(static_cast<std::uint64_t>(group.strokes.size()));
+    for (const Stroke& stroke : group.strokes) put_stroke(w, stroke, true);
+  }
   w.put(static_cast<std::uint64_t>(band.pieces.size()));
   for (const BandPiece& piece : band.pieces) {
     w.put(piece.cls);
@@ -102,6 +132,7 @@ BandSketch band_from_bytes(const std::string& bytes) {
     get_stroke(r, band.strokes.back());
   }
   r.get(band.keys);
+  get_drawn_groups(r, band.drawn);
   r.get(pieces);
   for (std::uint64_t k = 0; k < pieces; ++k) {
     band.pieces.emplace_back();

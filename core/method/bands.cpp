@@ -24,6 +24,20 @@ bool started_before(const Stroke& a, const Stroke& b) {
 
 }  // namespace
 
+// A chain's place in SPEC 1.7's order: by its first profile, then front to back.
+std::size_t order_key(std::int32_t p, std::int32_t i) {
+  return (static_cast<std::size_t>(static_cast<std::uint32_t>(p)) << 32) |
+         static_cast<std::uint32_t>(i);
+}
+
+namespace {
+
+std::pair<std::size_t, std::uint32_t> full_key(const StrokeKey& key) {
+  return {order_key(key.p, key.i), key.piece};
+}
+
+}  // namespace
+
 BandSketch sketch_band(const DemSource& dem, const ResolvedParams& params, const BandSpec& band,
                        double z_ref, const ProgressFn& progress) {
   const OrientedFrame frame = make_frame(dem.grid, params->view.azimuth_deg);
@@ -35,13 +49,13 @@ BandSketch sketch_band(const DemSource& dem, const ResolvedParams& params, const
         loader.load(first, count, heights);
       },
       resolve_threads(params->threads));
-  return stream.finish_band();
-}
-
-// A chain's place in SPEC 1.7's order: by its first profile, then front to back.
-std::size_t order_key(std::int32_t p, std::int32_t i) {
-  return (static_cast<std::size_t>(static_cast<std::uint32_t>(p)) << 32) |
-         static_cast<std::uint32_t>(i);
+  BandSketch sketch = stream.finish_band();
+  // Plan-oblique strokes are drawn with the whole run's lowest height, which no band knows.
+  if (params->strokes.drawn() && params->geometry == Geometry::map) {
+    draw_inside_band(sketch, drawing_setup(frame, dem.geotransform, params.params(), z_ref),
+                     frame.profiles);
+  }
+  return sketch;
 }
 
 BandStitcher::BandStitcher(const ResolvedParams& params, StrokeSink sink,
@@ -51,10 +65,57 @@ BandStitcher::BandStitcher(const ResolvedParams& params, StrokeSink sink,
   if (!drawing) return;
   drawing_ = std::make_unique<DrawingPipeline>(
       *drawing, resolve_threads(params->threads) > 1,
-      [this](StrokeClass, Stroke&& stroke) { keep(std::move(stroke)); });
+      [this](StrokeClass cls, std::size_t group, Stroke&& stroke) {
+        keep_drawn(cls, group, std::move(stroke));
+      });
 }
 
 BandStitcher::~BandStitcher() = default;
+
+void BandStitcher::queue_drawn_groups(std::vector<DrawnGroup>& groups) {
+  if (groups.empty()) return;
+  if (!drawing_) throw Error("a band drew strokes for a run of exact strokes");
+  const std::lock_guard<std::mutex> lock(drawn_mutex_);
+  for (DrawnGroup& group : groups) {
+    std::deque<DrawnGroup>& queued = drawn_[class_index(group.cls)];
+    if (!queued.empty() && !(full_key(queued.back().key) < full_key(group.key)))
+      throw Error("a band's drawn groups are not in the order of the scan");
+    queued.push_back(std::move(group));
+  }
+  groups.clear();
+}
+
+void BandStitcher::keep_drawn_groups(std::size_t cls,
+                                     const std::pair<std::size_t, std::uint32_t>* key) {
+  std::vector<DrawnGroup> due;
+  {
+    const std::lock_guard<std::mutex> lock(drawn_mutex_);
+    std::deque<DrawnGroup>& drawn = drawn_[cls];
+    while (!drawn.empty() && (!key || full_key(drawn.front().key) < *key)) {
+      due.push_back(std::move(drawn.front()));
+      drawn.pop_front();
+    }
+  }
+  for (DrawnGroup& group : due)
+    for (Stroke& stroke : group.strokes) keep(std::move(stroke));
+}
+
+void BandStitcher::keep_drawn(StrokeClass cls, std::size_t group, Stroke&& stroke) {
+  const std::size_t c = class_index(cls);
+  std::pair<std::size_t, std::uint32_t> key;
+  {
+    const std::lock_guard<std::mutex> lock(drawn_mutex_);
+    // Groups come in the order of their first pieces: the keys of earlier pieces are done with.
+    std::deque<std::pair<std::size_t, std::uint32_t>>& keys = piece_keys_[c];
+    if (group < first_key_[c] || group - first_key_[c] >= keys.size())
+      throw Error("the drawing handed on a stroke of a piece it was not given");
+    keys.erase(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(group - first_key_[c]));
+    first_key_[c] = group;
+    key = keys.front();
+  }
+  keep_drawn_groups(c, &key);
+  keep(std::move(stroke));
+}
 
 void BandStitcher::hold(Stroke&& stroke, const StrokeKey& key) {
   if (!drawing_) return keep(std::move(stroke));
@@ -85,8 +146,15 @@ void BandStitcher::hand_to_drawing() {
       const ChainCell first = open.builder.first_cell();
       oldest = std::min(oldest, order_key(first.p, first.i));
     }
-    held_[c].release_before(oldest,
-                            [&](Stroke&& piece) { drawing_->add_piece(cls, std::move(piece)); });
+    held_[c].release_before(oldest, [&](Stroke&& piece, std::size_t chain, std::size_t k) {
+      // The drawing numbers the pieces it keeps; their keys place its groups among those the
+      // bands drew.
+      if (piece.cells >= kLeastDrawnCells) {
+        const std::lock_guard<std::mutex> lock(drawn_mutex_);
+        piece_keys_[c].emplace_back(chain, static_cast<std::uint32_t>(k));
+      }
+      drawing_->add_piece(cls, std::move(piece));
+    });
     drawing_->settle(cls, static_cast<double>(oldest >> 32));
   }
   drawing_->flush();
@@ -116,6 +184,7 @@ void BandStitcher::add(BandSketch&& band) {
   if (band.keys.size() != band.strokes.size())
     throw Error("a band's strokes and their places in the order do not match");
   add_counts(band.stats, result_.stats);
+  queue_drawn_groups(band.drawn);
   for (std::size_t k = 0; k < band.strokes.size(); ++k)
     hold(std::move(band.strokes[k]), band.keys[k]);
   std::vector<Open> next[2];
@@ -168,6 +237,7 @@ SilhouetteResult BandStitcher::finish(std::size_t profiles) {
       drawing_->settle(cls, std::numeric_limits<double>::infinity());
     drawing_->flush();
     drawing_->finish();
+    for (std::size_t c = 0; c < 2; ++c) keep_drawn_groups(c, nullptr);
   }
   std::vector<Stroke>& strokes = result_.strokes;
   // Factual first, then formulated, each in the order of the scan.

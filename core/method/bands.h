@@ -12,7 +12,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <functional>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,6 +64,15 @@ struct StrokeKey {
   std::uint32_t piece = 0;
 };
 
+// A group of drawn pieces that no piece of another band can join, drawn by its band: its strokes
+// (none when the generalisation drops them all), placed in the run's order by the key of its
+// first piece.
+struct DrawnGroup {
+  StrokeClass cls = StrokeClass::factual;
+  StrokeKey key;
+  std::vector<Stroke> strokes;
+};
+
 struct BandSketch {
   std::size_t first = 0, count = 0;
   StageStats stats;  // the cells of the band's own profiles (no strokes counted)
@@ -69,6 +80,10 @@ struct BandSketch {
   // ones (StrokeBuilder::drawn_pieces), to be drawn by the stitcher; with their keys.
   std::vector<Stroke> strokes;
   std::vector<StrokeKey> keys;
+  // Drawn strokes in map geometry: the groups of pieces far enough from the band's edges and from
+  // the chains that cross them, drawn here (their pieces are not among `strokes`); each class in
+  // the order of its keys.
+  std::vector<DrawnGroup> drawn;
   std::vector<BandPiece> pieces;
   BandOrders in;   // the order at first - 1 the band linked from, given or guessed
   BandOrders out;  // the order after its last profile (none at the grid's end)
@@ -80,6 +95,13 @@ struct BandSketch {
 // band beyond the grid, and what `read` throws; Cancelled when `progress` says stop.
 BandSketch sketch_band(const DemSource& dem, const ResolvedParams& params, const BandSpec& band,
                        double z_ref = 0.0, const ProgressFn& progress = {});
+
+// Draws the groups of a band's drawn pieces (sketch.strokes) that no piece of another band can
+// join: every end of their pieces lies farther than the join gap from the band's edges (those
+// inside the grid) and from every cell of the chains crossing them. Such a group is drawn as one
+// run draws it, from the same pieces in the same order; it goes to sketch.drawn, and its pieces
+// leave sketch.strokes. `setup` is the run's (drawing_setup), `profiles` the grid's.
+void draw_inside_band(BandSketch& sketch, const DrawingSetup& setup, std::size_t profiles);
 
 // Joins bands, given in order, into the strokes of the whole run.
 class BandStitcher {
@@ -115,6 +137,14 @@ class BandStitcher {
   void hold(Stroke&& stroke, const StrokeKey& key);
   void hand_to_drawing();
   void keep(Stroke&& stroke);
+  // Keeps a stroke the drawing hands on, after the groups drawn by their bands that come before
+  // its group in the run's order.
+  void keep_drawn(StrokeClass cls, std::size_t group, Stroke&& stroke);
+  // Queues the groups a band drew, to be kept in their places in the run's order.
+  void queue_drawn_groups(std::vector<DrawnGroup>& groups);
+  // Keeps the groups drawn by their bands whose first piece comes before `key` (all of them
+  // without one).
+  void keep_drawn_groups(std::size_t cls, const std::pair<std::size_t, std::uint32_t>* key);
 
   int min_cells_;
   StrokeSink sink_;
@@ -127,6 +157,12 @@ class BandStitcher {
   // to goes.
   ScanOrder held_[2];
   std::vector<Stroke> pieces_;
+  // By class: the groups drawn by their bands, in order, and the keys of the pieces given to the
+  // drawing from piece `first_key_` on, which the drawing's thread reads.
+  std::mutex drawn_mutex_;
+  std::deque<DrawnGroup> drawn_[2];
+  std::deque<std::pair<std::size_t, std::uint32_t>> piece_keys_[2];
+  std::size_t first_key_[2] = {0, 0};
   std::unique_ptr<DrawingPipeline> drawing_;
 };
 

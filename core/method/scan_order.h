@@ -27,17 +27,17 @@ class ScanOrder {
     std::push_heap(heap_.begin(), heap_.end(), later);
   }
 
-  // Hands use(stroke) every stroke held of the chains started before chain `chain`, oldest
-  // first.
+  // Hands use(stroke, chain, piece) every stroke held of the chains started before chain
+  // `chain`, oldest first.
   template <typename Use>
   void release_before(std::size_t chain, Use&& use) {
     while (!heap_.empty() && heap_.front().chain < chain) {
       std::pop_heap(heap_.begin(), heap_.end(), later);
-      const std::size_t slot = heap_.back().slot;
+      const Held held = heap_.back();
       heap_.pop_back();
-      free_.push_back(slot);
-      Stroke stroke = std::move(strokes_[slot]);  // its memory goes with it
-      use(std::move(stroke));
+      free_.push_back(held.slot);
+      Stroke stroke = std::move(strokes_[held.slot]);  // its memory goes with it
+      use(std::move(stroke), held.chain, held.piece);
     }
   }
 

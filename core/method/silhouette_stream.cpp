@@ -99,7 +99,7 @@ struct SilhouetteStream::State {
     }
     drawing = std::make_unique<DrawingPipeline>(
         drawing_setup(frame, geotransform, params, z_ref), draws_alongside(params),
-        [this](StrokeClass cls, Stroke&& stroke) {
+        [this](StrokeClass cls, std::size_t, Stroke&& stroke) {
           deliver(cls == StrokeClass::factual ? factual : formulated, std::move(stroke));
         });
   }
@@ -194,7 +194,7 @@ struct SilhouetteStream::State {
   // Hands on the held strokes of chains started before chain `id`, oldest first: to the drawing
   // for drawn strokes.
   void hand_on(Strokes& strokes, std::size_t id) {
-    strokes.order.release_before(id, [&](Stroke&& stroke) {
+    strokes.order.release_before(id, [&](Stroke&& stroke, std::size_t, std::size_t) {
       if (drawing) {
         drawing->add_piece(strokes.cls, std::move(stroke));
       } else {

@@ -137,11 +137,16 @@ py::dict band_summary(const std::string& bytes) {
   quietly([&] { band = band_from_bytes(bytes); });
   std::size_t cells = 0;
   for (const BandPiece& piece : band.pieces) cells += piece.cells.size();
+  std::size_t drawn = 0;
+  for (const DrawnGroup& group : band.drawn) drawn += group.strokes.size();
   py::dict summary;
   summary["strokes"] = band.strokes.size();
+  summary["drawn_strokes"] = drawn;
   summary["pieces"] = band.pieces.size();
   summary["piece_cells"] = cells;
-  summary["piece_bytes"] = cells * sizeof(StrokeCell) + band.pieces.size() * sizeof(BandPiece);
+  // As band_bytes writes them: each piece's class, ends and count of cells, then its cells.
+  constexpr std::size_t kPieceHeader = sizeof(StrokeClass) + 3 * sizeof(std::uint64_t);
+  summary["piece_bytes"] = cells * sizeof(StrokeCell) + band.pieces.size() * kPieceHeader;
   return summary;
 }
 
