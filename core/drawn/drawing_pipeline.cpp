@@ -12,11 +12,9 @@ constexpr std::size_t kBatchesBehind = 2;
 
 DrawingPipeline::DrawingPipeline(const DrawingSetup& setup, bool alongside, Deliver deliver)
     : drawers_{std::make_unique<StrokeDrawer>(setup), std::make_unique<StrokeDrawer>(setup)},
-      writing_(
-          [deliver = std::move(deliver)](Drawn&& drawn) {
-            deliver(drawn.cls, drawn.group, std::move(drawn.stroke));
-          },
-          alongside),
+      writing_([deliver = std::move(deliver)](
+                   Drawn&& drawn) { deliver(drawn.cls, drawn.group, std::move(drawn.stroke)); },
+               alongside),
       finishing_(kBatchesBehind, alongside),
       grouping_(kBatchesBehind, alongside) {}
 
