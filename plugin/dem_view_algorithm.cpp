@@ -1,6 +1,8 @@
 #include "plugin/dem_view_algorithm.h"
 
+#include <qgsprocessing.h>
 #include <qgsprocessingfeedback.h>
+#include <qgsprocessingparameters.h>
 #include <qgsproviderregistry.h>
 #include <qgsrasterlayer.h>
 
@@ -64,7 +66,15 @@ void DemViewAlgorithm::refuseClashingOutputs(const QVariantMap& parameters,
                                              QgsProcessingContext& context) const {
   std::vector<io::NamedFile> outputs, inputs;
   for (const QgsProcessingParameterDefinition* output : destinationParameterDefinitions()) {
-    const QString target = outputTarget(*this, parameters, output->name(), context);
+    // A temporary output is a new file, named with the output's default extension: read as a
+    // target it would be yet another new file (and folder), which no run writes.
+    const bool temporary = isTemporaryOutput(*this, parameters, output->name());
+    const auto* destination = dynamic_cast<const QgsProcessingDestinationParameter*>(output);
+    const QString target = temporary
+                               ? QStringLiteral("%1.%2").arg(
+                                     QgsProcessing::TEMPORARY_OUTPUT,
+                                     destination ? destination->defaultFileExtension() : QString())
+                               : outputTarget(*this, parameters, output->name(), context);
     // As on the command line: other formats lose the colour tables, or change the values.
     const QString suffix = QFileInfo(target).suffix().toLower();
     if (output->type() == QgsProcessingParameterRasterDestination::typeName() &&
@@ -72,6 +82,7 @@ void DemViewAlgorithm::refuseClashingOutputs(const QVariantMap& parameters,
       throw QgsProcessingException(tr("%1 must be a GeoTIFF (.tif): %2 is another format.")
                                        .arg(output->description(), target));
     }
+    if (temporary) continue;  // a new file clashes with nothing
     // A plain path is written whole; "ogr:..." adds a layer to the file.
     outputs.push_back({output->description().toStdString(), localPath(destinationFile(target)),
                        !target.startsWith(QLatin1String("ogr:"))});

@@ -3,6 +3,7 @@
 #include <gdal.h>
 #include <ogr_api.h>
 #include <qgsdatasourceuri.h>
+#include <qgsprocessing.h>
 #include <qgsprocessingparameters.h>
 #include <qgsproviderregistry.h>
 
@@ -149,6 +150,18 @@ QString outputTarget(const QgsProcessingAlgorithm& algorithm, const QVariantMap&
   const LayersToLoadKept kept(context);
   return QgsProcessingParameters::parameterAsOutputLayer(algorithm.parameterDefinition(key),
                                                          parameters, context);
+}
+
+bool isTemporaryOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
+                       const QString& key) {
+  QVariant value = parameters.value(key);
+  if (!value.isValid()) {
+    const QgsProcessingParameterDefinition* definition = algorithm.parameterDefinition(key);
+    if (definition) value = definition->defaultValue();
+  }
+  if (value.userType() == qMetaTypeId<QgsProcessingOutputLayerDefinition>())
+    value = value.value<QgsProcessingOutputLayerDefinition>().sink.staticValue();
+  return value.toString() == QgsProcessing::TEMPORARY_OUTPUT;
 }
 
 QString destinationFile(const QString& target) {

@@ -59,6 +59,12 @@ class LayersToLoadKept {
 QString outputTarget(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
                      const QString& key, QgsProcessingContext& context);
 
+// Whether output `key` is a temporary output (QGIS's TEMPORARY_OUTPUT, as a string or in an output
+// definition): QGIS makes up a new temporary file for it each time it is read, in a folder of its
+// own, so a check that reads it leaves an empty folder behind and checks a file no run writes.
+bool isTemporaryOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMap& parameters,
+                       const QString& key);
+
 // Removes a dataset with the files its format keeps beside it (a shapefile's .shx, .dbf, ...).
 void deleteDataset(const QString& path);
 

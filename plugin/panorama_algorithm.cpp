@@ -157,7 +157,6 @@ double PanoramaAlgorithm::readParameters(const QVariantMap& parameters,
   view.refraction = parameterAsDouble(parameters, kRefraction, context);
   view.exaggeration = parameterAsDouble(parameters, kExaggeration, context);
   view.validate();
-  mVisibility = parameterAsOutputLayer(parameters, kVisibility, context);
   return 90.0;  // the DEM read as it lies: the view from the west is its own grid
 }
 
@@ -248,6 +247,9 @@ void PanoramaAlgorithm::writePeaks(const QVariantMap& parameters, QgsProcessingC
 QVariantMap PanoramaAlgorithm::writeOutputs(const QVariantMap& parameters,
                                             QgsProcessingContext& context,
                                             QgsProcessingFeedback* feedback) {
+  // Read here, not with the other parameters, which the dialog's check reads too: a temporary
+  // output read is a new file named in a new folder, left empty by a check.
+  mVisibility = parameterAsOutputLayer(parameters, kVisibility, context);
   const PanoramaResult result = sketch(feedback);
   const RasterGrid& raster = preparedRaster();
   // Asked for as the dialog asks (a QgsProcessingOutputLayerDefinition, whose toString() is

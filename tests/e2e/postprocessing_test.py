@@ -1,7 +1,9 @@
 """Every algorithm run as the Processing dialog runs it, with its defaults: each output a
 QgsProcessingOutputLayerDefinition to a temporary output in the project, then Processing's own
-post-processing (handleAlgorithmResults), which loads the results. No error may be reported, and
-every layer output must be in the project, styled by its name.
+post-processing (handleAlgorithmResults), which loads the results. No error may be reported,
+every layer output must be in the project, styled by its name, and no run may leave an empty
+temporary folder behind (QGIS makes one for each temporary file it names, as a check reading a
+temporary output made it name one more).
 
 Usage (QGIS's Python): /usr/bin/python3 postprocessing_test.py BUILD_DIR REPO_DIR
 Prints one line per algorithm and 'N passed, N failed'; exits 1 on any failure.
@@ -16,7 +18,8 @@ import headless_qgis  # noqa: E402
 app = headless_qgis.start(build)
 from processing.gui.Postprocessing import handleAlgorithmResults  # noqa: E402
 from qgis.core import (QgsApplication, QgsLayoutExporter, QgsProcessingContext,  # noqa: E402
-                       QgsProcessingFeedback, QgsProcessingOutputLayerDefinition, QgsProject)
+                       QgsProcessingFeedback, QgsProcessingOutputLayerDefinition,
+                       QgsProcessingUtils, QgsProject)
 from qgis.PyQt.QtGui import QImage  # noqa: E402
 
 SAMPLE = os.path.join(repo, "resources", "sample", "jacksboro_utm16n.tif")
@@ -34,9 +37,18 @@ class Feedback(QgsProcessingFeedback):
         self.errors.append(error)
 
 
+def temporary_folders():
+    """The folders QGIS has made for temporary files so far."""
+    top = QgsProcessingUtils.tempFolder()
+    return {os.path.join(top, name) for name in os.listdir(top)
+            if os.path.isdir(os.path.join(top, name))}
+
+
 def run_as_dialog(alg_id, inputs):
     """Runs `alg_id` with `inputs` and every destination a temporary output, as the dialog does;
-    returns (Processing's errors, the outputs not loaded into the project)."""
+    returns (Processing's errors and the empty temporary folders it left, the outputs not loaded
+    into the project)."""
+    folders_before = temporary_folders()
     project = QgsProject.instance()
     project.removeAllMapLayers()
     project.layoutManager().clear()
@@ -61,7 +73,9 @@ def run_as_dialog(alg_id, inputs):
                if alg.outputDefinition(name).type() in ("outputVector", "outputRaster", "outputLayer")
                and value and not any(str(value) in source or source in str(value)
                                      for source in loaded)]
-    return feedback.errors, missing
+    empty = [f"empty temporary folder {folder}"
+             for folder in sorted(temporary_folders() - folders_before) if not os.listdir(folder)]
+    return feedback.errors + empty, missing
 
 
 CASES = [
