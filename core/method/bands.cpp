@@ -32,7 +32,7 @@ std::size_t order_key(std::int32_t p, std::int32_t i) {
 
 namespace {
 
-std::pair<std::size_t, std::uint32_t> full_key(const StrokeKey& key) {
+std::pair<std::size_t, std::uint32_t> piece_key(const StrokeKey& key) {
   return {order_key(key.p, key.i), key.piece};
 }
 
@@ -78,20 +78,19 @@ void BandStitcher::queue_drawn_groups(std::vector<DrawnGroup>& groups) {
   const std::lock_guard<std::mutex> lock(drawn_mutex_);
   for (DrawnGroup& group : groups) {
     std::deque<DrawnGroup>& queued = drawn_[class_index(group.cls)];
-    if (!queued.empty() && !(full_key(queued.back().key) < full_key(group.key)))
+    if (!queued.empty() && !(piece_key(queued.back().key) < piece_key(group.key)))
       throw Error("a band's drawn groups are not in the order of the scan");
     queued.push_back(std::move(group));
   }
   groups.clear();
 }
 
-void BandStitcher::keep_drawn_groups(std::size_t cls,
-                                     const std::pair<std::size_t, std::uint32_t>* key) {
+void BandStitcher::keep_drawn_groups(std::size_t cls, const PieceKey* key) {
   std::vector<DrawnGroup> due;
   {
     const std::lock_guard<std::mutex> lock(drawn_mutex_);
     std::deque<DrawnGroup>& drawn = drawn_[cls];
-    while (!drawn.empty() && (!key || full_key(drawn.front().key) < *key)) {
+    while (!drawn.empty() && (!key || piece_key(drawn.front().key) < *key)) {
       due.push_back(std::move(drawn.front()));
       drawn.pop_front();
     }
@@ -102,11 +101,11 @@ void BandStitcher::keep_drawn_groups(std::size_t cls,
 
 void BandStitcher::keep_drawn(StrokeClass cls, std::size_t group, Stroke&& stroke) {
   const std::size_t c = class_index(cls);
-  std::pair<std::size_t, std::uint32_t> key;
+  PieceKey key;
   {
     const std::lock_guard<std::mutex> lock(drawn_mutex_);
     // Groups come in the order of their first pieces: the keys of earlier pieces are done with.
-    std::deque<std::pair<std::size_t, std::uint32_t>>& keys = piece_keys_[c];
+    std::deque<PieceKey>& keys = piece_keys_[c];
     if (group < first_key_[c] || group - first_key_[c] >= keys.size())
       throw Error("the drawing handed on a stroke of a piece it was not given");
     keys.erase(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(group - first_key_[c]));

@@ -127,6 +127,8 @@ class BandStitcher {
   SilhouetteResult finish(std::size_t profiles);
 
  private:
+  // A piece's place in SPEC 1.7's order: its chain's (order_key), then its own among the chain's.
+  using PieceKey = std::pair<std::size_t, std::uint32_t>;
   // A chain going on into the next band: its stroke so far.
   struct Open {
     StrokeBuilder builder;
@@ -144,7 +146,7 @@ class BandStitcher {
   void queue_drawn_groups(std::vector<DrawnGroup>& groups);
   // Keeps the groups drawn by their bands whose first piece comes before `key` (all of them
   // without one).
-  void keep_drawn_groups(std::size_t cls, const std::pair<std::size_t, std::uint32_t>* key);
+  void keep_drawn_groups(std::size_t cls, const PieceKey* key);
 
   int min_cells_;
   StrokeSink sink_;
@@ -153,16 +155,16 @@ class BandStitcher {
   std::vector<Open> open_[2];  // by class, indexed by the cell's index in the last profile
   SilhouetteResult result_;
   // Drawn strokes: the pieces held until every chain started before theirs is complete, then
-  // drawn in that order, as one run draws them. Declared last: stopped before what it delivers
-  // to goes.
+  // drawn in that order, as one run draws them.
   ScanOrder held_[2];
   std::vector<Stroke> pieces_;
   // By class: the groups drawn by their bands, in order, and the keys of the pieces given to the
   // drawing from piece `first_key_` on, which the drawing's thread reads.
   std::mutex drawn_mutex_;
   std::deque<DrawnGroup> drawn_[2];
-  std::deque<std::pair<std::size_t, std::uint32_t>> piece_keys_[2];
+  std::deque<PieceKey> piece_keys_[2];
   std::size_t first_key_[2] = {0, 0};
+  // Declared last: stopped before what it delivers to goes.
   std::unique_ptr<DrawingPipeline> drawing_;
 };
 
