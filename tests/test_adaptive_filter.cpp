@@ -72,6 +72,53 @@ TEST_CASE("the survey's median slope is the brute-force median within a bin", "[
   CHECK(survey.cells == 119u * 139u);
 }
 
+TEST_CASE("a survey made in parts, through bytes and in any order, is the survey", "[adaptive]") {
+  // 64 windows on a DEM over two million cells; float heights, then whole metres.
+  HeightGrid z = rolling(1700, 1400);
+  for (const bool quantised : {false, true}) {
+    CAPTURE(quantised);
+    if (quantised)
+      for (std::size_t r = 0; r < z.rows(); ++r)
+        for (std::size_t c = 0; c < z.cols(); ++c) z.row(r)[c] = std::round(z.row(r)[c]);
+    const DemSource dem = memory_source(z, 7.5);
+    const SlopeSurvey whole = survey_slopes(z.rows(), z.cols(), 7.5, 7.5, dem.read);
+    const std::vector<DemWindow> windows = survey_windows(z.rows(), z.cols());
+    REQUIRE(windows.size() == 64);
+    // Five machines, each some of the windows (every third, fifth, ... in turn).
+    std::vector<std::vector<DemWindow>> parts(5);
+    for (std::size_t k = 0; k < windows.size(); ++k) parts[(k * 7) % 5].push_back(windows[k]);
+    const auto read = [&](const DemWindow& w) {
+      std::vector<float> heights(w.rows * w.cols);
+      dem.read(w, heights.data());
+      return heights;
+    };
+    HeightStepPart steps;
+    for (std::size_t m = parts.size(); m-- > 0;) {
+      HeightStepPart part;
+      for (const DemWindow& w : parts[m]) part.add(read(w).data(), w.rows * w.cols);
+      steps.merge(SurveyBytes::height_step(SurveyBytes::of(part)));
+    }
+    const HeightStep step = steps.step();
+    CHECK(step.quantum == whole.heights.quantum);
+    CHECK(step.tolerance == whole.heights.tolerance);
+    CHECK(step.quantum == (quantised ? 1.0 : 0.0));
+    SlopePart slopes;
+    for (const std::vector<DemWindow>& machine : parts) {
+      SlopePart part;
+      for (const DemWindow& w : machine) part.add(read(w).data(), w, 7.5, 7.5, step.tolerance);
+      slopes.merge(SurveyBytes::slopes(SurveyBytes::of(part)));
+    }
+    const SlopeSurvey merged = slopes.survey(step);
+    CHECK(merged.median_slope_pct == whole.median_slope_pct);
+    CHECK(merged.cells == whole.cells);
+    CHECK(merged.flat_cells == whole.flat_cells);
+    CHECK(merged.cells > 1900000u);
+  }
+  // Bytes of one kind are not taken for the other.
+  CHECK_THROWS_AS(SurveyBytes::slopes(SurveyBytes::of(HeightStepPart())), Error);
+  CHECK_THROWS_AS(SurveyBytes::height_step(SurveyBytes::of(SlopePart())), Error);
+}
+
 TEST_CASE("the height step is found from the heights", "[adaptive]") {
   const std::vector<float> metres = {12, 15, NAN, 300, -4};
   CHECK(height_step(metres.data(), metres.size()).quantum == 1.0);

@@ -34,18 +34,23 @@ ResolvedParams::ResolvedParams(const SilhouetteParams& fixed) : params_(fixed) {
   filter_.heights.tolerance = fixed.height_tolerance;
 }
 
+FilterReport report_of_survey(const SilhouetteParams& choice, const SlopeSurvey& survey) {
+  FilterReport report;
+  report.choice = choice.adaptive;
+  report.median_slope_pct = survey.median_slope_pct;
+  report.heights = survey.heights;
+  report.scale = filter_scale(survey.median_slope_pct);
+  report.cutoffs = scaled(choice.filter, report.scale);
+  return report;
+}
+
 ResolvedParams adapt_filter(const SilhouetteParams& choice, const DemGrid& grid,
                             const WindowReader& read) {
   if (choice.adaptive.mode == FilterMode::fixed) return ResolvedParams(choice);
   choice.validate();
   if (!read) throw Error("an adaptive filter needs the DEM to survey");
-  FilterReport report;
-  report.choice = choice.adaptive;
   const SlopeSurvey survey = survey_slopes(grid.rows, grid.cols, grid.dx, grid.dy, read);
-  report.median_slope_pct = survey.median_slope_pct;
-  report.heights = survey.heights;
-  report.scale = filter_scale(survey.median_slope_pct);
-  report.cutoffs = scaled(choice.filter, report.scale);
+  FilterReport report = report_of_survey(choice, survey);
   SilhouetteParams out = choice;
   out.adaptive.mode = FilterMode::fixed;  // resolved: the stages take the cut-offs as they are
   out.height_tolerance = survey.heights.tolerance;

@@ -64,6 +64,10 @@ class ResolvedParams {
 ResolvedParams adapt_filter(const SilhouetteParams& choice, const DemGrid& grid,
                             const WindowReader& read);
 
+// What an adaptive filter adapted to the whole DEM makes of `survey` (adapt_filter's report, for a
+// survey made in parts on a cluster: slope_survey.h).
+FilterReport report_of_survey(const SilhouetteParams& choice, const SlopeSurvey& survey);
+
 // The choice resolved as adapt_filter resolved it on the same DEM, which `report` tells: a run
 // split among machines surveys the DEM once (bands.h). Throws Error when the report is another
 // choice's, or for local adaptivity, whose map of scales a report does not hold.

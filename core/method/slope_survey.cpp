@@ -4,6 +4,8 @@
 #include <cstring>
 #include <limits>
 
+#include "core/base/byte_stream.h"
+
 namespace tsk {
 namespace {
 
@@ -12,8 +14,15 @@ namespace {
 constexpr std::size_t kWholeSurveyCells = std::size_t{1} << 21;
 constexpr std::size_t kLattice = 8;
 
-// The windows a survey reads, each a cell wider and taller than the cells it measures (forward
-// differences need the next row and column).
+// The quanta a DEM's heights may step by, largest first.
+constexpr double kQuanta[] = {1.0, 0.5, 0.1, 0.01};
+constexpr std::uint32_t kHeightStepMagic = 0x54534b48;  // "TSKH"
+constexpr std::uint32_t kSlopesMagic = 0x54534b53;      // "TSKS"
+
+}  // namespace
+
+// Forward differences need the next row and column: each window is a cell wider and taller than
+// the cells it measures.
 std::vector<DemWindow> survey_windows(std::size_t rows, std::size_t cols) {
   if (rows * cols <= kWholeSurveyCells) return {{0, 0, rows, cols}};
   const std::size_t side = 181;  // 64 windows of 181 x 181 cells: two million cells
@@ -35,6 +44,8 @@ std::vector<DemWindow> survey_windows(std::size_t rows, std::size_t cols) {
   }
   return windows;
 }
+
+namespace {
 
 // True when every finite height is within a thousandth of a quantum of a multiple of `quantum`.
 bool all_multiples(const float* heights, std::size_t count, double quantum) {
@@ -80,55 +91,132 @@ double SlopeHistogram::quantile(double q) const {
 }
 
 HeightStep height_step(const float* heights, std::size_t count) {
+  HeightStepPart part;
+  part.add(heights, count);
+  return part.step();
+}
+
+void HeightStepPart::add(const float* heights, std::size_t count) {
+  for (std::size_t q = 0; q < multiples_.size(); ++q)
+    if (multiples_[q] && !all_multiples(heights, count, kQuanta[q])) multiples_[q] = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (std::isfinite(heights[k])) largest_ = std::max(largest_, std::fabs(double{heights[k]}));
+  }
+}
+
+void HeightStepPart::merge(const HeightStepPart& other) {
+  for (std::size_t q = 0; q < multiples_.size(); ++q) multiples_[q] &= other.multiples_[q];
+  largest_ = std::max(largest_, other.largest_);
+}
+
+HeightStep HeightStepPart::step() const {
   HeightStep step;
-  for (double quantum : {1.0, 0.5, 0.1, 0.01}) {
-    if (all_multiples(heights, count, quantum)) {
-      step.quantum = quantum;
-      step.tolerance = quantum / 2;
+  for (std::size_t q = 0; q < multiples_.size(); ++q) {
+    if (multiples_[q]) {
+      step.quantum = kQuanta[q];
+      step.tolerance = kQuanta[q] / 2;
       return step;
     }
   }
   // Float heights: resampling moves a flat cell's height by a few units in the last place of a
   // float (about 1e-7 of it), so a millionth of the largest height is flat.
-  double largest = 0;
-  for (std::size_t k = 0; k < count; ++k) {
-    if (std::isfinite(heights[k])) largest = std::max(largest, std::fabs(double{heights[k]}));
-  }
-  step.tolerance = 1e-6 * largest;
+  step.tolerance = 1e-6 * largest_;
   return step;
+}
+
+void SlopePart::add(const float* heights, const DemWindow& w, double dx, double dy,
+                    double tolerance) {
+  for (std::size_t r = 0; r + 1 < w.rows; ++r) {
+    const float* row = heights + r * w.cols;
+    for (std::size_t c = 0; c + 1 < w.cols; ++c) {
+      const float slope = cell_slope_pct(row, w.cols, c, dx, dy, tolerance);
+      if (slope < -1.5f) continue;
+      ++cells_;
+      if (slope < 0) {
+        ++flat_cells_;
+      } else {
+        histogram_.add(slope);
+      }
+    }
+  }
+}
+
+void SlopePart::merge(const SlopePart& other) {
+  histogram_.merge(other.histogram_);
+  cells_ += other.cells_;
+  flat_cells_ += other.flat_cells_;
+}
+
+SlopeSurvey SlopePart::survey(const HeightStep& heights) const {
+  SlopeSurvey survey;
+  survey.heights = heights;
+  survey.cells = static_cast<std::size_t>(cells_);
+  survey.flat_cells = static_cast<std::size_t>(flat_cells_);
+  survey.median_slope_pct = histogram_.quantile(0.5);
+  return survey;
 }
 
 SlopeSurvey survey_slopes(std::size_t rows, std::size_t cols, double dx, double dy,
                           const WindowReader& read) {
   const std::vector<DemWindow> windows = survey_windows(rows, cols);
-  std::vector<float> heights;
-  std::vector<std::size_t> starts;
-  for (const DemWindow& w : windows) {
-    starts.push_back(heights.size());
-    heights.resize(heights.size() + w.rows * w.cols);
-    read(w, heights.data() + starts.back());
-  }
-  SlopeSurvey survey;
-  survey.heights = height_step(heights.data(), heights.size());
-  SlopeHistogram histogram;
+  std::vector<std::vector<float>> heights(windows.size());
+  HeightStepPart step;
   for (std::size_t k = 0; k < windows.size(); ++k) {
-    const DemWindow& w = windows[k];
-    for (std::size_t r = 0; r + 1 < w.rows; ++r) {
-      const float* row = heights.data() + starts[k] + r * w.cols;
-      for (std::size_t c = 0; c + 1 < w.cols; ++c) {
-        const float slope = cell_slope_pct(row, w.cols, c, dx, dy, survey.heights.tolerance);
-        if (slope < -1.5f) continue;
-        ++survey.cells;
-        if (slope < 0) {
-          ++survey.flat_cells;
-        } else {
-          histogram.add(slope);
-        }
-      }
-    }
+    heights[k].resize(windows[k].rows * windows[k].cols);
+    read(windows[k], heights[k].data());
+    step.add(heights[k].data(), heights[k].size());
   }
-  survey.median_slope_pct = histogram.quantile(0.5);
-  return survey;
+  const HeightStep found = step.step();
+  SlopePart slopes;
+  for (std::size_t k = 0; k < windows.size(); ++k)
+    slopes.add(heights[k].data(), windows[k], dx, dy, found.tolerance);
+  return slopes.survey(found);
+}
+
+std::string SurveyBytes::of(const HeightStepPart& part) {
+  ByteWriter w;
+  w.put(kHeightStepMagic);
+  w.put(part.multiples_);
+  w.put(part.largest_);
+  return w.take();
+}
+
+std::string SurveyBytes::of(const SlopePart& part) {
+  ByteWriter w;
+  w.put(kSlopesMagic);
+  w.put(part.histogram_.counts_);
+  w.put(part.cells_);
+  w.put(part.flat_cells_);
+  return w.take();
+}
+
+HeightStepPart SurveyBytes::height_step(const std::string& bytes) {
+  ByteReader r(bytes, "a part of a survey of heights");
+  r.expect(kHeightStepMagic);
+  HeightStepPart part;
+  r.get(part.multiples_);
+  r.get(part.largest_);
+  r.finish();
+  for (const std::uint8_t m : part.multiples_)
+    if (m > 1) throw Error("these bytes are not a part of a survey of heights: a flag unset");
+  if (!(part.largest_ >= 0.0)) throw Error("a part of a survey of heights has no largest height");
+  return part;
+}
+
+SlopePart SurveyBytes::slopes(const std::string& bytes) {
+  ByteReader r(bytes, "a part of a survey of slopes");
+  r.expect(kSlopesMagic);
+  SlopePart part;
+  r.get(part.histogram_.counts_);
+  r.get(part.cells_);
+  r.get(part.flat_cells_);
+  r.finish();
+  std::uint64_t total = 0;
+  for (const std::uint32_t n : part.histogram_.counts_) total += n;
+  part.histogram_.total_ = total;
+  if (part.flat_cells_ > part.cells_ || total + part.flat_cells_ > part.cells_)
+    throw Error("a part of a survey of slopes counts more slopes than cells");
+  return part;
 }
 
 }  // namespace tsk

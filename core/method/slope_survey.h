@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/method/dem_windows.h"
@@ -28,6 +29,7 @@ class SlopeHistogram {
   double quantile(double q) const;
 
  private:
+  friend struct SurveyBytes;
   std::array<std::uint32_t, kBins> counts_{};
   std::uint64_t total_ = 0;
 };
@@ -60,9 +62,50 @@ inline float cell_slope_pct(const float* z, std::size_t cols, std::size_t c, dou
 // The step of a DEM's heights from a sample of them (NaN for nodata).
 HeightStep height_step(const float* heights, std::size_t count);
 
-// Surveys a DEM of rows x cols cells of dx x dy ground units read through `read`: the whole DEM
-// when it has at most about two million cells, else 64 windows spread evenly over it.
+// The windows a survey reads: the whole DEM when it has at most about two million cells, else 64
+// windows spread evenly over it. Each is a cell wider and taller than the cells it measures.
+std::vector<DemWindow> survey_windows(std::size_t rows, std::size_t cols);
+
+// Surveys a DEM of rows x cols cells of dx x dy ground units read through `read` (its
+// survey_windows).
 SlopeSurvey survey_slopes(std::size_t rows, std::size_t cols, double dx, double dy,
                           const WindowReader& read);
+
+// A survey in parts, for a cluster whose machines each read some of the windows: the parts summed
+// give survey_slopes' survey exactly. First the heights' step, which the slopes need.
+class HeightStepPart {
+ public:
+  void add(const float* heights, std::size_t count);
+  void merge(const HeightStepPart& other);
+  HeightStep step() const;
+
+ private:
+  friend struct SurveyBytes;
+  std::array<std::uint8_t, 4> multiples_{1, 1, 1, 1};  // of each quantum, 1 to 0.01
+  double largest_ = 0.0;                               // of the finite heights' magnitudes
+};
+
+// The slopes of some windows, measured with the DEM's flat-cell tolerance.
+class SlopePart {
+ public:
+  // `heights` holds window `w` (w.rows x w.cols).
+  void add(const float* heights, const DemWindow& w, double dx, double dy, double tolerance);
+  void merge(const SlopePart& other);
+  SlopeSurvey survey(const HeightStep& heights) const;
+
+ private:
+  friend struct SurveyBytes;
+  SlopeHistogram histogram_;
+  std::uint64_t cells_ = 0, flat_cells_ = 0;
+};
+
+// The parts as bytes and back, for a machine to hand them to another. Throws Error on bytes that
+// are not one.
+struct SurveyBytes {
+  static std::string of(const HeightStepPart& part);
+  static std::string of(const SlopePart& part);
+  static HeightStepPart height_step(const std::string& bytes);
+  static SlopePart slopes(const std::string& bytes);
+};
 
 }  // namespace tsk

@@ -12,18 +12,20 @@
 namespace tsk::python {
 namespace {
 
-std::string filter_bytes(const FilterReport& report) {
-  ByteWriter w;
-  w.put(report);
-  return w.take();
-}
-
 FilterReport filter_from_bytes(const std::string& bytes) {
   ByteReader r(bytes, "a filter's report");
   FilterReport report;
   r.get(report);
   r.finish();
   return report;
+}
+
+}  // namespace
+
+std::string filter_bytes(const FilterReport& report) {
+  ByteWriter w;
+  w.put(report);
+  return w.take();
 }
 
 // The options of a run in bands: the silhouettes command's, but what it cannot take.
@@ -36,6 +38,8 @@ cli::Options band_options(const std::vector<std::string>& options) {
     throw cli::UsageError("a run in bands writes OUTPUT only: no preview, stats_json or timings");
   return o;
 }
+
+namespace {
 
 // The run's options and paths as the silhouettes command parses them, after refusing what a run
 // in bands cannot take (before the paths, as the command checks its options first).
@@ -54,10 +58,11 @@ BandPlan plan_bands(const std::string& input, const std::string& output,
   const cli::Options o = band_run(input, output, options);
   io::check_vector_output(o.output, o.format);
   const io::DemFile dem(o.input, o.dem);
-  const ResolvedParams params = adapt_filter(o.params, dem.info().grid, dem.source().read);
   const OrientedFrame frame = make_frame(dem.info().grid, o.params.view.azimuth_deg);
-  return {frame.profiles, filter_bytes(params.filter()), o.params.geometry == Geometry::oblique,
-          dem.info().rows};
+  const bool survey = o.params.adaptive.mode == FilterMode::adaptive;
+  o.params.validate();
+  return {frame.profiles, survey ? std::string() : filter_bytes(ResolvedParams(o.params).filter()),
+          survey, o.params.geometry == Geometry::oblique, dem.info().rows};
 }
 
 double lowest_height_of(const std::string& input, const std::vector<std::string>& options,

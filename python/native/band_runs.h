@@ -8,20 +8,29 @@
 #include <string>
 #include <vector>
 
+#include "cli/options.h"
 #include "core/method/bands.h"
 
 namespace tsk::python {
 
 struct BandPlan {
   std::size_t profiles = 0;  // of the view's grid
-  std::string filter;        // the filter surveyed once, as bytes
+  std::string filter;        // a fixed filter, as bytes; empty for an adaptive one
+  bool survey = false;       // the adaptive filter's survey is to be made (survey_parts.h)
   bool oblique = false;      // plan-oblique geometry: the DEM's lowest height is needed first
   std::size_t dem_rows = 0;
 };
 
-// Checks the silhouettes command's `options` (as typed) and paths for a run in bands, and surveys
-// the DEM's filter once. Throws cli::UsageError for options a run in bands cannot take (local
-// adaptivity, outputs beyond OUTPUT) and as the command does.
+// The silhouettes command's `options` (as typed) for a run in bands. Throws cli::UsageError for
+// options a run in bands cannot take (local adaptivity, outputs beyond OUTPUT) and as the command
+// does.
+cli::Options band_options(const std::vector<std::string>& options);
+
+// A filter's report as bytes, as a run in bands hands it to its workers.
+std::string filter_bytes(const FilterReport& report);
+
+// Checks the silhouettes command's `options` (as typed) and paths for a run in bands (as
+// band_options), and resolves a fixed filter; an adaptive one is surveyed by the workers.
 BandPlan plan_bands(const std::string& input, const std::string& output,
                     const std::vector<std::string>& options);
 

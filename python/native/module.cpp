@@ -15,6 +15,7 @@
 #include "python/native/array_sketch.h"
 #include "python/native/band_runs.h"
 #include "python/native/python_run.h"
+#include "python/native/survey_parts.h"
 
 namespace tsk::python {
 namespace {
@@ -116,9 +117,44 @@ py::dict plan_run_in_bands(const std::string& input, const std::string& output,
   py::dict result;
   result["profiles"] = plan.profiles;
   result["filter"] = py::bytes(plan.filter);
+  result["survey"] = plan.survey;
   result["oblique"] = plan.oblique;
   result["dem_rows"] = plan.dem_rows;
   return result;
+}
+
+// The adaptive filter's survey in parts (survey_parts.h).
+std::vector<SurveyWindow> windows_of_survey(const std::string& input, const Strings& options) {
+  std::vector<SurveyWindow> windows;
+  quietly([&] { windows = survey_windows_of(input, options); });
+  return windows;
+}
+
+py::bytes heights_of_survey(const std::string& input, const Strings& options,
+                            const std::vector<SurveyWindow>& windows) {
+  std::string part;
+  quietly([&] { part = survey_heights_part(input, options, windows); });
+  return py::bytes(part);
+}
+
+py::bytes merge_survey_heights(const Strings& parts) {
+  std::string merged;
+  quietly([&] { merged = merge_height_parts(parts); });
+  return py::bytes(merged);
+}
+
+py::bytes slopes_of_survey(const std::string& input, const Strings& options,
+                           const std::vector<SurveyWindow>& windows, const std::string& heights) {
+  std::string part;
+  quietly([&] { part = survey_slopes_part(input, options, windows, heights); });
+  return py::bytes(part);
+}
+
+py::bytes filter_from_survey(const Strings& options, const std::string& heights,
+                             const Strings& slopes) {
+  std::string filter;
+  quietly([&] { filter = filter_of_survey(options, heights, slopes); });
+  return py::bytes(filter);
 }
 
 py::bytes sketch_one_band(const std::string& input, const Strings& options,
@@ -217,6 +253,14 @@ PYBIND11_MODULE(_native, m) {
   m.def("sketch_band", &sketch_one_band, py::arg("input"), py::arg("options"), py::arg("filter"),
         py::arg("z_ref"), py::arg("first"), py::arg("count"), py::arg("halo"), py::arg("order"));
   m.def("band_summary", &band_summary, py::arg("band"));
+  m.def("survey_windows", &windows_of_survey, py::arg("input"), py::arg("options"));
+  m.def("survey_heights", &heights_of_survey, py::arg("input"), py::arg("options"),
+        py::arg("windows"));
+  m.def("merge_heights", &merge_survey_heights, py::arg("parts"));
+  m.def("survey_slopes", &slopes_of_survey, py::arg("input"), py::arg("options"),
+        py::arg("windows"), py::arg("heights"));
+  m.def("survey_filter", &filter_from_survey, py::arg("options"), py::arg("heights"),
+        py::arg("slopes"));
   m.def("lowest_height", &lowest_height, py::arg("input"), py::arg("options"), py::arg("first_row"),
         py::arg("rows"));
   m.def("stitch_bands", &stitch, py::arg("input"), py::arg("output"), py::arg("options"),

@@ -47,6 +47,35 @@ def _lowest_height(client, input_path, arguments, plan):
     return lowest if math.isfinite(lowest) else 0.0
 
 
+def _survey_heights(input, arguments, windows):
+    """One task: the step of the heights in some of the survey's windows, as bytes."""
+    return _native.survey_heights(input, arguments, windows)
+
+
+def _survey_slopes(input, arguments, windows, heights):
+    """One task: the slopes in some of the survey's windows, as bytes."""
+    return _native.survey_slopes(input, arguments, windows, heights)
+
+
+def _filter(client, input_path, arguments, plan):
+    """The filter's report for every band: a fixed filter as planned, or an adaptive one from the
+    DEM's survey as a reduction over the workers (each reads some of its windows: first the
+    heights' step, then the slopes measured with it), summed by the client into the report one
+    machine's survey makes."""
+    if not plan["survey"]:
+        return plan["filter"]
+    windows = _native.survey_windows(input_path, arguments)
+    parts = max(1, min(len(windows), len(client.scheduler_info()["workers"])))
+    shares = [windows[k::parts] for k in range(parts)]
+
+    def each(task, *extra):
+        return client.gather([client.submit(task, input_path, arguments, share, *extra,
+                                            pure=False) for share in shares])
+
+    heights = _native.merge_heights(each(_survey_heights))
+    return _native.survey_filter(arguments, heights, each(_survey_slopes, heights))
+
+
 def _band_width(profiles, workers):
     """About eight bands a worker, so that the client starts early and a slow band holds up
     little (the fastest width on the 8000^2 benchmark, docs/DISTRIBUTED.md), and none narrower
@@ -61,7 +90,7 @@ def silhouettes(input, output, client=None, band_profiles=None, *, progress=None
     LocalCluster of one single-threaded worker process a core for the run), bands of
     `band_profiles` profiles (None: about eight a worker), and the options of
     terrain_sketch.silhouettes() but those that need the whole DEM on one machine: the filter
-    fixed or adapted to the whole DEM (surveyed once, by the client), not locally, and no files
+    fixed or adapted to the whole DEM (surveyed once, by the workers), not locally, and no files
     beyond OUTPUT. Drawn strokes are drawn by the client as the bands come back; plan-oblique
     geometry reads the DEM once more for its lowest height, on the workers. Returns the stage
     statistics as a dict. Raises ValueError on bad options, terrain_sketch.Error when the run
@@ -98,7 +127,8 @@ def _stitch(client, input_path, output_path, arguments, plan, width, progress):
     """Submits every band, then stitches them as they come back, in order, writing each stroke
     as soon as it is whole; a band whose guess of the chains' order was wrong is sketched again
     from the true order."""
-    profiles, filter_report = plan["profiles"], plan["filter"]
+    profiles = plan["profiles"]
+    filter_report = _filter(client, input_path, arguments, plan)
     z_ref = _lowest_height(client, input_path, arguments, plan) if plan["oblique"] else 0.0
     token = uuid.uuid4().hex
     bands = [(first, min(width, profiles - first)) for first in range(0, profiles, width)]

@@ -1,7 +1,7 @@
 """terrain_sketch.dask against the run on one machine: the same strokes, exact and drawn
-(compared as sets of rows: geometry with M values, and attributes) and statistics, on the sample
-and a 4000^2 DEM made of it, bands down to a few profiles, a worker killed mid-run, and the
-refusals."""
+(compared as sets of rows: geometry with M values, and attributes) and statistics (the filter's
+report among them), on the sample and a 4000^2 DEM made of it, bands down to a few profiles, the
+adaptive filter's survey made by the workers, a worker killed mid-run, and the refusals."""
 
 import os
 import shutil
@@ -75,7 +75,13 @@ def test_a_dem_of_4000_squared(tmp_path, client):
     large.GetRasterBand(1).WriteArray(heights)
     large = None
     same_run(tmp_path, client, path, 700, azimuth=270, strokes="exact")
-    same_run(tmp_path, client, path, 1000, azimuth=90)
+    # The adaptive filter's survey (64 windows here) is a reduction over the workers: the heights'
+    # step, then the slopes, a share of the windows each; the same filter as one machine's.
+    with distributed.get_task_stream(client) as tasks:
+        same_run(tmp_path, client, path, 1000, azimuth=90)
+    survey = [t for t in tasks.data if str(t["key"]).startswith(("_survey_heights",
+                                                                 "_survey_slopes"))]
+    assert len({t["worker"] for t in survey}) == 2 and len(survey) == 4
 
 
 class KillFirstBand(distributed.WorkerPlugin):
