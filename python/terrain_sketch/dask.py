@@ -10,6 +10,9 @@ or drawn (see docs/DISTRIBUTED.md)::
     import terrain_sketch.dask
     stats = terrain_sketch.dask.silhouettes("dem.vrt", "strokes.gpkg", Client("tcp://host:8786"),
                                             azimuth=270)
+
+From a shell, with the command line's options:
+``python3 -m terrain_sketch.dask dem.vrt strokes.gpkg --scheduler tcp://host:8786 --azimuth 270``.
 """
 
 import json
@@ -91,17 +94,22 @@ def silhouettes(input, output, client=None, band_profiles=None, *, progress=None
     `band_profiles` profiles (None: about eight a worker), and the options of
     terrain_sketch.silhouettes() but those that need the whole DEM on one machine: the filter
     fixed or adapted to the whole DEM (surveyed once, by the workers), not locally, and no files
-    beyond OUTPUT. Drawn strokes are drawn by the client as the bands come back; plan-oblique
-    geometry reads the DEM once more for its lowest height, on the workers. Returns the stage
+    beyond OUTPUT. Drawn strokes are drawn by the bands, those near a band's edges by the client
+    (plan-oblique ones all by the client, which reads the DEM's lowest height on the workers). Returns the stage
     statistics as a dict. Raises ValueError on bad options, terrain_sketch.Error when the run
     cannot be done (a worker that cannot read the DEM ends it with its message); a worker lost
     mid-run has its band sketched again by another. OUTPUT is written whole at the end, or not
     at all.
     """
+    input_path, output_path = _options.path_argument(input), _options.path_argument(output)
+    return _run(input_path, output_path, client, band_profiles, _options.to_arguments(options),
+                progress)
+
+
+def _run(input_path, output_path, client, band_profiles, arguments, progress):
+    """silhouettes() with the command line's arguments."""
     from dask.distributed import Client, LocalCluster
 
-    input_path, output_path = _options.path_argument(input), _options.path_argument(output)
-    arguments = _options.to_arguments(options)
     hooks = _options.hooks(progress)
     plan = _native.plan_bands(input_path, output_path, arguments, hooks)
     cluster = None
@@ -161,3 +169,69 @@ def _stitch(client, input_path, output_path, arguments, plan, width, progress):
                                     profiles, next_band, again, hooks)
     finally:
         client.cancel([f for f in futures[done:]])
+
+
+_USAGE = ("usage: python3 -m terrain_sketch.dask INPUT OUTPUT [--scheduler ADDRESS] "
+          "[--band-profiles N] [OPTIONS]")
+_HELP = """
+The silhouettes command on a Dask cluster, with the same strokes and statistics as one machine.
+
+  --scheduler ADDRESS  the cluster's scheduler (tcp://HOST:8786); without it, a LocalCluster of
+                       one single-threaded worker process a core
+  --band-profiles N    profiles a band (default: about eight bands a worker)
+  OPTIONS              those of `terrain-sketch silhouettes --help`, but those that need the
+                       whole DEM on one machine (a locally adaptive filter) and the outputs
+                       beyond OUTPUT (--preview, --stats-json, --timings)
+
+Exits 0 when OUTPUT is written whole, 1 when the run cannot be done, 2 on bad options."""
+
+
+def main(argv=None):
+    """The run on a Dask cluster from a shell: INPUT and OUTPUT, the scheduler's address (none: a
+    LocalCluster of a worker process a core), the width of a band, and the silhouettes command's
+    options as `terrain-sketch silhouettes` takes them. Exits 0, 1 when the run cannot be done,
+    2 on bad options, 130 on Ctrl-C."""
+    import sys
+    args = list(sys.argv[1:] if argv is None else argv)
+    if any(a in ("-h", "--help") for a in args):
+        print(_USAGE + "\n" + _HELP)
+        return 0
+    chosen, rest = {"--scheduler": None, "--band-profiles": None}, []
+    while args:
+        arg = args.pop(0)
+        if arg in chosen:
+            if not args:
+                print(f"terrain_sketch.dask: {arg} needs a value\n{_USAGE}", file=sys.stderr)
+                return 2
+            chosen[arg] = args.pop(0)
+        else:
+            rest.append(arg)
+    if len(rest) < 2 or any(a.startswith("-") for a in rest[:2]):
+        print(f"terrain_sketch.dask: INPUT and OUTPUT come first\n{_USAGE}", file=sys.stderr)
+        return 2
+    try:
+        band_profiles = chosen["--band-profiles"]
+        if band_profiles is not None:
+            if not band_profiles.isdigit():
+                raise ValueError(f"--band-profiles takes a whole number, not {band_profiles!r}")
+            band_profiles = int(band_profiles)
+        client = None
+        if chosen["--scheduler"]:
+            from dask.distributed import Client
+            client = Client(chosen["--scheduler"])
+        stats = _run(rest[0], rest[1], client, band_profiles, rest[2:], None)
+    except ValueError as error:
+        print(f"terrain_sketch.dask: {error}", file=sys.stderr)
+        return 2
+    except (_errors.Error, OSError) as error:
+        print(f"terrain_sketch.dask: {error}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        return 130
+    print(f"{rest[1]}: {stats['factual_strokes']} factual and {stats['formulated_strokes']} "
+          "formulated strokes")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

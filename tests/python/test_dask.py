@@ -84,6 +84,31 @@ def test_a_dem_of_4000_squared(tmp_path, client):
     assert len({t["worker"] for t in survey}) == 2 and len(survey) == 4
 
 
+def test_from_a_shell(tmp_path, client):
+    # python3 -m terrain_sketch.dask: the command line's options, the scheduler's address.
+    import subprocess
+    import sys
+
+    def run(*args):
+        return subprocess.run([sys.executable, "-m", "terrain_sketch.dask", *map(str, args)],
+                              capture_output=True, text=True, env=os.environ.copy())
+
+    single = terrain_sketch.silhouettes(SAMPLE, tmp_path / "one.gpkg", azimuth=200)
+    done = run(SAMPLE, tmp_path / "bands.gpkg", "--azimuth", "200", "--scheduler",
+               client.scheduler.address, "--band-profiles", "40")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == (f"{tmp_path / 'bands.gpkg'}: {single['factual_strokes']} "
+                                   f"factual and {single['formulated_strokes']} formulated strokes")
+    assert rows(tmp_path / "bands.gpkg") == rows(tmp_path / "one.gpkg")
+    refused = run(SAMPLE, tmp_path / "no.gpkg", "--observer", "1,2", "--scheduler",
+                  client.scheduler.address)
+    assert refused.returncode == 2
+    assert "silhouettes does not take --observer" in refused.stderr
+    assert run(SAMPLE, tmp_path / "no.gpkg", "--band-profiles", "many").returncode == 2
+    assert run("--azimuth", "90").returncode == 2
+    assert not (tmp_path / "no.gpkg").exists()
+
+
 class KillFirstBand(distributed.WorkerPlugin):
     """Ends its worker's process outright as the first band of a run begins there."""
 
