@@ -50,9 +50,9 @@ def band_figures(client, width):
     """Per-band figures: sketch seconds on a worker, bytes, and the client's stitching."""
     arguments = _options.to_arguments({"strokes": STROKES})
     plan = _native.plan_bands(dem, f"{OUT}/b.gpkg", arguments, _options.hooks(None))
-    profiles = plan["profiles"]
+    profiles, filter_report = plan["profiles"], tsd._filter(client, dem, arguments, plan)
     bands = [(f, min(width, profiles - f)) for f in range(0, profiles, width)]
-    results = client.gather([client.submit(timed_band, arguments, plan["filter"], f, c, pure=False)
+    results = client.gather([client.submit(timed_band, arguments, filter_report, f, c, pure=False)
                              for f, c in bands])
     start, again = time.monotonic(), 0
     sketches = iter(results)
@@ -63,9 +63,9 @@ def band_figures(client, width):
     def sketch_again(first, count, order):
         nonlocal again
         again += 1
-        return _native.sketch_band(dem, arguments, plan["filter"], 0.0, first, count, 0, order)
+        return _native.sketch_band(dem, arguments, filter_report, 0.0, first, count, 0, order)
 
-    _native.stitch_bands(dem, f"{OUT}/b.gpkg", arguments, plan["filter"], 0.0, profiles,
+    _native.stitch_bands(dem, f"{OUT}/b.gpkg", arguments, filter_report, 0.0, profiles,
                          next_band, sketch_again, _native.RunHooks(None, None, False))
     stitch = time.monotonic() - start
     sizes = [len(b) for _, b in results]

@@ -62,6 +62,9 @@ BandStitcher::BandStitcher(const ResolvedParams& params, StrokeSink sink,
                            std::optional<DrawingSetup> drawing)
     : min_cells_(params->chain.min_cells), sink_(std::move(sink)) {
   result_.filter = params.filter();
+  // Exact strokes are written alongside the stitching of the next band, a band at a time.
+  if (!drawing && sink_ && resolve_threads(params->threads) > 1)
+    writing_ = std::make_unique<HandOff<Stroke>>(sink_, true);
   if (!drawing) return;
   drawing_ = std::make_unique<DrawingPipeline>(
       *drawing, resolve_threads(params->threads) > 1,
@@ -163,7 +166,9 @@ void BandStitcher::keep(Stroke&& stroke) {
   StageStats& stats = result_.stats;
   stats.generalised += static_cast<std::size_t>(stroke.cells);
   ++(stroke.cls == StrokeClass::factual ? stats.factual_strokes : stats.formulated_strokes);
-  if (sink_) {
+  if (writing_) {
+    writing_->add(std::move(stroke));
+  } else if (sink_) {
     sink_(std::move(stroke));
   } else {
     result_.strokes.push_back(std::move(stroke));
@@ -200,6 +205,7 @@ void BandStitcher::add(BandSketch&& band) {
   order_ = std::move(band.out);
   next_first_ = band.first + band.count;
   if (drawing_) hand_to_drawing();
+  if (writing_) writing_->flush();
 }
 
 void BandStitcher::add(BandSketch&& band, const SketchAgain& again) {
@@ -238,6 +244,7 @@ SilhouetteResult BandStitcher::finish(std::size_t profiles) {
     drawing_->finish();
     for (std::size_t c = 0; c < 2; ++c) keep_drawn_groups(c, nullptr);
   }
+  if (writing_) writing_->finish();
   std::vector<Stroke>& strokes = result_.strokes;
   // Factual first, then formulated, each in the order of the scan.
   if (drawing_) {

@@ -164,7 +164,9 @@ class BandStitcher {
   std::deque<DrawnGroup> drawn_[2];
   std::deque<PieceKey> piece_keys_[2];
   std::size_t first_key_[2] = {0, 0};
-  // Declared last: stopped before what it delivers to goes.
+  // Declared last: stopped before what they deliver to goes. Exact strokes with a sink are
+  // written on a thread of their own.
+  std::unique_ptr<HandOff<Stroke>> writing_;
   std::unique_ptr<DrawingPipeline> drawing_;
 };
 
