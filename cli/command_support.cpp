@@ -23,6 +23,10 @@ SilhouetteResult sketch_whole(const Options& o, const io::HeldDemFile& dem,
   return result;
 }
 
+std::string dem_name(const Options& o) {
+  return std::filesystem::path(o.input).filename().string();
+}
+
 void print_filter(const FilterReport& r, std::ostream& err) {
   if (r.choice.mode == FilterMode::fixed) return;
   const FilterParams& c = r.cutoffs;

@@ -21,6 +21,9 @@ SilhouetteResult sketch_whole(const Options& o, const io::HeldDemFile& dem,
 // Tells on `err` which cut-offs an adaptive filter chose, and why.
 void print_filter(const FilterReport& report, std::ostream& err);
 
+// The DEM as the outputs' notes name it: its file's name.
+std::string dem_name(const Options& o);
+
 // The stage statistics and the filter used as a JSON object (--stats-json).
 std::string stats_json(const StageStats& s, const FilterReport& filter);
 

@@ -49,8 +49,9 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaRun& run,
                    std::ostream& err) {
   const PanoramaResult& result = run.result;
   const std::vector<PeakLeader>* peaks = o.peaks.empty() ? nullptr : &leaders;
-  io::write_panorama_strokes(o.output, o.format, result.strokes, dem.srs_wkt, peaks,
-                             run.exaggeration);
+  io::write_panorama_strokes(
+      o.output, o.format, result.strokes, dem.srs_wkt, peaks, run.exaggeration,
+      panorama_note(dem_name(o), o.dem.band, o.panorama, run.exaggeration, TSK_VERSION));
   err << "note: the panorama layer draws its elevation angles " << run.exaggeration
       << " times as tall as its azimuths are wide (--panorama-exaggeration)\n";
   stop_if_interrupted();

@@ -5,6 +5,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/interrupt.h"
+#include "core/method/run_note.h"
 #include "io/write/vector_writer.h"
 
 namespace tsk::cli {
@@ -18,7 +19,10 @@ std::string profiles(const Args& args, std::ostream& out, std::ostream& err,
   const auto lines = plot_profiles(held.held(), o.params.view, static_cast<std::size_t>(o.every),
                                    o.params.threads);
   stop_if_interrupted();
-  io::write_profile_lines(o.output, o.format, lines, dem.srs_wkt);
+  io::write_profile_lines(
+      o.output, o.format, lines, dem.srs_wkt,
+      product_note({dem_name(o), o.dem.band, o.params.view, {}, false, TSK_VERSION},
+                   "Profile lines", false));
   out << o.output << ": " << lines.size() << " visible cross-section pieces\n";
   return {};
 }

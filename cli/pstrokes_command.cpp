@@ -6,6 +6,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/interrupt.h"
+#include "core/method/run_note.h"
 #include "io/write/vector_writer.h"
 
 namespace tsk::cli {
@@ -19,7 +20,10 @@ std::string pstrokes(const Args& args, std::ostream& out, std::ostream& err,
   print_filter(run.filter, err);
   const std::vector<PStroke>& strokes = run.strokes;
   stop_if_interrupted();
-  io::write_pstrokes(o.output, o.format, strokes, held.dem.srs_wkt);
+  io::write_pstrokes(
+      o.output, o.format, strokes, held.dem.srs_wkt,
+      product_note({dem_name(o), o.dem.band, o.params.view, run.filter, false, TSK_VERSION},
+                   "P-strokes", true));
   out << o.output << ": " << strokes.size() << " P-strokes\n";
   return {};
 }

@@ -1,7 +1,6 @@
 // terrain-sketch silhouettes: the strokes, written as they complete.
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -45,8 +44,8 @@ io::PlotterReport write_preview(const Options& o, SilhouetteResult& result,
 
 // The run in a sentence, for the outputs' metadata.
 std::string note_of(const Options& o, const FilterReport& filter) {
-  return run_note({std::filesystem::path(o.input).filename().string(), o.dem.band, o.params.view,
-                   filter, o.params.strokes.drawn(), TSK_VERSION});
+  return run_note(
+      {dem_name(o), o.dem.band, o.params.view, filter, o.params.strokes.drawn(), TSK_VERSION});
 }
 
 // The DEM of a run: held whole once for a preview, which draws over it too (refused when too

@@ -300,3 +300,49 @@ TEST_CASE("the strokes and the vector art record the run that made them", "[cli]
   REQUIRE(description != nullptr);
   CHECK_THAT(std::string(description), Catch::Contains(expected));
 }
+
+TEST_CASE("the P-strokes, profile lines and panorama record the run that made them",
+          "[cli][preview]") {
+  ScratchDir dir("product_notes");
+  REQUIRE(run_cli({"pstrokes", kSample, dir / "p.gpkg", "--azimuth", "250", "--filter", "fixed"})
+              .code == 0);
+  REQUIRE(run_cli({"profiles", kSample, dir / "l.gpkg", "--azimuth", "200", "--ve", "3"}).code ==
+          0);
+  REQUIRE(run_cli({"panorama", kSample, dir / "v.gpkg", "--observer", "749008.1394,4009477.9308",
+                   "--observer-height", "2", "--azimuth-from", "300", "--azimuth-to", "30",
+                   "--panorama-exaggeration", "3"})
+              .code == 0);
+  // Every layer's description (gpkg_contents), as GDAL reads it.
+  const auto descriptions = [](const std::string& path) {
+    GDALAllRegister();
+    tsk::io::DatasetPtr ds(static_cast<GDALDataset*>(
+        GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    std::vector<std::string> found;
+    for (OGRLayer* layer : ds->GetLayers()) {
+      const char* description = layer->GetMetadataItem("DESCRIPTION");
+      found.push_back(description ? description : "");
+    }
+    return found;
+  };
+  const std::vector<std::string> pstrokes = descriptions(dir / "p.gpkg");
+  REQUIRE(pstrokes.size() == 1);
+  CHECK_THAT(pstrokes[0],
+             Catch::StartsWith("jacksboro_utm16n.tif, band 1. P-strokes seen from 250\xc2\xb0 "
+                               "(azimuth), vertical exaggeration 2.5, base slope 40 %; the "
+                               "thesis's slope filter: row 20 %, column 12 %, control point 8.75 "
+                               "%. Terrain Sketch "));
+  const std::vector<std::string> profiles = descriptions(dir / "l.gpkg");
+  REQUIRE(profiles.size() == 1);
+  CHECK_THAT(profiles[0],
+             Catch::StartsWith("jacksboro_utm16n.tif, band 1. Profile lines seen from "
+                               "200\xc2\xb0 (azimuth), vertical exaggeration 3, base slope 40 %. "
+                               "Terrain Sketch "));
+  const std::vector<std::string> panorama = descriptions(dir / "v.gpkg");
+  REQUIRE(panorama.size() == 2);  // the map and the panorama layer
+  for (const std::string& description : panorama)
+    CHECK_THAT(description,
+               Catch::StartsWith("jacksboro_utm16n.tif, band 1. Panorama seen from 749008, "
+                                 "4009478, 2 m above the ground, from 300\xc2\xb0 to 30\xc2\xb0 "
+                                 "(azimuths from grid north); elevation angles drawn 3 times as "
+                                 "tall as azimuths are wide. Terrain Sketch "));
+}

@@ -24,4 +24,10 @@ struct RunFacts {
 // strokes. Terrain Sketch 0.1.0."
 std::string run_note(const RunFacts& facts);
 
+// The same for another product of the view (`product`: "P-strokes", "Profile lines"), without the
+// strokes' mode, and without the filter unless `with_filter`: "jacksboro_utm16n.tif, band 1.
+// P-strokes seen from 250° (azimuth), vertical exaggeration 2.5, base slope 40 %; the slope filter
+// adapted to the DEM: row 20 %, column 12 %, control point 8.73 %. Terrain Sketch 0.1.0."
+std::string product_note(const RunFacts& facts, const std::string& product, bool with_filter);
+
 }  // namespace tsk

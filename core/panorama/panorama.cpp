@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 
 #include "core/base/errors.h"
 #include "core/method/profile_stages.h"
@@ -146,6 +148,18 @@ double panorama_exaggeration(const PanoramaResult& result, double asked) {
 std::vector<StrokePoint> exaggerated(std::vector<StrokePoint> view, double exaggeration) {
   for (StrokePoint& p : view) p.y *= exaggeration;
   return view;
+}
+
+std::string panorama_note(const std::string& dem, int band, const PanoramaView& view,
+                          double exaggeration, const std::string& version) {
+  std::ostringstream note;
+  note << std::fixed << std::setprecision(0) << dem << ", band " << band << ". Panorama seen from "
+       << view.observer_x << ", " << view.observer_y << ", " << std::defaultfloat
+       << std::setprecision(4) << view.observer_height << " m above the ground, from "
+       << view.azimuth_from << "\xc2\xb0 to " << view.azimuth_to
+       << "\xc2\xb0 (azimuths from grid north); elevation angles drawn " << exaggeration
+       << " times as tall as azimuths are wide. Terrain Sketch " << version << ".";
+  return note.str();
 }
 
 }  // namespace tsk

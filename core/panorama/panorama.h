@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/base/parallel.h"
@@ -49,6 +50,13 @@ PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotra
 // span of elevation an eighth as tall as the field of view is wide, from 1 to 5 times (a field of
 // 360 degrees spans some 6 degrees of elevation: a flat strip drawn true).
 double panorama_exaggeration(const PanoramaResult& result, double asked);
+
+// A panorama's run in one sentence, for what its outputs record of it: "jacksboro_utm16n.tif,
+// band 1. Panorama seen from 749008, 4009478, 2 m above the ground, from 300° to 30° (azimuths
+// from grid north); elevation angles drawn 2.41 times as tall as azimuths are wide. Terrain
+// Sketch 0.1.0."
+std::string panorama_note(const std::string& dem, int band, const PanoramaView& view,
+                          double exaggeration, const std::string& version);
 // Points of the panorama (x azimuth, y elevation angle) with their elevation `exaggeration` times.
 std::vector<StrokePoint> exaggerated(std::vector<StrokePoint> view, double exaggeration);
 

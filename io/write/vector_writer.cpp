@@ -348,33 +348,50 @@ void write_strokes(const std::string& path, const std::string& format,
       layer_name, weighted);
 }
 
+namespace {
+
+// The layers' description (a database's), when there is one.
+std::function<std::string()> described(const std::string& description) {
+  if (description.empty()) return {};
+  return [description] { return description; };
+}
+
+}  // namespace
+
 void write_profile_lines(const std::string& path, const std::string& format,
-                         const std::vector<ProfileLine>& lines, const std::string& srs_wkt) {
-  write_line_layer(path, format, srs_wkt, kProfileLayer,
-                   {{"section", OFTInteger}, {"distance", OFTReal}}, [&](LineOutput& output) {
-                     for (const ProfileLine& line : lines) {
-                       output.set(0, static_cast<std::int64_t>(line.cross_section));
-                       output.set(1, line.distance);
-                       output.add(line.points);
-                     }
-                   });
+                         const std::vector<ProfileLine>& lines, const std::string& srs_wkt,
+                         const std::string& description) {
+  write_line_layer(
+      path, format, srs_wkt, kProfileLayer, {{"section", OFTInteger}, {"distance", OFTReal}},
+      [&](LineOutput& output) {
+        for (const ProfileLine& line : lines) {
+          output.set(0, static_cast<std::int64_t>(line.cross_section));
+          output.set(1, line.distance);
+          output.add(line.points);
+        }
+      },
+      false, described(description));
 }
 
 void write_pstrokes(const std::string& path, const std::string& format,
-                    const std::vector<PStroke>& strokes, const std::string& srs_wkt) {
-  write_line_layer(path, format, srs_wkt, kPStrokeLayer,
-                   {{"class", OFTString}, {"score_m2", OFTReal}}, [&](LineOutput& output) {
-                     for (const PStroke& s : strokes) {
-                       output.set(0, pstroke_class_name(s.cls));
-                       output.set(1, s.score_m2);
-                       output.add(s.points);
-                     }
-                   });
+                    const std::vector<PStroke>& strokes, const std::string& srs_wkt,
+                    const std::string& description) {
+  write_line_layer(
+      path, format, srs_wkt, kPStrokeLayer, {{"class", OFTString}, {"score_m2", OFTReal}},
+      [&](LineOutput& output) {
+        for (const PStroke& s : strokes) {
+          output.set(0, pstroke_class_name(s.cls));
+          output.set(1, s.score_m2);
+          output.add(s.points);
+        }
+      },
+      false, described(description));
 }
 
 void write_panorama_strokes(const std::string& path, const std::string& format,
                             const std::vector<PanoramaStroke>& strokes, const std::string& srs_wkt,
-                            const std::vector<PeakLeader>* peaks, double exaggeration) {
+                            const std::vector<PeakLeader>* peaks, double exaggeration,
+                            const std::string& description) {
   std::vector<Field> fields = stroke_fields();
   const int azimuth_field = static_cast<int>(fields.size());
   fields.push_back({"azimuth_min", OFTReal});
@@ -409,7 +426,7 @@ void write_panorama_strokes(const std::string& path, const std::string& format,
          {{"name", OFTString}, {"distance", OFTReal}, {"azimuth", OFTReal}, {"elevation", OFTReal}},
          add_peaks});
   }
-  write_line_layers(path, format, layers);
+  write_line_layers(path, format, layers, described(description));
 }
 
 }  // namespace tsk::io

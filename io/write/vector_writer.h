@@ -53,11 +53,13 @@ void write_strokes(const std::string& path, const std::string& format,
 
 // Writes profile-plot lines (fields: section, distance) to `path`, whole or not at all.
 void write_profile_lines(const std::string& path, const std::string& format,
-                         const std::vector<ProfileLine>& lines, const std::string& srs_wkt);
+                         const std::vector<ProfileLine>& lines, const std::string& srs_wkt,
+                         const std::string& description = {});
 
 // Writes P-strokes (fields: class, score_m2) to `path`, whole or not at all.
 void write_pstrokes(const std::string& path, const std::string& format,
-                    const std::vector<PStroke>& strokes, const std::string& srs_wkt);
+                    const std::vector<PStroke>& strokes, const std::string& srs_wkt,
+                    const std::string& description = {});
 
 // Writes a panorama's strokes to `path`, whole or not at all, in two layers: `map`, in the DEM's
 // CRS (WKT, may be empty), and `panorama`, without a CRS, x the azimuth and y the elevation angle
@@ -68,6 +70,6 @@ void write_pstrokes(const std::string& path, const std::string& format,
 void write_panorama_strokes(const std::string& path, const std::string& format,
                             const std::vector<PanoramaStroke>& strokes, const std::string& srs_wkt,
                             const std::vector<PeakLeader>* peaks = nullptr,
-                            double exaggeration = 1.0);
+                            double exaggeration = 1.0, const std::string& description = {});
 
 }  // namespace tsk::io
