@@ -16,6 +16,12 @@ std::string quoted_literal(const std::string& text) {
   return out + "'";
 }
 
+std::string insert_rows_sql(const std::string& into, const std::string& row, std::size_t rows) {
+  std::string sql = into;
+  for (std::size_t k = 0; k < rows; ++k) sql += (k ? ", " : "") + row;
+  return sql;
+}
+
 Connection::Connection(GDALDataset& dataset, std::string what)
     : db_(static_cast<sqlite3*>(dataset.GetInternalHandle("SQLITE_HANDLE"))),
       what_(std::move(what)) {

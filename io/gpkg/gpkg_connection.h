@@ -6,6 +6,7 @@
 #include <gdal_priv.h>
 #include <sqlite3.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -17,6 +18,14 @@ namespace tsk::io::gpkg {
 // `name` as an SQL identifier or string literal, its quotes doubled.
 std::string quoted_identifier(const std::string& name);
 std::string quoted_literal(const std::string& text);
+
+// The most values a statement may bind: SQLite's limit before release 3.32.
+constexpr std::size_t kMostBoundValues = 999;
+
+// One statement inserting `rows` rows: `into` ("INSERT INTO t (a, b) VALUES ") and `row` ("(?, ?)")
+// that many times. SQLite's work per statement (and per AUTOINCREMENT key) is then shared by the
+// rows.
+std::string insert_rows_sql(const std::string& into, const std::string& row, std::size_t rows);
 
 class Connection {
  public:

@@ -33,28 +33,22 @@ void append(std::vector<unsigned char>& out, T value) {
 
 }  // namespace
 
-// Rows inserted by one statement, within the 999 values SQLite takes before release 3.32.
-constexpr std::size_t kRowsPerInsert = 64, kMostValues = 999;
+// Rows inserted by one statement (gpkg::insert_rows_sql), fewer when a row binds many values.
+constexpr std::size_t kRowsPerInsert = 64;
 
-// The connection and the statements that insert rows.
+// The connection and the statement that inserts a full batch of rows (prepared on the connection,
+// so declared after it).
 class GpkgLineAppender::Rows {
  public:
   // `into`: "INSERT INTO table (columns) VALUES "; `row`: a row's "(?, ...)".
-  Rows(GDALDataset& dataset, std::string into, std::string row, std::size_t rows)
-      : db(dataset, kWhat), into_(std::move(into)), row_(std::move(row)), many(db, sql(rows)) {}
-  // The statement inserting `rows` rows.
-  std::string sql(std::size_t rows) const {
-    std::string text = into_;
-    for (std::size_t k = 0; k < rows; ++k) text += (k ? ", " : "") + row_;
-    return text;
-  }
+  Rows(GDALDataset& dataset, std::string into_sql, std::string row_sql, std::size_t rows)
+      : db(dataset, kWhat),
+        into(std::move(into_sql)),
+        row(std::move(row_sql)),
+        many(db, gpkg::insert_rows_sql(into, row, rows)) {}
   Connection db;
-
- private:
-  std::string into_, row_;
-
- public:
-  Connection::Statement many;  // a full batch of rows
+  std::string into, row;
+  Connection::Statement many;
 };
 
 GpkgLineAppender::GpkgLineAppender(GDALDataset& dataset, const std::string& table)
@@ -75,7 +69,7 @@ GpkgLineAppender::GpkgLineAppender(GDALDataset& dataset, const std::string& tabl
     row += ", ?";
   }
   const std::size_t rows =
-      std::max<std::size_t>(1, std::min(kRowsPerInsert, kMostValues / (fields_ + 2)));
+      std::max<std::size_t>(1, std::min(kRowsPerInsert, gpkg::kMostBoundValues / (fields_ + 2)));
   rows_ = std::make_unique<Rows>(
       dataset, "INSERT INTO " + quoted_identifier(table) + " (" + columns + ") VALUES ", row + ")",
       rows);
@@ -179,7 +173,8 @@ void GpkgLineAppender::insert_waiting() {
   // A last batch short of full has a statement of its own.
   std::unique_ptr<Connection::Statement> short_batch;
   if (waiting_count_ < waiting_.size())
-    short_batch = std::make_unique<Connection::Statement>(rows_->db, rows_->sql(waiting_count_));
+    short_batch = std::make_unique<Connection::Statement>(
+        rows_->db, gpkg::insert_rows_sql(rows_->into, rows_->row, waiting_count_));
   Connection::Statement& insert = short_batch ? *short_batch : rows_->many;
   int at = 1;
   std::int64_t id = next_id_ - static_cast<std::int64_t>(waiting_count_);
