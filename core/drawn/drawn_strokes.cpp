@@ -70,12 +70,18 @@ void finish_stroke(Stroke& stroke, const DrawingSetup& setup) {
 }  // namespace
 
 StrokeDrawer::StrokeDrawer(const DrawingSetup& setup)
-    : setup_(setup),
-      rule_{setup.drawn.join_gap_cells * setup.cell, setup.drawn.join_angle_deg},
-      groups_(rule_) {}
+    : setup_(setup), rule_(join_rule(setup)), groups_(rule_) {}
 
 double longest_step(const DrawingSetup& setup) {
   return kLeapCells * setup.cell;
+}
+
+JoinRule join_rule(const DrawingSetup& setup) {
+  return {setup.drawn.join_gap_cells * setup.cell, setup.drawn.join_angle_deg};
+}
+
+double join_reach_profiles(const DrawingSetup& setup) {
+  return join_rule(setup).gap / std::max(setup.across, 1e-300) + 1.0;
 }
 
 double StrokeDrawer::longest_step() const {
@@ -92,7 +98,7 @@ void StrokeDrawer::add(Stroke&& piece) {
 StrokeGroups StrokeDrawer::take_settled(double frontier) {
   // Groups are taken in the order of their first pieces, up to the first one still open to
   // pieces to come: its ends must lie farther than the gap from the frontier.
-  const double settled_before = frontier - rule_.gap / std::max(setup_.across, 1e-300) - 1.0;
+  const double settled_before = frontier - join_reach_profiles(setup_);
   StrokeGroups groups;
   while (!pending_.empty()) {
     const std::size_t first = first_pending_;

@@ -49,6 +49,12 @@ DrawingSetup drawing_setup(const OrientedFrame& frame, const GeoTransform& geotr
 // (StrokeBuilder::drawn_pieces).
 double longest_step(const DrawingSetup& setup);
 
+// How the pieces of a run join, in map units.
+JoinRule join_rule(const DrawingSetup& setup);
+// How many profiles apart two ends may lie and still join: the join gap across the profiles,
+// and one profile more.
+double join_reach_profiles(const DrawingSetup& setup);
+
 // Groups of pieces taken to draw: their pieces one group after another.
 struct StrokeGroups {
   std::vector<Stroke> pieces;

@@ -51,10 +51,8 @@ std::vector<std::size_t> pieces_in_order(const BandSketch& sketch, StrokeClass c
   for (std::size_t k = 0; k < sketch.strokes.size(); ++k)
     if (sketch.strokes[k].cls == cls && sketch.strokes[k].cells >= kLeastDrawnCells)
       order.push_back(k);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const StrokeKey &x = sketch.keys[a], &y = sketch.keys[b];
-    return x.p != y.p ? x.p < y.p : x.i != y.i ? x.i < y.i : x.piece < y.piece;
-  });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return sketch.keys[a] < sketch.keys[b]; });
   return order;
 }
 
@@ -63,16 +61,15 @@ std::vector<std::size_t> pieces_in_order(const BandSketch& sketch, StrokeClass c
 std::vector<char> group_pieces(const BandSketch& sketch, StrokeClass cls,
                                const std::vector<std::size_t>& order, const DrawingSetup& setup,
                                std::size_t profiles, StrokeGrouper& grouper) {
-  const double gap = setup.drawn.join_gap_cells * setup.cell;
   // An end on profile p may meet an end of another band's profile only this many profiles away.
-  const double reach = gap / std::max(setup.across, 1e-300) + 1.0;
+  const double reach = join_reach_profiles(setup);
   const bool before = sketch.first > 0, after = sketch.first + sketch.count < profiles;
   const auto near_edge = [&](std::int32_t p) {
     const double q = static_cast<double>(p);
     return (before && q - (static_cast<double>(sketch.first) - 1.0) <= reach) ||
            (after && static_cast<double>(sketch.first + sketch.count) - q <= reach);
   };
-  const CrossingCells crossing(sketch.pieces, cls, gap);
+  const CrossingCells crossing(sketch.pieces, cls, join_rule(setup).gap);
   std::vector<char> open(order.size(), 0);
   for (std::size_t n = 0; n < order.size(); ++n) {
     const Stroke& piece = sketch.strokes[order[n]];
@@ -93,7 +90,7 @@ void draw_class(BandSketch& sketch, const DrawingSetup& setup, std::size_t profi
   for (std::size_t k = 0; k < sketch.strokes.size(); ++k)
     if (sketch.strokes[k].cls == cls && sketch.strokes[k].cells < kLeastDrawnCells) taken[k] = 1;
   const std::vector<std::size_t> order = pieces_in_order(sketch, cls);
-  const JoinRule rule{setup.drawn.join_gap_cells * setup.cell, setup.drawn.join_angle_deg};
+  const JoinRule rule = join_rule(setup);
   // Without a gap nothing joins: every piece is a group of its own that no band can reach.
   const bool joins = rule.gap > 0.0;
   std::optional<StrokeGrouper> grouper;

@@ -81,7 +81,7 @@ void BandStitcher::queue_drawn_groups(std::vector<DrawnGroup>& groups) {
   const std::lock_guard<std::mutex> lock(drawn_mutex_);
   for (DrawnGroup& group : groups) {
     std::deque<DrawnGroup>& queued = drawn_[class_index(group.cls)];
-    if (!queued.empty() && !(piece_key(queued.back().key) < piece_key(group.key)))
+    if (!queued.empty() && !(queued.back().key < group.key))
       throw Error("a band's drawn groups are not in the order of the scan");
     queued.push_back(std::move(group));
   }

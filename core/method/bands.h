@@ -17,6 +17,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/drawn/drawing_pipeline.h"
@@ -62,6 +63,10 @@ struct BandPiece {
 struct StrokeKey {
   std::int32_t p = 0, i = 0;
   std::uint32_t piece = 0;
+  // SPEC 1.7's order: the chain's first cell (profile, then front to back), then the piece.
+  bool operator<(const StrokeKey& o) const {
+    return std::tie(p, i, piece) < std::tie(o.p, o.i, o.piece);
+  }
 };
 
 // A group of drawn pieces that no piece of another band can join, drawn by its band: its strokes
