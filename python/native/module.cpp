@@ -102,10 +102,13 @@ py::dict sketch(const py::array& heights, const py::object& geotransform, const 
 }
 
 // Runs `work` as a run from Python without hooks: the GIL released, errors raised as Python's.
+// Returns what `work` returns.
 template <typename Work>
-void quietly(Work&& work) {
+auto quietly(Work&& work) {
+  decltype(work()) result{};
   run_from_python(RunHooks{py::none(), py::none(), false},
-                  [&](const ProgressFn&, std::ostream&) { work(); });
+                  [&](const ProgressFn&, std::ostream&) { result = work(); });
+  return result;
 }
 
 py::dict plan_run_in_bands(const std::string& input, const std::string& output,
@@ -125,52 +128,39 @@ py::dict plan_run_in_bands(const std::string& input, const std::string& output,
 
 // The adaptive filter's survey in parts (survey_parts.h).
 std::vector<SurveyWindow> windows_of_survey(const std::string& input, const Strings& options) {
-  std::vector<SurveyWindow> windows;
-  quietly([&] { windows = survey_windows_of(input, options); });
-  return windows;
+  return quietly([&] { return survey_windows_of(input, options); });
 }
 
 py::bytes heights_of_survey(const std::string& input, const Strings& options,
                             const std::vector<SurveyWindow>& windows) {
-  std::string part;
-  quietly([&] { part = survey_heights_part(input, options, windows); });
-  return py::bytes(part);
+  return py::bytes(quietly([&] { return survey_heights_part(input, options, windows); }));
 }
 
 py::bytes merge_survey_heights(const Strings& parts) {
-  std::string merged;
-  quietly([&] { merged = merge_height_parts(parts); });
-  return py::bytes(merged);
+  return py::bytes(quietly([&] { return merge_height_parts(parts); }));
 }
 
 py::bytes slopes_of_survey(const std::string& input, const Strings& options,
                            const std::vector<SurveyWindow>& windows, const std::string& heights) {
-  std::string part;
-  quietly([&] { part = survey_slopes_part(input, options, windows, heights); });
-  return py::bytes(part);
+  return py::bytes(quietly([&] { return survey_slopes_part(input, options, windows, heights); }));
 }
 
 py::bytes filter_from_survey(const Strings& options, const std::string& heights,
                              const Strings& slopes) {
-  std::string filter;
-  quietly([&] { filter = filter_of_survey(options, heights, slopes); });
-  return py::bytes(filter);
+  return py::bytes(quietly([&] { return filter_of_survey(options, heights, slopes); }));
 }
 
 py::bytes sketch_one_band(const std::string& input, const Strings& options,
                           const std::string& filter, double z_ref, std::size_t first,
                           std::size_t count, std::size_t halo, const std::string& order) {
-  std::string band;
-  quietly(
-      [&] { band = sketch_band_bytes(input, options, filter, z_ref, first, count, halo, order); });
-  return py::bytes(band);
+  return py::bytes(quietly(
+      [&] { return sketch_band_bytes(input, options, filter, z_ref, first, count, halo, order); }));
 }
 
 // What a band's bytes hold: its strokes, and the pieces of chains crossing its edges with their
 // cells and the bytes those take (for the benchmark of runs in bands).
 py::dict band_summary(const std::string& bytes) {
-  BandSketch band;
-  quietly([&] { band = band_from_bytes(bytes); });
+  const BandSketch band = quietly([&] { return band_from_bytes(bytes); });
   std::size_t cells = 0;
   for (const BandPiece& piece : band.pieces) cells += piece.cells.size();
   std::size_t drawn = 0;
@@ -188,9 +178,7 @@ py::dict band_summary(const std::string& bytes) {
 
 double lowest_height(const std::string& input, const Strings& options, std::size_t first_row,
                      std::size_t rows) {
-  double lowest = 0.0;
-  quietly([&] { lowest = lowest_height_of(input, options, first_row, rows); });
-  return lowest;
+  return quietly([&] { return lowest_height_of(input, options, first_row, rows); });
 }
 
 // Stitches the bands that `next()` hands back and writes OUTPUT (band_runs.h).
