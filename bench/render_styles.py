@@ -1,12 +1,16 @@
 """Times QGIS drawing drawn strokes (LineString M) with the candidate styles for taper and depth.
 
-    QT_QPA_PLATFORM=offscreen /usr/bin/python3 bench/render_styles.py STROKES.gpkg [SIZE_PX]
+    QT_QPA_PLATFORM=offscreen /usr/bin/python3 bench/render_styles.py STROKES.gpkg [SIZE_PX] \
+        [PLUGIN_DIR]
 
 STROKES.gpkg: the command line's default output (e.g. of the 8000 x 8000 benchmark DEM, about
 100 000 strokes). Each style draws the whole layer at SIZE_PX (default 1600) square; the figure is
 the best of three renderings (one for buffer_by_m, which takes minutes). The plain line is the
-reference: it draws no taper.
+reference: it draws no taper. The drawn style is timed twice: without the plugin (its stepped
+stand-ins draw) and with the plugin from PLUGIN_DIR (default build/qgis-plugin/terrain_sketch)
+loaded (its tapered line layer draws).
 """
+import ctypes
 import os
 import sys
 import time
@@ -20,12 +24,14 @@ from qgis.PyQt.QtGui import QColor
 
 FULL_MM = 0.9
 SCALE_M = "affine_transform($geometry, 0, 0, 0, 1, 1, 0, 0, 1, %g * @map_scale / 1000)" % FULL_MM
-STYLE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "resources", "styles",
-                     "factual_drawn.qml")
-# (name, geometry generator expression or None for a plain line or "style" for the QML, runs)
+HERE = os.path.dirname(os.path.abspath(__file__))
+STYLE = os.path.join(HERE, "..", "resources", "styles", "factual_drawn.qml")
+# (name, geometry generator expression, None for a plain line, "style" for the QML as it is or
+# "plugin" for the QML with the plugin loaded, runs)
 CANDIDATES = [
     ("plain line, no taper (reference)", None, 3),
-    ("the styles: 4 trimmed steps, width by m_max", "style", 3),
+    ("the style without the plugin: 4 stepped lines", "style", 3),
+    ("the style with the plugin: a width at every point", "plugin", 3),
     ("buffer_by_m, 3 segments: a width at every point", "buffer_by_m(%s, 3)" % SCALE_M, 1),
 ]
 
@@ -77,8 +83,13 @@ def main():
     simplify.setSimplifyHints(QgsVectorSimplifyMethod.NoSimplification)
     layer.setSimplifyMethod(simplify)
     print("%d strokes, %d x %d px, QGIS %s" % (layer.featureCount(), size, size, Qgis.version()))
+    plugin_dir = sys.argv[3] if len(sys.argv) > 3 else os.path.join(
+        HERE, "..", "build", "qgis-plugin", "terrain_sketch")
     for name, expression, runs in CANDIDATES:
-        if expression == "style":
+        if expression == "plugin":
+            library = ctypes.CDLL(os.path.join(plugin_dir, "libterrain_sketch_provider.so"))
+            library.terrain_sketch_register_provider()
+        if expression in ("style", "plugin"):
             message, ok = layer.loadNamedStyle(STYLE)
             if not ok:
                 print("cannot load", STYLE, message)

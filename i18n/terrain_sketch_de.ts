@@ -39,27 +39,27 @@
 <context>
     <name>DemViewAlgorithm</name>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="102" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="113" />
         <source>%1 and %2 would both be written to %3, one over the other; choose different files, or save both to one GeoPackage with a layer name each.</source>
         <translation>%1 und %2 würden beide nach %3 geschrieben, eines über das andere; wählen Sie verschiedene Dateien, oder speichern Sie beide in ein GeoPackage mit je einem Layernamen.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="97" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="108" />
         <source>%1 would be written into %2, the file of %3, which this algorithm reads; choose another file.</source>
         <translation>%1 würde in %2 geschrieben, die Datei von %3, die dieser Algorithmus liest; wählen Sie eine andere Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="72" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="82" />
         <source>%1 must be a GeoTIFF (.tif): %2 is another format.</source>
         <translation>%1 muss ein GeoTIFF (.tif) sein: %2 hat ein anderes Format.</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="141" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="152" />
         <source>%1, band %2</source>
         <translation>%1, Band %2</translation>
     </message>
     <message>
-        <location filename="../plugin/dem_view_algorithm.cpp" line="162" />
+        <location filename="../plugin/dem_view_algorithm.cpp" line="173" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -154,17 +154,17 @@
 <context>
     <name>LineOutput</name>
     <message>
-        <location filename="../plugin/line_output.cpp" line="114" />
+        <location filename="../plugin/line_output.cpp" line="115" />
         <source>Internal error: no output set for %1.</source>
         <translation>Interner Fehler: keine Ausgabemenge für %1.</translation>
     </message>
     <message>
-        <location filename="../plugin/line_output.cpp" line="123" />
+        <location filename="../plugin/line_output.cpp" line="124" />
         <source>Waiting for another run writing %1.</source>
         <translation>Warte auf einen anderen Lauf, der %1 schreibt.</translation>
     </message>
     <message>
-        <location filename="../plugin/line_output.cpp" line="243" />
+        <location filename="../plugin/line_output.cpp" line="256" />
         <source>Could not write %1 whole: the file ends cut short. Is the disk full?</source>
         <translation>%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der Datenträger voll?</translation>
     </message>
@@ -361,7 +361,7 @@
     </message>
     <message>
         <location filename="../plugin/panorama_algorithm.cpp" line="114" />
-        <location filename="../plugin/panorama_algorithm.cpp" line="292" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="294" />
         <source>Panorama</source>
         <translation>Panorama</translation>
     </message>
@@ -416,17 +416,17 @@
         <translation>Der Beobachter liegt außerhalb des DGM: einen Punkt darauf wählen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="210" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="209" />
         <source>The peaks have no field '%1' for their names.</source>
         <translation>Die Gipfel haben kein Feld „%1“ für ihre Namen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="268" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="270" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="282" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="284" />
         <source>Seen from %L1, %L2, %L3 m above the ground, from %L4° to %L5° (azimuths from grid north); elevation angles drawn %L6 times as tall as azimuths are wide. Terrain Sketch %7.</source>
         <translation>Gesehen von %L1, %L2, %L3 m über dem Boden, von %L4° bis %L5° (Azimute von Gitternord); Höhenwinkel %L6-mal so hoch gezeichnet, wie Azimute breit sind. Terrain Sketch %7.</translation>
     </message>
@@ -1029,6 +1029,19 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <location filename="../plugin/silhouettes_algorithm.cpp" line="280" />
         <source>the thesis's exact strokes</source>
         <translation>die exakten Striche der Dissertation</translation>
+    </message>
+</context>
+<context>
+    <name>TaperedLine</name>
+    <message>
+        <location filename="../plugin/tapered_line.cpp" line="37" />
+        <source>&lt;h3&gt;terrain_sketch_draws_taper()&lt;/h3&gt;&lt;div&gt;True while the Terrain Sketch plugin is loaded and draws the width of every vertex of drawn strokes. Its styles' stepped lines are enabled only where it is unknown.&lt;/div&gt;</source>
+        <translation>&lt;h3&gt;terrain_sketch_draws_taper()&lt;/h3&gt;&lt;div&gt;Wahr, solange die Erweiterung Terrain Sketch geladen ist und die Breite jedes Stützpunkts gezeichneter Striche zeichnet. Die gestuften Linien ihrer Stile sind nur dort aktiv, wo die Funktion unbekannt ist.&lt;/div&gt;</translation>
+    </message>
+    <message>
+        <location filename="../plugin/tapered_line.cpp" line="174" />
+        <source>Tapered line (Terrain Sketch)</source>
+        <translation>Verjüngte Linie (Terrain Sketch)</translation>
     </message>
 </context>
 <context>

@@ -8,6 +8,9 @@ import sys
 import xml.etree.ElementTree as ET
 
 GERMAN = {
+    "Tapered line (Terrain Sketch)": "Verjüngte Linie (Terrain Sketch)",
+    "<h3>terrain_sketch_draws_taper()</h3><div>True while the Terrain Sketch plugin is loaded and draws the width of every vertex of drawn strokes. Its styles' stepped lines are enabled only where it is unknown.</div>":
+        "<h3>terrain_sketch_draws_taper()</h3><div>Wahr, solange die Erweiterung Terrain Sketch geladen ist und die Breite jedes Stützpunkts gezeichneter Striche zeichnet. Die gestuften Linien ihrer Stile sind nur dort aktiv, wo die Funktion unbekannt ist.</div>",
     "Panorama exaggeration": "Überhöhung des Panoramas",
     "How many times as tall as its azimuths are wide the Panorama layer draws its elevation angles, 1 to 50. 0, the default, chooses up to 5 so that a wide field of view is no flat strip. The Panorama layout draws it so.":
         "Wie viel Mal so hoch, wie seine Azimute breit sind, der Panorama-Layer seine Höhenwinkel zeichnet, 1 bis 50. 0, die Voreinstellung, wählt bis zu 5, damit ein weites Blickfeld kein flacher Streifen ist. Das Panorama-Layout zeichnet es so.",

@@ -7,6 +7,7 @@
 #include <qgsprocessingparameters.h>
 #include <qgsrasterbandstats.h>
 #include <qgsrasterminmaxorigin.h>
+#include <qgssymbollayer.h>
 #include <qgsunittypes.h>
 
 namespace tsk::plugin {
@@ -49,6 +50,16 @@ constexpr auto kCumulativeCut = QgsRasterMinMaxOrigin::CumulativeCut;
 constexpr auto kMetres = Qgis::DistanceUnit::Meters;
 #else
 constexpr auto kMetres = QgsUnitTypes::DistanceMeters;
+#endif
+
+// Symbol layers' data-defined properties, as keys of their property collection (an enum class of
+// QgsSymbolLayer from 3.30).
+#if _QGIS_VERSION_INT >= 33000
+constexpr int kStrokeWidthProperty = static_cast<int>(QgsSymbolLayer::Property::StrokeWidth);
+constexpr int kStrokeColorProperty = static_cast<int>(QgsSymbolLayer::Property::StrokeColor);
+#else
+constexpr int kStrokeWidthProperty = QgsSymbolLayer::PropertyStrokeWidth;
+constexpr int kStrokeColorProperty = QgsSymbolLayer::PropertyStrokeColor;
 #endif
 
 enum class FieldKind { Text, Integer, Real };

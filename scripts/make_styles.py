@@ -1,13 +1,16 @@
 """Regenerates resources/styles/*.qml with QGIS itself, so they load without warnings.
 
-Run with Debian's Python that has the qgis module:
-    QT_QPA_PLATFORM=offscreen /usr/bin/python3 scripts/make_styles.py
+Run with Debian's Python that has the qgis module, after building the plugin (the drawn styles
+hold its tapered line layer):
+    QT_QPA_PLATFORM=offscreen /usr/bin/python3 scripts/make_styles.py [PLUGIN_DIR]
+PLUGIN_DIR defaults to build/qgis-plugin/terrain_sketch.
 """
+import ctypes
 import os
 import sys
 
 from osgeo import gdal
-from qgis.core import (QgsApplication, QgsContrastEnhancement, QgsLineSymbol,
+from qgis.core import (QgsApplication, QgsContrastEnhancement, QgsExpression, QgsLineSymbol,
                        QgsPalettedRasterRenderer, QgsPalLayerSettings, QgsProperty,
                        QgsRasterLayer, QgsTextFormat, QgsVectorLayerSimpleLabeling,
                        QgsSimpleLineSymbolLayer, QgsSingleBandGrayRenderer,
@@ -40,13 +43,17 @@ STYLES = [
 ]
 
 # Drawn strokes (LineString M, M the weight of each point in (0, 1]: its taper times its depth
-# cue). QGIS 3.22 draws a width per point only through buffer_by_m, far too slow for a real DEM's
-# strokes (bench/render_styles.py: minutes for 100 000), so the styles draw the taper as steps:
-# four lines of the stroke, each narrower one running further towards the ends, the widest
-# trimmed to the middle half as the weights' taper (the default --taper 0.25) is. Every step's
-# width is scaled by the stroke's largest weight, its depth cue.
+# cue). The plugin's tapered line layer fills each stroke's outline with the width of its every
+# point. Where the plugin is not loaded, QGIS drops that layer and four stepped stand-ins draw the
+# taper: lines of the stroke, each narrower one running further towards the ends, the widest
+# trimmed to the middle half as the weights' taper (the default --taper 0.25) is, every step's
+# width scaled by the stroke's largest weight, its depth cue. They switch themselves off while
+# the plugin's function terrain_sketch_draws_taper() is known. (QGIS's own buffer_by_m draws a
+# width per point too, but takes minutes for a real DEM's strokes: bench/render_styles.py.)
 DRAWN_STYLES = [("factual_drawn", "17,17,17", 0.7), ("formulated_drawn", "110,62,28", 0.4)]
 TIP_WEIGHT, TAPER, STEPS = 0.15, 0.25, 4
+TAPERED_LINE = "TerrainSketchTaperedLine"
+STAND_IN_ENABLED = "not terrain_sketch_draws_taper()"
 
 
 def taper_steps():
@@ -63,6 +70,11 @@ def taper_steps():
 def drawn_symbol(colour, full_mm):
     symbol = QgsLineSymbol()
     symbol.deleteSymbolLayer(0)
+    tapered = QgsApplication.symbolLayerRegistry().createSymbolLayer(
+        TAPERED_LINE, {"line_color": colour, "line_width": str(full_mm), "line_width_unit": "MM"})
+    if tapered is None:
+        raise RuntimeError("the plugin's tapered line layer is not registered")
+    symbol.appendSymbolLayer(tapered)
     for share, trim in taper_steps():
         line = QgsSimpleLineSymbolLayer(QColor(*map(int, colour.split(","))), full_mm * share)
         line.setPenCapStyle(Qt.RoundCap)
@@ -73,6 +85,8 @@ def drawn_symbol(colour, full_mm):
             unit(QgsUnitTypes.RenderPercentage)
         line.setDataDefinedProperty(QgsSymbolLayer.PropertyStrokeWidth, QgsProperty.fromExpression(
             "%g * coalesce(m_max($geometry), 1)" % (full_mm * share)))
+        line.setDataDefinedProperty(QgsSymbolLayer.PropertyLayerEnabled,
+                                    QgsProperty.fromExpression(STAND_IN_ENABLED))
         symbol.appendSymbolLayer(line)
     return symbol
 
@@ -185,9 +199,19 @@ def raster_styles(tmp):
     save(layer, "row_slope")
 
 
+def register_plugin(plugin_dir):
+    """Loads the built plugin's library so that its tapered line layer can be styled."""
+    library = ctypes.CDLL(os.path.join(plugin_dir, "libterrain_sketch_provider.so"))
+    if not library.terrain_sketch_register_provider() or not QgsExpression.isFunctionName(
+            "terrain_sketch_draws_taper"):
+        raise RuntimeError("could not register the plugin from " + plugin_dir)
+
+
 def main():
     app = QgsApplication([], False)
     app.initQgis()
+    register_plugin(sys.argv[1] if len(sys.argv) > 1 else
+                    os.path.join(HERE, "..", "build", "qgis-plugin", "terrain_sketch"))
     os.makedirs(OUT, exist_ok=True)
     for name, colour, width in STYLES:
         layer = QgsVectorLayer("LineString?crs=EPSG:32616&" + FIELDS, name, "memory")

@@ -48,11 +48,9 @@ def describe(layer):
         symbol = renderer.symbol() if hasattr(renderer, "symbol") else None
         info["features"] = layer.featureCount()
         if symbol is not None:
-            sl = symbol.symbolLayer(0)
-            prop = sl.dataDefinedProperties().property(sl.PropertyStrokeWidth)
             info["colour"] = symbol.color().name()
-            info["width_expression"] = prop.expressionString() if prop.isActive() else None
-            info["symbol_layers"] = symbol.symbolLayerCount()
+            info["symbol_layers"] = [symbol.symbolLayer(k).layerType()
+                                     for k in range(symbol.symbolLayerCount())]
             info["geometry_type"] = QgsWkbTypes.displayString(layer.wkbType())
     elif hasattr(renderer, "contrastEnhancement") and renderer.contrastEnhancement():
         info["ramp_max"] = renderer.contrastEnhancement().maximumValue()
