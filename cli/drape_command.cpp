@@ -1,4 +1,5 @@
 // terrain-sketch drape: a raster on the DEM's grid into plan-oblique space.
+#include <filesystem>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -8,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/interrupt.h"
 #include "core/applications/drape.h"
+#include "core/method/run_note.h"
 #include "io/read/dem_reader.h"
 #include "io/write/raster_writer.h"
 
@@ -26,7 +28,10 @@ std::string drape(const Args& args, std::ostream& out, std::ostream& err,
   std::vector<HeightGrid> bands;
   for (HeightGrid& band : source) bands.push_back(drape.drape(std::move(band)));
   stop_if_interrupted();
-  io::write_float_raster(o.output, bands, drape.geotransform(dem.geotransform), dem.srs_wkt);
+  io::write_float_raster(
+      o.output, bands, drape.geotransform(dem.geotransform), dem.srs_wkt,
+      product_note({dem_name(o), o.dem.band, o.params.view, {}, false, TSK_VERSION},
+                   "A drape of " + std::filesystem::path(o.source).filename().string(), false));
   out << o.output << ": " << bands.size() << " band(s) draped, " << drape.cols() << " x "
       << drape.rows() << " cells\n";
   return {};

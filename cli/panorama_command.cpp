@@ -49,9 +49,10 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaRun& run,
                    std::ostream& err) {
   const PanoramaResult& result = run.result;
   const std::vector<PeakLeader>* peaks = o.peaks.empty() ? nullptr : &leaders;
-  io::write_panorama_strokes(
-      o.output, o.format, result.strokes, dem.srs_wkt, peaks, run.exaggeration,
-      panorama_note(dem_name(o), o.dem.band, o.panorama, run.exaggeration, TSK_VERSION));
+  const std::string note =
+      panorama_note(dem_name(o), o.dem.band, o.panorama, run.exaggeration, TSK_VERSION);
+  io::write_panorama_strokes(o.output, o.format, result.strokes, dem.srs_wkt, peaks,
+                             run.exaggeration, note);
   err << "note: the panorama layer draws its elevation angles " << run.exaggeration
       << " times as tall as its azimuths are wide (--panorama-exaggeration)\n";
   stop_if_interrupted();
@@ -59,7 +60,7 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaRun& run,
     io::write_visibility(
         o.visibility,
         visibility_raster(result, dem.rows, dem.cols, dem.geotransform, o.params.threads),
-        dem.geotransform, dem.srs_wkt);
+        dem.geotransform, dem.srs_wkt, note);
   }
   if (!o.preview.empty()) {
     const io::PanoramaPage page = lay_out_panorama(result, o.params.strokes, o.page, leaders);

@@ -6,6 +6,7 @@
 #include "cli/commands.h"
 #include "cli/interrupt.h"
 #include "core/applications/diagnostics.h"
+#include "core/method/run_note.h"
 #include "io/write/raster_writer.h"
 
 namespace tsk::cli {
@@ -18,7 +19,10 @@ std::string row_slope(const Args& args, std::ostream& out, std::ostream& err,
   const io::Dem& dem = held.dem;
   const HeightGrid slope = row_slope_map(dem.oriented, dem.frame);
   stop_if_interrupted();
-  io::write_float_raster(o.output, {slope}, dem.geotransform, dem.srs_wkt);
+  io::write_float_raster(
+      o.output, {slope}, dem.geotransform, dem.srs_wkt,
+      product_note({dem_name(o), o.dem.band, o.params.view, {}, false, TSK_VERSION}, "Row slope",
+                   false));
   out << o.output << ": row slope in percent across azimuth " << dem.frame.azimuth_deg << "\n";
   return {};
 }

@@ -3,22 +3,23 @@
 <context>
     <name>ClassificationAlgorithm</name>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="19" />
+        <location filename="../plugin/classification_algorithm.cpp" line="20" />
         <source>Silhouette stages (classification raster)</source>
         <translation>Silhouetten-Stufen (Klassifikationsraster)</translation>
     </message>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="23" />
+        <location filename="../plugin/classification_algorithm.cpp" line="24" />
         <source>Shows what the silhouette method does to every cell of the DEM, on the DEM's own grid: 1 visible, 2 hidden, 3 occluding (Factual Silhouette), 4 c-set (back-facing slope brought into view), 5 f-set (kept by the slope filter), 6 t-set (kept by thinning); 0 is nodata. Styled like the thesis's map views: occlusion red, hidden zones blue, c-set light grey, f-set dark grey. The stage statistics are in the results and the log.</source>
         <translation>Zeigt, was das Silhouettenverfahren mit jeder Zelle des DGM macht, auf dem eigenen Gitter des DGM: 1 sichtbar, 2 verdeckt, 3 verdeckend (faktische Silhouette), 4 c-Menge (abgewandter Hang, der sichtbar wird), 5 f-Menge (vom Neigungsfilter behalten), 6 t-Menge (von der Ausdünnung behalten); 0 ist NoData. Gestaltet wie die Kartenansichten der Dissertation: Verdeckung rot, verdeckte Zonen blau, c-Menge hellgrau, f-Menge dunkelgrau. Die Stufenstatistik steht in den Ergebnissen und im Protokoll.</translation>
     </message>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="41" />
+        <location filename="../plugin/classification_algorithm.cpp" line="42" />
+        <location filename="../plugin/classification_algorithm.cpp" line="64" />
         <source>Silhouette stages</source>
         <translation>Silhouetten-Stufen</translation>
     </message>
     <message>
-        <location filename="../plugin/classification_algorithm.cpp" line="42" />
+        <location filename="../plugin/classification_algorithm.cpp" line="43" />
         <source>Byte raster of stage classes on the DEM's grid.</source>
         <translation>Byte-Raster der Stufenklassen auf dem Gitter des DGM.</translation>
     </message>
@@ -67,59 +68,64 @@
 <context>
     <name>DrapeAlgorithm</name>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="28" />
+        <location filename="../plugin/drape_algorithm.cpp" line="29" />
         <source>Drape raster (plan oblique)</source>
         <translation>Raster drapieren (Plan oblique)</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="32" />
+        <location filename="../plugin/drape_algorithm.cpp" line="33" />
         <source>Projects a raster on the DEM's grid (a hillshade, a slope or row slope map, an image; every band) into plan-oblique space: each visible cell moves along the view azimuth by exaggeration / base slope x (height - lowest height), terrain hidden behind nearer terrain is removed and slopes facing the viewer are stretched. The result lies exactly under the plan-oblique silhouettes and the profile plot made with the same view. The raster to drape must have the DEM's size (resample it to the DEM's grid first).</source>
         <translation>Projiziert ein Raster auf dem Gitter des DGM (eine Schummerung, eine Neigungs- oder Zeilenneigungskarte, ein Bild; alle Kanäle) in den Plan-oblique-Raum: jede sichtbare Zelle wird entlang der Blickrichtung um Überhöhung / Grundneigung x (Höhe - niedrigste Höhe) verschoben, hinter näherem Gelände verdecktes Gelände wird entfernt und dem Betrachter zugewandte Hänge werden gedehnt. Das Ergebnis liegt genau unter den Plan-oblique-Silhouetten und der Profildarstellung derselben Ansicht. Das Raster muss die Größe des DGM haben (zuerst auf das Gitter des DGM umtasten).</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="50" />
+        <location filename="../plugin/drape_algorithm.cpp" line="51" />
         <source>Raster to drape</source>
         <translation>Zu drapierendes Raster</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="51" />
+        <location filename="../plugin/drape_algorithm.cpp" line="52" />
         <source>A raster with the DEM's number of rows and columns; all its bands are draped.</source>
         <translation>Ein Raster mit der Zeilen- und Spaltenzahl des DGM; alle seine Kanäle werden drapiert.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="53" />
+        <location filename="../plugin/drape_algorithm.cpp" line="54" />
         <source>Draped raster</source>
         <translation>Drapiertes Raster</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="54" />
+        <location filename="../plugin/drape_algorithm.cpp" line="55" />
         <source>Float32 raster in plan-oblique space, one band per source band.</source>
         <translation>Float32-Raster im Plan-oblique-Raum, ein Kanal je Quellkanal.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="73" />
+        <location filename="../plugin/drape_algorithm.cpp" line="74" />
         <source>The raster to drape has %1 x %2 cells, the DEM %3 x %4: resample it to the DEM's grid first (Raster &gt; Projections &gt; Warp with the DEM's extent and resolution).</source>
         <translation>Das zu drapierende Raster hat %1 x %2 Zellen, das DGM %3 x %4: tasten Sie es zuerst auf das Gitter des DGM um (Raster &gt; Projektionen &gt; Transformieren mit Ausdehnung und Auflösung des DGM).</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="90" />
+        <location filename="../plugin/drape_algorithm.cpp" line="91" />
         <source>The raster to drape covers %1 and the DEM %2: warp it onto the DEM's grid first (Raster &gt; Projections &gt; Warp with the DEM's extent and resolution).</source>
         <translation>Das zu drapierende Raster deckt %1 ab, das DGM %2: transformieren Sie es zuerst auf das Raster des DGM (Raster &gt; Projektionen &gt; Transformieren mit Ausdehnung und Auflösung des DGM).</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="96" />
+        <location filename="../plugin/drape_algorithm.cpp" line="97" />
         <source>The raster to drape is in %1, the DEM in %2: warp it onto the DEM's grid and CRS first.</source>
         <translation>Das zu drapierende Raster liegt in %1, das DGM in %2: transformieren Sie es zuerst auf Raster und KBS des DGM.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="125" />
+        <location filename="../plugin/drape_algorithm.cpp" line="127" />
         <source>Could not read band %1 of the raster to drape.</source>
         <translation>Kanal %1 des zu drapierenden Rasters konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="144" />
+        <location filename="../plugin/drape_algorithm.cpp" line="146" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/drape_algorithm.cpp" line="152" />
+        <source>A drape of %1</source>
+        <translation>Drapierung von %1</translation>
     </message>
 </context>
 <context>
@@ -172,72 +178,73 @@
 <context>
     <name>PStrokeAlgorithm</name>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="19" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="20" />
         <source>P-stroke sketch</source>
         <translation>P-Strich-Skizze</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="23" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="24" />
         <source>Short strokes drawn across the line of sight where the terrain bends (Visvalingam and Dowson 1998). Every profile along the view (column) and across it (row) is scored with Visvalingam's effective-area line generalisation; a visible cell whose convex or concave score reaches its class's tolerance seeds a stroke along the cross-section. Tolerances are effective areas in square metres of the triangles formed by distance (m) and unexaggerated height (m) along the profiles; the defaults are the thesis's sparse sketch of a 50 m DEM. Combined with the silhouettes: no P-stroke is seeded in an f-set cell and none is extended into one.</source>
         <translation>Kurze Striche quer zur Blickrichtung, wo das Gelände knickt (Visvalingam und Dowson 1998). Jedes Profil entlang der Ansicht (Spalte) und quer dazu (Zeile) wird mit Visvalingams Linienvereinfachung nach effektiver Fläche bewertet; eine sichtbare Zelle, deren konvexe oder konkave Bewertung die Toleranz ihrer Klasse erreicht, setzt einen Strich entlang des Querschnitts. Die Toleranzen sind effektive Flächen in Quadratmetern der Dreiecke aus Abstand (m) und nicht überhöhter Höhe (m) entlang der Profile; die Vorgaben sind die der spärlichen Skizze eines 50-m-DGM in der Dissertation. Zusammen mit den Silhouetten: kein P-Strich beginnt in einer Zelle der f-Menge, und keiner wird in eine hinein verlängert.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="46" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="47" />
         <source>Convex column tolerance (m²)</source>
         <translation>Toleranz konvex entlang (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="47" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="48" />
         <source>Effective area a convex bend along the view must reach.</source>
         <translation>Effektive Fläche, die ein konvexer Knick entlang der Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="48" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="49" />
         <source>Concave column tolerance (m²)</source>
         <translation>Toleranz konkav entlang (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="49" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="50" />
         <source>Effective area a concave bend along the view must reach.</source>
         <translation>Effektive Fläche, die ein konkaver Knick entlang der Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="50" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="51" />
         <source>Convex row tolerance (m²)</source>
         <translation>Toleranz konvex quer (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="51" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="52" />
         <source>Effective area a convex bend across the view must reach.</source>
         <translation>Effektive Fläche, die ein konvexer Knick quer zur Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="52" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="53" />
         <source>Concave row tolerance (m²)</source>
         <translation>Toleranz konkav quer (m²)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="53" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="54" />
         <source>Effective area a concave bend across the view must reach.</source>
         <translation>Effektive Fläche, die ein konkaver Knick quer zur Ansicht erreichen muss.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="55" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="56" />
         <source>Stroke half length (cells)</source>
         <translation>Halbe Strichlänge (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="57" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="58" />
         <source>Cells drawn on each side of a seed along the cross-section.</source>
         <translation>Zellen, die auf jeder Seite eines Startpunkts entlang des Querschnitts gezeichnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="60" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="61" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="90" />
         <source>P-strokes</source>
         <translation>P-Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/pstroke_algorithm.cpp" line="61" />
+        <location filename="../plugin/pstroke_algorithm.cpp" line="62" />
         <source>P-strokes as lines with their class and score.</source>
         <translation>P-Striche als Linien mit ihrer Klasse und Bewertung.</translation>
     </message>
@@ -361,7 +368,7 @@
     </message>
     <message>
         <location filename="../plugin/panorama_algorithm.cpp" line="114" />
-        <location filename="../plugin/panorama_algorithm.cpp" line="294" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="298" />
         <source>Panorama</source>
         <translation>Panorama</translation>
     </message>
@@ -421,14 +428,14 @@
         <translation>Die Gipfel haben kein Feld „%1“ für ihre Namen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="270" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="271" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="284" />
-        <source>Seen from %L1, %L2, %L3 m above the ground, from %L4° to %L5° (azimuths from grid north); elevation angles drawn %L6 times as tall as azimuths are wide. Terrain Sketch %7.</source>
-        <translation>Gesehen von %L1, %L2, %L3 m über dem Boden, von %L4° bis %L5° (Azimute von Gitternord); Höhenwinkel %L6-mal so hoch gezeichnet, wie Azimute breit sind. Terrain Sketch %7.</translation>
+        <location filename="../plugin/panorama_algorithm.cpp" line="283" />
+        <source>%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from grid north); elevation angles drawn %L7 times as tall as azimuths are wide. Terrain Sketch %8.</source>
+        <translation>%1. Gesehen von %L2, %L3, %L4 m über dem Boden, von %L5° bis %L6° (Azimute von Gitternord); Höhenwinkel %L7-mal so hoch gezeichnet, wie Azimute breit sind. Terrain Sketch %8.</translation>
     </message>
 </context>
 <context>
@@ -442,34 +449,39 @@
 <context>
     <name>ProfilePlotAlgorithm</name>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="18" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="19" />
         <source>Profile plot (ridgelines)</source>
         <translation>Profildarstellung (Kammlinien)</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="22" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="23" />
         <source>Draws every n-th cross-section across the line of sight as it appears in the oblique view: in plan-oblique geometry (each point moved along the view azimuth by exaggeration / base slope x (height - lowest height)), with the parts hidden behind nearer terrain removed. The classic ridgeline sketch; it overlays the plan-oblique silhouettes exactly. Each line carries its cross-section number and its distance from the front of the view.</source>
         <translation>Zeichnet jeden n-ten Querschnitt quer zur Blickrichtung so, wie er in der Schrägansicht erscheint: in Plan-oblique-Geometrie (jeder Punkt entlang der Blickrichtung um Überhöhung / Grundneigung x (Höhe - niedrigste Höhe) verschoben), ohne die hinter näherem Gelände verdeckten Teile. Die klassische Kammlinienskizze; sie deckt sich genau mit den Plan-oblique-Silhouetten. Jede Linie trägt die Nummer ihres Querschnitts und ihren Abstand vom vorderen Bildrand.</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="39" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="40" />
         <source>Every n-th cross-section</source>
         <translation>Jeder n-te Querschnitt</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="41" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="42" />
         <source>Distance between drawn cross-sections, in cells along the line of sight.</source>
         <translation>Abstand der gezeichneten Querschnitte in Zellen entlang der Blickrichtung.</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="42" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="43" />
         <source>Profile plot</source>
         <translation>Profildarstellung</translation>
     </message>
     <message>
-        <location filename="../plugin/profile_plot_algorithm.cpp" line="44" />
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="45" />
         <source>Visible pieces of the cross-sections as lines.</source>
         <translation>Sichtbare Teile der Querschnitte als Linien.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/profile_plot_algorithm.cpp" line="77" />
+        <source>Profile lines</source>
+        <translation>Profillinien</translation>
     </message>
 </context>
 <context>
@@ -571,22 +583,23 @@
 <context>
     <name>RowSlopeAlgorithm</name>
     <message>
-        <location filename="../plugin/row_slope_algorithm.cpp" line="16" />
+        <location filename="../plugin/row_slope_algorithm.cpp" line="17" />
         <source>Row slope map</source>
         <translation>Karte der Zeilenneigung</translation>
     </message>
     <message>
-        <location filename="../plugin/row_slope_algorithm.cpp" line="20" />
+        <location filename="../plugin/row_slope_algorithm.cpp" line="21" />
         <source>The magnitude of the slope across the line of sight, in percent, on the DEM's grid (central differences across the view). Styled light where the terrain is flat across the view and dark where it is steep, the backdrop the thesis uses under its silhouettes. Only the azimuth matters.</source>
         <translation>Der Betrag der Neigung quer zur Blickrichtung in Prozent auf dem Gitter des DGM (zentrale Differenzen quer zur Ansicht). Hell, wo das Gelände quer zur Ansicht flach ist, dunkel, wo es steil ist: der Hintergrund, den die Dissertation unter ihre Silhouetten legt. Nur die Blickrichtung zählt.</translation>
     </message>
     <message>
-        <location filename="../plugin/row_slope_algorithm.cpp" line="35" />
+        <location filename="../plugin/row_slope_algorithm.cpp" line="36" />
+        <location filename="../plugin/row_slope_algorithm.cpp" line="52" />
         <source>Row slope</source>
         <translation>Zeilenneigung</translation>
     </message>
     <message>
-        <location filename="../plugin/row_slope_algorithm.cpp" line="36" />
+        <location filename="../plugin/row_slope_algorithm.cpp" line="37" />
         <source>Float32 raster of |row slope| in percent.</source>
         <translation>Float32-Raster der |Zeilenneigung| in Prozent.</translation>
     </message>
@@ -787,22 +800,22 @@
 <context>
     <name>SilhouettesAlgorithm</name>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="48" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="49" />
         <source>Silhouettes (factual and formulated)</source>
         <translation>Silhouetten (faktisch und formuliert)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="52" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="53" />
         <source>silhouette,occluding contour,sketch,oblique,panorama,block diagram,plan oblique,terrain,dem,hidden</source>
         <translation>Silhouette,Verdeckungskontur,Skizze,Schrägansicht,Panorama,Blockbild,Plan oblique,Gelände,DGM,verdeckt</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="58" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="59" />
         <source>Draws the silhouette lines of a DEM seen obliquely from above as vector strokes.</source>
         <translation>Zeichnet die Silhouettenlinien eines schräg von oben gesehenen DGM als Vektorstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="62" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="63" />
         <source>Finds the lines a cartographer sketches first when drawing terrain seen obliquely from above.
 
 Factual Silhouettes are occluding contours: cells beyond which the terrain hides what lies behind it, in a parallel view with vertical exaggeration and a base slope added along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view brings into sight (the candidate set), kept where the slope filter finds them significant (outside the weak/weak corner of column slope against row slope), thinned to the cell furthest from the viewer and chained across profiles.
@@ -831,204 +844,174 @@ Die Stufenkennzahlen (Protokoll und Ausgaben), in Prozent der Zellen mit Daten: 
 Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="110" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
         <source>Chaining window (cells)</source>
         <translation>Verkettungsfenster (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="112" />
         <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
         <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="112" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
         <source>Minimum stroke cells</source>
         <translation>Mindestzahl Zellen je Strich</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="114" />
         <source>Strokes with fewer cells are dropped (generalisation).</source>
         <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="118" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="119" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="118" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="119" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="121" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="124" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="127" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="128" />
         <source>Profiles per strip (0: automatic)</source>
         <translation>Profile je Streifen (0: automatisch)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="128" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="129" />
         <source>The DEM is read and processed this many profiles at a time, the next strip read while this one is processed, so DEMs larger than memory run too. 0 chooses 1024, more for profiles under 1024 cells (a million cells a strip), or fewer when profiles are so long that the strips would take more than 512 MB. Strips that would take more than half of this machine's memory are refused.</source>
         <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, mehr für Profile unter 1024 Zellen (eine Million Zellen je Streifen), oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="134" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="135" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="135" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="136" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="136" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="137" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="137" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="138" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="151" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="152" />
         <source>Drawn (the default): strokes a cartographer would publish. Pieces of one class that continue each other across a small gap are joined before short strokes are dropped; points lie between cells where the profile peaks or the slope breaks, and are smoothed along the stroke; every point carries a weight (its M value) that tapers the ends and thins the strokes towards the back of the view, which the layers' styles draw. Exact: the thesis's strokes, a point at each cell centre.</source>
         <translation>Gezeichnet (Voreinstellung): Striche, wie sie ein Kartograf veröffentlichen würde. Stücke einer Klasse, die einander über eine kleine Lücke fortsetzen, werden verbunden, bevor kurze Striche entfallen; Punkte liegen zwischen den Zellen, wo das Profil gipfelt oder die Neigung bricht, und werden entlang des Strichs geglättet; jeder Punkt trägt ein Gewicht (seinen M-Wert), das die Enden verjüngt und die Striche zum hinteren Rand der Ansicht hin dünner macht, wie es die Stile der Layer zeichnen. Exakt: die Striche der Dissertation, ein Punkt in jeder Zellmitte.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="157" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="158" />
         <source>Join gap (cells)</source>
         <translation>Verbindungslücke (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="158" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="159" />
         <source>Drawn strokes: ends of two strokes this close (in cells) are joined when their directions agree. 0 joins none.</source>
         <translation>Gezeichnete Striche: Enden zweier Striche, die so nahe beieinander liegen (in Zellen), werden verbunden, wenn ihre Richtungen übereinstimmen. 0 verbindet keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="160" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="161" />
         <source>Join angle (degrees)</source>
         <translation>Verbindungswinkel (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="161" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="162" />
         <source>Drawn strokes: the largest turn between two ends' directions, and the step between them, for them to be joined.</source>
         <translation>Gezeichnete Striche: die größte Drehung zwischen den Richtungen zweier Enden und dem Schritt zwischen ihnen, bei der sie noch verbunden werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="163" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="164" />
         <source>Smoothing (cells)</source>
         <translation>Glättung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="164" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="165" />
         <source>Drawn strokes: the width (sigma, in cells) of the Gaussian smoothing along each stroke. 0 keeps the points where they are.</source>
         <translation>Gezeichnete Striche: die Breite (Sigma, in Zellen) der Gaußschen Glättung entlang jedes Strichs. 0 lässt die Punkte, wo sie sind.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="166" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="167" />
         <source>Smoothing tolerance (cells)</source>
         <translation>Glättungstoleranz (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="167" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="168" />
         <source>Drawn strokes: no point moves farther than this (in cells) from its place on the exact chain, so smoothing never invents terrain.</source>
         <translation>Gezeichnete Striche: kein Punkt liegt weiter als dies (in Zellen) von seinem Platz auf der exakten Kette, so dass die Glättung nie Gelände erfindet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="169" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="170" />
         <source>Taper (share of the stroke)</source>
         <translation>Verjüngung (Anteil des Strichs)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="170" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="171" />
         <source>Drawn strokes: the share of a stroke's length over which each end thins.</source>
         <translation>Gezeichnete Striche: der Anteil der Strichlänge, über den jedes Ende dünner wird.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="171" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="172" />
         <source>Depth cue</source>
         <translation>Tiefenwirkung</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="172" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="173" />
         <source>Drawn strokes: the share of the weight strokes lose from the front of the view to its back.</source>
         <translation>Gezeichnete Striche: der Anteil des Gewichts, den Striche vom vorderen zum hinteren Rand der Ansicht verlieren.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="174" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="175" />
         <source>Over-extension (cells)</source>
         <translation>Überzeichnung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="175" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="176" />
         <source>Drawn strokes: each end runs on this far (in cells) along its direction, as a hand-drawn stroke does. 0: none.</source>
         <translation>Gezeichnete Striche: jedes Ende läuft so weit (in Zellen) in seiner Richtung weiter, wie es ein von Hand gezeichneter Strich tut. 0: keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="220" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="221" />
         <source>Processing the DEM in %1 strips of %2 profiles.</source>
         <translation>Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="258" />
-        <source>from %L1°</source>
-        <translation>von %L1°</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="260" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="261" />
         <source>Factual silhouettes, %1</source>
         <translation>Faktische Silhouetten, %1</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="262" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="263" />
         <source>Formulated silhouettes, %1</source>
         <translation>Formulierte Silhouetten, %1</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="269" />
-        <source>%1. Seen from %L2° (azimuth), vertical exaggeration %L3, base slope %L4 %; %5: row %L6 %, column %L7 %, control point %L8 %; %9. Terrain Sketch %10.</source>
-        <translation>%1. Gesehen aus %L2° (Azimut), Überhöhung %L3, Grundneigung %L4 %; %5: Zeile %L6 %, Spalte %L7 %, Kontrollpunkt %L8 %; %9. Terrain Sketch %10.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="275" />
-        <source>the thesis's slope filter</source>
-        <translation>der Neigungsfilter der Dissertation</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="276" />
-        <source>the slope filter adapted to the DEM</source>
-        <translation>der an das DGM angepasste Neigungsfilter</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="280" />
-        <source>drawn strokes</source>
-        <translation>gezeichnete Striche</translation>
-    </message>
-    <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="280" />
-        <source>the thesis's exact strokes</source>
-        <translation>die exakten Striche der Dissertation</translation>
     </message>
 </context>
 <context>
@@ -1039,7 +1022,7 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <translation>&lt;h3&gt;terrain_sketch_draws_taper()&lt;/h3&gt;&lt;div&gt;Wahr, solange die Erweiterung Terrain Sketch geladen ist und die Breite jedes Stützpunkts gezeichneter Striche zeichnet. Die gestuften Linien ihrer Stile sind nur dort aktiv, wo die Funktion unbekannt ist.&lt;/div&gt;</translation>
     </message>
     <message>
-        <location filename="../plugin/tapered_line.cpp" line="174" />
+        <location filename="../plugin/tapered_line.cpp" line="176" />
         <source>Tapered line (Terrain Sketch)</source>
         <translation>Verjüngte Linie (Terrain Sketch)</translation>
     </message>
@@ -1055,6 +1038,59 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <location filename="../plugin/provider.cpp" line="24" />
         <source>Terrain sketch: factual and formulated silhouettes</source>
         <translation>Geländeskizze: faktische und formulierte Silhouetten</translation>
+    </message>
+</context>
+<context>
+    <name>tsk::plugin</name>
+    <message>
+        <location filename="../plugin/run_notes.cpp" line="14" />
+        <source>%1: row %L2 %, column %L3 %, control point %L4 %</source>
+        <translation>%1: Zeile %L2 %, Spalte %L3 %, Kontrollpunkt %L4 %</translation>
+    </message>
+    <message>
+        <location filename="../plugin/run_notes.cpp" line="15" />
+        <source>the thesis's slope filter</source>
+        <translation>der Neigungsfilter der Dissertation</translation>
+    </message>
+    <message>
+        <location filename="../plugin/run_notes.cpp" line="16" />
+        <source>the slope filter adapted to the DEM</source>
+        <translation>der an das DGM angepasste Neigungsfilter</translation>
+    </message>
+    <message>
+        <location filename="../plugin/run_notes.cpp" line="23" />
+        <source>from %L1°</source>
+        <translation>von %L1°</translation>
+    </message>
+    <message>
+        <location filename="../plugin/run_notes.cpp" line="28" />
+        <source>%1. Seen from %L2° (azimuth), vertical exaggeration %L3, base slope %L4 %; %5; %6. Terrain Sketch %7.</source>
+        <translation>%1. Gesehen aus %L2° (Azimut), Überhöhung %L3, Grundneigung %L4 %; %5; %6. Terrain Sketch %7.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/run_notes.cpp" line="35" />
+        <source>drawn strokes</source>
+        <translation>gezeichnete Striche</translation>
+    </message>
+    <message>
+        <location filename="../plugin/run_notes.cpp" line="35" />
+        <source>the thesis's exact strokes</source>
+        <translation>die exakten Striche der Dissertation</translation>
+    </message>
+    <message>
+        <location filename="../plugin/run_notes.cpp" line="42" />
+        <source>%1. %2 seen from %L3° (azimuth), vertical exaggeration %L4, base slope %L5 %</source>
+        <translation>%1. %2, gesehen aus %L3° (Azimut), Überhöhung %L4, Grundneigung %L5 %</translation>
+    </message>
+    <message>
+        <location filename="../plugin/run_notes.cpp" line="48" />
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location filename="../plugin/run_notes.cpp" line="50" />
+        <source>. Terrain Sketch %1.</source>
+        <translation>. Terrain Sketch %1.</translation>
     </message>
 </context>
 </TS>

@@ -14,8 +14,8 @@ GERMAN = {
     "Panorama exaggeration": "Überhöhung des Panoramas",
     "How many times as tall as its azimuths are wide the Panorama layer draws its elevation angles, 1 to 50. 0, the default, chooses up to 5 so that a wide field of view is no flat strip. The Panorama layout draws it so.":
         "Wie viel Mal so hoch, wie seine Azimute breit sind, der Panorama-Layer seine Höhenwinkel zeichnet, 1 bis 50. 0, die Voreinstellung, wählt bis zu 5, damit ein weites Blickfeld kein flacher Streifen ist. Das Panorama-Layout zeichnet es so.",
-    "Seen from %L1, %L2, %L3 m above the ground, from %L4° to %L5° (azimuths from grid north); elevation angles drawn %L6 times as tall as azimuths are wide. Terrain Sketch %7.":
-        "Gesehen von %L1, %L2, %L3 m über dem Boden, von %L4° bis %L5° (Azimute von Gitternord); Höhenwinkel %L6-mal so hoch gezeichnet, wie Azimute breit sind. Terrain Sketch %7.",
+    "%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from grid north); elevation angles drawn %L7 times as tall as azimuths are wide. Terrain Sketch %8.":
+        "%1. Gesehen von %L2, %L3, %L4 m über dem Boden, von %L5° bis %L6° (Azimute von Gitternord); Höhenwinkel %L7-mal so hoch gezeichnet, wie Azimute breit sind. Terrain Sketch %8.",
     "%1 10 mm on the page: %L2° of azimuth.": "%1 10 mm auf der Seite: %L2° Azimut.",
     "Band %1 of the raster's %2 is a colour channel (red, green, blue or alpha) of an image, not heights: choose a DEM.":
         "Band %1 der %2 Bänder des Rasters ist ein Farbkanal (Rot, Grün, Blau oder Alpha) eines Bildes, keine Höhen: wählen Sie ein DGM.",
@@ -23,8 +23,15 @@ GERMAN = {
     "from %L1°": "von %L1°",
     "Factual silhouettes, %1": "Faktische Silhouetten, %1",
     "Formulated silhouettes, %1": "Formulierte Silhouetten, %1",
-    "%1. Seen from %L2° (azimuth), vertical exaggeration %L3, base slope %L4 %; %5: row %L6 %, column %L7 %, control point %L8 %; %9. Terrain Sketch %10.":
-        "%1. Gesehen aus %L2° (Azimut), Überhöhung %L3, Grundneigung %L4 %; %5: Zeile %L6 %, Spalte %L7 %, Kontrollpunkt %L8 %; %9. Terrain Sketch %10.",
+    "%1. Seen from %L2° (azimuth), vertical exaggeration %L3, base slope %L4 %; %5; %6. Terrain Sketch %7.":
+        "%1. Gesehen aus %L2° (Azimut), Überhöhung %L3, Grundneigung %L4 %; %5; %6. Terrain Sketch %7.",
+    "%1: row %L2 %, column %L3 %, control point %L4 %": "%1: Zeile %L2 %, Spalte %L3 %, Kontrollpunkt %L4 %",
+    "%1. %2 seen from %L3° (azimuth), vertical exaggeration %L4, base slope %L5 %":
+        "%1. %2, gesehen aus %L3° (Azimut), Überhöhung %L4, Grundneigung %L5 %",
+    "%1, %2": "%1, %2",
+    ". Terrain Sketch %1.": ". Terrain Sketch %1.",
+    "A drape of %1": "Drapierung von %1",
+    "Profile lines": "Profillinien",
     "the thesis's slope filter": "der Neigungsfilter der Dissertation",
     "the slope filter adapted to the DEM": "der an das DGM angepasste Neigungsfilter",
     "drawn strokes": "gezeichnete Striche",

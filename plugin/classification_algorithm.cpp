@@ -8,6 +8,7 @@
 #include "plugin/layer_style.h"
 #include "plugin/raster_grid.h"
 #include "plugin/raster_output.h"
+#include "plugin/run_notes.h"
 
 namespace tsk::plugin {
 
@@ -60,7 +61,9 @@ QVariantMap ClassificationAlgorithm::writeOutputs(const QVariantMap& parameters,
   const RasterGrid& raster = readRaster(feedback, 25);
   const SilhouetteResult result = runSilhouettes(mParams, feedback, 25, 90);
   mOutput = parameterAsOutputLayer(parameters, QStringLiteral("OUTPUT"), context);
-  writeByteRaster(mOutput, classification_map(result.flags, raster.frame()), raster);
+  mNote = productNote(demName(), tr("Silhouette stages"), mParams.view, &result.filter);
+  writeByteRaster(mOutput, classification_map(result.flags, raster.frame()), raster,
+                  mNote.abstract);
   QVariantMap outputs{{QStringLiteral("OUTPUT"), mOutput}};
   for (const StageFigure& f : stage_figures(result.stats)) {
     outputs.insert(QString::fromLatin1(f.key).toUpper(), f.value);
@@ -73,7 +76,7 @@ QVariantMap ClassificationAlgorithm::writeOutputs(const QVariantMap& parameters,
 
 QVariantMap ClassificationAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
                                                           QgsProcessingFeedback*) {
-  styleOnCompletion(context, mOutput, QStringLiteral("classification"));
+  styleOnCompletion(context, mOutput, QStringLiteral("classification"), RampRange::style, mNote);
   return {};
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "plugin/dem_view_algorithm.h"
+#include "plugin/layer_style.h"
 
 namespace tsk::plugin {
 
@@ -26,6 +27,7 @@ class ClassificationAlgorithm : public DemViewAlgorithm {
  private:
   SilhouetteParams mParams;
   QString mOutput;
+  RunNote mNote;
 };
 
 }  // namespace tsk::plugin

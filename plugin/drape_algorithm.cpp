@@ -15,6 +15,7 @@
 #include "core/method/visibility.h"
 #include "plugin/raster_grid.h"
 #include "plugin/raster_output.h"
+#include "plugin/run_notes.h"
 
 namespace tsk::plugin {
 
@@ -99,6 +100,7 @@ bool DrapeAlgorithm::prepareAlgorithm(const QVariantMap& parameters, QgsProcessi
   }
   mSource.reset(source->dataProvider()->clone());
   mSourceBands = source->bandCount();
+  mSourceName = source->name();
   return true;
 }
 
@@ -145,7 +147,8 @@ QVariantMap DrapeAlgorithm::writeOutputs(const QVariantMap& parameters,
       bands.push_back(drape.drape(readSourceBand(band, rows, cols, feedback)));
       if (feedback) feedback->setProgress(60 + 30.0 * band / mSourceBands);
     }
-    writeFloatRaster(path, bands, gt, crs);
+    writeFloatRaster(path, bands, gt, crs,
+                     productNote(demName(), tr("A drape of %1").arg(mSourceName), mView).abstract);
   });
   releaseRaster();
   mSource.reset();

@@ -42,6 +42,7 @@ class DrapeAlgorithm : public DemViewAlgorithm {
   ViewParams mView;
   std::unique_ptr<QgsRasterDataProvider> mSource;
   int mSourceBands = 0;
+  QString mSourceName;  // as the user knows it, for the drape's description
 };
 
 }  // namespace tsk::plugin

@@ -69,8 +69,8 @@ bool GpkgLineSink::addFeatures(QgsFeatureList& features, QgsFeatureSink::Flags f
   return true;
 }
 
-void GpkgLineSink::finish() {
-  mFile->finish();
+void GpkgLineSink::finish(const QString& note) {
+  mFile->finish(note.toStdString());
 }
 
 }  // namespace tsk::plugin

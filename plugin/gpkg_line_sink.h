@@ -30,9 +30,9 @@ class GpkgLineSink : public QgsFeatureSink {
   // (with lastError()) when it cannot, as addFeature.
   bool addStroke(const Stroke& stroke);
 
-  // Writes the layer's extent, count and spatial index and closes the file; throws tsk::Error.
-  // Without it, nothing of the features is kept.
-  void finish();
+  // Writes the layer's extent, count, spatial index and description (when `note` is not empty)
+  // and closes the file; throws tsk::Error. Without it, nothing of the features is kept.
+  void finish(const QString& note);
 
  private:
   std::unique_ptr<io::GpkgFileAppender> mFile;

@@ -46,7 +46,7 @@ class QmlStyler : public QgsProcessingLayerPostProcessorInterface {
     if (mNote.layout && project) mNote.layout->add(*project, layer, mNote.panorama);
     if (mNote.abstract.isEmpty()) return;
     QgsLayerMetadata metadata = layer.metadata();
-    metadata.setTitle(mNote.title);
+    if (!mNote.title.isEmpty()) metadata.setTitle(mNote.title);
     metadata.setAbstract(mNote.abstract);
     layer.setMetadata(metadata);
     if (!mNote.sketch || !project) return;

@@ -247,8 +247,8 @@ void LineOutput::add(const Stroke& stroke) {
   }
 }
 
-void LineOutput::finish() {
-  if (mGpkg) withCoreErrors([this] { mGpkg->finish(); });
+void LineOutput::finish(const QString& note) {
+  if (mGpkg) withCoreErrors([&] { mGpkg->finish(note); });
   mGpkg = nullptr;
   mSink.reset();  // QGIS's writer flushes and closes the file
   if (!mFile.isEmpty() && mAddedLayer.isEmpty() && !endsWhole(mFile)) {

@@ -92,8 +92,9 @@ class LineOutput {
   void add(QgsFeature& feature);
   void add(const Stroke& stroke);  // with the fields of strokeFields()
 
-  // Completes the output: a GeoPackage's extent, count and spatial index, and its commit.
-  void finish();
+  // Completes the output: a GeoPackage's extent, count and spatial index, its layer's
+  // description (`note`, what made it), and its commit.
+  void finish(const QString& note = QString());
 
   // How a run waits for another writing one of its files (io/destination_lock.h): said on
   // `feedback`, and ended by its Cancel (Cancelled is thrown).

@@ -191,8 +191,8 @@ void PanoramaAlgorithm::writeStrokes(const QVariantMap& parameters, QgsProcessin
     feature.setGeometry(lineGeometry(exaggerated(s.view, mExaggeration)));
     addWithProgress(panorama, feature, feedback, 2 * result.strokes.size(), 80);
   }
-  map.finish();
-  panorama.finish();
+  map.finish(mNote);
+  panorama.finish(mNote);
   mMapId = map.destination();
   mPanoramaId = panorama.destination();
 }
@@ -240,7 +240,7 @@ void PanoramaAlgorithm::writePeaks(const QVariantMap& parameters, QgsProcessingC
     feature.setGeometry(lineGeometry(exaggerated({l.top, l.label}, mExaggeration)));
     output.add(feature);
   }
-  output.finish();
+  output.finish(mNote);
   mPeaksId = output.destination();
 }
 
@@ -251,6 +251,7 @@ QVariantMap PanoramaAlgorithm::writeOutputs(const QVariantMap& parameters,
   // output read is a new file named in a new folder, left empty by a check.
   mVisibility = parameterAsOutputLayer(parameters, kVisibility, context);
   const PanoramaResult result = sketch(feedback);
+  mNote = runNote();
   const RasterGrid& raster = preparedRaster();
   // Asked for as the dialog asks (a QgsProcessingOutputLayerDefinition, whose toString() is
   // empty) or as processing.run does (a path).
@@ -265,7 +266,7 @@ QVariantMap PanoramaAlgorithm::writeOutputs(const QVariantMap& parameters,
       return visibility_raster(result, raster.oriented().rows(), raster.oriented().cols(),
                                raster.geotransform());
     });
-    writeVisibilityRaster(mVisibility, seen, raster);
+    writeVisibilityRaster(mVisibility, seen, raster, mNote);
   }
   if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
   writeStrokes(parameters, context, result, feedback);
@@ -277,27 +278,33 @@ QVariantMap PanoramaAlgorithm::writeOutputs(const QVariantMap& parameters,
   return outputs;
 }
 
+QString PanoramaAlgorithm::runNote() const {
+  const PanoramaView& v = mView;
+  return tr("%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from "
+            "grid north); elevation angles drawn %L7 times as tall as azimuths are wide. Terrain "
+            "Sketch %8.")
+      .arg(demName())
+      .arg(v.observer_x, 0, 'f', 0)
+      .arg(v.observer_y, 0, 'f', 0)
+      .arg(v.observer_height, 0, 'g', 4)
+      .arg(v.azimuth_from, 0, 'g', 4)
+      .arg(v.azimuth_to, 0, 'g', 4)
+      .arg(mExaggeration, 0, 'g', 3)
+      .arg(QStringLiteral(TSK_VERSION));
+}
+
 QVariantMap PanoramaAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
                                                     QgsProcessingFeedback*) {
-  const PanoramaView& v = mView;
-  const QString note =
-      tr("Seen from %L1, %L2, %L3 m above the ground, from %L4° to %L5° (azimuths from grid "
-         "north); "
-         "elevation angles drawn %L6 times as tall as azimuths are wide. Terrain Sketch %7.")
-          .arg(v.observer_x, 0, 'f', 0)
-          .arg(v.observer_y, 0, 'f', 0)
-          .arg(v.observer_height, 0, 'g', 4)
-          .arg(v.azimuth_from, 0, 'g', 4)
-          .arg(v.azimuth_to, 0, 'g', 4)
-          .arg(mExaggeration, 0, 'g', 3)
-          .arg(QStringLiteral(TSK_VERSION));
-  const auto layout = std::make_shared<PanoramaLayout>(tr("Panorama"), note);
-  styleOnCompletion(context, mMapId, QStringLiteral("panorama_map"));
+  const auto layout = std::make_shared<PanoramaLayout>(tr("Panorama"), mNote);
+  // The layers keep the names the user gave them; their metadata hold the run.
+  styleOnCompletion(context, mMapId, QStringLiteral("panorama_map"), RampRange::style,
+                    {{}, mNote, false, nullptr, false});
   styleOnCompletion(context, mPanoramaId, QStringLiteral("panorama"), RampRange::style,
-                    {{}, {}, false, layout, true});
+                    {{}, mNote, false, layout, true});
   styleOnCompletion(context, mPeaksId, QStringLiteral("panorama_peaks"), RampRange::style,
-                    {{}, {}, false, layout, false});
-  styleOnCompletion(context, mVisibility, QStringLiteral("visibility"));
+                    {{}, mNote, false, layout, false});
+  styleOnCompletion(context, mVisibility, QStringLiteral("visibility"), RampRange::style,
+                    {{}, mNote, false, nullptr, false});
   return {};
 }
 

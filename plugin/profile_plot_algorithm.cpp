@@ -7,6 +7,7 @@
 #include "plugin/line_output.h"
 #include "plugin/qgis_compat.h"
 #include "plugin/raster_grid.h"
+#include "plugin/run_notes.h"
 #include "plugin/stroke_features.h"
 
 namespace tsk::plugin {
@@ -73,7 +74,8 @@ QVariantMap ProfilePlotAlgorithm::writeOutputs(const QVariantMap& parameters,
     feature.setGeometry(lineGeometry(line.points));
     addWithProgress(output, feature, feedback, lines.size(), 50);
   }
-  output.finish();
+  mNote = productNote(demName(), tr("Profile lines"), mView);
+  output.finish(mNote.abstract);
   mOutput = output.destination();
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), mOutput}};
@@ -81,7 +83,7 @@ QVariantMap ProfilePlotAlgorithm::writeOutputs(const QVariantMap& parameters,
 
 QVariantMap ProfilePlotAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
                                                        QgsProcessingFeedback*) {
-  styleOnCompletion(context, mOutput, QStringLiteral("profiles"));
+  styleOnCompletion(context, mOutput, QStringLiteral("profiles"), RampRange::style, mNote);
   return {};
 }
 

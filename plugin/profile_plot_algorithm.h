@@ -3,6 +3,7 @@
 #pragma once
 
 #include "plugin/dem_view_algorithm.h"
+#include "plugin/layer_style.h"
 
 namespace tsk::plugin {
 
@@ -27,6 +28,7 @@ class ProfilePlotAlgorithm : public DemViewAlgorithm {
   ViewParams mView;
   int mEvery = 10;
   QString mOutput;
+  RunNote mNote;
 };
 
 }  // namespace tsk::plugin

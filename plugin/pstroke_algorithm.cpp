@@ -8,6 +8,7 @@
 #include "plugin/line_output.h"
 #include "plugin/qgis_compat.h"
 #include "plugin/raster_grid.h"
+#include "plugin/run_notes.h"
 #include "plugin/stroke_features.h"
 
 namespace tsk::plugin {
@@ -86,6 +87,7 @@ QVariantMap PStrokeAlgorithm::writeOutputs(const QVariantMap& parameters,
     PStrokeRun run =
         sketch_pstrokes(raster.held(), mParams, mPStrokes, progressBetween(feedback, 25, 40));
     SharedParameters::logFilter(run.filter, feedback);
+    mNote = productNote(demName(), tr("P-strokes"), mParams.view, &run.filter);
     return std::move(run.strokes);
   });
   QgsFields fields;
@@ -101,7 +103,7 @@ QVariantMap PStrokeAlgorithm::writeOutputs(const QVariantMap& parameters,
     feature.setGeometry(lineGeometry(s.points));
     addWithProgress(output, feature, feedback, strokes.size(), 50);
   }
-  output.finish();
+  output.finish(mNote.abstract);
   mOutput = output.destination();
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), mOutput}};
@@ -109,7 +111,7 @@ QVariantMap PStrokeAlgorithm::writeOutputs(const QVariantMap& parameters,
 
 QVariantMap PStrokeAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
                                                    QgsProcessingFeedback*) {
-  styleOnCompletion(context, mOutput, QStringLiteral("pstrokes"));
+  styleOnCompletion(context, mOutput, QStringLiteral("pstrokes"), RampRange::style, mNote);
   return {};
 }
 

@@ -4,6 +4,7 @@
 
 #include "core/applications/pstrokes.h"
 #include "plugin/dem_view_algorithm.h"
+#include "plugin/layer_style.h"
 
 namespace tsk::plugin {
 
@@ -28,6 +29,7 @@ class PStrokeAlgorithm : public DemViewAlgorithm {
   SilhouetteParams mParams;
   PStrokeParams mPStrokes;
   QString mOutput;
+  RunNote mNote;
 };
 
 }  // namespace tsk::plugin

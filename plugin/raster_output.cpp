@@ -19,21 +19,28 @@ std::string crsWkt(const QgsCoordinateReferenceSystem& crs) {
 
 }  // namespace
 
-void writeByteRaster(const QString& path, const Grid<std::uint8_t>& grid, const RasterGrid& dem) {
+void writeByteRaster(const QString& path, const Grid<std::uint8_t>& grid, const RasterGrid& dem,
+                     const QString& note) {
   withCoreErrors([&] {
-    io::write_classification(filePath(path), grid, dem.geotransform(), crsWkt(dem.crs()));
+    io::write_classification(filePath(path), grid, dem.geotransform(), crsWkt(dem.crs()),
+                             note.toStdString());
   });
 }
 
 void writeVisibilityRaster(const QString& path, const Grid<std::uint8_t>& grid,
-                           const RasterGrid& dem) {
-  withCoreErrors(
-      [&] { io::write_visibility(filePath(path), grid, dem.geotransform(), crsWkt(dem.crs())); });
+                           const RasterGrid& dem, const QString& note) {
+  withCoreErrors([&] {
+    io::write_visibility(filePath(path), grid, dem.geotransform(), crsWkt(dem.crs()),
+                         note.toStdString());
+  });
 }
 
 void writeFloatRaster(const QString& path, const std::vector<HeightGrid>& bands,
-                      const GeoTransform& geotransform, const QgsCoordinateReferenceSystem& crs) {
-  withCoreErrors([&] { io::write_float_raster(filePath(path), bands, geotransform, crsWkt(crs)); });
+                      const GeoTransform& geotransform, const QgsCoordinateReferenceSystem& crs,
+                      const QString& note) {
+  withCoreErrors([&] {
+    io::write_float_raster(filePath(path), bands, geotransform, crsWkt(crs), note.toStdString());
+  });
 }
 
 }  // namespace tsk::plugin

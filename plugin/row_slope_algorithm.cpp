@@ -6,6 +6,7 @@
 #include "plugin/layer_style.h"
 #include "plugin/raster_grid.h"
 #include "plugin/raster_output.h"
+#include "plugin/run_notes.h"
 
 namespace tsk::plugin {
 
@@ -38,9 +39,9 @@ void RowSlopeAlgorithm::initAlgorithm(const QVariantMap&) {
 
 double RowSlopeAlgorithm::readParameters(const QVariantMap& parameters,
                                          QgsProcessingContext& context) {
-  const ViewParams view = SharedParameters::readView(*this, parameters, context);
-  view.validate();
-  return view.azimuth_deg;
+  mView = SharedParameters::readView(*this, parameters, context);
+  mView.validate();
+  return mView.azimuth_deg;
 }
 
 QVariantMap RowSlopeAlgorithm::writeOutputs(const QVariantMap& parameters,
@@ -48,15 +49,16 @@ QVariantMap RowSlopeAlgorithm::writeOutputs(const QVariantMap& parameters,
                                             QgsProcessingFeedback* feedback) {
   const RasterGrid& raster = readRaster(feedback, 70);
   mOutput = parameterAsOutputLayer(parameters, QStringLiteral("OUTPUT"), context);
+  mNote = productNote(demName(), tr("Row slope"), mView);
   writeFloatRaster(mOutput, {row_slope_map(raster.oriented(), raster.frame())},
-                   raster.geotransform(), raster.crs());
+                   raster.geotransform(), raster.crs(), mNote.abstract);
   releaseRaster();
   return {{QStringLiteral("OUTPUT"), mOutput}};
 }
 
 QVariantMap RowSlopeAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,
                                                     QgsProcessingFeedback*) {
-  styleOnCompletion(context, mOutput, QStringLiteral("row_slope"), RampRange::data);
+  styleOnCompletion(context, mOutput, QStringLiteral("row_slope"), RampRange::data, mNote);
   return {};
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "plugin/dem_view_algorithm.h"
+#include "plugin/layer_style.h"
 
 namespace tsk::plugin {
 
@@ -24,7 +25,9 @@ class RowSlopeAlgorithm : public DemViewAlgorithm {
                                    QgsProcessingFeedback* feedback) override;
 
  private:
+  ViewParams mView;
   QString mOutput;
+  RunNote mNote;
 };
 
 }  // namespace tsk::plugin

@@ -13,6 +13,7 @@
 #include "plugin/line_output.h"
 #include "plugin/qgis_compat.h"
 #include "plugin/raster_grid.h"
+#include "plugin/run_notes.h"
 #include "plugin/stroke_features.h"
 
 namespace tsk::plugin {
@@ -233,9 +234,9 @@ QVariantMap SilhouettesAlgorithm::writeOutputs(const QVariantMap& parameters,
     });
   });
   SharedParameters::logFilter(result.filter, feedback);
-  mNote = runNote(result.filter);
-  factual.finish();
-  formulated.finish();
+  mNote = sketchNote(demName(), mParams.view, result.filter, mParams.strokes.drawn());
+  factual.finish(mNote);
+  formulated.finish(mNote);
   mFactualId = factual.destination();
   mFormulatedId = formulated.destination();
 
@@ -255,30 +256,12 @@ QVariantMap SilhouettesAlgorithm::postProcessAlgorithm(QgsProcessingContext& con
                                                        QgsProcessingFeedback*) {
   // Drawn strokes get the styles that draw their weights: tapered, thinner at the back.
   const QString drawn = mParams.strokes.drawn() ? QStringLiteral("_drawn") : QString();
-  const QString from = tr("from %L1°").arg(mParams.view.azimuth_deg, 0, 'g', 4);
+  const QString from = fromAzimuth(mParams.view);
   styleOnCompletion(context, mFactualId, QStringLiteral("factual") + drawn, RampRange::style,
                     {tr("Factual silhouettes, %1").arg(from), mNote, true, nullptr, false});
   styleOnCompletion(context, mFormulatedId, QStringLiteral("formulated") + drawn, RampRange::style,
                     {tr("Formulated silhouettes, %1").arg(from), mNote, false, nullptr, false});
   return {};
-}
-
-QString SilhouettesAlgorithm::runNote(const FilterReport& filter) const {
-  const ViewParams& view = mParams.view;
-  const FilterParams& cut = filter.cutoffs;
-  return tr("%1. Seen from %L2° (azimuth), vertical exaggeration %L3, base slope %L4 %; %5: row "
-            "%L6 %, column %L7 %, control point %L8 %; %9. Terrain Sketch %10.")
-      .arg(demName())
-      .arg(view.azimuth_deg, 0, 'g', 4)
-      .arg(view.ve, 0, 'g', 3)
-      .arg(view.base_slope_pct, 0, 'g', 3)
-      .arg(filter.choice.mode == FilterMode::fixed ? tr("the thesis's slope filter")
-                                                   : tr("the slope filter adapted to the DEM"))
-      .arg(cut.row_cut_pct, 0, 'g', 3)
-      .arg(cut.col_cut_pct, 0, 'g', 3)
-      .arg(cut.ctrl_col_pct, 0, 'g', 3)
-      .arg(mParams.strokes.drawn() ? tr("drawn strokes") : tr("the thesis's exact strokes"))
-      .arg(QStringLiteral(TSK_VERSION));
 }
 
 }  // namespace tsk::plugin

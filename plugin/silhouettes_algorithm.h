@@ -31,14 +31,11 @@ class SilhouettesAlgorithm : public DemViewAlgorithm {
  private:
   void addStrokeParameters();
   void readStrokes(const QVariantMap& parameters, QgsProcessingContext& context);
-  // The run in a sentence: the DEM, the view, the filter it ran and the strokes.
-  QString runNote(const FilterReport& filter) const;
-
   SilhouetteParams mParams;
   int mStrips = 0;
   QString mFactualId;
   QString mFormulatedId;
-  QString mNote;  // the run, for the layers' metadata and the print layout (runNote)
+  QString mNote;  // the run, for the layers' metadata and the print layout (sketchNote)
 };
 
 }  // namespace tsk::plugin

@@ -346,3 +346,40 @@ TEST_CASE("the P-strokes, profile lines and panorama record the run that made th
                                  "(azimuths from grid north); elevation angles drawn 3 times as "
                                  "tall as azimuths are wide. Terrain Sketch "));
 }
+
+TEST_CASE("the rasters record the run that made them", "[cli][preview]") {
+  ScratchDir dir("raster_notes");
+  REQUIRE(
+      run_cli({"classify", kSample, dir / "c.tif", "--azimuth", "250", "--filter", "fixed"}).code ==
+      0);
+  REQUIRE(run_cli({"row-slope", kSample, dir / "r.tif", "--azimuth", "120"}).code == 0);
+  REQUIRE(run_cli({"drape", kSample, dir / "d.tif", "--source", kSample, "--ve", "3"}).code == 0);
+  REQUIRE(run_cli({"panorama", kSample, dir / "v.gpkg", "--observer", "749008.1394,4009477.9308",
+                   "--azimuth-from", "300", "--azimuth-to", "30", "--visibility", dir / "v.tif"})
+              .code == 0);
+  // A GeoTIFF's image description, as GDAL reads it.
+  const auto description = [](const std::string& path) {
+    GDALAllRegister();
+    tsk::io::DatasetPtr ds(static_cast<GDALDataset*>(
+        GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    REQUIRE(ds);
+    const char* text = ds->GetMetadataItem("TIFFTAG_IMAGEDESCRIPTION");
+    return std::string(text ? text : "");
+  };
+  CHECK_THAT(description(dir / "c.tif"),
+             Catch::StartsWith("jacksboro_utm16n.tif, band 1. Silhouette stages seen from "
+                               "250\xc2\xb0 (azimuth), vertical exaggeration 2.5, base slope 40 "
+                               "%; the thesis's slope filter: row 20 %, column 12 %, control "
+                               "point 8.75 %. Terrain Sketch "));
+  CHECK_THAT(description(dir / "r.tif"),
+             Catch::StartsWith("jacksboro_utm16n.tif, band 1. Row slope seen from 120\xc2\xb0 "
+                               "(azimuth), vertical exaggeration 2.5, base slope 40 %. Terrain "
+                               "Sketch "));
+  CHECK_THAT(description(dir / "d.tif"),
+             Catch::StartsWith("jacksboro_utm16n.tif, band 1. A drape of jacksboro_utm16n.tif "
+                               "seen from 90\xc2\xb0 (azimuth), vertical exaggeration 3, base "
+                               "slope 40 %. Terrain Sketch "));
+  CHECK_THAT(description(dir / "v.tif"),
+             Catch::StartsWith("jacksboro_utm16n.tif, band 1. Panorama seen from 749008, "
+                               "4009478"));
+}

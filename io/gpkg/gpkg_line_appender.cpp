@@ -205,9 +205,15 @@ void GpkgLineAppender::insert_waiting() {
   waiting_count_ = 0;
 }
 
-void GpkgLineAppender::finish() {
+void GpkgLineAppender::finish(const std::string& description) {
   insert_waiting();
   const Connection& db = rows_->db;
+  if (!description.empty()) {
+    Connection::Statement describe(
+        db, "UPDATE gpkg_contents SET description = ? WHERE lower(table_name) = lower(?)");
+    describe.bind(1, description.c_str()).bind(2, table_.c_str());
+    describe.step();
+  }
   if (!boxes_.empty()) {
     Connection::Statement extent(db,
                                  "UPDATE gpkg_contents SET min_x = ?, min_y = ?, max_x = ?, "
@@ -254,8 +260,8 @@ GpkgFileAppender::~GpkgFileAppender() {
   dataset_->RollbackTransaction();
 }
 
-void GpkgFileAppender::finish() {
-  lines_->finish();
+void GpkgFileAppender::finish(const std::string& description) {
+  lines_->finish(description);
   lines_.reset();  // its statements end before the commit
   if (dataset_->CommitTransaction() != OGRERR_NONE) {
     throw Error("cannot commit the lines written to '" + path_ + "': " + CPLGetLastErrorMsg());

@@ -39,9 +39,9 @@ class GpkgLineAppender {
   // Inserts a row: the line through `points` with the attributes set since the last row, a
   // LineString M with `m` (one per point) when given, else a LineString.
   void add(const std::vector<StrokePoint>& points, const std::vector<double>& m = {});
-  // Writes the rows still waiting, the layer's extent and feature count, and its spatial index in
-  // bulk.
-  void finish();
+  // Writes the rows still waiting, the layer's extent and feature count, its spatial index in
+  // bulk, and its description (gpkg_contents) when `description` is not empty.
+  void finish(const std::string& description = {});
 
  private:
   class Rows;
@@ -86,8 +86,9 @@ class GpkgFileAppender {
   GpkgFileAppender& operator=(const GpkgFileAppender&) = delete;
 
   GpkgLineAppender& lines() { return *lines_; }
-  // Writes the layer's extent, count and spatial index, commits and closes the file.
-  void finish();
+  // Writes the layer's extent, count, spatial index and description (when not empty), commits
+  // and closes the file.
+  void finish(const std::string& description = {});
 
  private:
   std::string path_;

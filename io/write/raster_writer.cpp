@@ -70,13 +70,20 @@ void check_reads_back(const std::string& path, const std::filesystem::path& stag
   if (!capture.first_failure().empty()) fail();
 }
 
+// Where a raster goes on the ground, and what it records of the run that made it.
+struct RasterPlace {
+  const GeoTransform& gt;
+  const std::string& srs_wkt;
+  const std::string& description;
+};
+
 // Creates a raster of pixels.size() bands at `staged` in the format of `path`'s extension, lets
 // `fill` set up each band, writes the pixels. Every failure GDAL reports fails the write: a full
 // disk shows only as an error when GDAL writes its cached blocks while it closes the file.
 template <typename Fill>
 void write_bands(const std::string& path, const std::filesystem::path& staged, std::size_t rows,
                  std::size_t cols, GDALDataType type, const std::vector<const void*>& pixels,
-                 const GeoTransform& gt, const std::string& srs_wkt, Fill fill) {
+                 const RasterPlace& place, Fill fill) {
   GdalErrorCapture capture;
   GDALDriver* driver = raster_driver_for(path);
   const bool tiff = std::string(driver->GetDescription()) == "GTiff";
@@ -86,9 +93,12 @@ void write_bands(const std::string& path, const std::filesystem::path& staged, s
                                tiff ? const_cast<char**>(tiff_options) : nullptr));
   if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
   double transform[6];
-  std::copy(gt.a.begin(), gt.a.end(), transform);
+  std::copy(place.gt.a.begin(), place.gt.a.end(), transform);
   ds->SetGeoTransform(transform);
-  if (!srs_wkt.empty()) ds->SetProjection(srs_wkt.c_str());
+  if (!place.srs_wkt.empty()) ds->SetProjection(place.srs_wkt.c_str());
+  // Other formats would keep it in a side file (.aux.xml) that the staging leaves behind.
+  if (tiff && !place.description.empty())
+    ds->SetMetadataItem("TIFFTAG_IMAGEDESCRIPTION", place.description.c_str());
   for (std::size_t b = 0; b < pixels.size(); ++b) {
     GDALRasterBand* band = ds->GetRasterBand(static_cast<int>(b) + 1);
     fill(*band);
@@ -129,27 +139,29 @@ GDALDriver* raster_driver_for(const std::string& path) {
 }
 
 void write_float_raster(const std::string& path, const std::vector<HeightGrid>& bands,
-                        const GeoTransform& gt, const std::string& srs_wkt) {
+                        const GeoTransform& gt, const std::string& srs_wkt,
+                        const std::string& description) {
   if (bands.empty()) throw Error("nothing to write to '" + path + "'");
   std::vector<const void*> pixels;
   for (const HeightGrid& b : bands) pixels.push_back(b.data());
   write_atomically(path, [&](const std::filesystem::path& staged) {
-    write_bands(path, staged, bands[0].rows(), bands[0].cols(), GDT_Float32, pixels, gt, srs_wkt,
-                [](GDALRasterBand& band) {
+    write_bands(path, staged, bands[0].rows(), bands[0].cols(), GDT_Float32, pixels,
+                {gt, srs_wkt, description}, [](GDALRasterBand& band) {
                   band.SetNoDataValue(std::numeric_limits<double>::quiet_NaN());
                 });
   });
 }
 
 void write_classification(const std::string& path, const Grid<std::uint8_t>& classes,
-                          const GeoTransform& gt, const std::string& srs_wkt) {
+                          const GeoTransform& gt, const std::string& srs_wkt,
+                          const std::string& description) {
   // Colours as in the thesis's map views: occlusion red, c-set light grey, f-set dark grey.
   static const GDALColorEntry colours[kCellClassCount] = {
       {0, 0, 0, 0},         {255, 255, 255, 255}, {190, 210, 235, 255}, {220, 30, 30, 255},
       {215, 215, 215, 255}, {120, 120, 120, 255}, {20, 20, 20, 255}};
   write_atomically(path, [&](const std::filesystem::path& staged) {
-    write_bands(path, staged, classes.rows(), classes.cols(), GDT_Byte, {classes.data()}, gt,
-                srs_wkt, [](GDALRasterBand& band) {
+    write_bands(path, staged, classes.rows(), classes.cols(), GDT_Byte, {classes.data()},
+                {gt, srs_wkt, description}, [](GDALRasterBand& band) {
                   band.SetNoDataValue(0);
                   GDALColorTable table;
                   CPLStringList names;
@@ -164,7 +176,8 @@ void write_classification(const std::string& path, const Grid<std::uint8_t>& cla
 }
 
 void write_visibility(const std::string& path, const Grid<std::uint8_t>& visibility,
-                      const GeoTransform& gt, const std::string& srs_wkt) {
+                      const GeoTransform& gt, const std::string& srs_wkt,
+                      const std::string& description) {
   // Hidden ground greyed, visible ground clear, beyond the range left out. The table reaches the
   // nodata value: a format that writes it as a PNG palette (GeoPackage tiles) refused an index
   // beyond the table.
@@ -172,7 +185,7 @@ void write_visibility(const std::string& path, const Grid<std::uint8_t>& visibil
                               none = {0, 0, 0, 0};
   write_atomically(path, [&](const std::filesystem::path& staged) {
     write_bands(path, staged, visibility.rows(), visibility.cols(), GDT_Byte, {visibility.data()},
-                gt, srs_wkt, [](GDALRasterBand& band) {
+                {gt, srs_wkt, description}, [](GDALRasterBand& band) {
                   band.SetNoDataValue(255);
                   GDALColorTable table;
                   table.SetColorEntry(0, &hidden);

@@ -26,6 +26,7 @@ from qgis.core import (QgsApplication, QgsCoordinateTransform,  # noqa: E402
                        QgsProcessingOutputLayerDefinition, QgsProject, QgsRasterLayer,
                        QgsReadWriteContext)
 from qgis.PyQt.QtGui import QImage  # noqa: E402
+from osgeo import gdal  # noqa: E402
 from qgis.PyQt.QtXml import QDomDocument  # noqa: E402
 
 SAMPLE = os.path.join(repo, "resources", "sample", "jacksboro_utm16n.tif")
@@ -52,6 +53,14 @@ def run_silhouettes(project):
     feedback = QgsProcessingFeedback()
     results, ran = alg.run(params, context, feedback)
     check("silhouettes ran", ran)
+    # The files record the run too, for whoever opens them elsewhere: each GeoPackage layer's
+    # description (gpkg_contents).
+    for name in ("factual", "formulated"):
+        dataset = gdal.OpenEx(os.path.join(out, name + ".gpkg"), gdal.OF_VECTOR)
+        description = dataset.GetLayer(0).GetMetadataItem("DESCRIPTION") or ""
+        check(name + ".gpkg records the run",
+              description.startswith("jacksboro_utm16n, band 1. Seen from 250") and
+              "Terrain Sketch" in description, description)
     handleAlgorithmResults(alg, context, feedback, parameters=params)
 
 

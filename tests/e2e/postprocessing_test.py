@@ -3,7 +3,9 @@ QgsProcessingOutputLayerDefinition to a temporary output in the project, then Pr
 post-processing (handleAlgorithmResults), which loads the results. No error may be reported,
 every layer output must be in the project, styled by its name, and no run may leave an empty
 temporary folder behind (QGIS makes one for each temporary file it names, as a check reading a
-temporary output made it name one more).
+temporary output made it name one more). Every output records the run that made it: its file
+(a GeoTIFF's image description, a GeoPackage layer's description) and, once loaded, its layer's
+metadata; the layers of a view are named for it ("Row slope, from 90°").
 
 Usage (QGIS's Python): /usr/bin/python3 postprocessing_test.py BUILD_DIR REPO_DIR
 Prints one line per algorithm and 'N passed, N failed'; exits 1 on any failure.
@@ -21,9 +23,11 @@ from qgis.core import (QgsApplication, QgsLayoutExporter, QgsProcessingContext, 
                        QgsProcessingFeedback, QgsProcessingOutputLayerDefinition,
                        QgsProcessingUtils, QgsProject)
 from qgis.PyQt.QtGui import QImage  # noqa: E402
+from osgeo import gdal  # noqa: E402
 
 SAMPLE = os.path.join(repo, "resources", "sample", "jacksboro_utm16n.tif")
 SUMMIT = "749008.1394,4009477.9308 [EPSG:32616]"
+DEM_NAME = "jacksboro_utm16n, band 1"
 
 
 class Feedback(QgsProcessingFeedback):
@@ -44,10 +48,42 @@ def temporary_folders():
             if os.path.isdir(os.path.join(top, name))}
 
 
+def file_note(value):
+    """What an output file records of its run: a GeoTIFF's image description, or a GeoPackage
+    layer's description; None for an output that is no file (a temporary vector layer)."""
+    path, _, layer = str(value).partition("|layername=")
+    if path.lower().endswith(".tif"):
+        return gdal.Open(path).GetMetadataItem("TIFFTAG_IMAGEDESCRIPTION") or ""
+    if not path.lower().endswith(".gpkg"):
+        return None
+    dataset = gdal.OpenEx(path, gdal.OF_VECTOR)
+    found = dataset.GetLayerByName(layer) if layer else dataset.GetLayer(0)
+    return found.GetMetadataItem("DESCRIPTION") or ""
+
+
+def unrecorded(alg, results, project):
+    """The outputs whose file or loaded layer does not record the run, and the layers of a view
+    not named for it."""
+    wrong = []
+    for name, value in results.items():
+        note = file_note(value) if alg.outputDefinition(name).type() in (
+            "outputVector", "outputRaster", "outputLayer") and value else None
+        if note is not None and not note.startswith(DEM_NAME):
+            wrong.append(f"{name}'s file: {file_note(value)!r}")
+    for layer in project.mapLayers().values():
+        abstract = layer.metadata().abstract()
+        if alg.name() != "drape" and not (abstract.startswith(DEM_NAME) and
+                                          "Terrain Sketch" in abstract):
+            wrong.append(f"layer {layer.name()}'s abstract: {abstract!r}")
+        if alg.name() not in ("drape", "panorama") and ", from " not in layer.name():
+            wrong.append(f"layer name {layer.name()!r}")
+    return wrong
+
+
 def run_as_dialog(alg_id, inputs):
     """Runs `alg_id` with `inputs` and every destination a temporary output, as the dialog does;
-    returns (Processing's errors and the empty temporary folders it left, the outputs not loaded
-    into the project)."""
+    returns (Processing's errors, the empty temporary folders it left and the outputs that do not
+    record the run, the outputs not loaded into the project)."""
     folders_before = temporary_folders()
     project = QgsProject.instance()
     project.removeAllMapLayers()
@@ -75,7 +111,7 @@ def run_as_dialog(alg_id, inputs):
                                      for source in loaded)]
     empty = [f"empty temporary folder {folder}"
              for folder in sorted(temporary_folders() - folders_before) if not os.listdir(folder)]
-    return feedback.errors + empty, missing
+    return feedback.errors + empty + unrecorded(alg, results, project), missing
 
 
 CASES = [

@@ -1,0 +1,30 @@
+// What the plugin's outputs record of the run that made them, in the user's language: the words
+// of core's run_note.h for the layers' metadata, their names and a GeoPackage's layer description.
+#pragma once
+
+#include <QString>
+
+#include "core/method/adaptive_filter.h"
+#include "core/method/params.h"
+#include "plugin/layer_style.h"
+
+namespace tsk::plugin {
+
+// "the slope filter adapted to the DEM: row 20 %, column 12 %, control point 8.73 %"
+QString filterPhrase(const FilterReport& filter);
+
+// "from 250°": the view, for a layer's name.
+QString fromAzimuth(const ViewParams& view);
+
+// The silhouettes' note: "jacksboro_utm16n, band 1. Seen from 250° (azimuth), vertical
+// exaggeration 2.5, base slope 40 %; <filterPhrase>; drawn strokes. Terrain Sketch 0.1.0."
+QString sketchNote(const QString& dem, const ViewParams& view, const FilterReport& filter,
+                   bool drawn);
+
+// Another product of the view: titled "<product>, from 250°", with the note "<dem>. <product>
+// seen from 250° (azimuth), vertical exaggeration 2.5, base slope 40 %[; <filterPhrase>].
+// Terrain Sketch 0.1.0." (the filter where one ran).
+RunNote productNote(const QString& dem, const QString& product, const ViewParams& view,
+                    const FilterReport* filter = nullptr);
+
+}  // namespace tsk::plugin
