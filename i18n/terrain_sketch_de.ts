@@ -123,7 +123,7 @@
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/drape_algorithm.cpp" line="152" />
+        <location filename="../plugin/drape_algorithm.cpp" line="151" />
         <source>A drape of %1</source>
         <translation>Drapierung von %1</translation>
     </message>
@@ -487,7 +487,7 @@
 <context>
     <name>QmlStyler</name>
     <message>
-        <location filename="../plugin/layer_style.cpp" line="33" />
+        <location filename="../plugin/layer_style.cpp" line="35" />
         <source>Could not apply style %1: %2</source>
         <translation>Stil %1 konnte nicht angewendet werden: %2</translation>
     </message>
@@ -800,22 +800,22 @@
 <context>
     <name>SilhouettesAlgorithm</name>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="49" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="51" />
         <source>Silhouettes (factual and formulated)</source>
         <translation>Silhouetten (faktisch und formuliert)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="53" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="55" />
         <source>silhouette,occluding contour,sketch,oblique,panorama,block diagram,plan oblique,terrain,dem,hidden</source>
         <translation>Silhouette,Verdeckungskontur,Skizze,Schrägansicht,Panorama,Blockbild,Plan oblique,Gelände,DGM,verdeckt</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="59" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="61" />
         <source>Draws the silhouette lines of a DEM seen obliquely from above as vector strokes.</source>
         <translation>Zeichnet die Silhouettenlinien eines schräg von oben gesehenen DGM als Vektorstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="63" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="65" />
         <source>Finds the lines a cartographer sketches first when drawing terrain seen obliquely from above.
 
 Factual Silhouettes are occluding contours: cells beyond which the terrain hides what lies behind it, in a parallel view with vertical exaggeration and a base slope added along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view brings into sight (the candidate set), kept where the slope filter finds them significant (outside the weak/weak corner of column slope against row slope), thinned to the cell furthest from the viewer and chained across profiles.
@@ -844,172 +844,182 @@ Die Stufenkennzahlen (Protokoll und Ausgaben), in Prozent der Zellen mit Daten: 
 Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="111" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
         <source>Chaining window (cells)</source>
         <translation>Verkettungsfenster (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="112" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="114" />
         <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
         <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="113" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
         <source>Minimum stroke cells</source>
         <translation>Mindestzahl Zellen je Strich</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="114" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
         <source>Strokes with fewer cells are dropped (generalisation).</source>
         <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="119" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="119" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="121" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="119" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="121" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="124" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="125" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="124" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="126" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="128" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="130" />
         <source>Profiles per strip (0: automatic)</source>
         <translation>Profile je Streifen (0: automatisch)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="129" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="131" />
         <source>The DEM is read and processed this many profiles at a time, the next strip read while this one is processed, so DEMs larger than memory run too. 0 chooses 1024, more for profiles under 1024 cells (a million cells a strip), or fewer when profiles are so long that the strips would take more than 512 MB. Strips that would take more than half of this machine's memory are refused.</source>
         <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, mehr für Profile unter 1024 Zellen (eine Million Zellen je Streifen), oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="135" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="137" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="136" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="138" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="137" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="139" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="138" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="140" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="152" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="154" />
         <source>Drawn (the default): strokes a cartographer would publish. Pieces of one class that continue each other across a small gap are joined before short strokes are dropped; points lie between cells where the profile peaks or the slope breaks, and are smoothed along the stroke; every point carries a weight (its M value) that tapers the ends and thins the strokes towards the back of the view, which the layers' styles draw. Exact: the thesis's strokes, a point at each cell centre.</source>
         <translation>Gezeichnet (Voreinstellung): Striche, wie sie ein Kartograf veröffentlichen würde. Stücke einer Klasse, die einander über eine kleine Lücke fortsetzen, werden verbunden, bevor kurze Striche entfallen; Punkte liegen zwischen den Zellen, wo das Profil gipfelt oder die Neigung bricht, und werden entlang des Strichs geglättet; jeder Punkt trägt ein Gewicht (seinen M-Wert), das die Enden verjüngt und die Striche zum hinteren Rand der Ansicht hin dünner macht, wie es die Stile der Layer zeichnen. Exakt: die Striche der Dissertation, ein Punkt in jeder Zellmitte.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="158" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="160" />
+        <source>Drawn for scale</source>
+        <translation>Gezeichnet für Maßstab</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="161" />
+        <source>Drawn strokes: the scale of the map they are drawn for (1:N). The shortest stroke (2 mm on paper), the smoothing, its tolerance and the join gap become at least what that scale needs, strokes outlining less than N/10 000 metres of relief are left out, and the layers' styles draw their widths true at that scale (the renderer's reference scale). Empty: for no scale; every stroke is still weighed by the relief it outlines.</source>
+        <translation>Gezeichnete Striche: der Maßstab der Karte, für die sie gezeichnet werden (1:N). Der kürzeste Strich (2 mm auf dem Papier), die Glättung, ihre Toleranz und die Verbindungslücke werden mindestens so groß, wie dieser Maßstab es verlangt; Striche, die weniger als N/10 000 Meter Relief umreißen, entfallen, und die Stile der Layer zeichnen ihre Breiten in diesem Maßstab wahr (der Bezugsmaßstab des Renderers). Leer: für keinen Maßstab; jeder Strich wird dennoch nach dem Relief gewichtet, das er umreißt.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="167" />
         <source>Join gap (cells)</source>
         <translation>Verbindungslücke (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="159" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="168" />
         <source>Drawn strokes: ends of two strokes this close (in cells) are joined when their directions agree. 0 joins none.</source>
         <translation>Gezeichnete Striche: Enden zweier Striche, die so nahe beieinander liegen (in Zellen), werden verbunden, wenn ihre Richtungen übereinstimmen. 0 verbindet keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="161" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="170" />
         <source>Join angle (degrees)</source>
         <translation>Verbindungswinkel (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="162" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="171" />
         <source>Drawn strokes: the largest turn between two ends' directions, and the step between them, for them to be joined.</source>
         <translation>Gezeichnete Striche: die größte Drehung zwischen den Richtungen zweier Enden und dem Schritt zwischen ihnen, bei der sie noch verbunden werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="164" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="173" />
         <source>Smoothing (cells)</source>
         <translation>Glättung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="165" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="174" />
         <source>Drawn strokes: the width (sigma, in cells) of the Gaussian smoothing along each stroke. 0 keeps the points where they are.</source>
         <translation>Gezeichnete Striche: die Breite (Sigma, in Zellen) der Gaußschen Glättung entlang jedes Strichs. 0 lässt die Punkte, wo sie sind.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="167" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="176" />
         <source>Smoothing tolerance (cells)</source>
         <translation>Glättungstoleranz (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="168" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="177" />
         <source>Drawn strokes: no point moves farther than this (in cells) from its place on the exact chain, so smoothing never invents terrain.</source>
         <translation>Gezeichnete Striche: kein Punkt liegt weiter als dies (in Zellen) von seinem Platz auf der exakten Kette, so dass die Glättung nie Gelände erfindet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="170" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="179" />
         <source>Taper (share of the stroke)</source>
         <translation>Verjüngung (Anteil des Strichs)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="171" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="180" />
         <source>Drawn strokes: the share of a stroke's length over which each end thins.</source>
         <translation>Gezeichnete Striche: der Anteil der Strichlänge, über den jedes Ende dünner wird.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="172" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="181" />
         <source>Depth cue</source>
         <translation>Tiefenwirkung</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="173" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="182" />
         <source>Drawn strokes: the share of the weight strokes lose from the front of the view to its back.</source>
         <translation>Gezeichnete Striche: der Anteil des Gewichts, den Striche vom vorderen zum hinteren Rand der Ansicht verlieren.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="175" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="184" />
         <source>Over-extension (cells)</source>
         <translation>Überzeichnung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="176" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="185" />
         <source>Drawn strokes: each end runs on this far (in cells) along its direction, as a hand-drawn stroke does. 0: none.</source>
         <translation>Gezeichnete Striche: jedes Ende läuft so weit (in Zellen) in seiner Richtung weiter, wie es ein von Hand gezeichneter Strich tut. 0: keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="221" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="233" />
         <source>Processing the DEM in %1 strips of %2 profiles.</source>
         <translation>Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="261" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="274" />
         <source>Factual silhouettes, %1</source>
         <translation>Faktische Silhouetten, %1</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="263" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="277" />
         <source>Formulated silhouettes, %1</source>
         <translation>Formulierte Silhouetten, %1</translation>
     </message>
@@ -1043,52 +1053,57 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
 <context>
     <name>tsk::plugin</name>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="14" />
+        <location filename="../plugin/run_notes.cpp" line="16" />
         <source>%1: row %L2 %, column %L3 %, control point %L4 %</source>
         <translation>%1: Zeile %L2 %, Spalte %L3 %, Kontrollpunkt %L4 %</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="15" />
+        <location filename="../plugin/run_notes.cpp" line="17" />
         <source>the thesis's slope filter</source>
         <translation>der Neigungsfilter der Dissertation</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="16" />
+        <location filename="../plugin/run_notes.cpp" line="18" />
         <source>the slope filter adapted to the DEM</source>
         <translation>der an das DGM angepasste Neigungsfilter</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="23" />
+        <location filename="../plugin/run_notes.cpp" line="25" />
         <source>from %L1°</source>
         <translation>von %L1°</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="28" />
+        <location filename="../plugin/run_notes.cpp" line="31" />
+        <source>drawn strokes for 1:%L1</source>
+        <translation>gezeichnete Striche für 1:%L1</translation>
+    </message>
+    <message>
+        <location filename="../plugin/run_notes.cpp" line="33" />
         <source>%1. Seen from %L2° (azimuth), vertical exaggeration %L3, base slope %L4 %; %5; %6. Terrain Sketch %7.</source>
         <translation>%1. Gesehen aus %L2° (Azimut), Überhöhung %L3, Grundneigung %L4 %; %5; %6. Terrain Sketch %7.</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="35" />
+        <location filename="../plugin/run_notes.cpp" line="32" />
         <source>drawn strokes</source>
         <translation>gezeichnete Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="35" />
+        <location filename="../plugin/run_notes.cpp" line="40" />
         <source>the thesis's exact strokes</source>
         <translation>die exakten Striche der Dissertation</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="42" />
+        <location filename="../plugin/run_notes.cpp" line="47" />
         <source>%1. %2 seen from %L3° (azimuth), vertical exaggeration %L4, base slope %L5 %</source>
         <translation>%1. %2, gesehen aus %L3° (Azimut), Überhöhung %L4, Grundneigung %L5 %</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="48" />
+        <location filename="../plugin/run_notes.cpp" line="53" />
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="50" />
+        <location filename="../plugin/run_notes.cpp" line="55" />
         <source>. Terrain Sketch %1.</source>
         <translation>. Terrain Sketch %1.</translation>
     </message>

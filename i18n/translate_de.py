@@ -35,6 +35,10 @@ GERMAN = {
     "the thesis's slope filter": "der Neigungsfilter der Dissertation",
     "the slope filter adapted to the DEM": "der an das DGM angepasste Neigungsfilter",
     "drawn strokes": "gezeichnete Striche",
+    "drawn strokes for 1:%L1": "gezeichnete Striche für 1:%L1",
+    "Drawn for scale": "Gezeichnet für Maßstab",
+    "Drawn strokes: the scale of the map they are drawn for (1:N). The shortest stroke (2 mm on paper), the smoothing, its tolerance and the join gap become at least what that scale needs, strokes outlining less than N/10 000 metres of relief are left out, and the layers' styles draw their widths true at that scale (the renderer's reference scale). Empty: for no scale; every stroke is still weighed by the relief it outlines.":
+        "Gezeichnete Striche: der Maßstab der Karte, für die sie gezeichnet werden (1:N). Der kürzeste Strich (2 mm auf dem Papier), die Glättung, ihre Toleranz und die Verbindungslücke werden mindestens so groß, wie dieser Maßstab es verlangt; Striche, die weniger als N/10 000 Meter Relief umreißen, entfallen, und die Stile der Layer zeichnen ihre Breiten in diesem Maßstab wahr (der Bezugsmaßstab des Renderers). Leer: für keinen Maßstab; jeder Strich wird dennoch nach dem Relief gewichtet, das er umreißt.",
     "the thesis's exact strokes": "die exakten Striche der Dissertation",
     "Internal error: no output set for %1.": "Interner Fehler: keine Ausgabemenge für %1.",
     "%1 must be a GeoTIFF (.tif): %2 is another format.":

@@ -6,6 +6,8 @@
 #include <qgsprocessingfeedback.h>
 #include <qgsproject.h>
 #include <qgsrasterlayer.h>
+#include <qgsrenderer.h>
+#include <qgsvectorlayer.h>
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -33,6 +35,9 @@ class QmlStyler : public QgsProcessingLayerPostProcessorInterface {
       feedback->reportError(tr("Could not apply style %1: %2").arg(mQmlPath, message), false);
     }
     if (!ok) return;
+    auto* vector = qobject_cast<QgsVectorLayer*>(layer);
+    if (vector && vector->renderer() && mNote.referenceScale > 0)
+      vector->renderer()->setReferenceScale(mNote.referenceScale);
     auto* raster = qobject_cast<QgsRasterLayer*>(layer);
     if (raster && mRange == RampRange::data) {
       raster->setContrastEnhancement(QgsContrastEnhancement::StretchToMinimumMaximum,

@@ -27,6 +27,9 @@ struct RunNote {
   // A panorama's layers go to its layout as they load; its strokes (`panorama`) set the map.
   std::shared_ptr<PanoramaLayout> layout;
   bool panorama = false;
+  // Drawn strokes drawn for 1:referenceScale: the style's widths are true at that scale and grow
+  // and shrink with the map's (0: the same on paper at every scale).
+  double referenceScale = 0.0;
 };
 
 // Main thread: if QGIS will load `destinationId` on completion, applies styles/<style>.qml to it,

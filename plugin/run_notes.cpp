@@ -26,7 +26,10 @@ QString fromAzimuth(const ViewParams& view) {
 }
 
 QString sketchNote(const QString& dem, const ViewParams& view, const FilterReport& filter,
-                   bool drawn) {
+                   const DrawnParams& strokes) {
+  const QString drawn = strokes.scale > 0
+                            ? tr("drawn strokes for 1:%L1").arg(strokes.scale, 0, 'f', 0)
+                            : tr("drawn strokes");
   return tr("%1. Seen from %L2° (azimuth), vertical exaggeration %L3, base slope %L4 %; %5; %6. "
             "Terrain Sketch %7.")
       .arg(dem)
@@ -34,7 +37,7 @@ QString sketchNote(const QString& dem, const ViewParams& view, const FilterRepor
       .arg(view.ve, 0, 'g', 3)
       .arg(view.base_slope_pct, 0, 'g', 3)
       .arg(filterPhrase(filter))
-      .arg(drawn ? tr("drawn strokes") : tr("the thesis's exact strokes"))
+      .arg(strokes.drawn() ? drawn : tr("the thesis's exact strokes"))
       .arg(QStringLiteral(TSK_VERSION));
 }
 

@@ -17,9 +17,10 @@ QString filterPhrase(const FilterReport& filter);
 QString fromAzimuth(const ViewParams& view);
 
 // The silhouettes' note: "jacksboro_utm16n, band 1. Seen from 250° (azimuth), vertical
-// exaggeration 2.5, base slope 40 %; <filterPhrase>; drawn strokes. Terrain Sketch 0.1.0."
+// exaggeration 2.5, base slope 40 %; <filterPhrase>; drawn strokes [for 1:250 000]. Terrain
+// Sketch 0.1.0."
 QString sketchNote(const QString& dem, const ViewParams& view, const FilterReport& filter,
-                   bool drawn);
+                   const DrawnParams& strokes);
 
 // Another product of the view: titled "<product>, from 250°", with the note "<dem>. <product>
 // seen from 250° (azimuth), vertical exaggeration 2.5, base slope 40 %[; <filterPhrase>].

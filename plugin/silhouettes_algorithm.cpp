@@ -2,6 +2,7 @@
 
 #include <qgsprocessingfeedback.h>
 #include <qgsprocessingoutputs.h>
+#include <qgsprocessingparameters.h>
 #include <qgsrasterlayer.h>
 
 #include <new>
@@ -32,6 +33,7 @@ const QString kSmoothTolerance = QStringLiteral("SMOOTH_TOLERANCE");
 const QString kTaper = QStringLiteral("TAPER");
 const QString kDepthCue = QStringLiteral("DEPTH_CUE");
 const QString kExtend = QStringLiteral("EXTEND");
+const QString kDrawnFor = QStringLiteral("DRAWN_FOR");
 const QString kFactual = QStringLiteral("FACTUAL");
 const QString kFormulated = QStringLiteral("FORMULATED");
 
@@ -155,6 +157,17 @@ void SilhouettesAlgorithm::addStrokeParameters() {
          "along the stroke; every point carries a weight (its M value) that tapers the ends and "
          "thins the strokes towards the back of the view, which the layers' styles draw. Exact: "
          "the thesis's strokes, a point at each cell centre.")));
+  auto* scale = new QgsProcessingParameterScale(kDrawnFor, tr("Drawn for scale"), QVariant(), true);
+  scale->setMinimum(0);
+  scale->setMetadata(
+      {{QStringLiteral("widget_wrapper"), QVariantMap{{QStringLiteral("decimals"), 0}}}});
+  addWithHelp(scale,
+              tr("Drawn strokes: the scale of the map they are drawn for (1:N). The shortest "
+                 "stroke (2 mm on paper), the smoothing, its tolerance and the join gap become at "
+                 "least what that scale needs, strokes outlining less than N/10 000 metres of "
+                 "relief are left out, and the layers' styles draw their widths true at that "
+                 "scale (the renderer's reference scale). Empty: for no scale; every stroke is "
+                 "still weighed by the relief it outlines."));
   add(kJoinGap, tr("Join gap (cells)"), defaults.join_gap_cells, 0, 20,
       tr("Drawn strokes: ends of two strokes this close (in cells) are joined when their "
          "directions agree. 0 joins none."));
@@ -188,6 +201,9 @@ void SilhouettesAlgorithm::readStrokes(const QVariantMap& parameters,
   d.taper = parameterAsDouble(parameters, kTaper, context);
   d.depth_cue = parameterAsDouble(parameters, kDepthCue, context);
   d.extend_cells = parameterAsDouble(parameters, kExtend, context);
+  d.scale = parameters.value(kDrawnFor).isValid() && !parameters.value(kDrawnFor).isNull()
+                ? parameterAsDouble(parameters, kDrawnFor, context)
+                : 0.0;
 }
 
 double SilhouettesAlgorithm::readParameters(const QVariantMap& parameters,
@@ -234,7 +250,7 @@ QVariantMap SilhouettesAlgorithm::writeOutputs(const QVariantMap& parameters,
     });
   });
   SharedParameters::logFilter(result.filter, feedback);
-  mNote = sketchNote(demName(), mParams.view, result.filter, mParams.strokes.drawn());
+  mNote = sketchNote(demName(), mParams.view, result.filter, mParams.strokes);
   factual.finish(mNote);
   formulated.finish(mNote);
   mFactualId = factual.destination();
@@ -257,10 +273,12 @@ QVariantMap SilhouettesAlgorithm::postProcessAlgorithm(QgsProcessingContext& con
   // Drawn strokes get the styles that draw their weights: tapered, thinner at the back.
   const QString drawn = mParams.strokes.drawn() ? QStringLiteral("_drawn") : QString();
   const QString from = fromAzimuth(mParams.view);
+  const double scale = mParams.strokes.drawn() ? mParams.strokes.scale : 0.0;
   styleOnCompletion(context, mFactualId, QStringLiteral("factual") + drawn, RampRange::style,
-                    {tr("Factual silhouettes, %1").arg(from), mNote, true, nullptr, false});
-  styleOnCompletion(context, mFormulatedId, QStringLiteral("formulated") + drawn, RampRange::style,
-                    {tr("Formulated silhouettes, %1").arg(from), mNote, false, nullptr, false});
+                    {tr("Factual silhouettes, %1").arg(from), mNote, true, nullptr, false, scale});
+  styleOnCompletion(
+      context, mFormulatedId, QStringLiteral("formulated") + drawn, RampRange::style,
+      {tr("Formulated silhouettes, %1").arg(from), mNote, false, nullptr, false, scale});
   return {};
 }
 

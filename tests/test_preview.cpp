@@ -301,6 +301,31 @@ TEST_CASE("the strokes and the vector art record the run that made them", "[cli]
   CHECK_THAT(std::string(description), Catch::Contains(expected));
 }
 
+TEST_CASE("strokes drawn for a scale say so, and keep fewer strokes", "[cli][preview]") {
+  ScratchDir dir("drawn_for");
+  const auto strokes = [](const std::string& path) {
+    GDALAllRegister();
+    tsk::io::DatasetPtr ds(static_cast<GDALDataset*>(
+        GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    REQUIRE(ds);
+    const char* description = ds->GetLayer(0)->GetMetadataItem("DESCRIPTION");
+    return std::make_pair(ds->GetLayer(0)->GetFeatureCount(),
+                          std::string(description ? description : ""));
+  };
+  REQUIRE(run_cli({"silhouettes", kSample, dir / "own.gpkg"}).code == 0);
+  REQUIRE(run_cli({"silhouettes", kSample, dir / "small.gpkg", "--drawn-for", "1000000"}).code ==
+          0);
+  const auto own = strokes(dir / "own.gpkg"), small = strokes(dir / "small.gpkg");
+  CHECK_THAT(own.second, Catch::Contains("; drawn strokes. Terrain Sketch"));
+  CHECK_THAT(small.second, Catch::Contains("; drawn strokes for 1:1000000. Terrain Sketch"));
+  CHECK(small.first > 0);
+  CHECK(small.first < own.first / 4);
+  // Not a scale: refused by name.
+  const CliRun bad = run_cli({"silhouettes", kSample, dir / "bad.gpkg", "--drawn-for", "50"});
+  CHECK(bad.code != 0);
+  CHECK_THAT(bad.err, Catch::Contains("scale drawn for"));
+}
+
 TEST_CASE("the P-strokes, profile lines and panorama record the run that made them",
           "[cli][preview]") {
   ScratchDir dir("product_notes");

@@ -5,6 +5,7 @@
 #include <iterator>
 #include <limits>
 
+#include "core/drawn/drawing_scale.h"
 #include "core/drawn/stroke_smoothing.h"
 #include "core/drawn/stroke_weights.h"
 #include "core/method/plan_oblique.h"
@@ -28,6 +29,7 @@ DrawingSetup drawing_setup(const OrientedFrame& frame, const GeoTransform& geotr
   setup.across = distance(origin, next_profile);
   setup.cells_per_metre = PlanObliqueShift(params.view, frame.d, z_ref)(0.0, z_ref + 1.0);
   setup.z_ref = z_ref;
+  fit_to_scale(setup);
   return setup;
 }
 
@@ -42,8 +44,11 @@ void shift_plan_oblique(Stroke& stroke, const DrawingSetup& setup) {
   }
 }
 
-// Smooths, places, runs on and weighs one joined stroke.
-void finish_stroke(Stroke& stroke, const DrawingSetup& setup) {
+// Smooths, places, runs on and weighs one joined stroke; false when it outlines too little relief
+// for the scale drawn for, and vanishes.
+bool finish_stroke(Stroke& stroke, const DrawingSetup& setup) {
+  const double relief = stroke_relief(stroke);
+  if (relief < setup.relief_vanishing) return false;
   const DrawnParams& p = setup.drawn;
   // The exact places: each point's cell centre, the sub-cell offset along the profile undone.
   // Storage kept from stroke to stroke (one drawing thread at a time per drawer).
@@ -64,7 +69,10 @@ void finish_stroke(Stroke& stroke, const DrawingSetup& setup) {
   extend_stroke(stroke, p.extend_cells * setup.cell, 3.0 * setup.cell);
   const double weighed_length = weigh_stroke(stroke, {p.taper, p.depth_cue, setup.depth});
   if (!moves) stroke.length = weighed_length;
+  const double weight = relief_weight(relief, setup.relief_full);
+  for (double& w : stroke.weights) w *= weight;
   stroke.vertices = {};
+  return true;
 }
 
 }  // namespace
@@ -132,8 +140,7 @@ void StrokeDrawer::draw(StrokeGroups& groups, const Out& out) const {
     const std::size_t first_piece = groups.firsts[group++];
     const auto finish = [&](Stroke& stroke) {
       // The generalisation comes after joining: only pieces still short and alone are dropped.
-      if (stroke.cells < setup_.min_cells) return;
-      finish_stroke(stroke, setup_);
+      if (stroke.cells < setup_.min_cells || !finish_stroke(stroke, setup_)) return;
       out(first_piece, std::move(stroke));
     };
     const auto first = groups.pieces.begin() + static_cast<std::ptrdiff_t>(begin);

@@ -40,6 +40,10 @@ struct DrawingSetup {
   StrokePoint cell_step{0.0, 0.0};
   double cells_per_metre = 0.0;
   double z_ref = 0.0;
+  // The relief a stroke is drawn at full weight for, and below which it vanishes (0: none),
+  // metres (drawing_scale.h).
+  double relief_full = 0.0;
+  double relief_vanishing = 0.0;
 };
 
 DrawingSetup drawing_setup(const OrientedFrame& frame, const GeoTransform& geotransform,

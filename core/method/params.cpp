@@ -59,6 +59,8 @@ void DrawnParams::validate() const {
   require_range(taper, 0.0, 0.5, "taper (share of the stroke length at each end)");
   require_range(depth_cue, 0.0, 0.95, "depth cue (weight lost from front to back)");
   require_range(extend_cells, 0.0, 10.0, "over-extension (cells)");
+  require(scale == 0.0 || (scale >= 100.0 && scale <= 1e9),
+          "the scale drawn for (1:N) must be 0 (none) or from 100 to 1 000 000 000");
 }
 
 void SilhouetteParams::validate() const {

@@ -69,6 +69,10 @@ struct DrawnParams {
   double taper = 0.25;                  // share of a stroke's length tapered at each end
   double depth_cue = 0.5;               // weight lost from the front of the view to its back
   double extend_cells = 0.0;            // over-extension of each end along its tangent
+  // Drawn for a map at 1:scale: the smallest stroke, the smoothing, its tolerance and the join
+  // gap are at least what that scale needs on paper, and strokes outlining too little relief for
+  // it vanish. 0: no scale; the relief weights follow the DEM's own scale (drawn_strokes.h).
+  double scale = 0.0;
   bool drawn() const { return mode == StrokeMode::drawn; }
   void validate() const;
 };

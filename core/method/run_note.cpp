@@ -1,5 +1,6 @@
 #include "core/method/run_note.h"
 
+#include <iomanip>
 #include <sstream>
 
 namespace tsk {
@@ -31,8 +32,9 @@ std::string run_note(const RunFacts& f) {
   note.precision(4);
   put_view(note, f, "");
   put_filter(note, f.filter);
-  note << "; " << (f.drawn ? "drawn strokes" : "the thesis's exact strokes") << ". Terrain Sketch "
-       << f.version << ".";
+  note << "; " << (f.drawn ? "drawn strokes" : "the thesis's exact strokes");
+  if (f.drawn && f.scale > 0.0) note << " for 1:" << std::fixed << std::setprecision(0) << f.scale;
+  note << ". Terrain Sketch " << f.version << ".";
   return note.str();
 }
 

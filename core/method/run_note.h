@@ -17,11 +17,12 @@ struct RunFacts {
   FilterReport filter;  // the filter the run ran
   bool drawn = true;    // drawn strokes, or the thesis's exact ones
   std::string version;  // of Terrain Sketch
+  double scale = 0.0;   // drawn strokes: drawn for 1:scale (0: for no scale)
 };
 
 // "jacksboro_utm16n.tif, band 1. Seen from 250° (azimuth), vertical exaggeration 2.5, base slope
 // 40 %; the slope filter adapted to the DEM: row 20 %, column 12 %, control point 8.73 %; drawn
-// strokes. Terrain Sketch 0.1.0."
+// strokes. Terrain Sketch 0.1.0." ("drawn strokes for 1:250000" with a scale).
 std::string run_note(const RunFacts& facts);
 
 // The same for another product of the view (`product`: "P-strokes", "Profile lines"), without the

@@ -115,7 +115,7 @@ std::string stitch_bands(const std::string& input, const std::string& output,
       io::kStrokeLayer, drawn,
       [&] {
         return run_note({std::filesystem::path(o.input).filename().string(), o.dem.band,
-                         o.params.view, result.filter, drawn, TSK_VERSION});
+                         o.params.view, result.filter, drawn, TSK_VERSION, o.params.strokes.scale});
       });
   return cli::stats_json(result.stats, result.filter);
 }

@@ -130,6 +130,18 @@ for alg_id, inputs in CASES:
     passed, failed = passed + ok, failed + (not ok)
     print(("ok      " if ok else "FAILED  ") + alg_id +
           ("" if ok else f": errors {errors}, not loaded {missing}"), flush=True)
+# Drawn for 1:250 000, the strokes' styles draw their widths true at that scale: the renderer's
+# reference scale, set as Processing loads the layers.
+errors, missing = run_as_dialog("silhouettes", {"INPUT": SAMPLE, "DRAWN_FOR": 250000})
+scales = [layer.renderer().referenceScale() for layer in QgsProject.instance().mapLayers().values()]
+notes = [layer.metadata().abstract() for layer in QgsProject.instance().mapLayers().values()]
+ok = (not errors and not missing and scales == [250000, 250000] and
+      all("drawn strokes for 1:250,000" in note for note in notes))
+passed, failed = passed + ok, failed + (not ok)
+print(("ok      " if ok else "FAILED  ") + "drawn for a scale" +
+      ("" if ok else f": errors {errors}, not loaded {missing}, scales {scales}, notes {notes}"),
+      flush=True)
+
 # The peaks in sight come labelled: the style's label settings are on once the layer loads.
 peaks = os.path.join(os.environ.get("TMPDIR", "/tmp"), "tsk_postprocessing_peaks.geojson")
 with open(peaks, "w") as f:

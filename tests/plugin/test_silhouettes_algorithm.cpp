@@ -139,3 +139,25 @@ TEST_CASE("the strips are mentioned only when the DEM takes more than one", "[pl
   REQUIRE(runAlgorithm(dem, {{"STRIPS", 100}}, dir, &strips).ok);
   CHECK(strips.infos.join(' ').contains(QStringLiteral("in 5 strips of 100 profiles")));
 }
+
+TEST_CASE("drawn for a small scale, the sketch keeps its big landforms only", "[plugin][scale]") {
+  QTemporaryDir dir;
+  const QString dem = kData + "/jacksboro_utm16n.tif";
+  const Run own = runAlgorithm(dem, {{"AZIMUTH", 250}}, dir);
+  REQUIRE(own.ok);
+  QTemporaryDir small;
+  const Run scaled = runAlgorithm(dem, {{"AZIMUTH", 250}, {"DRAWN_FOR", 1000000}}, small);
+  INFO(scaled.error.toStdString());
+  REQUIRE(scaled.ok);
+  // The same run as the command line's --drawn-for (fewer strokes, each at least 2 mm on paper:
+  // 2 km, 27 cells of 75 m).
+  const double ownStrokes = own.results.value("FACTUAL_STROKES").toDouble();
+  const double scaledStrokes = scaled.results.value("FACTUAL_STROKES").toDouble();
+  CHECK(scaledStrokes > 0);
+  CHECK(scaledStrokes < ownStrokes / 4);
+  QgsVectorLayer factual(scaled.results.value("FACTUAL").toString(), "f", "ogr");
+  REQUIRE(factual.isValid());
+  QgsFeature feature;
+  for (QgsFeatureIterator it = factual.getFeatures(); it.nextFeature(feature);)
+    CHECK(feature.attribute(QStringLiteral("cells")).toInt() >= 27);
+}
