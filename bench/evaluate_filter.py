@@ -2,10 +2,12 @@
 """Prints the measured goals of the adaptive slope filter (docs/ADAPTIVE_FILTER.md) against the
 thesis's fixed filter, on the DEMs in tests/data and DEMs made from them.
 
-Usage: bench/evaluate_filter.py BUILD_DIR [WORK_DIR] [--speed DEM8000.tif]
+Usage: bench/evaluate_filter.py BUILD_DIR [WORK_DIR] [--speed DEM8000.tif] [--held-out]
+--held-out adds the coarsening goal on every projected DEM in ../shared/data, from four azimuths.
 Needs GDAL's Python bindings (python3-gdal) and gdalwarp.
 """
 import json
+import math
 import os
 import sqlite3
 import statistics
@@ -107,6 +109,28 @@ def coarsening(tool, work):
                   f"{steps[1]:5.1f} % (4x of 1x: {100 * lengths[2] / lengths[0]:5.1f} %)")
 
 
+def held_out_coarsening(tool, work):
+    print("Held out: formulated length kept at each step of averaging to 2x and 4x, adaptive, "
+          "every projected DEM in ../shared/data from azimuths 0, 90, 200, 315 (goal >= 50 %)")
+    shared = os.path.join(REPO, "..", "shared", "data")
+    least = math.inf
+    for file in sorted(os.listdir(shared)):
+        src = os.path.join(shared, file)
+        srs = gdal.Open(src).GetSpatialRef() if file.endswith(".tif") else None
+        if not file.endswith(".tif") or (srs is not None and srs.IsGeographic()):
+            continue
+        dems = [src] + [average(src, k, os.path.join(work, f"{file[:-4]}_x{k}.tif")) for k in (2, 4)]
+        size = gdal.Open(dems[2])
+        row = []
+        for azimuth in (0, 90, 200, 315):
+            lengths = [tool.formulated(d, "adaptive", azimuth)[0] for d in dems]
+            steps = [100 * b / a if a else float("nan") for a, b in zip(lengths, lengths[1:])]
+            least = min([least] + [x for x in steps if x == x])
+            row.append(f"{steps[0]:4.0f} %, {steps[1]:4.0f} %")
+        print(f"  {file[:-4]:18s} (4x: {size.RasterXSize} x {size.RasterYSize}) " + "   ".join(row))
+    print(f"  least step: {least:.0f} %")
+
+
 def coarse(tool, work):
     print("Coarse DEMs: share of the c-set that passes the filter (f-set / c-set)")
     print("  goal: adaptive >= 10 % on cells of 1 km or more")
@@ -196,6 +220,8 @@ def speed(tool, dem):
 def main():
     args = sys.argv[1:]
     speed_dem = None
+    with_held_out = "--held-out" in args
+    args = [a for a in args if a != "--held-out"]
     if "--speed" in args:
         k = args.index("--speed")
         speed_dem = args[k + 1]
@@ -207,6 +233,8 @@ def main():
     gdal.UseExceptions()
     tool = Tool(os.path.abspath(args[0]), work)
     coarsening(tool, work)
+    if with_held_out:
+        held_out_coarsening(tool, work)
     coarse(tool, work)
     thesis_scale(tool)
     fine(tool, work)
