@@ -16,6 +16,7 @@
 #include <QDomDocument>
 #include <QFile>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -76,7 +77,8 @@ std::unique_ptr<QgsVectorLayer> straightStroke(const std::vector<double>& weight
   QgsLineString line;
   const double step = 4000.0 / (2 * weights.size() - 1);
   for (std::size_t k = 0; k < 2 * weights.size(); ++k)
-    line.addVertex(QgsPoint(QgsWkbTypes::PointM, 500000 + step * k, 4000000, 0, weights[k / 2]));
+    line.addVertex(QgsPoint(500000 + step * k, 4000000, std::numeric_limits<double>::quiet_NaN(),
+                            weights[k / 2]));  // a PointM: no z, an m
   QgsFeature feature;
   feature.setGeometry(QgsGeometry(line.clone()));
   QgsFeatureList features{feature};
