@@ -18,8 +18,9 @@
 //   run_recipes.h     the door every front end goes through (with sketch_silhouettes);
 //                     run_note.h (the run in a sentence, for the outputs' metadata)
 //
-// drawn/: drawn strokes (docs/DRAWN_STROKES.md): grouping, joining, smoothing, weights, outlines,
-//   the pen plotter's order, and the three drawing threads (drawing_pipeline.h).
+// drawn/: drawn strokes (docs/DRAWN_STROKES.md): grouping, joining, smoothing, weights, relief and
+//   the scale drawn for (drawing_scale.h), outlines, the pen plotter's order, and the three
+//   drawing threads (drawing_pipeline.h).
 // panorama/: the method from a point observer: rays all round, earth curvature, the visibility
 //   raster and peak labels (docs/PANORAMA.md).
 // applications/: profile_plot.h, pstrokes.h, drape.h [3]; diagnostics.h (classification and row
