@@ -120,8 +120,13 @@ TEST_CASE("concurrent runs into one shapefile leave one run's whole set", "[io][
     CAPTURE(round);
     std::vector<pid_t> runs;
     for (const std::string& az : azimuths)
-      runs.push_back(start_cli({"silhouettes", kSample, shared, "--azimuth", az}));
-    for (pid_t run : runs) REQUIRE(exit_code(run) == 0);
+      runs.push_back(start_cli({"silhouettes", kSample, shared, "--azimuth", az},
+                               dir / ("messages" + az + ".txt")));
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      const int code = exit_code(runs[k]);
+      INFO("from " << azimuths[k] << ": " << slurp(dir / ("messages" + azimuths[k] + ".txt")));
+      REQUIRE(code == 0);
+    }
     REQUIRE(whole_sets.count(features_read(shared)) == 1);
   }
 }
