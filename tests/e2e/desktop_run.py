@@ -121,10 +121,33 @@ def run_and_load(alg, params):
     return results
 
 
+def dialogs():
+    """Every algorithm's dialog as the toolbox opens it, given values as a user or a history entry
+    gives them; what the dialog would run is read back from its widgets."""
+    import processing
+    report["dialogs"] = {}
+    for alg in QgsApplication.processingRegistry().providerById("terrainsketch").algorithms():
+        given = {"INPUT": DEM, "SOURCE": DEM, "OBSERVER": "749008.1394,4009477.9308 [EPSG:32616]"}
+        if alg.id() == "terrainsketch:silhouettes":
+            given["DRAWN_FOR"] = 250000
+        given = {k: v for k, v in given.items() if alg.parameterDefinition(k) is not None}
+        dialog = processing.createAlgorithmDialog(alg.id(), given)
+        try:
+            read = dialog.mainWidget().createProcessingParameters() if dialog else {}
+        except Exception as e:  # noqa: BLE001 - the parameter the dialog refused goes to the report
+            read = {"refused": str(e.args[0].name()) if e.args else repr(e)}
+        report["dialogs"][alg.id()] = {k: (v if isinstance(v, (int, float)) else str(v))
+                                       for k, v in read.items()}
+        if dialog:
+            dialog.close()
+            dialog.deleteLater()
+
+
 def run():
     try:
         import processing
         import qgis.utils
+        dialogs()
         report["plugin_active"] = "terrain_sketch" in qgis.utils.active_plugins
         report["provider"] = QgsApplication.processingRegistry().providerById(
             "terrainsketch") is not None

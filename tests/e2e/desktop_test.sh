@@ -34,6 +34,12 @@ check(r.get("ok"), "run finished: %s" % r.get("error"))
 check(r.get("installed_from_zip"), "installed from the ZIP by QGIS's installer")
 check(os.path.exists(os.path.join(os.environ["TSK_E2E_OUT"], "profiles/profiles/default/python/plugins/terrain_sketch/libterrain_sketch_provider.so")), "unpacked into the profile")
 check(r.get("provider"), "provider registered")
+# Every algorithm's dialog builds its widgets, and the Silhouettes dialog's scale widget gives
+# back the scale it was given.
+dialogs = r.get("dialogs", {})
+check(len(dialogs) == 8, "eight dialogs built: %s" % list(dialogs))
+check(dialogs.get("terrainsketch:silhouettes", {}).get("DRAWN_FOR") == 250000,
+      "the dialog's Drawn for scale: %s" % dialogs.get("terrainsketch:silhouettes"))
 check(r.get("plugin_active"), "plugin active in the plugin manager")
 check(not r.get("not_loaded"), "outputs not loaded: %s" % r.get("not_loaded"))
 layers = {l["file"]: l for l in r.get("layers", [])}
