@@ -8,6 +8,7 @@
 #include <qgsprocessingutils.h>
 #include <qgsrasterlayer.h>
 
+#include <QLocale>
 #include <memory>
 
 #include "core/base/errors.h"
@@ -280,17 +281,15 @@ QVariantMap PanoramaAlgorithm::writeOutputs(const QVariantMap& parameters,
 
 QString PanoramaAlgorithm::runNote() const {
   const PanoramaView& v = mView;
+  const QLocale locale;
+  // In one pass: a '%1' in the DEM's name is no placeholder.
   return tr("%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from "
             "grid north); elevation angles drawn %L7 times as tall as azimuths are wide. Terrain "
             "Sketch %8.")
-      .arg(demName())
-      .arg(v.observer_x, 0, 'f', 0)
-      .arg(v.observer_y, 0, 'f', 0)
-      .arg(v.observer_height, 0, 'g', 4)
-      .arg(v.azimuth_from, 0, 'g', 4)
-      .arg(v.azimuth_to, 0, 'g', 4)
-      .arg(mExaggeration, 0, 'g', 3)
-      .arg(QStringLiteral(TSK_VERSION));
+      .arg(demName(), locale.toString(v.observer_x, 'f', 0), locale.toString(v.observer_y, 'f', 0),
+           locale.toString(v.observer_height, 'g', 4), locale.toString(v.azimuth_from, 'g', 4),
+           locale.toString(v.azimuth_to, 'g', 4), locale.toString(mExaggeration, 'g', 3),
+           QStringLiteral(TSK_VERSION));
 }
 
 QVariantMap PanoramaAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,

@@ -1,5 +1,6 @@
 // The Silhouettes algorithm run headless on real DEMs: features, fields, CRS and figures equal
 // the core's, strip by strip through the provider too.
+#include "plugin/run_notes.h"
 #include "plugin_test_support.h"
 
 using namespace tsk::plugin_test;
@@ -160,4 +161,21 @@ TEST_CASE("drawn for a small scale, the sketch keeps its big landforms only", "[
   QgsFeature feature;
   for (QgsFeatureIterator it = factual.getFeatures(); it.nextFeature(feature);)
     CHECK(feature.attribute(QStringLiteral("cells")).toInt() >= 27);
+}
+
+TEST_CASE("the run notes keep a layer's name as it is, placeholders and all", "[plugin][notes]") {
+  ViewParams view;
+  view.azimuth_deg = 250;
+  FilterReport filter;
+  DrawnParams strokes;
+  strokes.mode = StrokeMode::drawn;
+  strokes.scale = 250000;
+  const QString dem = QStringLiteral("odd %1 %2 name, band 1");
+  const QString sketch = plugin::sketchNote(dem, view, filter, strokes);
+  CHECK(sketch.startsWith(dem + QStringLiteral(". Seen from 250° (azimuth), vertical "
+                                               "exaggeration 2.5, base slope 40 %; the thesis's")));
+  CHECK(sketch.contains(QStringLiteral("; drawn strokes for 1:250,000. Terrain Sketch ")));
+  const plugin::RunNote product = plugin::productNote(dem, QStringLiteral("Row slope"), view);
+  CHECK(product.title == QStringLiteral("Row slope, from 250°"));
+  CHECK(product.abstract.startsWith(dem + QStringLiteral(". Row slope seen from 250°")));
 }
