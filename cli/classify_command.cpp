@@ -19,10 +19,9 @@ std::string classify(const Args& args, std::ostream& out, std::ostream& err,
   const io::Dem& dem = held.dem;
   const SilhouetteResult result = sketch_whole(o, held, progress, err);
   stop_if_interrupted();
-  io::write_classification(
-      o.output, classification_map(result.flags, dem.frame), dem.geotransform, dem.srs_wkt,
-      product_note({dem_name(o), o.dem.band, o.params.view, result.filter, false, TSK_VERSION},
-                   "Silhouette stages", true));
+  io::write_classification(o.output, classification_map(result.flags, dem.frame), dem.geotransform,
+                           dem.srs_wkt,
+                           product_note(run_facts(o, result.filter), "Silhouette stages", true));
   const std::string statistics = report_statistics(o, result.stats, result.filter);
   const StageStats& s = result.stats;
   out << o.output << ": hidden " << s.pct(s.hidden) << " %, occluding " << s.pct(s.occluding)

@@ -27,6 +27,16 @@ std::string dem_name(const Options& o) {
   return std::filesystem::path(o.input).filename().string();
 }
 
+RunFacts run_facts(const Options& o, const FilterReport& filter) {
+  return {dem_name(o),
+          o.dem.band,
+          o.params.view,
+          filter,
+          o.params.strokes.drawn(),
+          TSK_VERSION,
+          o.params.strokes.scale};
+}
+
 void print_filter(const FilterReport& r, std::ostream& err) {
   if (r.choice.mode == FilterMode::fixed) return;
   const FilterParams& c = r.cutoffs;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli/options.h"
+#include "core/method/run_note.h"
 #include "core/method/silhouettes.h"
 #include "io/read/dem_reader.h"
 
@@ -23,6 +24,10 @@ void print_filter(const FilterReport& report, std::ostream& err);
 
 // The DEM as the outputs' notes name it: its file's name.
 std::string dem_name(const Options& o);
+
+// What the outputs' notes say of the run (run_note.h): the DEM by its file's name and its band,
+// the view, `filter` where one ran, the strokes' mode and scale, and the version.
+RunFacts run_facts(const Options& o, const FilterReport& filter = {});
 
 // The stage statistics and the filter used as a JSON object (--stats-json).
 std::string stats_json(const StageStats& s, const FilterReport& filter);

@@ -30,7 +30,7 @@ std::string drape(const Args& args, std::ostream& out, std::ostream& err,
   stop_if_interrupted();
   io::write_float_raster(
       o.output, bands, drape.geotransform(dem.geotransform), dem.srs_wkt,
-      product_note({dem_name(o), o.dem.band, o.params.view, {}, false, TSK_VERSION},
+      product_note(run_facts(o),
                    "A drape of " + std::filesystem::path(o.source).filename().string(), false));
   out << o.output << ": " << bands.size() << " band(s) draped, " << drape.cols() << " x "
       << drape.rows() << " cells\n";

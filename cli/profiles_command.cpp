@@ -19,10 +19,8 @@ std::string profiles(const Args& args, std::ostream& out, std::ostream& err,
   const auto lines = plot_profiles(held.held(), o.params.view, static_cast<std::size_t>(o.every),
                                    o.params.threads);
   stop_if_interrupted();
-  io::write_profile_lines(
-      o.output, o.format, lines, dem.srs_wkt,
-      product_note({dem_name(o), o.dem.band, o.params.view, {}, false, TSK_VERSION},
-                   "Profile lines", false));
+  io::write_profile_lines(o.output, o.format, lines, dem.srs_wkt,
+                          product_note(run_facts(o), "Profile lines", false));
   out << o.output << ": " << lines.size() << " visible cross-section pieces\n";
   return {};
 }

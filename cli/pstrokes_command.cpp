@@ -20,10 +20,8 @@ std::string pstrokes(const Args& args, std::ostream& out, std::ostream& err,
   print_filter(run.filter, err);
   const std::vector<PStroke>& strokes = run.strokes;
   stop_if_interrupted();
-  io::write_pstrokes(
-      o.output, o.format, strokes, held.dem.srs_wkt,
-      product_note({dem_name(o), o.dem.band, o.params.view, run.filter, false, TSK_VERSION},
-                   "P-strokes", true));
+  io::write_pstrokes(o.output, o.format, strokes, held.dem.srs_wkt,
+                     product_note(run_facts(o, run.filter), "P-strokes", true));
   out << o.output << ": " << strokes.size() << " P-strokes\n";
   return {};
 }

@@ -19,10 +19,8 @@ std::string row_slope(const Args& args, std::ostream& out, std::ostream& err,
   const io::Dem& dem = held.dem;
   const HeightGrid slope = row_slope_map(dem.oriented, dem.frame);
   stop_if_interrupted();
-  io::write_float_raster(
-      o.output, {slope}, dem.geotransform, dem.srs_wkt,
-      product_note({dem_name(o), o.dem.band, o.params.view, {}, false, TSK_VERSION}, "Row slope",
-                   false));
+  io::write_float_raster(o.output, {slope}, dem.geotransform, dem.srs_wkt,
+                         product_note(run_facts(o), "Row slope", false));
   out << o.output << ": row slope in percent across azimuth " << dem.frame.azimuth_deg << "\n";
   return {};
 }

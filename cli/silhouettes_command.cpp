@@ -44,8 +44,7 @@ io::PlotterReport write_preview(const Options& o, SilhouetteResult& result,
 
 // The run in a sentence, for the outputs' metadata.
 std::string note_of(const Options& o, const FilterReport& filter) {
-  return run_note({dem_name(o), o.dem.band, o.params.view, filter, o.params.strokes.drawn(),
-                   TSK_VERSION, o.params.strokes.scale});
+  return run_note(run_facts(o, filter));
 }
 
 // The DEM of a run: held whole once for a preview, which draws over it too (refused when too

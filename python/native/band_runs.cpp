@@ -1,7 +1,5 @@
 #include "python/native/band_runs.h"
 
-#include <filesystem>
-
 #include "cli/command_support.h"
 #include "cli/options.h"
 #include "core/base/byte_stream.h"
@@ -112,11 +110,7 @@ std::string stitch_bands(const std::string& input, const std::string& output,
           stitcher.add(band_from_bytes(bytes), again);
         result = stitcher.finish(profiles);
       },
-      io::kStrokeLayer, drawn,
-      [&] {
-        return run_note({std::filesystem::path(o.input).filename().string(), o.dem.band,
-                         o.params.view, result.filter, drawn, TSK_VERSION, o.params.strokes.scale});
-      });
+      io::kStrokeLayer, drawn, [&] { return run_note(cli::run_facts(o, result.filter)); });
   return cli::stats_json(result.stats, result.filter);
 }
 
