@@ -252,190 +252,185 @@
 <context>
     <name>PanoramaAlgorithm</name>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="46" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="47" />
         <source>Panorama sketch</source>
         <translation>Panoramaskizze</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="50" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="51" />
         <source>The silhouettes of the terrain seen from a viewpoint, as a panorama board draws them: rays are cast from the observer all round (or over a field of view), every ray a profile of the silhouette method. Factual silhouettes are the occluding edges, the skyline and the ridges in front of it; Formulated silhouettes are back-facing slopes that the sight line, descending onto them, still reaches, kept by the slope filter. Heights are lowered by the earth's curvature, lessened by refraction. The strokes come on the map (the DEM's CRS) and in the panorama (x the azimuth, y the elevation angle, in degrees, without a CRS), far strokes drawn lighter.</source>
         <translation>Die Silhouetten des Geländes von einem Standpunkt aus, wie eine Panoramatafel sie zeichnet: Vom Beobachter werden Strahlen rundum (oder über ein Blickfeld) ausgesandt, jeder Strahl ein Profil der Silhouettenmethode. Faktische Silhouetten sind die verdeckenden Kanten, der Horizont und die Grate davor; formulierte Silhouetten sind abgewandte Hänge, die die Sichtlinie, auf sie hinabfallend, noch erreicht, vom Neigungsfilter ausgewählt. Die Höhen werden um die Erdkrümmung, vermindert durch die Refraktion, abgesenkt. Die Striche entstehen auf der Karte (im KBS des DGM) und im Panorama (x das Azimut, y der Höhenwinkel, in Grad, ohne KBS); ferne Striche sind heller gezeichnet.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="67" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="68" />
         <source>Observer</source>
         <translation>Beobachter</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="68" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="69" />
         <source>Where the viewer stands: click it on the map. It must lie on the DEM, on a cell with data.</source>
         <translation>Wo der Betrachter steht: in der Karte anklicken. Der Punkt muss auf dem DGM liegen, auf einer Zelle mit Daten.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="70" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="71" />
         <source>Observer height (m)</source>
         <translation>Beobachterhöhe (m)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="72" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="73" />
         <source>The eye's height above the ground at the observer, in metres.</source>
         <translation>Die Augenhöhe über dem Boden am Standpunkt, in Metern.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="74" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="75" />
         <source>Range (map units)</source>
         <translation>Reichweite (Karteneinheiten)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="77" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="78" />
         <source>The farthest distance drawn, in the DEM's map units; when not given, the whole DEM.</source>
         <translation>Die größte gezeichnete Entfernung in den Karteneinheiten des DGM; ohne Angabe das ganze DGM.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="80" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="81" />
         <source>Field of view from (degrees)</source>
         <translation>Blickfeld von (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="81" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="82" />
         <source>The field of view turns clockwise from this azimuth (from grid north) to the next. 0 to 360, the default, is all round.</source>
         <translation>Das Blickfeld dreht sich im Uhrzeigersinn von diesem Azimut (von Gitternord) zum nächsten. 0 bis 360, die Vorgabe, ist rundum.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="84" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="85" />
         <source>Field of view to (degrees)</source>
         <translation>Blickfeld bis (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="85" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="86" />
         <source>The azimuth the field of view ends at; equal azimuths make an empty field.</source>
         <translation>Das Azimut, bei dem das Blickfeld endet; gleiche Azimute ergeben ein leeres Blickfeld.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="86" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="87" />
         <source>Refraction coefficient</source>
         <translation>Refraktionskoeffizient</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="88" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="89" />
         <source>How much refraction lessens the earth's curvature (k): heights are lowered by (1 - k) d² / 2R at distance d. 0.13 is the usual value over land.</source>
         <translation>Wie stark die Refraktion die Erdkrümmung vermindert (k): Höhen werden in der Entfernung d um (1 - k) d² / 2R abgesenkt. 0,13 ist der übliche Wert über Land.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="91" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="92" />
         <source>Panorama exaggeration</source>
         <translation>Überhöhung des Panoramas</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="92" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="93" />
         <source>How many times as tall as its azimuths are wide the Panorama layer draws its elevation angles, 1 to 50. 0, the default, chooses up to 5 so that a wide field of view is no flat strip. The Panorama layout draws it so.</source>
         <translation>Wie viel Mal so hoch, wie seine Azimute breit sind, der Panorama-Layer seine Höhenwinkel zeichnet, 1 bis 50. 0, die Voreinstellung, wählt bis zu 5, damit ein weites Blickfeld kein flacher Streifen ist. Das Panorama-Layout zeichnet es so.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="102" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="103" />
         <source>Minimum stroke length (samples)</source>
         <translation>Mindestlänge der Striche (Abtastpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="104" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="105" />
         <source>Strokes of fewer samples are dropped.</source>
         <translation>Striche mit weniger Abtastpunkten werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="105" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="106" />
         <source>Formulated chaining window (samples)</source>
         <translation>Suchfenster der formulierten Verkettung (Abtastpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="107" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="108" />
         <source>How far along the next ray a formulated chain may step.</source>
         <translation>Wie weit eine formulierte Kette auf dem nächsten Strahl springen darf.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="109" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="110" />
         <source>Drawn (the default): a stroke is cut where its chain leaps along the rays, since a leap draws no line on the terrain. Exact: the thesis's strokes, each chain whole.</source>
         <translation>Gezeichnet (Standard): ein Strich wird getrennt, wo seine Kette entlang der Strahlen springt, denn ein Sprung zeichnet keine Linie im Gelände. Exakt: die Striche der Dissertation, jede Kette ganz.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="111" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="112" />
         <source>Panorama strokes on the map</source>
         <translation>Panoramastriche auf der Karte</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="113" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="114" />
         <source>The strokes in the DEM's CRS, with their class, distance and azimuths.</source>
         <translation>Die Striche im KBS des DGM, mit ihrer Klasse, Entfernung und ihren Azimuten.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="114" />
-        <location filename="../plugin/panorama_algorithm.cpp" line="298" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="115" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="284" />
         <source>Panorama</source>
         <translation>Panorama</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="115" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="116" />
         <source>The same strokes in the panorama: x the azimuth and y the elevation angle, in degrees, without a CRS. Open it in a map of its own.</source>
         <translation>Dieselben Striche im Panorama: x das Azimut und y der Höhenwinkel, in Grad, ohne KBS. In einer eigenen Karte öffnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="118" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="119" />
         <source>Peaks to label</source>
         <translation>Zu beschriftende Gipfel</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="119" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="120" />
         <source>Optional: named points, the summits of a gazetteer. Those whose top the observer sees are labelled in the panorama.</source>
         <translation>Optional: benannte Punkte, die Gipfel eines Ortsverzeichnisses. Die, deren Spitze der Beobachter sieht, werden im Panorama beschriftet.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="122" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="123" />
         <source>Peak name field</source>
         <translation>Namensfeld der Gipfel</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="124" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="125" />
         <source>The field of the peaks holding their names.</source>
         <translation>Das Feld der Gipfel, das ihre Namen enthält.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="125" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="126" />
         <source>Peak labels</source>
         <translation>Gipfelbeschriftungen</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="127" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="128" />
         <source>The peaks in sight as leaders in the panorama, from each top straight up to its label, with the name, distance, azimuth and elevation.</source>
         <translation>Die sichtbaren Gipfel als Hinweislinien im Panorama, von jeder Spitze senkrecht hinauf zu ihrer Beschriftung, mit Name, Entfernung, Azimut und Höhenwinkel.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="129" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="130" />
         <source>Visibility</source>
         <translation>Sichtbarkeit</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="131" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="132" />
         <source>Optional: a raster on the DEM's grid, 1 where the ground is seen, 0 where it is hidden, nodata out of range.</source>
         <translation>Optional: ein Raster auf dem Gitter des DGM, 1 wo der Boden gesehen wird, 0 wo er verdeckt ist, NoData außerhalb der Reichweite.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="146" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="147" />
         <source>The observer lies outside the DEM: choose a point on it.</source>
         <translation>Der Beobachter liegt außerhalb des DGM: einen Punkt darauf wählen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="209" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="210" />
         <source>The peaks have no field '%1' for their names.</source>
         <translation>Die Gipfel haben kein Feld „%1“ für ihre Namen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="271" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="272" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="283" />
-        <source>%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from grid north); elevation angles drawn %L7 times as tall as azimuths are wide. Terrain Sketch %8.</source>
-        <translation>%1. Gesehen von %L2, %L3, %L4 m über dem Boden, von %L5° bis %L6° (Azimute von Gitternord); Höhenwinkel %L7-mal so hoch gezeichnet, wie Azimute breit sind. Terrain Sketch %8.</translation>
     </message>
 </context>
 <context>
@@ -934,92 +929,92 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <translation>Gezeichnet für Maßstab</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="161" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="165" />
         <source>Drawn strokes: the scale of the map they are drawn for (1:N). The shortest stroke (2 mm on paper), the smoothing, its tolerance and the join gap become at least what that scale needs, strokes outlining less than N/10 000 metres of relief are left out, and the layers' styles draw their widths true at that scale (the renderer's reference scale). Empty: for no scale; every stroke is still weighed by the relief it outlines.</source>
         <translation>Gezeichnete Striche: der Maßstab der Karte, für die sie gezeichnet werden (1:N). Der kürzeste Strich (2 mm auf dem Papier), die Glättung, ihre Toleranz und die Verbindungslücke werden mindestens so groß, wie dieser Maßstab es verlangt; Striche, die weniger als N/10 000 Meter Relief umreißen, entfallen, und die Stile der Layer zeichnen ihre Breiten in diesem Maßstab wahr (der Bezugsmaßstab des Renderers). Leer: für keinen Maßstab; jeder Strich wird dennoch nach dem Relief gewichtet, das er umreißt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="167" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="171" />
         <source>Join gap (cells)</source>
         <translation>Verbindungslücke (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="168" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="172" />
         <source>Drawn strokes: ends of two strokes this close (in cells) are joined when their directions agree. 0 joins none.</source>
         <translation>Gezeichnete Striche: Enden zweier Striche, die so nahe beieinander liegen (in Zellen), werden verbunden, wenn ihre Richtungen übereinstimmen. 0 verbindet keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="170" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="174" />
         <source>Join angle (degrees)</source>
         <translation>Verbindungswinkel (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="171" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="175" />
         <source>Drawn strokes: the largest turn between two ends' directions, and the step between them, for them to be joined.</source>
         <translation>Gezeichnete Striche: die größte Drehung zwischen den Richtungen zweier Enden und dem Schritt zwischen ihnen, bei der sie noch verbunden werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="173" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="177" />
         <source>Smoothing (cells)</source>
         <translation>Glättung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="174" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="178" />
         <source>Drawn strokes: the width (sigma, in cells) of the Gaussian smoothing along each stroke. 0 keeps the points where they are.</source>
         <translation>Gezeichnete Striche: die Breite (Sigma, in Zellen) der Gaußschen Glättung entlang jedes Strichs. 0 lässt die Punkte, wo sie sind.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="176" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="180" />
         <source>Smoothing tolerance (cells)</source>
         <translation>Glättungstoleranz (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="177" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="181" />
         <source>Drawn strokes: no point moves farther than this (in cells) from its place on the exact chain, so smoothing never invents terrain.</source>
         <translation>Gezeichnete Striche: kein Punkt liegt weiter als dies (in Zellen) von seinem Platz auf der exakten Kette, so dass die Glättung nie Gelände erfindet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="179" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="183" />
         <source>Taper (share of the stroke)</source>
         <translation>Verjüngung (Anteil des Strichs)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="180" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="184" />
         <source>Drawn strokes: the share of a stroke's length over which each end thins.</source>
         <translation>Gezeichnete Striche: der Anteil der Strichlänge, über den jedes Ende dünner wird.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="181" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="185" />
         <source>Depth cue</source>
         <translation>Tiefenwirkung</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="182" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="186" />
         <source>Drawn strokes: the share of the weight strokes lose from the front of the view to its back.</source>
         <translation>Gezeichnete Striche: der Anteil des Gewichts, den Striche vom vorderen zum hinteren Rand der Ansicht verlieren.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="184" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="188" />
         <source>Over-extension (cells)</source>
         <translation>Überzeichnung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="185" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="189" />
         <source>Drawn strokes: each end runs on this far (in cells) along its direction, as a hand-drawn stroke does. 0: none.</source>
         <translation>Gezeichnete Striche: jedes Ende läuft so weit (in Zellen) in seiner Richtung weiter, wie es ein von Hand gezeichneter Strich tut. 0: keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="233" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="237" />
         <source>Processing the DEM in %1 strips of %2 profiles.</source>
         <translation>Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="274" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="278" />
         <source>Factual silhouettes, %1</source>
         <translation>Faktische Silhouetten, %1</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="277" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="281" />
         <source>Formulated silhouettes, %1</source>
         <translation>Formulierte Silhouetten, %1</translation>
     </message>
@@ -1053,57 +1048,62 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
 <context>
     <name>tsk::plugin</name>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="16" />
+        <location filename="../plugin/run_notes.cpp" line="23" />
         <source>%1: row %L2 %, column %L3 %, control point %L4 %</source>
         <translation>%1: Zeile %L2 %, Spalte %L3 %, Kontrollpunkt %L4 %</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="17" />
+        <location filename="../plugin/run_notes.cpp" line="24" />
         <source>the thesis's slope filter</source>
         <translation>der Neigungsfilter der Dissertation</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="18" />
+        <location filename="../plugin/run_notes.cpp" line="25" />
         <source>the slope filter adapted to the DEM</source>
         <translation>der an das DGM angepasste Neigungsfilter</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="25" />
+        <location filename="../plugin/run_notes.cpp" line="30" />
         <source>from %L1°</source>
         <translation>von %L1°</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="31" />
+        <location filename="../plugin/run_notes.cpp" line="37" />
         <source>drawn strokes for 1:%L1</source>
         <translation>gezeichnete Striche für 1:%L1</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="33" />
+        <location filename="../plugin/run_notes.cpp" line="39" />
         <source>%1. Seen from %L2° (azimuth), vertical exaggeration %L3, base slope %L4 %; %5; %6. Terrain Sketch %7.</source>
         <translation>%1. Gesehen aus %L2° (Azimut), Überhöhung %L3, Grundneigung %L4 %; %5; %6. Terrain Sketch %7.</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="32" />
+        <location filename="../plugin/run_notes.cpp" line="38" />
         <source>drawn strokes</source>
         <translation>gezeichnete Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="40" />
+        <location filename="../plugin/run_notes.cpp" line="42" />
         <source>the thesis's exact strokes</source>
         <translation>die exakten Striche der Dissertation</translation>
     </message>
     <message>
         <location filename="../plugin/run_notes.cpp" line="47" />
+        <source>%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from grid north); elevation angles drawn %L7 times as tall as azimuths are wide. Terrain Sketch %8.</source>
+        <translation>%1. Gesehen von %L2, %L3, %L4 m über dem Boden, von %L5° bis %L6° (Azimute von Gitternord); Höhenwinkel %L7-mal so hoch gezeichnet, wie Azimute breit sind. Terrain Sketch %8.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/run_notes.cpp" line="59" />
         <source>%1. %2 seen from %L3° (azimuth), vertical exaggeration %L4, base slope %L5 %</source>
         <translation>%1. %2, gesehen aus %L3° (Azimut), Überhöhung %L4, Grundneigung %L5 %</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="53" />
+        <location filename="../plugin/run_notes.cpp" line="63" />
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="55" />
+        <location filename="../plugin/run_notes.cpp" line="65" />
         <source>. Terrain Sketch %1.</source>
         <translation>. Terrain Sketch %1.</translation>
     </message>

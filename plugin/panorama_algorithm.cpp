@@ -8,7 +8,6 @@
 #include <qgsprocessingutils.h>
 #include <qgsrasterlayer.h>
 
-#include <QLocale>
 #include <memory>
 
 #include "core/base/errors.h"
@@ -17,6 +16,7 @@
 #include "plugin/qgis_compat.h"
 #include "plugin/raster_grid.h"
 #include "plugin/raster_output.h"
+#include "plugin/run_notes.h"
 #include "plugin/stroke_features.h"
 
 namespace tsk::plugin {
@@ -252,7 +252,7 @@ QVariantMap PanoramaAlgorithm::writeOutputs(const QVariantMap& parameters,
   // output read is a new file named in a new folder, left empty by a check.
   mVisibility = parameterAsOutputLayer(parameters, kVisibility, context);
   const PanoramaResult result = sketch(feedback);
-  mNote = runNote();
+  mNote = panoramaNote(demName(), mView, mExaggeration);
   const RasterGrid& raster = preparedRaster();
   // Asked for as the dialog asks (a QgsProcessingOutputLayerDefinition, whose toString() is
   // empty) or as processing.run does (a path).
@@ -277,19 +277,6 @@ QVariantMap PanoramaAlgorithm::writeOutputs(const QVariantMap& parameters,
   if (!mVisibility.isEmpty()) outputs.insert(kVisibility, mVisibility);
   if (labelPeaks) outputs.insert(kPeaksOutput, mPeaksId);
   return outputs;
-}
-
-QString PanoramaAlgorithm::runNote() const {
-  const PanoramaView& v = mView;
-  const QLocale locale;
-  // In one pass: a '%1' in the DEM's name is no placeholder.
-  return tr("%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from "
-            "grid north); elevation angles drawn %L7 times as tall as azimuths are wide. Terrain "
-            "Sketch %8.")
-      .arg(demName(), locale.toString(v.observer_x, 'f', 0), locale.toString(v.observer_y, 'f', 0),
-           locale.toString(v.observer_height, 'g', 4), locale.toString(v.azimuth_from, 'g', 4),
-           locale.toString(v.azimuth_to, 'g', 4), locale.toString(mExaggeration, 'g', 3),
-           QStringLiteral(TSK_VERSION));
 }
 
 QVariantMap PanoramaAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,

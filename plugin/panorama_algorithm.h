@@ -35,14 +35,12 @@ class PanoramaAlgorithm : public DemViewAlgorithm {
   std::vector<NamedPoint> readPeaks(const QVariantMap& parameters, QgsProcessingContext& context);
   void writePeaks(const QVariantMap& parameters, QgsProcessingContext& context,
                   const std::vector<PeakLeader>& leaders, QgsProcessingFeedback* feedback);
-  // The run in a sentence: the DEM, the viewpoint, the azimuths and the exaggeration.
-  QString runNote() const;
 
   SilhouetteParams mFilter;  // the slope filter, chaining and strokes, as the silhouettes take them
   PanoramaView mView;
   double mExaggeration = 1.0;  // the panorama layer's, as the run chose it
   QString mVisibility, mMapId, mPanoramaId, mPeaksId;
-  QString mNote;  // the run, for the outputs' metadata and the panorama's layout (runNote)
+  QString mNote;  // the run, for the outputs' metadata and the panorama's layout (panoramaNote)
 };
 
 }  // namespace tsk::plugin

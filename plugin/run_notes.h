@@ -6,6 +6,7 @@
 
 #include "core/method/adaptive_filter.h"
 #include "core/method/params.h"
+#include "core/panorama/panorama_rays.h"
 #include "plugin/layer_style.h"
 
 namespace tsk::plugin {
@@ -21,6 +22,11 @@ QString fromAzimuth(const ViewParams& view);
 // Sketch 0.1.0."
 QString sketchNote(const QString& dem, const ViewParams& view, const FilterReport& filter,
                    const DrawnParams& strokes);
+
+// A panorama's note: "<dem>. Seen from 749008, 4009478, 2 m above the ground, from 300° to 30°
+// (azimuths from grid north); elevation angles drawn 3 times as tall as azimuths are wide.
+// Terrain Sketch 0.1.0." (`exaggeration`: the panorama layer's).
+QString panoramaNote(const QString& dem, const PanoramaView& view, double exaggeration);
 
 // Another product of the view: titled "<product>, from 250°", with the note "<dem>. <product>
 // seen from 250° (azimuth), vertical exaggeration 2.5, base slope 40 %[; <filterPhrase>].
