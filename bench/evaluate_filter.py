@@ -18,6 +18,8 @@ import time
 import numpy as np
 from osgeo import gdal
 
+from held_out_dems import AZIMUTHS, average, coarsened, projected_dems
+
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DATA = os.path.join(REPO, "tests", "data")
 SAMPLE = os.path.join(DATA, "jacksboro_utm16n.tif")
@@ -54,13 +56,6 @@ class Tool:
         codes = [names.index("f-set"), names.index("t-set")]
         ds = gdal.Open(out)  # held: a band outliving its dataset crashes the bindings
         return np.isin(ds.GetRasterBand(1).ReadAsArray(), codes), stats
-
-
-def average(src, factor, dst):
-    ds = gdal.Open(src)
-    gt = ds.GetGeoTransform()
-    gdal.Warp(dst, src, xRes=gt[1] * factor, yRes=-gt[5] * factor, resampleAlg="average")
-    return dst
 
 
 def integer_heights(src, dst):
@@ -100,7 +95,7 @@ def coarsening(tool, work):
     print("  goal: adaptive keeps >= 50 % at each step")
     for name in ("jacksboro_utm16n", "gorillas_utm32n"):
         src = os.path.join(DATA, name + ".tif")
-        dems = [src] + [average(src, k, os.path.join(work, f"{name}_x{k}.tif")) for k in (2, 4)]
+        dems = coarsened(name, src, work)
         for filt in ("fixed", "adaptive"):
             lengths = [tool.formulated(d, filt)[0] for d in dems]
             steps = [100 * b / a if a else float("nan") for a, b in zip(lengths, lengths[1:])]
@@ -112,22 +107,17 @@ def coarsening(tool, work):
 def held_out_coarsening(tool, work):
     print("Held out: formulated length kept at each step of averaging to 2x and 4x, adaptive, "
           "every projected DEM in ../shared/data from azimuths 0, 90, 200, 315 (goal >= 50 %)")
-    shared = os.path.join(REPO, "..", "shared", "data")
     least = math.inf
-    for file in sorted(os.listdir(shared)):
-        src = os.path.join(shared, file)
-        srs = gdal.Open(src).GetSpatialRef() if file.endswith(".tif") else None
-        if not file.endswith(".tif") or (srs is not None and srs.IsGeographic()):
-            continue
-        dems = [src] + [average(src, k, os.path.join(work, f"{file[:-4]}_x{k}.tif")) for k in (2, 4)]
+    for name, src in projected_dems():
+        dems = coarsened(name, src, work)
         size = gdal.Open(dems[2])
         row = []
-        for azimuth in (0, 90, 200, 315):
+        for azimuth in AZIMUTHS:
             lengths = [tool.formulated(d, "adaptive", azimuth)[0] for d in dems]
             steps = [100 * b / a if a else float("nan") for a, b in zip(lengths, lengths[1:])]
             least = min([least] + [x for x in steps if x == x])
             row.append(f"{steps[0]:4.0f} %, {steps[1]:4.0f} %")
-        print(f"  {file[:-4]:18s} (4x: {size.RasterXSize} x {size.RasterYSize}) " + "   ".join(row))
+        print(f"  {name:18s} (4x: {size.RasterXSize} x {size.RasterYSize}) " + "   ".join(row))
     print(f"  least step: {least:.0f} %")
 
 

@@ -29,6 +29,8 @@ import time
 import numpy as np
 from osgeo import gdal, ogr
 
+from held_out_dems import AZIMUTHS, coarsened, projected_dems
+
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DATA = os.path.join(REPO, "tests", "data")
 DEMS = [("sample (jacksboro, 75 m)", "jacksboro_utm16n.tif", 90),
@@ -119,15 +121,22 @@ def clutter(strokes, cell):
     return short / len(lengths), sum(lengths), len(lengths)
 
 
+def run_variants(cli, work, dem, azimuth, variants):
+    """The strokes of each (name, strokes mode, extra options) run of `dem`, by name."""
+    found = {}
+    for name, strokes, extra in variants:
+        path = os.path.join(work, name + ".gpkg")
+        run(cli, dem, path, strokes, azimuth, extra)
+        found[name] = lines(path)
+    return found
+
+
 def evaluate(cli, work, name, file, azimuth):
     dem = os.path.join(DATA, file)
     cell = abs(gdal.Open(dem).GetGeoTransform()[1])
-    out = {}
-    for name_, strokes, extra in (("exact", "exact", ()), ("drawn", "drawn", ()),
-                                  ("ungrouped", "drawn", ("--join-gap", "0"))):
-        path = os.path.join(work, name_ + ".gpkg")
-        run(cli, dem, path, strokes, azimuth, extra)
-        out[name_] = lines(path)
+    out = run_variants(cli, work, dem, azimuth,
+                       (("exact", "exact", ()), ("drawn", "drawn", ()),
+                        ("ungrouped", "drawn", ("--join-gap", "0"))))
     factual = {k: [s for s in v if s[0] == "factual"] for k, v in out.items()}
     smooth = turning_per_length(factual["exact"]) / turning_per_length(factual["drawn"])
     accuracy = within_one_cell(out["drawn"], out["exact"], cell)
@@ -151,39 +160,25 @@ def speed(cli, work, dem, runs):
 
 
 def held_out(cli, work):
-    shared = os.path.join(REPO, "..", "shared", "data")
     print("\nHeld out: drawn vertices within a cell of the exact strokes / of the exact chains "
           "of 2 or more cells (goal 99 %)")
     worst = [100.0, 100.0]
-    for file in sorted(os.listdir(shared)):
-        src = os.path.join(shared, file)
-        if not file.endswith(".tif") or gdal.Open(src).GetSpatialRef() is not None and \
-                gdal.Open(src).GetSpatialRef().IsGeographic():
-            continue  # a geographic DEM is refused
-        for factor in (1, 2, 4):
-            dem = src
-            if factor > 1:
-                dem = os.path.join(work, "%s_x%d.tif" % (file[:-4], factor))
-                gt = gdal.Open(src).GetGeoTransform()
-                gdal.Warp(dem, src, xRes=gt[1] * factor, yRes=-gt[5] * factor,
-                          resampleAlg="average")
+    for name, src in projected_dems():
+        for factor, dem in zip((1, 2, 4), coarsened(name, src, work)):
             ds = gdal.Open(dem)
             if min(ds.RasterXSize, ds.RasterYSize) < 20:
                 continue
             cell = abs(ds.GetGeoTransform()[1])
             row = []
-            for azimuth in (0, 90, 200, 315):
-                found = {}
-                for name, strokes, extra in (("exact", "exact", ()), ("drawn", "drawn", ()),
-                                             ("chains", "exact", ("--min-cells", "2"))):
-                    path = os.path.join(work, name + ".gpkg")
-                    run(cli, dem, path, strokes, azimuth, extra)
-                    found[name] = lines(path)
+            for azimuth in AZIMUTHS:
+                found = run_variants(cli, work, dem, azimuth,
+                                     (("exact", "exact", ()), ("drawn", "drawn", ()),
+                                      ("chains", "exact", ("--min-cells", "2"))))
                 pair = [100 * within_one_cell(found["drawn"], found[ref], cell)
                         for ref in ("exact", "chains")]
                 worst = [min(w, p) for w, p in zip(worst, pair)]
                 row.append("%6.2f / %6.2f" % tuple(pair))
-            print("%-24s %dx  %s" % (file[:-4], factor, "   ".join(row)), flush=True)
+            print("%-24s %dx  %s" % (name, factor, "   ".join(row)), flush=True)
     print("least: %.2f %% of the exact strokes, %.2f %% of the exact chains" % tuple(worst))
 
 
