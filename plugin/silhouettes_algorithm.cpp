@@ -201,9 +201,7 @@ void SilhouettesAlgorithm::readStrokes(const QVariantMap& parameters,
   d.taper = parameterAsDouble(parameters, kTaper, context);
   d.depth_cue = parameterAsDouble(parameters, kDepthCue, context);
   d.extend_cells = parameterAsDouble(parameters, kExtend, context);
-  d.scale = parameters.value(kDrawnFor).isValid() && !parameters.value(kDrawnFor).isNull()
-                ? parameterAsDouble(parameters, kDrawnFor, context)
-                : 0.0;
+  d.scale = parameterAsDouble(parameters, kDrawnFor, context);  // 0 when left empty
 }
 
 double SilhouettesAlgorithm::readParameters(const QVariantMap& parameters,
