@@ -281,6 +281,29 @@ TEST_CASE("a PNG preview reports its drawing, stops when told and is bounded in 
             .code == 0);
 }
 
+namespace {
+
+// What a vector dataset's layers hold, as GDAL reads them.
+struct LayerRecord {
+  std::string description;  // gpkg_contents' description: what made the layer
+  long long features = 0;
+};
+
+std::vector<LayerRecord> layer_records(const std::string& path) {
+  GDALAllRegister();
+  tsk::io::DatasetPtr ds(static_cast<GDALDataset*>(
+      GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+  REQUIRE(ds);
+  std::vector<LayerRecord> found;
+  for (OGRLayer* layer : ds->GetLayers()) {
+    const char* description = layer->GetMetadataItem("DESCRIPTION");
+    found.push_back({description ? description : "", layer->GetFeatureCount()});
+  }
+  return found;
+}
+
+}  // namespace
+
 TEST_CASE("the strokes and the vector art record the run that made them", "[cli][preview]") {
   ScratchDir dir("run_note");
   const CliRun run = run_cli({"silhouettes", kSample, dir / "s.gpkg", "--azimuth", "250",
@@ -292,34 +315,26 @@ TEST_CASE("the strokes and the vector art record the run that made them", "[cli]
       "drawn strokes. Terrain Sketch";
   CHECK_THAT(slurp(dir / "p.svg"), Catch::Contains("<desc>" + expected));
   // A GeoPackage keeps it as its layer's description (gpkg_contents), as GDAL reads it.
-  GDALAllRegister();
-  tsk::io::DatasetPtr ds(static_cast<GDALDataset*>(GDALOpenEx(
-      (dir / "s.gpkg").c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
-  REQUIRE(ds);
-  const char* description = ds->GetLayer(0)->GetMetadataItem("DESCRIPTION");
-  REQUIRE(description != nullptr);
-  CHECK_THAT(std::string(description), Catch::Contains(expected));
+  const std::vector<LayerRecord> layers = layer_records(dir / "s.gpkg");
+  REQUIRE(layers.size() == 1);
+  REQUIRE(!layers[0].description.empty());
+  CHECK_THAT(layers[0].description, Catch::Contains(expected));
 }
 
 TEST_CASE("strokes drawn for a scale say so, and keep fewer strokes", "[cli][preview]") {
   ScratchDir dir("drawn_for");
-  const auto strokes = [](const std::string& path) {
-    GDALAllRegister();
-    tsk::io::DatasetPtr ds(static_cast<GDALDataset*>(
-        GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
-    REQUIRE(ds);
-    const char* description = ds->GetLayer(0)->GetMetadataItem("DESCRIPTION");
-    return std::make_pair(ds->GetLayer(0)->GetFeatureCount(),
-                          std::string(description ? description : ""));
-  };
   REQUIRE(run_cli({"silhouettes", kSample, dir / "own.gpkg"}).code == 0);
   REQUIRE(run_cli({"silhouettes", kSample, dir / "small.gpkg", "--drawn-for", "1000000"}).code ==
           0);
-  const auto own = strokes(dir / "own.gpkg"), small = strokes(dir / "small.gpkg");
-  CHECK_THAT(own.second, Catch::Contains("; drawn strokes. Terrain Sketch"));
-  CHECK_THAT(small.second, Catch::Contains("; drawn strokes for 1:1000000. Terrain Sketch"));
-  CHECK(small.first > 0);
-  CHECK(small.first < own.first / 4);
+  const std::vector<LayerRecord> own = layer_records(dir / "own.gpkg"),
+                                 small = layer_records(dir / "small.gpkg");
+  REQUIRE(own.size() == 1);
+  REQUIRE(small.size() == 1);
+  CHECK_THAT(own[0].description, Catch::Contains("; drawn strokes. Terrain Sketch"));
+  CHECK_THAT(small[0].description,
+             Catch::Contains("; drawn strokes for 1:1000000. Terrain Sketch"));
+  CHECK(small[0].features > 0);
+  CHECK(small[0].features < own[0].features / 4);
   // Not a scale: refused by name.
   const CliRun bad = run_cli({"silhouettes", kSample, dir / "bad.gpkg", "--drawn-for", "50"});
   CHECK(bad.code != 0);
@@ -339,14 +354,8 @@ TEST_CASE("the P-strokes, profile lines and panorama record the run that made th
               .code == 0);
   // Every layer's description (gpkg_contents), as GDAL reads it.
   const auto descriptions = [](const std::string& path) {
-    GDALAllRegister();
-    tsk::io::DatasetPtr ds(static_cast<GDALDataset*>(
-        GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
     std::vector<std::string> found;
-    for (OGRLayer* layer : ds->GetLayers()) {
-      const char* description = layer->GetMetadataItem("DESCRIPTION");
-      found.push_back(description ? description : "");
-    }
+    for (const LayerRecord& layer : layer_records(path)) found.push_back(layer.description);
     return found;
   };
   const std::vector<std::string> pstrokes = descriptions(dir / "p.gpkg");
