@@ -96,7 +96,8 @@ double TaperedLineSymbolLayer::estimateMaxBleed(const QgsRenderContext& context)
 }
 
 bool TaperedLineSymbolLayer::weightedVertices(const QgsSymbolRenderContext& context,
-                                              QPolygonF& points, QVector<double>& weights) {
+                                              std::vector<StrokePoint>& points,
+                                              std::vector<double>& weights) {
   const QgsFeature* feature = context.feature();
   if (!feature || !feature->hasGeometry()) return false;
   const QgsAbstractGeometry* geometry = feature->geometry().constGet();
@@ -107,15 +108,15 @@ bool TaperedLineSymbolLayer::weightedVertices(const QgsSymbolRenderContext& cont
   const QgsRenderContext& render = context.renderContext();
   const QgsCoordinateTransform transform = render.coordinateTransform();
   const int n = line->numPoints();
-  points.resize(n);
-  weights.resize(n);
+  points.resize(static_cast<std::size_t>(n));
+  weights.resize(static_cast<std::size_t>(n));
   try {
     for (int k = 0; k < n; ++k) {
       double x = line->xAt(k), y = line->yAt(k), z = 0.0;
       if (transform.isValid()) transform.transformInPlace(x, y, z);
       render.mapToPixel().transformInPlace(x, y);
-      points[k] = QPointF(x, y);
-      weights[k] = weightOf(line->mAt(k));
+      points[static_cast<std::size_t>(k)] = {x, y};
+      weights[static_cast<std::size_t>(k)] = weightOf(line->mAt(k));
     }
   } catch (const QgsCsException&) {
     return false;  // drawn as QGIS placed it, at full width
@@ -127,11 +128,12 @@ void TaperedLineSymbolLayer::renderPolyline(const QPolygonF& points,
                                             QgsSymbolRenderContext& context) {
   QPainter* painter = context.renderContext().painter();
   if (!painter) return;
-  QPolygonF vertices;
-  QVector<double> weights;
-  if (!weightedVertices(context, vertices, weights)) {
-    vertices = points;
-    weights.fill(1.0, points.size());
+  std::vector<StrokePoint> line;
+  std::vector<double> widths;  // each vertex's weight, then its width
+  if (!weightedVertices(context, line, widths)) {
+    line.clear();
+    for (const QPointF& p : points) line.push_back({p.x(), p.y()});
+    widths.assign(line.size(), 1.0);
   }
   QgsExpressionContext& expressions = context.renderContext().expressionContext();
   double width = mWidth;
@@ -150,14 +152,7 @@ void TaperedLineSymbolLayer::renderPolyline(const QPolygonF& points,
   }
   color.setAlphaF(color.alphaF() * context.opacity());
 
-  std::vector<StrokePoint> line;
-  std::vector<double> widths;
-  line.reserve(vertices.size());
-  widths.reserve(vertices.size());
-  for (int k = 0; k < vertices.size(); ++k) {
-    line.push_back({vertices[k].x(), vertices[k].y()});
-    widths.push_back(fullWidth * weights[k]);
-  }
+  for (double& w : widths) w *= fullWidth;
   const std::vector<StrokePoint> outline = tapered_outline(line, widths);
   if (outline.empty()) return;
   QPolygonF polygon;

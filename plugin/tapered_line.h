@@ -7,7 +7,9 @@
 #include <qgssymbollayer.h>
 
 #include <QColor>
-#include <QVector>
+#include <vector>
+
+#include "core/method/strokes.h"
 
 namespace tsk::plugin {
 
@@ -30,8 +32,8 @@ class TaperedLineSymbolLayer : public QgsLineSymbolLayer {
  private:
   // The rendered part of the feature as painter points with their weights, when it is a line
   // with M values; false otherwise (a legend swatch, a polygon's outline, a line without M).
-  static bool weightedVertices(const QgsSymbolRenderContext& context, QPolygonF& points,
-                               QVector<double>& weights);
+  static bool weightedVertices(const QgsSymbolRenderContext& context,
+                               std::vector<StrokePoint>& points, std::vector<double>& weights);
 };
 
 // Registers the layer type, and the expression function terrain_sketch_draws_taper() that the
