@@ -270,6 +270,12 @@ const std::vector<OptionSpec> kOptionTable = {
      "azimuths are wide, 1-50 (default 0: chosen, up to 5, so that a wide\n"
      "field is no flat strip)",
      kPanorama, TSK_SET(panorama.exaggeration, parse_number)},
+    {"--samples-per-cell", "N", kPanoramaSection,
+     "samples along each ray per DEM cell, 1-8 (default 1): more follow the\n"
+     "terrain between the cells' centres, so that what is seen depends less\n"
+     "on the DEM's grid (a DEM warped to another CRS sees the same), at N^2\n"
+     "times the work",
+     kPanorama, TSK_SET(panorama.samples_per_cell, parse_int)},
     {"--visibility", "FILE", kPanoramaSection,
      "write a Byte GeoTIFF on the DEM's grid: 1 visible, 0 hidden, 255 out\n"
      "of range",

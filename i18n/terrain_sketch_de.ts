@@ -252,183 +252,193 @@
 <context>
     <name>PanoramaAlgorithm</name>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="47" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="48" />
         <source>Panorama sketch</source>
         <translation>Panoramaskizze</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="51" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="52" />
         <source>The silhouettes of the terrain seen from a viewpoint, as a panorama board draws them: rays are cast from the observer all round (or over a field of view), every ray a profile of the silhouette method. Factual silhouettes are the occluding edges, the skyline and the ridges in front of it; Formulated silhouettes are back-facing slopes that the sight line, descending onto them, still reaches, kept by the slope filter. Heights are lowered by the earth's curvature, lessened by refraction. The strokes come on the map (the DEM's CRS) and in the panorama (x the azimuth, y the elevation angle, in degrees, without a CRS), far strokes drawn lighter.</source>
         <translation>Die Silhouetten des Geländes von einem Standpunkt aus, wie eine Panoramatafel sie zeichnet: Vom Beobachter werden Strahlen rundum (oder über ein Blickfeld) ausgesandt, jeder Strahl ein Profil der Silhouettenmethode. Faktische Silhouetten sind die verdeckenden Kanten, der Horizont und die Grate davor; formulierte Silhouetten sind abgewandte Hänge, die die Sichtlinie, auf sie hinabfallend, noch erreicht, vom Neigungsfilter ausgewählt. Die Höhen werden um die Erdkrümmung, vermindert durch die Refraktion, abgesenkt. Die Striche entstehen auf der Karte (im KBS des DGM) und im Panorama (x das Azimut, y der Höhenwinkel, in Grad, ohne KBS); ferne Striche sind heller gezeichnet.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="68" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="69" />
         <source>Observer</source>
         <translation>Beobachter</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="69" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="70" />
         <source>Where the viewer stands: click it on the map. It must lie on the DEM, on a cell with data.</source>
         <translation>Wo der Betrachter steht: in der Karte anklicken. Der Punkt muss auf dem DGM liegen, auf einer Zelle mit Daten.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="71" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="72" />
         <source>Observer height (m)</source>
         <translation>Beobachterhöhe (m)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="73" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="74" />
         <source>The eye's height above the ground at the observer, in metres.</source>
         <translation>Die Augenhöhe über dem Boden am Standpunkt, in Metern.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="75" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="76" />
         <source>Range (map units)</source>
         <translation>Reichweite (Karteneinheiten)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="78" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="79" />
         <source>The farthest distance drawn, in the DEM's map units; when not given, the whole DEM.</source>
         <translation>Die größte gezeichnete Entfernung in den Karteneinheiten des DGM; ohne Angabe das ganze DGM.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="81" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="82" />
         <source>Field of view from (degrees)</source>
         <translation>Blickfeld von (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="82" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="83" />
         <source>The field of view turns clockwise from this azimuth (from grid north) to the next. 0 to 360, the default, is all round.</source>
         <translation>Das Blickfeld dreht sich im Uhrzeigersinn von diesem Azimut (von Gitternord) zum nächsten. 0 bis 360, die Vorgabe, ist rundum.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="85" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="86" />
         <source>Field of view to (degrees)</source>
         <translation>Blickfeld bis (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="86" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="87" />
         <source>The azimuth the field of view ends at; equal azimuths make an empty field.</source>
         <translation>Das Azimut, bei dem das Blickfeld endet; gleiche Azimute ergeben ein leeres Blickfeld.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="87" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="88" />
         <source>Refraction coefficient</source>
         <translation>Refraktionskoeffizient</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="89" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="90" />
         <source>How much refraction lessens the earth's curvature (k): heights are lowered by (1 - k) d² / 2R at distance d. 0.13 is the usual value over land.</source>
         <translation>Wie stark die Refraktion die Erdkrümmung vermindert (k): Höhen werden in der Entfernung d um (1 - k) d² / 2R abgesenkt. 0,13 ist der übliche Wert über Land.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="92" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="93" />
+        <source>Samples per cell</source>
+        <translation>Abtastpunkte je Zelle</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="95" />
+        <source>Samples along each ray per DEM cell. More follow the terrain between the cells' centres, so that what is seen depends less on the DEM's grid (a DEM warped to another CRS sees the same), at the square of this times the work.</source>
+        <translation>Abtastpunkte entlang jedes Strahls je DGM-Zelle. Mehr davon folgen dem Gelände zwischen den Zellmitten, sodass das Gesehene weniger vom Raster des DGM abhängt (ein in ein anderes KBS transformiertes DGM sieht dasselbe), beim Quadrat dieser Zahl an Rechenaufwand.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/panorama_algorithm.cpp" line="99" />
         <source>Panorama exaggeration</source>
         <translation>Überhöhung des Panoramas</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="93" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="100" />
         <source>How many times as tall as its azimuths are wide the Panorama layer draws its elevation angles, 1 to 50. 0, the default, chooses up to 5 so that a wide field of view is no flat strip. The Panorama layout draws it so.</source>
         <translation>Wie viel Mal so hoch, wie seine Azimute breit sind, der Panorama-Layer seine Höhenwinkel zeichnet, 1 bis 50. 0, die Voreinstellung, wählt bis zu 5, damit ein weites Blickfeld kein flacher Streifen ist. Das Panorama-Layout zeichnet es so.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="103" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="110" />
         <source>Minimum stroke length (samples)</source>
         <translation>Mindestlänge der Striche (Abtastpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="105" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="112" />
         <source>Strokes of fewer samples are dropped.</source>
         <translation>Striche mit weniger Abtastpunkten werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="106" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="113" />
         <source>Formulated chaining window (samples)</source>
         <translation>Suchfenster der formulierten Verkettung (Abtastpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="108" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="115" />
         <source>How far along the next ray a formulated chain may step.</source>
         <translation>Wie weit eine formulierte Kette auf dem nächsten Strahl springen darf.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="110" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="117" />
         <source>Drawn (the default): a stroke is cut where its chain leaps along the rays, since a leap draws no line on the terrain. Exact: the thesis's strokes, each chain whole.</source>
         <translation>Gezeichnet (Standard): ein Strich wird getrennt, wo seine Kette entlang der Strahlen springt, denn ein Sprung zeichnet keine Linie im Gelände. Exakt: die Striche der Dissertation, jede Kette ganz.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="112" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="119" />
         <source>Panorama strokes on the map</source>
         <translation>Panoramastriche auf der Karte</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="114" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="121" />
         <source>The strokes in the DEM's CRS, with their class, distance and azimuths.</source>
         <translation>Die Striche im KBS des DGM, mit ihrer Klasse, Entfernung und ihren Azimuten.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="115" />
-        <location filename="../plugin/panorama_algorithm.cpp" line="284" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="122" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="292" />
         <source>Panorama</source>
         <translation>Panorama</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="116" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="123" />
         <source>The same strokes in the panorama: x the azimuth and y the elevation angle, in degrees, without a CRS. Open it in a map of its own.</source>
         <translation>Dieselben Striche im Panorama: x das Azimut und y der Höhenwinkel, in Grad, ohne KBS. In einer eigenen Karte öffnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="119" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="126" />
         <source>Peaks to label</source>
         <translation>Zu beschriftende Gipfel</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="120" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="127" />
         <source>Optional: named points, the summits of a gazetteer. Those whose top the observer sees are labelled in the panorama.</source>
         <translation>Optional: benannte Punkte, die Gipfel eines Ortsverzeichnisses. Die, deren Spitze der Beobachter sieht, werden im Panorama beschriftet.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="123" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="130" />
         <source>Peak name field</source>
         <translation>Namensfeld der Gipfel</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="125" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="132" />
         <source>The field of the peaks holding their names.</source>
         <translation>Das Feld der Gipfel, das ihre Namen enthält.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="126" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="133" />
         <source>Peak labels</source>
         <translation>Gipfelbeschriftungen</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="128" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="135" />
         <source>The peaks in sight as leaders in the panorama, from each top straight up to its label, with the name, distance, azimuth and elevation.</source>
         <translation>Die sichtbaren Gipfel als Hinweislinien im Panorama, von jeder Spitze senkrecht hinauf zu ihrer Beschriftung, mit Name, Entfernung, Azimut und Höhenwinkel.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="130" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="137" />
         <source>Visibility</source>
         <translation>Sichtbarkeit</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="132" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="139" />
         <source>Optional: a raster on the DEM's grid, 1 where the ground is seen, 0 where it is hidden, nodata out of range.</source>
         <translation>Optional: ein Raster auf dem Gitter des DGM, 1 wo der Boden gesehen wird, 0 wo er verdeckt ist, NoData außerhalb der Reichweite.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="147" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="154" />
         <source>The observer lies outside the DEM: choose a point on it.</source>
         <translation>Der Beobachter liegt außerhalb des DGM: einen Punkt darauf wählen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="210" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="218" />
         <source>The peaks have no field '%1' for their names.</source>
         <translation>Die Gipfel haben kein Feld „%1“ für ihre Namen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="272" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="280" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
@@ -1004,17 +1014,17 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <translation>Gezeichnete Striche: jedes Ende läuft so weit (in Zellen) in seiner Richtung weiter, wie es ein von Hand gezeichneter Strich tut. 0: keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="237" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="235" />
         <source>Processing the DEM in %1 strips of %2 profiles.</source>
         <translation>Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="278" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="276" />
         <source>Factual silhouettes, %1</source>
         <translation>Faktische Silhouetten, %1</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="281" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="279" />
         <source>Formulated silhouettes, %1</source>
         <translation>Formulierte Silhouetten, %1</translation>
     </message>
@@ -1027,7 +1037,7 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <translation>&lt;h3&gt;terrain_sketch_draws_taper()&lt;/h3&gt;&lt;div&gt;Wahr, solange die Erweiterung Terrain Sketch geladen ist und die Breite jedes Stützpunkts gezeichneter Striche zeichnet. Die gestuften Linien ihrer Stile sind nur dort aktiv, wo die Funktion unbekannt ist.&lt;/div&gt;</translation>
     </message>
     <message>
-        <location filename="../plugin/tapered_line.cpp" line="176" />
+        <location filename="../plugin/tapered_line.cpp" line="171" />
         <source>Tapered line (Terrain Sketch)</source>
         <translation>Verjüngte Linie (Terrain Sketch)</translation>
     </message>
@@ -1078,6 +1088,16 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <translation>%1. Gesehen aus %L2° (Azimut), Überhöhung %L3, Grundneigung %L4 %; %5; %6. Terrain Sketch %7.</translation>
     </message>
     <message>
+        <location filename="../plugin/run_notes.cpp" line="49" />
+        <source>; %L1 samples per cell along each ray</source>
+        <translation>; %L1 Abtastpunkte je Zelle entlang jedes Strahls</translation>
+    </message>
+    <message>
+        <location filename="../plugin/run_notes.cpp" line="51" />
+        <source>%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from grid north); elevation angles drawn %L7 times as tall as azimuths are wide%9. Terrain Sketch %8.</source>
+        <translation>%1. Gesehen von %L2, %L3, %L4 m über dem Boden, von %L5° bis %L6° (Azimute von Gitternord); Höhenwinkel %L7-mal so hoch gezeichnet, wie Azimute breit sind%9. Terrain Sketch %8.</translation>
+    </message>
+    <message>
         <location filename="../plugin/run_notes.cpp" line="38" />
         <source>drawn strokes</source>
         <translation>gezeichnete Striche</translation>
@@ -1088,22 +1108,17 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <translation>die exakten Striche der Dissertation</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="47" />
-        <source>%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from grid north); elevation angles drawn %L7 times as tall as azimuths are wide. Terrain Sketch %8.</source>
-        <translation>%1. Gesehen von %L2, %L3, %L4 m über dem Boden, von %L5° bis %L6° (Azimute von Gitternord); Höhenwinkel %L7-mal so hoch gezeichnet, wie Azimute breit sind. Terrain Sketch %8.</translation>
-    </message>
-    <message>
-        <location filename="../plugin/run_notes.cpp" line="59" />
+        <location filename="../plugin/run_notes.cpp" line="63" />
         <source>%1. %2 seen from %L3° (azimuth), vertical exaggeration %L4, base slope %L5 %</source>
         <translation>%1. %2, gesehen aus %L3° (Azimut), Überhöhung %L4, Grundneigung %L5 %</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="63" />
+        <location filename="../plugin/run_notes.cpp" line="67" />
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="65" />
+        <location filename="../plugin/run_notes.cpp" line="69" />
         <source>. Terrain Sketch %1.</source>
         <translation>. Terrain Sketch %1.</translation>
     </message>

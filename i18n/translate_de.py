@@ -14,8 +14,9 @@ GERMAN = {
     "Panorama exaggeration": "Überhöhung des Panoramas",
     "How many times as tall as its azimuths are wide the Panorama layer draws its elevation angles, 1 to 50. 0, the default, chooses up to 5 so that a wide field of view is no flat strip. The Panorama layout draws it so.":
         "Wie viel Mal so hoch, wie seine Azimute breit sind, der Panorama-Layer seine Höhenwinkel zeichnet, 1 bis 50. 0, die Voreinstellung, wählt bis zu 5, damit ein weites Blickfeld kein flacher Streifen ist. Das Panorama-Layout zeichnet es so.",
-    "%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from grid north); elevation angles drawn %L7 times as tall as azimuths are wide. Terrain Sketch %8.":
-        "%1. Gesehen von %L2, %L3, %L4 m über dem Boden, von %L5° bis %L6° (Azimute von Gitternord); Höhenwinkel %L7-mal so hoch gezeichnet, wie Azimute breit sind. Terrain Sketch %8.",
+    "%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from grid north); elevation angles drawn %L7 times as tall as azimuths are wide%9. Terrain Sketch %8.":
+        "%1. Gesehen von %L2, %L3, %L4 m über dem Boden, von %L5° bis %L6° (Azimute von Gitternord); Höhenwinkel %L7-mal so hoch gezeichnet, wie Azimute breit sind%9. Terrain Sketch %8.",
+    "; %L1 samples per cell along each ray": "; %L1 Abtastpunkte je Zelle entlang jedes Strahls",
     "%1 10 mm on the page: %L2° of azimuth.": "%1 10 mm auf der Seite: %L2° Azimut.",
     "Band %1 of the raster's %2 is a colour channel (red, green, blue or alpha) of an image, not heights: choose a DEM.":
         "Band %1 der %2 Bänder des Rasters ist ein Farbkanal (Rot, Grün, Blau oder Alpha) eines Bildes, keine Höhen: wählen Sie ein DGM.",
@@ -488,6 +489,10 @@ GERMAN = {
         'Das Azimut, bei dem das Blickfeld endet; gleiche Azimute ergeben ein leeres Blickfeld.',
     'Refraction coefficient':
         'Refraktionskoeffizient',
+    'Samples per cell':
+        'Abtastpunkte je Zelle',
+    "Samples along each ray per DEM cell. More follow the terrain between the cells' centres, so that what is seen depends less on the DEM's grid (a DEM warped to another CRS sees the same), at the square of this times the work.":
+        'Abtastpunkte entlang jedes Strahls je DGM-Zelle. Mehr davon folgen dem Gelände zwischen den Zellmitten, sodass das Gesehene weniger vom Raster des DGM abhängt (ein in ein anderes KBS transformiertes DGM sieht dasselbe), beim Quadrat dieser Zahl an Rechenaufwand.',
     "How much refraction lessens the earth's curvature (k): heights are lowered by (1 - k) d² / 2R at distance d. 0.13 is the usual value over land.":
         'Wie stark die Refraktion die Erdkrümmung vermindert (k): Höhen werden in der Entfernung d um (1 - k) d² / 2R abgesenkt. 0,13 ist der übliche Wert über Land.',
     'Minimum stroke length (samples)':

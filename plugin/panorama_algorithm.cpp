@@ -29,6 +29,7 @@ const QString kAzimuthFrom = QStringLiteral("AZIMUTH_FROM");
 const QString kAzimuthTo = QStringLiteral("AZIMUTH_TO");
 const QString kRefraction = QStringLiteral("REFRACTION");
 const QString kExaggeration = QStringLiteral("PANORAMA_EXAGGERATION");
+const QString kSamplesPerCell = QStringLiteral("SAMPLES_PER_CELL");
 const QString kMinCells = QStringLiteral("MIN_CELLS");
 const QString kWindow = QStringLiteral("WINDOW");
 const QString kMapOutput = QStringLiteral("MAP_OUTPUT");
@@ -88,6 +89,12 @@ void PanoramaAlgorithm::addViewParameters() {
                                        defaults.refraction, 0, 0.99),
               tr("How much refraction lessens the earth's curvature (k): heights are lowered by "
                  "(1 - k) d² / 2R at distance d. 0.13 is the usual value over land."),
+              true);
+  addWithHelp(new QgsProcessingParameterNumber(kSamplesPerCell, tr("Samples per cell"),
+                                               kIntegerNumber, 1, false, 1, kMostSamplesPerCell),
+              tr("Samples along each ray per DEM cell. More follow the terrain between the "
+                 "cells' centres, so that what is seen depends less on the DEM's grid (a DEM "
+                 "warped to another CRS sees the same), at the square of this times the work."),
               true);
   addWithHelp(SharedParameters::number(kExaggeration, tr("Panorama exaggeration"), 0, 0, 50),
               tr("How many times as tall as its azimuths are wide the Panorama layer draws its "
@@ -157,6 +164,7 @@ double PanoramaAlgorithm::readParameters(const QVariantMap& parameters,
   view.azimuth_to = parameterAsDouble(parameters, kAzimuthTo, context);
   view.refraction = parameterAsDouble(parameters, kRefraction, context);
   view.exaggeration = parameterAsDouble(parameters, kExaggeration, context);
+  view.samples_per_cell = parameterAsInt(parameters, kSamplesPerCell, context);
   view.validate();
   return 90.0;  // the DEM read as it lies: the view from the west is its own grid
 }

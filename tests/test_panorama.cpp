@@ -274,7 +274,7 @@ TEST_CASE("drawn panorama strokes end where their chains leap along the rays",
   const auto leaps = [](const PanoramaStroke& s) {
     std::size_t count = 0;
     for (std::size_t k = 1; k < s.map.chain.size(); ++k)
-      count += std::abs(s.map.chain[k].i - s.map.chain[k - 1].i) > PanoramaLinker::kLeapSamples;
+      count += std::abs(s.map.chain[k].i - s.map.chain[k - 1].i) > PanoramaLinker::kLeapCells;
     return count;
   };
   std::size_t leaps_in_chains = 0, leaps_in_cut = 0;
@@ -298,6 +298,74 @@ TEST_CASE("drawn panorama strokes end where their chains leap along the rays",
 }  // namespace tsk
 
 namespace tsk {
+
+// Where the zone hidden behind a ridge ends along ray r, worked out here from the heights the
+// DEM holds: along a ray of azimuth a over a terrain that changes only eastward, the DEM's
+// bilinear surface is the heights of the cells' centres joined by straight lines. Walked in
+// centimetre steps, without the curvature (the earth made flat by its radius).
+double ridge_shadow_end(const HeightGrid& dem, double azimuth_deg, double eye, double from_x) {
+  const double east = std::sin(azimuth_deg * kPi / 180.0);
+  const auto ground = [&](double d) {
+    const double col = (from_x + d * east) / kCell - 0.5;
+    const auto left = static_cast<std::size_t>(col);
+    const double t = col - static_cast<double>(left);
+    return (1.0 - t) * dem(0, left) + t * dem(0, left + 1);
+  };
+  double highest = -1e9;
+  bool hidden = false;
+  for (double d = 0.01;; d += 0.01) {
+    const double tangent = (ground(d) - eye) / d;
+    if (tangent < highest) {
+      hidden = true;
+    } else if (hidden) {
+      return d;
+    }
+    highest = std::max(highest, tangent);
+  }
+}
+
+TEST_CASE("more samples per cell find where a hidden zone ends within their finer step",
+          "[panorama]") {
+  const std::size_t rows = 21, cols = 120;
+  // A ridge running north-south 500 m east of the observer, then ground rising eastward, so
+  // that the sight line over the ridge meets the ground at a clear angle.
+  const HeightGrid dem = terrain(rows, cols, [](double x, double) {
+    return 30.0 * std::exp(-std::pow((x - 560.0) / 40.0, 2)) + 0.12 * std::max(0.0, x - 640.0);
+  });
+  const GeoTransform gt = north_up(rows);
+  const StrokePoint eye_at = centre(gt, 10, 5);
+  for (const double eye : {3.0, 7.3, 12.9}) {
+    for (const int per_cell : {1, 2, 4, 8}) {
+      CAPTURE(eye, per_cell);
+      PanoramaParams params = looking_from(eye_at, eye);
+      params.view.azimuth_from = 85, params.view.azimuth_to = 95;
+      params.view.earth_radius = 1e15;
+      params.view.samples_per_cell = per_cell;
+      const PanoramaResult result = sketch_panorama(dem, gt, params);
+      const PanoramaRays& rays = result.rays;
+      REQUIRE(rays.step == Approx(kCell / per_cell));
+      const std::size_t r = rays.rays / 2;
+      std::size_t first_seen_again = 0;
+      bool hidden = false;
+      for (std::size_t k = 0; k < rays.samples && first_seen_again == 0; ++k) {
+        const auto bits = (result.samples[r * result.row_bytes() + k / 4] >> (2 * (k % 4))) & 3u;
+        if (bits == sample_class::hidden) hidden = true;
+        if (bits == sample_class::visible && hidden) first_seen_again = k;
+      }
+      REQUIRE(first_seen_again > 0);
+      const double found = rays.distance(first_seen_again + 1);
+      const double end = ridge_shadow_end(dem, rays.azimuth_deg(r), eye, eye_at.x);
+      CHECK(found >= end - 0.01);
+      CHECK(found <= end + rays.step + 0.01);
+    }
+  }
+  PanoramaView view;
+  view.observer_x = eye_at.x, view.observer_y = eye_at.y;
+  for (const int refused : {0, kMostSamplesPerCell + 1}) {
+    view.samples_per_cell = refused;
+    CHECK_THROWS_WITH(view.validate(), Catch::Contains("samples per cell must be from 1 to 8"));
+  }
+}
 
 TEST_CASE("a panorama that would take far more samples than the DEM has cells is refused",
           "[panorama]") {

@@ -45,9 +45,10 @@ PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotra
   const PanoramaRays& rays = result.rays;
   if (params.record_visibility) result.samples.assign(rays.rays * result.row_bytes(), 0);
   const bool full = rays.field.full_circle;
-  PanoramaLinker factual(true, 0, params.chain.min_cells, full, params.cut_leaps);
-  PanoramaLinker formulated(false, params.chain.window, params.chain.min_cells, full,
-                            params.cut_leaps);
+  const std::int32_t leap =
+      params.cut_leaps ? PanoramaLinker::kLeapCells * params.view.samples_per_cell : 0;
+  PanoramaLinker factual(true, 0, params.chain.min_cells, full, leap);
+  PanoramaLinker formulated(false, params.chain.window, params.chain.min_cells, full, leap);
   const unsigned threads = resolve_threads(params.threads);
   RayRules rules = params.rules;
   rules.local_scale = params.local_scale.get();
@@ -158,7 +159,10 @@ std::string panorama_note(const std::string& dem, int band, const PanoramaView& 
        << std::setprecision(4) << view.observer_height << " m above the ground, from "
        << view.azimuth_from << "\xc2\xb0 to " << view.azimuth_to
        << "\xc2\xb0 (azimuths from grid north); elevation angles drawn " << exaggeration
-       << " times as tall as azimuths are wide. Terrain Sketch " << version << ".";
+       << " times as tall as azimuths are wide";
+  if (view.samples_per_cell > 1)
+    note << "; " << view.samples_per_cell << " samples per cell along each ray";
+  note << ". Terrain Sketch " << version << ".";
   return note.str();
 }
 

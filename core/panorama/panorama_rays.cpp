@@ -67,6 +67,9 @@ void PanoramaView::validate() const {
   require(exaggeration == 0.0 || (exaggeration >= 1.0 && exaggeration <= 50.0),
           "the panorama's exaggeration must be from 1 to 50, or 0 to choose it, got " +
               number(exaggeration));
+  require(samples_per_cell >= 1 && samples_per_cell <= kMostSamplesPerCell,
+          "the samples per cell must be from 1 to " + std::to_string(kMostSamplesPerCell) +
+              ", got " + std::to_string(samples_per_cell));
   field_of_view(azimuth_from, azimuth_to);
 }
 
@@ -179,31 +182,33 @@ PanoramaRays plan_rays(const HeightGrid& dem, const GeoTransform& gt, const Pano
           "the observer at " + number(view.observer_x) + ", " + number(view.observer_y) +
               " lies outside the DEM: choose a point on it");
   rays.eye = ground_at_observer(dem, o, view.observer_x, view.observer_y) + view.observer_height;
-  rays.step = std::min(a[1], -a[5]);
+  rays.step = std::min(a[1], -a[5]) / view.samples_per_cell;
   rays.metres_per_unit = view.metres_per_unit;
   rays.col_per_x = 1.0 / a[1];
   rays.row_per_y = 1.0 / a[5];
   const double farthest = farthest_corner(dem, gt, view.observer_x, view.observer_y);
   rays.max_distance = view.max_distance > 0.0 ? std::min(view.max_distance, farthest) : farthest;
-  const double reach = rays.max_distance / rays.step;  // the range in cells
+  const double reach = rays.max_distance / rays.step;  // the range in steps
   require(reach >= 1.0, "the range of " + number(rays.max_distance) +
                             " map units is shorter than a cell: give a longer --max-distance");
   rays.field = field_of_view(view.azimuth_from, view.azimuth_to);
-  // Neighbouring rays at most a cell apart at the far end (docs/PANORAMA.md 1.1).
+  // Neighbouring rays at most a step apart at the far end (docs/PANORAMA.md 1.1).
   const double needed = std::ceil(rays.field.width_deg * kRadPerDeg * reach);
   require(needed < 1e9 && reach < 1e9, "the panorama would need " + number(needed) +
                                            " rays: the range is too long for the cell size");
   rays.rays = std::max<std::size_t>(4, static_cast<std::size_t>(needed));
   if (rays.field.full_circle) rays.rays = (rays.rays + 3) / 4 * 4;
   rays.samples = static_cast<std::size_t>(std::floor(reach));
-  // About 2 pi (range / step)^2 samples, a few for each cell in range; far more only where the
+  // About 2 pi (range / step)^2 samples, a few for each step² in range; far more only where the
   // cells are far from square or the DEM a thin strip. Refused before any work or allocation.
   const double samples = static_cast<double>(rays.rays) * static_cast<double>(rays.samples);
+  const double per_cell = 64.0 * view.samples_per_cell * view.samples_per_cell;
   const double budget =
-      std::max(static_cast<double>(kMostSamplesAlways), 64.0 * static_cast<double>(dem.size()));
+      std::max(static_cast<double>(kMostSamplesAlways), per_cell * static_cast<double>(dem.size()));
   require(samples <= budget,
-          "a panorama over this DEM would take " + number(samples) +
-              " samples, more than 64 for each of its cells: its cells are far from square or "
+          "a panorama over this DEM would take " + number(samples) + " samples, more than " +
+              number(per_cell) +
+              " for each of its cells: its cells are far from square or "
               "it is a thin strip; resample it to square cells (gdalwarp -tr) or give a "
               "shorter --max-distance");
   checked_cell_count(rays.rays, rays.samples);

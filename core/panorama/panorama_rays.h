@@ -10,6 +10,8 @@
 
 namespace tsk {
 
+inline constexpr int kMostSamplesPerCell = 8;  // PanoramaView::samples_per_cell's highest
+
 struct PanoramaView {
   double observer_x = 0.0, observer_y = 0.0;  // O, in the DEM's CRS
   double observer_height = 1.7;               // eye height above the ground at O, metres, >= 0
@@ -21,6 +23,10 @@ struct PanoramaView {
   // How many times as tall as its azimuths are wide the panorama layer draws its elevation
   // angles, 1 to 50; 0: chosen for the panorama (panorama_exaggeration).
   double exaggeration = 0.0;
+  // Samples along each ray per DEM cell, 1 to 8. More follow the terrain between the cells'
+  // centres, so that what is seen depends less on the DEM's grid (a DEM warped to another CRS
+  // sees what it saw), at samples_per_cell² times the work.
+  int samples_per_cell = 1;
   void validate() const;
 };
 

@@ -6,10 +6,10 @@
 namespace tsk {
 
 PanoramaLinker::PanoramaLinker(bool factual, int window, int min_cells, bool full_circle,
-                               bool cut_leaps)
+                               std::int32_t leap_samples)
     : factual_(factual),
       full_circle_(full_circle),
-      cut_leaps_(cut_leaps),
+      leap_samples_(leap_samples),
       window_(window),
       min_cells_(min_cells),
       linker_(factual, window) {}
@@ -23,8 +23,8 @@ void PanoramaLinker::add_ray(std::size_t r, const ProfileCandidates& candidates,
     Open& open = open_[joined[k].slot];
     // A leap along the ray is no line on the terrain: the stroke so far ends, the chain goes on
     // as a stroke of its own (as drawn strokes of the parallel view are cut).
-    if (cut_leaps_ && open.builder.cells() > 0 &&
-        std::abs(cells[k].cell.i - open.last_sample) > kLeapSamples)
+    if (leap_samples_ > 0 && open.builder.cells() > 0 &&
+        std::abs(cells[k].cell.i - open.last_sample) > leap_samples_)
       close(open);
     if (open.builder.cells() == 0) {
       open.id = joined[k].id;
@@ -80,7 +80,8 @@ void PanoramaLinker::close_seam(const std::vector<ChainRef>& last_joined) {
         std::find_if(held_.begin(), held_.end(), [id](const Open& h) { return h.id == id; });
     if (held == held_.end()) continue;
     // Across the seam as along the rays: a leap joins nothing.
-    if (cut_leaps_ && std::abs(held->cells.front().cell.i - before.last_sample) > kLeapSamples)
+    if (leap_samples_ > 0 &&
+        std::abs(held->cells.front().cell.i - before.last_sample) > leap_samples_)
       continue;
     for (std::size_t c = 0; c < held->cells.size(); ++c) {
       before.builder.add(held->cells[c]);

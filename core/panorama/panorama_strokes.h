@@ -20,12 +20,13 @@ struct PanoramaStroke {
 };
 
 // Links one class's candidates ray after ray (SPEC 1.7), and hands out the strokes of at least
-// `min_cells` samples in the order their chains started. With `cut_leaps`, a stroke ends where
-// its chain steps more than kLeapSamples along the next ray, and the chain goes on as another.
+// `min_cells` samples in the order their chains started. With `leap_samples` above 0, a stroke
+// ends where its chain steps more than that along the next ray, and the chain goes on as another.
 class PanoramaLinker {
  public:
-  static constexpr std::int32_t kLeapSamples = 4;
-  PanoramaLinker(bool factual, int window, int min_cells, bool full_circle, bool cut_leaps);
+  static constexpr std::int32_t kLeapCells = 4;  // a leap: more than 4 cells along the next ray
+  PanoramaLinker(bool factual, int window, int min_cells, bool full_circle,
+                 std::int32_t leap_samples);
   void add_ray(std::size_t r, const ProfileCandidates& candidates,
                const std::vector<StrokeCell>& cells, const std::vector<StrokePoint>& view);
   // After the last ray: closes the seam of a full circle and returns every stroke kept.
@@ -44,7 +45,8 @@ class PanoramaLinker {
   void keep(std::size_t id, Open& open);
   void close_seam(const std::vector<ChainRef>& last_joined);
 
-  bool factual_, full_circle_, cut_leaps_;
+  bool factual_, full_circle_;
+  std::int32_t leap_samples_;
   int window_, min_cells_;
   ChainLinker linker_;
   std::vector<Open> open_;

@@ -17,10 +17,11 @@ TEST_CASE("the panorama algorithm draws the core's panorama on the map and in th
           "[plugin][panorama]") {
   QTemporaryDir dir;
   const QString dem = kData + "/jacksboro_utm16n.tif";
-  // The thesis's filter, which the core runs by default.
+  // The thesis's filter, which the core runs by default; two samples a cell along each ray.
   const Run run = runOk(dem,
                         {{"OBSERVER", kSummit},
                          {"OBSERVER_HEIGHT", 2},
+                         {"SAMPLES_PER_CELL", 2},
                          {"AZIMUTH_FROM", 270},
                          {"AZIMUTH_TO", 90},
                          {"FILTER", 1},
@@ -33,6 +34,7 @@ TEST_CASE("the panorama algorithm draws the core's panorama on the map and in th
   params.view.observer_x = 749008.1394, params.view.observer_y = 4009477.9308;
   params.view.observer_height = 2;
   params.view.azimuth_from = 270, params.view.azimuth_to = 90;
+  params.view.samples_per_cell = 2;
   params.record_visibility = true;
   params.cut_leaps = true;  // as the algorithm draws its strokes
   const PanoramaResult expected = sketch_panorama(core.oriented, core.geotransform, params);
