@@ -319,6 +319,15 @@ TEST_CASE("strips are needed only for DEMs too large to hold and are sized by pr
   CHECK_FALSE(is_cardinal(45));
 }
 
+TEST_CASE("an allocation over half of the machine's memory is refused before it is made",
+          "[pipeline][memory]") {
+  CHECK_NOTHROW(check_fits_in_memory(1e6, "a megabyte", "none"));
+  // No machine this runs on has 2 exabytes: half of it is refused, naming what and the remedy.
+  CHECK_THROWS_WITH(check_fits_in_memory(1e18, "the visibility of 4e+18 samples", "sample less"),
+                    Catch::Contains("the visibility of 4e+18 samples would take 1000000000.0 GB, "
+                                    "more than half of this machine's memory; sample less"));
+}
+
 TEST_CASE("strips must arrive in order and cover the grid", "[pipeline][strips]") {
   const HeightGrid z = test::random_terrain(10, 12, 3);
   const OrientedFrame frame = make_frame(10, 12, 10, 10, 90);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "core/base/errors.h"
@@ -54,6 +55,14 @@ void check_strip_fits(const OrientedFrame& frame, std::size_t strip) {
                 " cells would take more than half of this machine's memory; choose fewer "
                 "profiles per strip (0 chooses them)");
   }
+}
+
+void check_fits_in_memory(double bytes, const std::string& what, const std::string& remedy) {
+  if (!over_half_the_memory(bytes)) return;
+  char gigabytes[32];
+  std::snprintf(gigabytes, sizeof gigabytes, "%.1f", bytes / 1e9);
+  throw Error(what + " would take " + gigabytes + " GB, more than half of this machine's memory; " +
+              remedy);
 }
 
 }  // namespace tsk

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 #include "core/method/frame.h"
 
@@ -22,5 +23,9 @@ std::size_t strip_profiles(const OrientedFrame& frame);
 // Throws Error when strips of `strip` profiles are none or would take more than half of this
 // machine's memory.
 void check_strip_fits(const OrientedFrame& frame, std::size_t strip);
+
+// Throws Error, "`what` would take N GB, more than half of this machine's memory; `remedy`", when
+// `bytes` would: checked before the allocation, which could not fail cleanly.
+void check_fits_in_memory(double bytes, const std::string& what, const std::string& remedy);
 
 }  // namespace tsk

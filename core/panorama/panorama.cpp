@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/base/errors.h"
+#include "core/base/memory_budget.h"
 #include "core/method/profile_stages.h"
 
 namespace tsk {
@@ -43,7 +44,17 @@ PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotra
   PanoramaResult result;
   result.rays = plan_rays(dem, geotransform, params.view);
   const PanoramaRays& rays = result.rays;
-  if (params.record_visibility) result.samples.assign(rays.rays * result.row_bytes(), 0);
+  if (params.record_visibility) {
+    const std::size_t bytes = rays.rays * result.row_bytes();
+    check_fits_in_memory(
+        static_cast<double>(bytes),
+        "the visibility of " +
+            number_text(static_cast<double>(rays.rays) * static_cast<double>(rays.samples)) +
+            " samples",
+        "sample fewer times a cell, give a shorter range or leave the "
+        "visibility out");
+    result.samples.assign(bytes, 0);
+  }
   const bool full = rays.field.full_circle;
   const std::int32_t leap =
       params.cut_leaps ? PanoramaLinker::kLeapCells * params.view.samples_per_cell : 0;
