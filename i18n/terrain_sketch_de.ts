@@ -348,97 +348,97 @@
     </message>
     <message>
         <location filename="../plugin/panorama_algorithm.cpp" line="112" />
-        <source>Strokes of fewer samples are dropped.</source>
-        <translation>Striche mit weniger Abtastpunkten werden verworfen.</translation>
+        <source>Strokes of fewer samples are dropped; at N samples per cell, strokes of fewer than N times this.</source>
+        <translation>Striche mit weniger Abtastpunkten werden verworfen; bei N Abtastpunkten je Zelle Striche mit weniger als dem N-fachen davon.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="113" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="115" />
         <source>Formulated chaining window (samples)</source>
         <translation>Suchfenster der formulierten Verkettung (Abtastpunkte)</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="115" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="117" />
         <source>How far along the next ray a formulated chain may step.</source>
         <translation>Wie weit eine formulierte Kette auf dem nächsten Strahl springen darf.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="117" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="119" />
         <source>Drawn (the default): a stroke is cut where its chain leaps along the rays, since a leap draws no line on the terrain. Exact: the thesis's strokes, each chain whole.</source>
         <translation>Gezeichnet (Standard): ein Strich wird getrennt, wo seine Kette entlang der Strahlen springt, denn ein Sprung zeichnet keine Linie im Gelände. Exakt: die Striche der Dissertation, jede Kette ganz.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="119" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="121" />
         <source>Panorama strokes on the map</source>
         <translation>Panoramastriche auf der Karte</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="121" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="123" />
         <source>The strokes in the DEM's CRS, with their class, distance and azimuths.</source>
         <translation>Die Striche im KBS des DGM, mit ihrer Klasse, Entfernung und ihren Azimuten.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="122" />
-        <location filename="../plugin/panorama_algorithm.cpp" line="292" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="124" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="294" />
         <source>Panorama</source>
         <translation>Panorama</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="123" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="125" />
         <source>The same strokes in the panorama: x the azimuth and y the elevation angle, in degrees, without a CRS. Open it in a map of its own.</source>
         <translation>Dieselben Striche im Panorama: x das Azimut und y der Höhenwinkel, in Grad, ohne KBS. In einer eigenen Karte öffnen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="126" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="128" />
         <source>Peaks to label</source>
         <translation>Zu beschriftende Gipfel</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="127" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="129" />
         <source>Optional: named points, the summits of a gazetteer. Those whose top the observer sees are labelled in the panorama.</source>
         <translation>Optional: benannte Punkte, die Gipfel eines Ortsverzeichnisses. Die, deren Spitze der Beobachter sieht, werden im Panorama beschriftet.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="130" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="132" />
         <source>Peak name field</source>
         <translation>Namensfeld der Gipfel</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="132" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="134" />
         <source>The field of the peaks holding their names.</source>
         <translation>Das Feld der Gipfel, das ihre Namen enthält.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="133" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="135" />
         <source>Peak labels</source>
         <translation>Gipfelbeschriftungen</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="135" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="137" />
         <source>The peaks in sight as leaders in the panorama, from each top straight up to its label, with the name, distance, azimuth and elevation.</source>
         <translation>Die sichtbaren Gipfel als Hinweislinien im Panorama, von jeder Spitze senkrecht hinauf zu ihrer Beschriftung, mit Name, Entfernung, Azimut und Höhenwinkel.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="137" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="139" />
         <source>Visibility</source>
         <translation>Sichtbarkeit</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="139" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="141" />
         <source>Optional: a raster on the DEM's grid, 1 where the ground is seen, 0 where it is hidden, nodata out of range.</source>
         <translation>Optional: ein Raster auf dem Gitter des DGM, 1 wo der Boden gesehen wird, 0 wo er verdeckt ist, NoData außerhalb der Reichweite.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="154" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="156" />
         <source>The observer lies outside the DEM: choose a point on it.</source>
         <translation>Der Beobachter liegt außerhalb des DGM: einen Punkt darauf wählen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="218" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="220" />
         <source>The peaks have no field '%1' for their names.</source>
         <translation>Die Gipfel haben kein Feld „%1“ für ihre Namen.</translation>
     </message>
     <message>
-        <location filename="../plugin/panorama_algorithm.cpp" line="280" />
+        <location filename="../plugin/panorama_algorithm.cpp" line="282" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>

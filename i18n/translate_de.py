@@ -497,8 +497,8 @@ GERMAN = {
         'Wie stark die Refraktion die Erdkrümmung vermindert (k): Höhen werden in der Entfernung d um (1 - k) d² / 2R abgesenkt. 0,13 ist der übliche Wert über Land.',
     'Minimum stroke length (samples)':
         'Mindestlänge der Striche (Abtastpunkte)',
-    'Strokes of fewer samples are dropped.':
-        'Striche mit weniger Abtastpunkten werden verworfen.',
+    'Strokes of fewer samples are dropped; at N samples per cell, strokes of fewer than N times this.':
+        'Striche mit weniger Abtastpunkten werden verworfen; bei N Abtastpunkten je Zelle Striche mit weniger als dem N-fachen davon.',
     'Formulated chaining window (samples)':
         'Suchfenster der formulierten Verkettung (Abtastpunkte)',
     'How far along the next ray a formulated chain may step.':

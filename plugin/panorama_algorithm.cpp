@@ -109,7 +109,9 @@ void PanoramaAlgorithm::initAlgorithm(const QVariantMap&) {
   const ChainParams chain;
   addWithHelp(new QgsProcessingParameterNumber(kMinCells, tr("Minimum stroke length (samples)"),
                                                kIntegerNumber, chain.min_cells, false, 1, 1000000),
-              tr("Strokes of fewer samples are dropped."), true);
+              tr("Strokes of fewer samples are dropped; at N samples per cell, strokes of fewer "
+                 "than N times this."),
+              true);
   addWithHelp(new QgsProcessingParameterNumber(kWindow, tr("Formulated chaining window (samples)"),
                                                kIntegerNumber, chain.window, false, 0, 1000),
               tr("How far along the next ray a formulated chain may step."), true);

@@ -367,6 +367,29 @@ TEST_CASE("more samples per cell find where a hidden zone ends within their fine
   }
 }
 
+TEST_CASE("the shortest panorama stroke is counted in cells, whatever the samples per cell",
+          "[panorama][strokes]") {
+  const std::size_t n = 121;
+  const HeightGrid dem = test::random_terrain(n, n, 5);
+  const GeoTransform gt = north_up(n);
+  for (const int per_cell : {1, 2, 3}) {
+    CAPTURE(per_cell);
+    PanoramaParams params = looking_from({605.0, 605.0}, 30.0);
+    params.view.samples_per_cell = per_cell;
+    // A stroke crosses a ray a sample: per_cell rays to a cell at the far end.
+    const auto shortest = [&](int min_cells) {
+      params.chain.min_cells = min_cells;
+      const PanoramaResult result = sketch_panorama(dem, gt, params);
+      REQUIRE(result.strokes.size() > 10);
+      std::size_t least = result.strokes.front().map.chain.size();
+      for (const PanoramaStroke& s : result.strokes) least = std::min(least, s.map.chain.size());
+      return least;
+    };
+    CHECK(shortest(3) >= static_cast<std::size_t>(3 * per_cell));
+    CHECK(shortest(2) < static_cast<std::size_t>(3 * per_cell));  // such strokes are there
+  }
+}
+
 TEST_CASE("a panorama that would take far more samples than the DEM has cells is refused",
           "[panorama]") {
   // 48 x 48 cells a metre wide and ten kilometres tall: the rays, a metre apart at a range of

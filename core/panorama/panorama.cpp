@@ -56,10 +56,12 @@ PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotra
     result.samples.assign(bytes, 0);
   }
   const bool full = rays.field.full_circle;
-  const std::int32_t leap =
-      params.cut_leaps ? PanoramaLinker::kLeapCells * params.view.samples_per_cell : 0;
-  PanoramaLinker factual(true, 0, params.chain.min_cells, full, leap);
-  PanoramaLinker formulated(false, params.chain.window, params.chain.min_cells, full, leap);
+  // The shortest stroke and a leap are counted in cells: as many rays or samples as a cell holds.
+  const int per_cell = params.view.samples_per_cell;
+  const std::int32_t leap = params.cut_leaps ? PanoramaLinker::kLeapCells * per_cell : 0;
+  const int min_samples = params.chain.min_cells * per_cell;
+  PanoramaLinker factual(true, 0, min_samples, full, leap);
+  PanoramaLinker formulated(false, params.chain.window, min_samples, full, leap);
   const unsigned threads = resolve_threads(params.threads);
   RayRules rules = params.rules;
   rules.local_scale = params.local_scale.get();
