@@ -36,7 +36,8 @@ struct Reader {
 };
 
 // The panorama over the same DEM (north-up, dx by dy cells) from an observer anywhere near it,
-// with a field of view, range, eye height and refraction from the input, some out of range.
+// with a field of view, range, eye height, refraction and samples per cell from the input, some
+// out of range.
 void fuzz_panorama(const tsk::HeightGrid& dem, double dx, double dy, Reader& in) {
   tsk::PanoramaParams p;
   const double width = dx * static_cast<double>(dem.cols());
@@ -48,6 +49,7 @@ void fuzz_panorama(const tsk::HeightGrid& dem, double dx, double dy, Reader& in)
   p.view.azimuth_from = 720 * in.unit() - 360;
   p.view.azimuth_to = in.byte() % 8 == 0 ? p.view.azimuth_from : 720 * in.unit() - 360;
   p.view.refraction = 1.1 * in.unit();
+  p.view.samples_per_cell = in.byte() % 16 == 0 ? 0 : 1 + in.byte() % 3;  // 0: refused
   p.chain.window = static_cast<int>(in.byte() % 6);
   p.chain.min_cells = 2 + in.byte() % 4;
   p.record_visibility = in.byte() & 1;
@@ -60,7 +62,8 @@ void fuzz_panorama(const tsk::HeightGrid& dem, double dx, double dy, Reader& in)
     if (r.stats.filtered > r.stats.candidate || r.stats.thinned > r.stats.filtered)
       __builtin_trap();
     for (const tsk::PanoramaStroke& s : r.strokes) {
-      if (s.view.size() != s.map.points.size() || s.map.cells < p.chain.min_cells ||
+      if (s.view.size() != s.map.points.size() ||
+          s.map.cells < p.chain.min_cells * p.view.samples_per_cell ||
           !(s.azimuth_min <= s.azimuth_max))
         __builtin_trap();
       for (const tsk::StrokePoint& pt : s.view)
