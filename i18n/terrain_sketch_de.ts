@@ -329,7 +329,7 @@
     <message>
         <location filename="../plugin/panorama_algorithm.cpp" line="95" />
         <source>Samples along each ray per DEM cell. More follow the terrain between the cells' centres, so that what is seen depends less on the DEM's grid (a DEM warped to another CRS sees the same), at the square of this times the work.</source>
-        <translation>Abtastpunkte entlang jedes Strahls je DGM-Zelle. Mehr davon folgen dem Gelände zwischen den Zellmitten, sodass das Gesehene weniger vom Raster des DGM abhängt (ein in ein anderes KBS transformiertes DGM sieht dasselbe), beim Quadrat dieser Zahl an Rechenaufwand.</translation>
+        <translation>Abtastpunkte entlang jedes Strahls je DGM-Zelle. Mehr davon folgen dem Gelände zwischen den Zellmitten, sodass das Gesehene weniger vom Raster des DGM abhängt (ein in ein anderes KBS transformiertes DGM sieht dasselbe), bei einem Rechenaufwand, der mit dem Quadrat dieser Zahl wächst.</translation>
     </message>
     <message>
         <location filename="../plugin/panorama_algorithm.cpp" line="99" />

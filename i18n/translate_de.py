@@ -492,7 +492,7 @@ GERMAN = {
     'Samples per cell':
         'Abtastpunkte je Zelle',
     "Samples along each ray per DEM cell. More follow the terrain between the cells' centres, so that what is seen depends less on the DEM's grid (a DEM warped to another CRS sees the same), at the square of this times the work.":
-        'Abtastpunkte entlang jedes Strahls je DGM-Zelle. Mehr davon folgen dem Gelände zwischen den Zellmitten, sodass das Gesehene weniger vom Raster des DGM abhängt (ein in ein anderes KBS transformiertes DGM sieht dasselbe), beim Quadrat dieser Zahl an Rechenaufwand.',
+        'Abtastpunkte entlang jedes Strahls je DGM-Zelle. Mehr davon folgen dem Gelände zwischen den Zellmitten, sodass das Gesehene weniger vom Raster des DGM abhängt (ein in ein anderes KBS transformiertes DGM sieht dasselbe), bei einem Rechenaufwand, der mit dem Quadrat dieser Zahl wächst.',
     "How much refraction lessens the earth's curvature (k): heights are lowered by (1 - k) d² / 2R at distance d. 0.13 is the usual value over land.":
         'Wie stark die Refraktion die Erdkrümmung vermindert (k): Höhen werden in der Entfernung d um (1 - k) d² / 2R abgesenkt. 0,13 ist der übliche Wert über Land.',
     'Minimum stroke length (samples)':
