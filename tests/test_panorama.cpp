@@ -348,7 +348,7 @@ TEST_CASE("more samples per cell find where a hidden zone ends within their fine
       std::size_t first_seen_again = 0;
       bool hidden = false;
       for (std::size_t k = 0; k < rays.samples && first_seen_again == 0; ++k) {
-        const auto bits = (result.samples[r * result.row_bytes() + k / 4] >> (2 * (k % 4))) & 3u;
+        const std::uint8_t bits = result.sample_class_of(r, k);
         if (bits == sample_class::hidden) hidden = true;
         if (bits == sample_class::visible && hidden) first_seen_again = k;
       }

@@ -71,7 +71,7 @@ struct DrawnParams {
   double extend_cells = 0.0;            // over-extension of each end along its tangent
   // Drawn for a map at 1:scale: the smallest stroke, the smoothing, its tolerance and the join
   // gap are at least what that scale needs on paper, and strokes outlining too little relief for
-  // it vanish. 0: no scale; the relief weights follow the DEM's own scale (drawn_strokes.h).
+  // it vanish. 0: no scale; the relief weights follow the DEM's own scale (drawing_scale.h).
   double scale = 0.0;
   bool drawn() const { return mode == StrokeMode::drawn; }
   void validate() const;

@@ -131,8 +131,7 @@ Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t r
     const std::size_t r = locator.ray_of(dx, dy);
     if (r == rays.rays) return visibility_code::out_of_range;
     const std::size_t k = static_cast<std::size_t>(i) - 1;
-    const std::uint8_t bits =
-        (result.samples[r * result.row_bytes() + k / 4] >> (2 * (k % 4))) & 3u;
+    const std::uint8_t bits = result.sample_class_of(r, k);
     return bits == sample_class::visible  ? visibility_code::visible
            : bits == sample_class::hidden ? visibility_code::hidden
                                           : visibility_code::out_of_range;

@@ -39,6 +39,10 @@ struct PanoramaResult {
   // With record_visibility: two bits per sample (sample_class), row_bytes() per ray.
   std::vector<std::uint8_t> samples;
   std::size_t row_bytes() const { return (rays.samples + 3) / 4; }
+  // The class (sample_class) recorded for sample k (0-based) of ray r.
+  std::uint8_t sample_class_of(std::size_t r, std::size_t k) const {
+    return static_cast<std::uint8_t>((samples[r * row_bytes() + k / 4] >> (2 * (k % 4))) & 3u);
+  }
 };
 
 // Throws Error naming the cause on a view it cannot draw (panorama_rays.h), Cancelled when
