@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "catch_compat.h"
+#include "core/drawn/drawing_pipeline.h"
 #include "core/drawn/drawn_strokes.h"
 #include "core/drawn/stroke_joining.h"
 #include "core/drawn/stroke_smoothing.h"
@@ -393,4 +394,35 @@ TEST_CASE("a chain that leaps along the line of sight is cut there", "[drawn][sp
   CHECK(whole[0].mean_slope_pct == Approx(30.0));
   CHECK(whole[0].mean_dist == Approx(50.0));  // 0, 10, 10, 110, 120
   CHECK(whole[0].points.size() == 5);
+}
+
+TEST_CASE("the drawing takes its pieces a batch at a time, however many a batch of profiles makes",
+          "[drawn][memory]") {
+  // Pieces far apart, each its own group and settled at once: with the drawing on the caller's
+  // thread, a flush draws and hands on all it was given. A piece is added, then a settle, so a
+  // batch of steps is half as many pieces.
+  const OrientedFrame frame = make_frame(20, 20, 10, 10, 270);
+  SilhouetteParams params;
+  params.strokes.mode = StrokeMode::drawn;
+  const DrawingSetup setup = drawing_setup(frame, GeoTransform{}, params, 0.0);
+  std::size_t handed_on = 0;
+  DrawingPipeline drawing(setup, false, [&](StrokeClass, std::size_t, Stroke&&) { ++handed_on; });
+  const std::size_t batch = DrawingPipeline::kStepsPerBatch / 2;
+  for (std::size_t k = 0; k < 3 * batch; ++k) {
+    Stroke piece = row_stroke(0, 4, 100.0 * static_cast<double>(k));
+    piece.cls = StrokeClass::formulated;
+    piece.mean_slope_pct = 30.0;
+    for (int i = 0; i <= 4; ++i) {
+      piece.chain.push_back({static_cast<std::int32_t>(k), i});
+      piece.vertices.push_back({10.0 * i, 100.0, 0.0});
+    }
+    drawing.add_piece(StrokeClass::formulated, std::move(piece));
+    drawing.settle(StrokeClass::formulated, static_cast<double>(k) + 100.0);
+    drawing.flush_when_full();
+    // Never more than a batch of steps waits for the drawing.
+    REQUIRE(k + 1 - handed_on <= batch);
+  }
+  CHECK(handed_on == 3 * batch);
+  drawing.finish();
+  CHECK(handed_on == 3 * batch);
 }

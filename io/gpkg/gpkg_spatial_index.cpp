@@ -45,6 +45,17 @@ float round_up(double v) {
   return double{f} < v ? std::nextafter(f, kInf) : f;
 }
 
+}  // namespace
+
+IndexBox::IndexBox(std::int64_t feature, double x0, double x1, double y0, double y1)
+    : id(feature),
+      min_x(round_down(x0)),
+      max_x(round_up(x1)),
+      min_y(round_down(y0)),
+      max_y(round_up(y1)) {}
+
+namespace {
+
 Cell cover(const Node& node, std::int64_t ref) {
   Cell c{ref, kInf, -kInf, kInf, -kInf};
   for (const Cell& child : node) {
@@ -129,8 +140,7 @@ PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes) {
 
   std::vector<Cell> leaves(boxes.size());
   std::transform(boxes.begin(), boxes.end(), leaves.begin(), [](const IndexBox& b) {
-    return Cell{b.id, round_down(b.min_x), round_up(b.max_x), round_down(b.min_y),
-                round_up(b.max_y)};
+    return Cell{b.id, b.min_x, b.max_x, b.min_y, b.max_y};
   });
   boxes = {};
   // levels[0] holds the leaves, levels.back() the root alone.
@@ -275,7 +285,7 @@ void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
         db, "SELECT length(data) FROM " + quoted_identifier(rtree + "_node") + " WHERE nodeno = 1");
     if (root.step()) node_bytes = static_cast<std::size_t>(root.integer(0));
   }
-  const PackedRtree packed = pack_rtree(std::move(boxes), node_bytes);
+  PackedRtree packed = pack_rtree(std::move(boxes), node_bytes);
   db.run("DELETE FROM " + quoted_identifier(rtree + "_node"));
   Connection::Statement node(
       db, "INSERT INTO " + quoted_identifier(rtree + "_node") + "(nodeno, data) VALUES (?, ?)");
@@ -288,7 +298,7 @@ void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
       db, "INSERT INTO " + quoted_identifier(rtree + "_parent") + "(nodeno, parentnode) VALUES ",
       parents);
   // In the order of the ids, so that each row lands at the end of the table's B-tree.
-  std::vector<std::pair<std::int64_t, std::int64_t>> leaf_of = packed.leaf_of;
+  std::vector<std::pair<std::int64_t, std::int64_t>> leaf_of = std::move(packed.leaf_of);
   sort_in_halves(leaf_of.begin(), leaf_of.end(), std::less<>());
   insert_pairs(db, "INSERT INTO " + quoted_identifier(rtree + "_rowid") + "(rowid, nodeno) VALUES ",
                leaf_of);

@@ -24,10 +24,14 @@ class GDALDataset;
 
 namespace tsk::io {
 
-// One feature's bounding box, keyed by its feature id.
+// One feature's bounding box, keyed by its feature id, as the R-tree stores it: float bounds
+// rounded outwards. (24 bytes rather than 40 in doubles: a writer holds a box per feature until it
+// builds the index, 1.2 million of them on the 8000 x 8000 benchmark's default run.)
 struct IndexBox {
+  IndexBox() = default;
+  IndexBox(std::int64_t feature, double min_x, double max_x, double min_y, double max_y);
   std::int64_t id = 0;
-  double min_x = 0, max_x = 0, min_y = 0, max_y = 0;
+  float min_x = 0, max_x = 0, min_y = 0, max_y = 0;
 };
 
 // One node of an SQLite R*Tree: its number (the root is 1), its parent's (0 for the root) and
