@@ -11,6 +11,7 @@
 #include "cli_run.h"
 #include "gdal_test_support.h"
 #include "gpkg_index_check.h"
+#include "io/gpkg/gpkg_line_appender.h"
 #include "io/gpkg/gpkg_spatial_index.h"
 #include "io/write/vector_writer.h"
 
@@ -183,4 +184,41 @@ TEST_CASE("strokes written straight into a GeoPackage read back as OGR writes th
   }
   CHECK(rows == 500);
   CHECK(gpkg.rtree_check() == "ok");
+}
+
+TEST_CASE("lines appended after deleted features take the ids SQLite gives, and the index agrees",
+          "[gpkg]") {
+  // A layer made as QGIS's sinks make theirs (no spatial index), whose first features were deleted:
+  // its AUTOINCREMENT key goes on from the largest id it gave, not from the rows left.
+  ScratchDir dir("gpkg-append");
+  const std::string path = dir / "a.gpkg";
+  {
+    GDALAllRegister();
+    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GPKG");
+    io::DatasetPtr ds(driver->Create(path.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+    REQUIRE(ds);
+    const char* options[] = {"SPATIAL_INDEX=NO", nullptr};
+    OGRLayer* layer = ds->CreateLayer("lines", nullptr, wkbLineString, const_cast<char**>(options));
+    REQUIRE(layer);
+    for (int k = 0; k < 7; ++k) {
+      OGRFeature feature(layer->GetLayerDefn());
+      OGRLineString line;
+      line.addPoint(kEast + k, kNorth);
+      line.addPoint(kEast + k, kNorth + 5);
+      feature.SetGeometry(&line);
+      REQUIRE(layer->CreateFeature(&feature) == OGRERR_NONE);
+    }
+    for (int fid = 1; fid <= 7; ++fid) REQUIRE(layer->DeleteFeature(fid) == OGRERR_NONE);
+  }
+  const std::vector<Stroke> strokes = random_strokes(300, true, 3);
+  {
+    io::GpkgFileAppender file(path, "lines");
+    for (const Stroke& s : strokes) file.lines().add(s.points);
+    file.finish();
+  }
+  IndexedGpkg gpkg(path, "lines");
+  CHECK(gpkg.rtree_check() == "ok");
+  CHECK(gpkg.first_column("SELECT min(fid) FROM lines").at(0) == "8");
+  CHECK(gpkg.first_column("SELECT max(fid) FROM lines").at(0) == "307");
+  for (const Window& w : random_windows(11)) CHECK(gpkg.index_hits(w) == gpkg.box_hits(w));
 }

@@ -75,6 +75,8 @@ class Connection {
 
   // Runs statements that return no rows.
   void run(const std::string& sql) const;
+  // The row id of the last row inserted.
+  std::int64_t last_row_id() const { return sqlite3_last_insert_rowid(db_); }
   [[noreturn]] void fail(const std::string& why) const;
 
  private:
