@@ -241,29 +241,59 @@ std::vector<std::string> rtree_triggers(const std::string& table, const std::str
   };
 }
 
-// Inserts pairs of integers with `into` ("INSERT INTO t (a, b) VALUES "), many rows to a statement
-// (insert_rows_sql; 0.5 s for the million rows of a million strokes' index, one to a statement).
+// Inserts `count` rows with `into` ("INSERT INTO t (a, b) VALUES "), `per_insert` rows of `row`
+// ("(?, ?)") to a statement (insert_rows_sql; 0.5 s for the million rows of a million strokes'
+// index, one to a statement). bind(statement, k, at) binds row k's values from parameter `at` on.
+template <typename Bind>
+void insert_in_batches(const Connection& db, const std::string& into, const std::string& row,
+                       int values_per_row, std::size_t per_insert, std::size_t count, Bind bind) {
+  const auto statement = [&](std::size_t rows) {
+    return std::make_unique<Connection::Statement>(db, gpkg::insert_rows_sql(into, row, rows));
+  };
+  std::unique_ptr<Connection::Statement> full;
+  for (std::size_t first = 0; first < count; first += per_insert) {
+    const std::size_t rows = std::min(per_insert, count - first);
+    if (rows == per_insert && !full) full = statement(rows);
+    const std::unique_ptr<Connection::Statement> last =
+        rows < per_insert ? statement(rows) : nullptr;
+    Connection::Statement& insert = last ? *last : *full;
+    for (std::size_t k = 0; k < rows; ++k)
+      bind(insert, first + k, 1 + static_cast<int>(k) * values_per_row);
+    insert.step();
+  }
+}
+
+// Inserts pairs of integers with `into` ("INSERT INTO t (a, b) VALUES ").
 void insert_pairs(const Connection& db, const std::string& into,
                   const std::vector<std::pair<std::int64_t, std::int64_t>>& pairs) {
   constexpr std::size_t kRowsPerInsert = 256;
   static_assert(2 * kRowsPerInsert <= gpkg::kMostBoundValues, "too many values a statement");
-  const auto statement = [&](std::size_t rows) {
-    return std::make_unique<Connection::Statement>(db, gpkg::insert_rows_sql(into, "(?, ?)", rows));
-  };
-  std::unique_ptr<Connection::Statement> full;
-  for (std::size_t first = 0; first < pairs.size(); first += kRowsPerInsert) {
-    const std::size_t rows = std::min(kRowsPerInsert, pairs.size() - first);
-    if (rows == kRowsPerInsert && !full) full = statement(rows);
-    const std::unique_ptr<Connection::Statement> last =
-        rows < kRowsPerInsert ? statement(rows) : nullptr;
-    Connection::Statement& insert = last ? *last : *full;
-    int at = 1;
-    for (std::size_t k = first; k < first + rows; ++k) {
-      insert.bind(at, pairs[k].first).bind(at + 1, pairs[k].second);
-      at += 2;
-    }
-    insert.step();
-  }
+  insert_in_batches(db, into, "(?, ?)", 2, kRowsPerInsert, pairs.size(),
+                    [&](Connection::Statement& insert, std::size_t k, int at) {
+                      insert.bind(at, pairs[k].first).bind(at + 1, pairs[k].second);
+                    });
+}
+
+// Inserts the leaf of each feature into the R-tree's rowid table `rowids`, the pairs (id, leaf)
+// sorted by id. Where the ids count up one by one from the first, as a writer's do, SQLite numbers
+// the rows after the first itself, so that each goes to the table's end without a search for its
+// id (a million strokes' rows: 0.16 s became 0.08 s).
+void insert_leaves(const Connection& db, const std::string& rowids,
+                   const std::vector<std::pair<std::int64_t, std::int64_t>>& leaf_of) {
+  const std::string into = "INSERT INTO " + rowids + "(rowid, nodeno) VALUES ";
+  const auto gap = [](const auto& a, const auto& b) { return b.first != a.first + 1; };
+  if (leaf_of.empty() || std::adjacent_find(leaf_of.begin(), leaf_of.end(), gap) != leaf_of.end())
+    return insert_pairs(db, into, leaf_of);
+  insert_pairs(db, into, {leaf_of.front()});
+  constexpr std::size_t kRowsPerInsert = 512;
+  static_assert(kRowsPerInsert <= gpkg::kMostBoundValues, "too many values a statement");
+  insert_in_batches(db, "INSERT INTO " + rowids + "(nodeno) VALUES ", "(?)", 1, kRowsPerInsert,
+                    leaf_of.size() - 1, [&](Connection::Statement& insert, std::size_t k, int at) {
+                      insert.bind(at, leaf_of[k + 1].second);
+                    });
+  if (db.last_row_id() != leaf_of.back().first)
+    db.fail("SQLite numbered the spatial index's last row " + std::to_string(db.last_row_id()) +
+            ", not " + std::to_string(leaf_of.back().first));
 }
 
 }  // namespace
@@ -300,8 +330,7 @@ void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
   // In the order of the ids, so that each row lands at the end of the table's B-tree.
   std::vector<std::pair<std::int64_t, std::int64_t>> leaf_of = std::move(packed.leaf_of);
   sort_in_halves(leaf_of.begin(), leaf_of.end(), std::less<>());
-  insert_pairs(db, "INSERT INTO " + quoted_identifier(rtree + "_rowid") + "(rowid, nodeno) VALUES ",
-               leaf_of);
+  insert_leaves(db, quoted_identifier(rtree + "_rowid"), leaf_of);
 
   for (const std::string& trigger : rtree_triggers(table, column, fid, rtree)) db.run(trigger);
   db.run(
