@@ -7,7 +7,8 @@ what=${1:-core}
 # pybind11-dev, python3-dev: the Python package; python3-distributed: its runs on a Dask cluster;
 # python3-pytest, python3-gdal (with numpy) and python3-geopandas: its tests (python3-gdal: the
 # front-end parity test's rasters too).
-packages=(build-essential cmake catch2 libgdal-dev libsqlite3-dev gdal-bin clang libclang-rt-dev
+# libjemalloc-dev: the command line's allocator (cli/CMakeLists.txt).
+packages=(build-essential cmake catch2 libgdal-dev libsqlite3-dev libjemalloc-dev gdal-bin clang libclang-rt-dev
   clang-format git poppler-utils librsvg2-bin pybind11-dev python3-dev python3-pytest python3-gdal
   python3-geopandas python3-distributed)
 if [ "$what" = qgis ]; then
