@@ -22,15 +22,17 @@ using gpkg::Connection;
 using gpkg::quoted_identifier;
 using gpkg::quoted_literal;
 
-// A box as the R-tree stores it: float bounds rounded outwards. `ref` is a feature id in a
-// leaf, a child's index in its level otherwise.
-struct Cell {
-  std::int64_t ref = 0;
-  float min_x = 0, max_x = 0, min_y = 0, max_y = 0;
-  double centre_x() const { return 0.5 * (double{min_x} + double{max_x}); }
-  double centre_y() const { return 0.5 * (double{min_y} + double{max_y}); }
-};
+// A box as the R-tree stores it (IndexBox): its `id` is a feature id in a leaf, a child's index in
+// its level otherwise.
+using Cell = IndexBox;
 using Node = std::vector<Cell>;
+
+double centre_x(const Cell& c) {
+  return 0.5 * (double{c.min_x} + double{c.max_x});
+}
+double centre_y(const Cell& c) {
+  return 0.5 * (double{c.min_y} + double{c.max_y});
+}
 
 constexpr std::size_t kCellBytes = 8 + 4 * 4;  // the id, then min and max of x and y
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -56,8 +58,11 @@ IndexBox::IndexBox(std::int64_t feature, double x0, double x1, double y0, double
 
 namespace {
 
-Cell cover(const Node& node, std::int64_t ref) {
-  Cell c{ref, kInf, -kInf, kInf, -kInf};
+Cell cover(const Node& node, std::int64_t index) {
+  Cell c;
+  c.id = index;
+  c.min_x = c.min_y = kInf;
+  c.max_x = c.max_y = -kInf;
   for (const Cell& child : node) {
     c.min_x = std::min(c.min_x, child.min_x);
     c.max_x = std::max(c.max_x, child.max_x);
@@ -92,21 +97,20 @@ std::vector<Node> tile(std::vector<Cell> cells, std::size_t per_node) {
   while (slices * slices < node_count) ++slices;
   const std::size_t slice_cells = std::max<std::size_t>(1, slices) * per_node;
   sort_in_halves(cells.begin(), cells.end(), [](const Cell& a, const Cell& b) {
-    return a.centre_x() != b.centre_x() ? a.centre_x() < b.centre_x() : a.ref < b.ref;
+    return centre_x(a) != centre_x(b) ? centre_x(a) < centre_x(b) : a.id < b.id;
   });
   const auto at = [&cells](std::size_t i) {
     return cells.begin() + static_cast<std::ptrdiff_t>(std::min(i, cells.size()));
   };
-  parallel_for((cells.size() + slice_cells - 1) / slice_cells, 0,
-               [&](std::size_t lo, std::size_t hi) {
-                 for (std::size_t slice = lo; slice < hi; ++slice) {
-                   std::sort(at(slice * slice_cells), at((slice + 1) * slice_cells),
-                             [](const Cell& a, const Cell& b) {
-                               return a.centre_y() != b.centre_y() ? a.centre_y() < b.centre_y()
-                                                                   : a.ref < b.ref;
-                             });
-                 }
-               });
+  parallel_for(
+      (cells.size() + slice_cells - 1) / slice_cells, 0, [&](std::size_t lo, std::size_t hi) {
+        for (std::size_t slice = lo; slice < hi; ++slice) {
+          std::sort(at(slice * slice_cells), at((slice + 1) * slice_cells),
+                    [](const Cell& a, const Cell& b) {
+                      return centre_y(a) != centre_y(b) ? centre_y(a) < centre_y(b) : a.id < b.id;
+                    });
+        }
+      });
   std::vector<Node> nodes;
   for (std::size_t start = 0; start < cells.size(); start += slice_cells) {
     const std::size_t end = std::min(cells.size(), start + slice_cells);
@@ -138,14 +142,10 @@ PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes) {
   }
   const std::size_t per_node = (node_bytes - 4) / kCellBytes;
 
-  std::vector<Cell> leaves(boxes.size());
-  std::transform(boxes.begin(), boxes.end(), leaves.begin(), [](const IndexBox& b) {
-    return Cell{b.id, b.min_x, b.max_x, b.min_y, b.max_y};
-  });
-  boxes = {};
-  // levels[0] holds the leaves, levels.back() the root alone.
-  std::vector<std::vector<Node>> levels{leaves.empty() ? std::vector<Node>(1)
-                                                       : tile(std::move(leaves), per_node)};
+  // levels[0] holds the leaves (the boxes, as the R-tree stores them), levels.back() the root
+  // alone.
+  std::vector<std::vector<Node>> levels{boxes.empty() ? std::vector<Node>(1)
+                                                      : tile(std::move(boxes), per_node)};
   while (levels.back().size() > 1) {
     const std::vector<Node>& below = levels.back();
     std::vector<Cell> covers;
@@ -167,7 +167,7 @@ PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes) {
     if (level + 1 < levels.size()) {
       for (std::size_t j = 0; j < levels[level + 1].size(); ++j) {
         for (const Cell& c : levels[level + 1][j]) {
-          parent[level][static_cast<std::size_t>(c.ref)] = number[level + 1][j];
+          parent[level][static_cast<std::size_t>(c.id)] = number[level + 1][j];
         }
       }
     }
@@ -184,14 +184,14 @@ PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes) {
       for (std::size_t k = 0; k < node.size(); ++k) {
         const Cell& c = node[k];
         const std::int64_t ref =
-            level == 0 ? c.ref : number[level - 1][static_cast<std::size_t>(c.ref)];
+            level == 0 ? c.id : number[level - 1][static_cast<std::size_t>(c.id)];
         unsigned char* cell = out.blob.data() + 4 + k * kCellBytes;
         put_big_endian(cell, static_cast<std::uint64_t>(ref), 8);
         put_float(cell + 8, c.min_x);
         put_float(cell + 12, c.max_x);
         put_float(cell + 16, c.min_y);
         put_float(cell + 20, c.max_y);
-        if (level == 0) packed.leaf_of.emplace_back(c.ref, out.number);
+        if (level == 0) packed.leaf_of.emplace_back(c.id, out.number);
       }
       packed.nodes.push_back(std::move(out));
     }
