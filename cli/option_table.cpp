@@ -173,8 +173,9 @@ const std::vector<OptionSpec> kOptionTable = {
     {"--window", "N", kStrokes, "formulated chaining search window, cells (default 3)", kChained,
      TSK_SET(params.chain.window, parse_int)},
     {"--min-cells", "N", kStrokes,
-     "drop strokes with fewer cells (default 3; drawn: after joining)", kChained,
-     TSK_SET(params.chain.min_cells, parse_int)},
+     "drop strokes with fewer cells (default 3; drawn: after joining, shorter pieces kept "
+     "only between longer ones)",
+     kChained, TSK_SET(params.chain.min_cells, parse_int)},
     {"--join-gap", "CELLS", kStrokes,
      "drawn: join ends this close, 0-20 (default 2.5; 0: no joining)", kStroked,
      TSK_SET(params.strokes.join_gap_cells, parse_number)},

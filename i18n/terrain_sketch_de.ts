@@ -160,19 +160,24 @@
 <context>
     <name>LineOutput</name>
     <message>
-        <location filename="../plugin/line_output.cpp" line="115" />
+        <location filename="../plugin/line_output.cpp" line="116" />
         <source>Internal error: no output set for %1.</source>
         <translation>Interner Fehler: keine Ausgabemenge für %1.</translation>
     </message>
     <message>
-        <location filename="../plugin/line_output.cpp" line="124" />
+        <location filename="../plugin/line_output.cpp" line="125" />
         <source>Waiting for another run writing %1.</source>
         <translation>Warte auf einen anderen Lauf, der %1 schreibt.</translation>
     </message>
     <message>
-        <location filename="../plugin/line_output.cpp" line="256" />
+        <location filename="../plugin/line_output.cpp" line="257" />
         <source>Could not write %1 whole: the file ends cut short. Is the disk full?</source>
         <translation>%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der Datenträger voll?</translation>
+    </message>
+    <message>
+        <location filename="../plugin/line_output.cpp" line="274" />
+        <source>Could not write %1 whole: %2</source>
+        <translation>%1 konnte nicht vollständig geschrieben werden: %2</translation>
     </message>
 </context>
 <context>
@@ -865,166 +870,166 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
     </message>
     <message>
         <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
-        <source>Strokes with fewer cells are dropped (generalisation).</source>
-        <translation>Striche mit weniger Zellen werden verworfen (Generalisierung).</translation>
+        <source>Strokes with fewer cells are dropped (generalisation). Drawn strokes keep shorter pieces only where they close a gap between longer ones.</source>
+        <translation>Striche mit weniger Zellen werden verworfen (Generalisierung). Gezeichnete Striche behalten kürzere Stücke nur, wo sie eine Lücke zwischen längeren schließen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="119" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="120" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="121" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="121" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="122" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="124" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="125" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="125" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="126" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="126" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="127" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="130" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="131" />
         <source>Profiles per strip (0: automatic)</source>
         <translation>Profile je Streifen (0: automatisch)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="131" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="132" />
         <source>The DEM is read and processed this many profiles at a time, the next strip read while this one is processed, so DEMs larger than memory run too. 0 chooses 1024, more for profiles under 1024 cells (a million cells a strip), fewer for profiles over 4096 cells seen from 0, 90, 180 or 270 degrees (four million cells a strip, at least 256), or fewer when profiles are so long that the strips would take more than 512 MB. Strips that would take more than half of this machine's memory are refused.</source>
         <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, mehr für Profile unter 1024 Zellen (eine Million Zellen je Streifen), weniger für Profile über 4096 Zellen bei Blick aus 0, 90, 180 oder 270 Grad (vier Millionen Zellen je Streifen, mindestens 256), oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="138" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="139" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="139" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="140" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="140" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="141" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="141" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="142" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="155" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="156" />
         <source>Drawn (the default): strokes a cartographer would publish. Pieces of one class that continue each other across a small gap are joined before short strokes are dropped; points lie between cells where the profile peaks or the slope breaks, and are smoothed along the stroke; every point carries a weight (its M value) that tapers the ends and thins the strokes towards the back of the view, which the layers' styles draw. Exact: the thesis's strokes, a point at each cell centre.</source>
         <translation>Gezeichnet (Voreinstellung): Striche, wie sie ein Kartograf veröffentlichen würde. Stücke einer Klasse, die einander über eine kleine Lücke fortsetzen, werden verbunden, bevor kurze Striche entfallen; Punkte liegen zwischen den Zellen, wo das Profil gipfelt oder die Neigung bricht, und werden entlang des Strichs geglättet; jeder Punkt trägt ein Gewicht (seinen M-Wert), das die Enden verjüngt und die Striche zum hinteren Rand der Ansicht hin dünner macht, wie es die Stile der Layer zeichnen. Exakt: die Striche der Dissertation, ein Punkt in jeder Zellmitte.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="161" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="162" />
         <source>Drawn for scale</source>
         <translation>Gezeichnet für Maßstab</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="166" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="167" />
         <source>Drawn strokes: the scale of the map they are drawn for (1:N). The shortest stroke (2 mm on paper), the smoothing, its tolerance and the join gap become at least what that scale needs, strokes outlining less than N/10 000 metres of relief are left out, and the layers' styles draw their widths true at that scale (the renderer's reference scale). Empty: for no scale; every stroke is still weighed by the relief it outlines.</source>
         <translation>Gezeichnete Striche: der Maßstab der Karte, für die sie gezeichnet werden (1:N). Der kürzeste Strich (2 mm auf dem Papier), die Glättung, ihre Toleranz und die Verbindungslücke werden mindestens so groß, wie dieser Maßstab es verlangt; Striche, die weniger als N/10 000 Meter Relief umreißen, entfallen, und die Stile der Layer zeichnen ihre Breiten in diesem Maßstab wahr (der Bezugsmaßstab des Renderers). Leer: für keinen Maßstab; jeder Strich wird dennoch nach dem Relief gewichtet, das er umreißt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="172" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="173" />
         <source>Join gap (cells)</source>
         <translation>Verbindungslücke (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="173" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="174" />
         <source>Drawn strokes: ends of two strokes this close (in cells) are joined when their directions agree. 0 joins none.</source>
         <translation>Gezeichnete Striche: Enden zweier Striche, die so nahe beieinander liegen (in Zellen), werden verbunden, wenn ihre Richtungen übereinstimmen. 0 verbindet keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="175" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="176" />
         <source>Join angle (degrees)</source>
         <translation>Verbindungswinkel (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="176" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="177" />
         <source>Drawn strokes: the largest turn between two ends' directions, and the step between them, for them to be joined.</source>
         <translation>Gezeichnete Striche: die größte Drehung zwischen den Richtungen zweier Enden und dem Schritt zwischen ihnen, bei der sie noch verbunden werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="178" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="179" />
         <source>Smoothing (cells)</source>
         <translation>Glättung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="179" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="180" />
         <source>Drawn strokes: the width (sigma, in cells) of the Gaussian smoothing along each stroke. 0 keeps the points where they are.</source>
         <translation>Gezeichnete Striche: die Breite (Sigma, in Zellen) der Gaußschen Glättung entlang jedes Strichs. 0 lässt die Punkte, wo sie sind.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="181" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="182" />
         <source>Smoothing tolerance (cells)</source>
         <translation>Glättungstoleranz (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="182" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="183" />
         <source>Drawn strokes: no point moves farther than this (in cells) from its place on the exact chain, so smoothing never invents terrain.</source>
         <translation>Gezeichnete Striche: kein Punkt liegt weiter als dies (in Zellen) von seinem Platz auf der exakten Kette, so dass die Glättung nie Gelände erfindet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="184" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="185" />
         <source>Taper (share of the stroke)</source>
         <translation>Verjüngung (Anteil des Strichs)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="185" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="186" />
         <source>Drawn strokes: the share of a stroke's length over which each end thins.</source>
         <translation>Gezeichnete Striche: der Anteil der Strichlänge, über den jedes Ende dünner wird.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="186" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="187" />
         <source>Depth cue</source>
         <translation>Tiefenwirkung</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="187" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="188" />
         <source>Drawn strokes: the share of the weight strokes lose from the front of the view to its back.</source>
         <translation>Gezeichnete Striche: der Anteil des Gewichts, den Striche vom vorderen zum hinteren Rand der Ansicht verlieren.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="189" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="190" />
         <source>Over-extension (cells)</source>
         <translation>Überzeichnung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="190" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="191" />
         <source>Drawn strokes: each end runs on this far (in cells) along its direction, as a hand-drawn stroke does. 0: none.</source>
         <translation>Gezeichnete Striche: jedes Ende läuft so weit (in Zellen) in seiner Richtung weiter, wie es ein von Hand gezeichneter Strich tut. 0: keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="236" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="237" />
         <source>Processing the DEM in %1 strips of %2 profiles.</source>
         <translation>Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="277" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="278" />
         <source>Factual silhouettes, %1</source>
         <translation>Faktische Silhouetten, %1</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="280" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="281" />
         <source>Formulated silhouettes, %1</source>
         <translation>Formulierte Silhouetten, %1</translation>
     </message>

@@ -74,6 +74,7 @@ GERMAN = {
         "haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften > Transparenz) "
         "oder in der Datei.",
     "The raster has %1 bands; band %2 is used.": "Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.",
+    "Could not write %1 whole: %2": "%1 konnte nicht vollständig geschrieben werden: %2",
     "Could not write %1 whole: the file ends cut short. Is the disk full?":
         "%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der "
         "Datenträger voll?",
@@ -251,8 +252,10 @@ GERMAN = {
         "Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen "
         "auseinander liegen.",
     "Minimum stroke cells": "Mindestzahl Zellen je Strich",
-    "Strokes with fewer cells are dropped (generalisation).":
-        "Striche mit weniger Zellen werden verworfen (Generalisierung).",
+    "Strokes with fewer cells are dropped (generalisation). Drawn strokes keep shorter pieces "
+    "only where they close a gap between longer ones.":
+        "Striche mit weniger Zellen werden verworfen (Generalisierung). Gezeichnete Striche "
+        "behalten kürzere Stücke nur, wo sie eine Lücke zwischen längeren schließen.",
     "Geometry": "Geometrie",
     "Map (cell centres)": "Karte (Zellmittelpunkte)",
     "Plan oblique (the sketch)": "Plan oblique (die Skizze)",

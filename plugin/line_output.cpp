@@ -16,6 +16,7 @@
 #include <exception>
 #include <filesystem>
 
+#include "io/read/gdal_util.h"
 #include "io/write/output_set.h"
 #include "plugin/core_errors.h"
 #include "plugin/gpkg_line_sink.h"
@@ -250,12 +251,28 @@ void LineOutput::add(const Stroke& stroke) {
 void LineOutput::finish(const QString& note) {
   if (mGpkg) withCoreErrors([&] { mGpkg->finish(note); });
   mGpkg = nullptr;
-  mSink.reset();  // QGIS's writer flushes and closes the file
+  closeSink();
   if (!mFile.isEmpty() && mAddedLayer.isEmpty() && !endsWhole(mFile)) {
     throw QgsProcessingException(
         tr("Could not write %1 whole: the file ends cut short. Is the disk full?").arg(mFile));
   }
   mFinished = true;
+}
+
+// QGIS's writer flushes and closes the file. A driver may tell of a write that failed as it closes
+// only to GDAL's error handler, which QGIS logs: FlatGeobuf, which then copies its features from
+// a temporary file, wrote a file cut short and the run succeeded.
+void LineOutput::closeSink() {
+  std::string failure;
+  {
+    const io::GdalErrorCapture capture;
+    mSink.reset();
+    failure = capture.first_failure();
+  }
+  if (failure.empty()) return;
+  throw QgsProcessingException(
+      tr("Could not write %1 whole: %2")
+          .arg(mFile.isEmpty() ? mDestination : mFile, QString::fromStdString(failure)));
 }
 
 void LineOutput::failWriting() const {

@@ -106,6 +106,7 @@ class LineOutput {
   static std::unique_ptr<io::DestinationLock> lockDestination(const QString& path,
                                                               QgsProcessingFeedback* feedback);
   [[noreturn]] void failWriting() const;
+  void closeSink();
   void discard() noexcept;
 
   std::unique_ptr<io::DestinationLock> mLock;  // first made, last gone: after the sink closes

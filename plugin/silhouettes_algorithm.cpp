@@ -113,7 +113,8 @@ void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
   add(integer(kWindow, tr("Chaining window (cells)"), defaults.chain.window, 0, 1000),
       tr("Formulated strokes link cells on neighbouring profiles at most this many cells apart."));
   add(integer(kMinCells, tr("Minimum stroke cells"), defaults.chain.min_cells, 2, 1000000),
-      tr("Strokes with fewer cells are dropped (generalisation)."));
+      tr("Strokes with fewer cells are dropped (generalisation). Drawn strokes keep shorter "
+         "pieces only where they close a gap between longer ones."));
   addWithHelp(SharedParameters::geometry(Geometry::map));
   add(choiceParameter(
           kPlacement, tr("Formulated stroke placement"), kPlacementNames,

@@ -178,6 +178,37 @@ TEST_CASE("strokes grouped as they stream join as they do all together", "[drawn
   CHECK(streamed == together);
 }
 
+TEST_CASE("short pieces stay only where they close a gap between longer ones", "[drawn][joining]") {
+  JoinRule rule = kRule;
+  rule.least_end_cells = 3;
+  // A line of 5 cells, a gap, a piece of 2: the short piece hangs off the end and is left off.
+  std::vector<Stroke> joined = join_strokes({row_stroke(0, 4, 0), row_stroke(6, 7, 0)}, rule);
+  REQUIRE(joined.size() == 1);
+  CHECK(joined[0].cells == 5);
+  CHECK(joined[0].points.back().x == 4.0);
+  CHECK(joined[0].length == Approx(4.0));
+  // Without the rule it joins (the pen plot's merging, --min-cells 2).
+  joined = join_strokes({row_stroke(0, 4, 0), row_stroke(6, 7, 0)}, kRule);
+  REQUIRE(joined.size() == 1);
+  CHECK(joined[0].cells == 7);
+  // Between two longer pieces, given in any order, it closes the gap and stays.
+  joined = join_strokes({row_stroke(9, 13, 0), row_stroke(6, 7, 0), row_stroke(0, 4, 0)}, rule);
+  REQUIRE(joined.size() == 1);
+  CHECK(joined[0].cells == 12);
+  CHECK(joined[0].length == Approx(4.0 + 2.0 + 1.0 + 2.0 + 4.0));
+  // Short pieces joined only to each other make no line: none stay.
+  CHECK(
+      join_strokes({row_stroke(0, 1, 0), row_stroke(3, 4, 0), row_stroke(6, 7, 0)}, rule).empty());
+  // A short piece off each end of a bridged line goes; the bridge stays.
+  joined = join_strokes({row_stroke(0, 1, 0), row_stroke(3, 7, 0), row_stroke(9, 10, 0),
+                         row_stroke(12, 16, 0), row_stroke(18, 19, 0)},
+                        rule);
+  REQUIRE(joined.size() == 1);
+  CHECK(joined[0].cells == 12);
+  CHECK(joined[0].points.front().x == 3.0);
+  CHECK(joined[0].points.back().x == 16.0);
+}
+
 TEST_CASE("drawn strokes never join across classes and are generalised after joining",
           "[drawn][joining]") {
   const HeightGrid dem = test::random_terrain(90, 110, 7);

@@ -16,7 +16,7 @@ DrawingSetup drawing_setup(const OrientedFrame& frame, const GeoTransform& geotr
                            const SilhouetteParams& params, double z_ref) {
   DrawingSetup setup;
   setup.drawn = params.strokes;
-  setup.min_cells = params.chain.min_cells;
+  setup.min_cells = setup.least_piece_cells = params.chain.min_cells;
   setup.depth = frame.d * static_cast<double>(frame.length);
   setup.geometry = params.geometry;
   StrokePoint origin, one_cell;
@@ -85,7 +85,8 @@ double longest_step(const DrawingSetup& setup) {
 }
 
 JoinRule join_rule(const DrawingSetup& setup) {
-  return {setup.drawn.join_gap_cells * setup.cell, setup.drawn.join_angle_deg};
+  return {setup.drawn.join_gap_cells * setup.cell, setup.drawn.join_angle_deg,
+          setup.least_piece_cells};
 }
 
 double join_reach_profiles(const DrawingSetup& setup) {

@@ -30,7 +30,10 @@ constexpr double kLeapCells = 4.0;
 // What drawing needs of a run: its parameters in map units.
 struct DrawingSetup {
   DrawnParams drawn;
-  int min_cells = 3;
+  int min_cells = 3;  // the shortest stroke drawn, raised by a scale (drawing_scale.h)
+  // Pieces of fewer cells stay only where they close a gap in a line: SPEC's generalisation
+  // (--min-cells), which a scale leaves as it is.
+  int least_piece_cells = 3;
   double cell = 1.0;    // the view's spacing along profiles, map units
   double across = 1.0;  // the spacing of profiles, map units
   double depth = 1.0;   // the view's depth, ground units (as StrokeVertex::dist)

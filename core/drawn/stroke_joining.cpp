@@ -320,6 +320,21 @@ std::vector<StrokeEnd> stroke_ends(const std::vector<Stroke>& strokes, const Joi
   return ends;
 }
 
+// The pieces of a joined stroke (entered at the ends in `walk`) that it keeps, [first, second):
+// short pieces are left off its ends, so that they stay only where they close a gap between
+// longer ones (none stay of a stroke joined of short pieces only).
+std::pair<std::size_t, std::size_t> kept_span(const std::vector<std::size_t>& walk,
+                                              const std::vector<Stroke>& strokes,
+                                              const JoinRule& rule) {
+  const auto is_short = [&](std::size_t entry) {
+    return strokes[stroke_of(entry)].cells < rule.least_end_cells;
+  };
+  std::size_t from = 0, to = walk.size();
+  while (from < to && is_short(walk[from])) ++from;
+  while (to > from && is_short(walk[to - 1])) --to;
+  return {from, to};
+}
+
 }  // namespace
 
 std::vector<Stroke> join_strokes(std::vector<Stroke> strokes, const JoinRule& rule) {
@@ -328,20 +343,25 @@ std::vector<Stroke> join_strokes(std::vector<Stroke> strokes, const JoinRule& ru
   const auto joins = [&](std::size_t end) { return partner[end] != end; };
   std::vector<Stroke> joined;
   std::vector<std::uint8_t> taken(strokes.size(), 0);
+  std::vector<std::size_t> walk;  // the ends a joined stroke's pieces are entered at, in order
   for (std::size_t s = 0; s < strokes.size(); ++s) {
     if (taken[s]) continue;
     // Walk back through the starts to the first piece, then forward through the pieces.
     std::size_t entry = 2 * s;  // the end the walk enters a piece at
     while (joins(entry)) entry = partner[entry] ^ 1u;
-    Stroke whole;
+    walk.clear();
     while (true) {
-      const std::size_t piece = stroke_of(entry);
-      taken[piece] = 1;
-      append_piece(whole, strokes[piece], !is_start(entry));
+      taken[stroke_of(entry)] = 1;
+      walk.push_back(entry);
       const std::size_t exit = entry ^ 1u;
       if (!joins(exit)) break;
       entry = partner[exit];
     }
+    const auto [from, to] = kept_span(walk, strokes, rule);
+    if (from == to) continue;
+    Stroke whole;
+    for (std::size_t k = from; k < to; ++k)
+      append_piece(whole, strokes[stroke_of(walk[k])], !is_start(walk[k]));
     joined.push_back(std::move(whole));
   }
   return joined;
