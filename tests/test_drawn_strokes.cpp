@@ -180,7 +180,7 @@ TEST_CASE("strokes grouped as they stream join as they do all together", "[drawn
 
 TEST_CASE("short pieces stay only where they close a gap between longer ones", "[drawn][joining]") {
   JoinRule rule = kRule;
-  rule.least_end_cells = 3;
+  rule.least_piece_cells = 3;
   // A line of 5 cells, a gap, a piece of 2: the short piece hangs off the end and is left off.
   std::vector<Stroke> joined = join_strokes({row_stroke(0, 4, 0), row_stroke(6, 7, 0)}, rule);
   REQUIRE(joined.size() == 1);

@@ -327,7 +327,7 @@ std::pair<std::size_t, std::size_t> kept_span(const std::vector<std::size_t>& wa
                                               const std::vector<Stroke>& strokes,
                                               const JoinRule& rule) {
   const auto is_short = [&](std::size_t entry) {
-    return strokes[stroke_of(entry)].cells < rule.least_end_cells;
+    return strokes[stroke_of(entry)].cells < rule.least_piece_cells;
   };
   std::size_t from = 0, to = walk.size();
   while (from < to && is_short(walk[from])) ++from;

@@ -15,7 +15,7 @@ struct JoinRule {
   double gap;        // farthest apart two ends may be, map units
   double angle_deg;  // largest angle between the two ends' directions and the step between them
   // Pieces of fewer cells are left off the ends of a joined stroke (0: none are).
-  int least_end_cells = 0;
+  int least_piece_cells = 0;
 };
 
 // Joins strokes of one class end to end where an end of one lies within `rule.gap` of an end of
@@ -25,10 +25,10 @@ struct JoinRule {
 // itself, directly or round a loop. Ends that meet the middle of a stroke (a T-junction) are not
 // ends that meet. A joined stroke's points, vertices and chain run through its pieces in order;
 // its attributes are the pieces' means weighted by their cells, its length theirs plus the gaps.
-// Pieces shorter than `rule.least_end_cells` stay only where they close a gap between longer ones:
-// they are left off a joined stroke's ends (the thesis's cartographers kept small lines that link
-// into larger features, section 7.2; alone, SPEC's generalisation drops them).
-// Strokes come out in the order of their first piece in `strokes`.
+// Pieces shorter than `rule.least_piece_cells` stay only where they close a gap between longer
+// ones: they are left off a joined stroke's ends (the thesis's cartographers kept small lines that
+// link into larger features, section 7.2; alone, SPEC's generalisation drops them). Strokes come
+// out in the order of their first piece in `strokes`.
 std::vector<Stroke> join_strokes(std::vector<Stroke> strokes, const JoinRule& rule);
 
 // Strokes of one class sorted, as they come, into the groups that joining may link, directly or
