@@ -5,8 +5,8 @@ costs: its sketch, its bytes, its edges, and the client's stitching.
     [RUNS=3] [STROKES=exact|drawn] /usr/bin/python3 bench/dask_bands.py BUILD_DIR DEM [WORKERS=2]
         [BAND_PROFILES...]
 
-Prints the CLI's wall time, then for each band width: the Dask run's wall time (cluster started
-beforehand, as a user keeps one), its ratio to the CLI, the bands sketched again, and per band
+Prints for each band width: the Dask run's wall time (cluster started beforehand, as a user
+keeps one) and the CLI's, each Dask run in turn with a CLI run, the median of the pairs' ratios, the bands sketched again, and per band
 the median sketch time on a worker, bytes, pieces crossing its edges and the stitching time on
 the client. Figures, not a test.
 """
@@ -78,26 +78,29 @@ def band_figures(client, width):
 
 def main():
     os.makedirs(OUT, exist_ok=True)
-    cli = statistics.median(cli_seconds() for _ in range(RUNS))
-    print(f"CLI, {workers} threads, {STROKES} strokes: {cli:.2f} s")
+    print(f"CLI, {workers} threads, {STROKES} strokes; each Dask run in turn with a CLI run")
     with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                   dashboard_address=":0") as cluster, \
             distributed.Client(cluster) as client:
         client.run(lambda: __import__("terrain_sketch"))
         for width in widths:
-            runs = []
+            pairs = []
             for _ in range(RUNS):
+                cli = cli_seconds()
                 start = time.monotonic()
                 tsd.silhouettes(dem, f"{OUT}/dask.gpkg", client, width, strokes=STROKES)
-                runs.append(time.monotonic() - start)
-            wall = statistics.median(runs)
+                pairs.append((time.monotonic() - start, cli))
+            wall = statistics.median(d for d, _ in pairs)
+            cli = statistics.median(c for _, c in pairs)
+            ratio = statistics.median(d / c for d, c in pairs)
             band_s, band_bytes, stitch_s, again, count, pieces, edge_bytes = band_figures(
                 client, width)
-            print(f"bands of {width:5d} profiles ({count:3d} bands): {wall:.2f} s = "
-                  f"{wall / cli:.2f}x the CLI; per band {band_s:.3f} s on a worker, "
-                  f"{band_bytes / 1e6:.2f} MB; stitching and writing {stitch_s:.2f} s on the "
-                  f"client ({stitch_s / count * 1000:.1f} ms a band); sketched again {again}; "
-                  f"{pieces:.0f} pieces cross a band's edges, {edge_bytes / 1e3:.0f} kB")
+            print(f"bands of {width:5d} profiles ({count:3d} bands): {wall:.2f} s against the "
+                  f"CLI's {cli:.2f} s, {ratio:.2f}x (pairs "
+                  f"{' '.join(f'{d / c:.2f}' for d, c in pairs)}); per band {band_s:.3f} s on a "
+                  f"worker, {band_bytes / 1e6:.2f} MB; stitching and writing {stitch_s:.2f} s on "
+                  f"the client ({stitch_s / count * 1000:.1f} ms a band); sketched again "
+                  f"{again}; {pieces:.0f} pieces cross a band's edges, {edge_bytes / 1e3:.0f} kB")
 
 
 if __name__ == "__main__":

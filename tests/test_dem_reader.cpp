@@ -151,3 +151,37 @@ TEST_CASE("a DEM on its own grid is read whole in two halves, as a turned one is
   CHECK(turned.lowest_height == 12.5);
   CHECK(turned.oriented(kRows - 1 - 1000, kCols - 1 - 10) == 12.5f);
 }
+
+TEST_CASE("a DEM opened without its range sample lacks only the notes on its values",
+          "[io][notes]") {
+  ScratchDir dir("range");
+  const std::string path = dir / "filled.tif";
+  constexpr int kSize = 64;
+  {
+    GDALAllRegister();
+    GDALDataset* ds = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
+        path.c_str(), kSize, kSize, 1, GDT_Float32, nullptr);
+    REQUIRE(ds != nullptr);
+    const double gt[6] = {1000, 10, 0, 5000, 0, -10};
+    ds->SetGeoTransform(const_cast<double*>(gt));
+    // A common fill value in a corner, undeclared: the range's note, beside "no CRS".
+    std::vector<float> values(kSize * kSize, 100.0f);
+    values[0] = -9999;
+    REQUIRE(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, kSize, kSize, values.data(), kSize,
+                                           kSize, GDT_Float32, 0, 0) == CE_None);
+    GDALClose(ds);
+  }
+  const auto codes = [&](bool sample_range) {
+    io::DemOptions options;
+    options.sample_range = sample_range;
+    const io::DemFile dem(path, options);
+    CHECK(dem.info().grid.rows == kSize);
+    CHECK(dem.info().grid.dx == 10);
+    std::vector<io::DemNoteCode> found;
+    for (const io::DemNote& note : dem.info().notes) found.push_back(note.code);
+    return found;
+  };
+  CHECK(codes(true) ==
+        std::vector<io::DemNoteCode>{io::DemNoteCode::no_crs, io::DemNoteCode::fill_value});
+  CHECK(codes(false) == std::vector<io::DemNoteCode>{io::DemNoteCode::no_crs});
+}

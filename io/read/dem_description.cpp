@@ -90,9 +90,10 @@ void add_crs_facts(const OGRSpatialReference& srs, const Dem& dem, DemFacts& f) 
 
 // GDAL's approximate range reads a sample of the blocks: milliseconds, and fill values cover
 // whole holes and edges when they are there.
-void add_value_facts(GDALRasterBand& band, DemFacts& f) {
+void add_value_facts(GDALRasterBand& band, bool sample_range, DemFacts& f) {
   f.scale = band.GetScale();
   f.offset = band.GetOffset();
+  if (!sample_range) return;
   double range[2];
   CPLErrorReset();
   GDALComputeRasterMinMax(&band, TRUE, range);
@@ -118,7 +119,7 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
                       colour == GCI_AlphaBand;
   const OGRSpatialReference* srs = dataset.GetSpatialRef();
   if (srs) add_crs_facts(*srs, dem, facts);
-  add_value_facts(*dataset.GetRasterBand(options.band), facts);
+  add_value_facts(*dataset.GetRasterBand(options.band), options.sample_range, facts);
   const DemAssessment assessment = assess_dem(facts);
   if (assessment.refused) throw DemRefused(path, assessment.notes.front());
   dem.ground_scale = assessment.ground_scale;

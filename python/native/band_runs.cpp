@@ -1,6 +1,7 @@
 #include "python/native/band_runs.h"
 
 #include "cli/command_support.h"
+#include "cli/dem_note_text.h"
 #include "cli/options.h"
 #include "core/base/byte_stream.h"
 #include "core/drawn/drawn_strokes.h"
@@ -37,6 +38,12 @@ cli::Options band_options(const std::vector<std::string>& options) {
   return o;
 }
 
+io::DemOptions task_dem(const cli::Options& o) {
+  io::DemOptions dem = o.dem;
+  dem.sample_range = false;
+  return dem;
+}
+
 namespace {
 
 // The run's options and paths as the silhouettes command parses them, after refusing what a run
@@ -52,10 +59,11 @@ cli::Options band_run(const std::string& input, const std::string& output,
 }  // namespace
 
 BandPlan plan_bands(const std::string& input, const std::string& output,
-                    const std::vector<std::string>& options) {
+                    const std::vector<std::string>& options, std::ostream& err) {
   const cli::Options o = band_run(input, output, options);
   io::check_vector_output(o.output, o.format);
   const io::DemFile dem(o.input, o.dem);
+  cli::print_notes(dem.info().notes, err);
   const OrientedFrame frame = make_frame(dem.info().grid, o.params.view.azimuth_deg);
   const bool survey = o.params.adaptive.mode == FilterMode::adaptive;
   o.params.validate();
@@ -66,7 +74,7 @@ BandPlan plan_bands(const std::string& input, const std::string& output,
 double lowest_height_of(const std::string& input, const std::vector<std::string>& options,
                         std::size_t first_row, std::size_t rows) {
   const cli::Options o = band_options(options);
-  const io::DemFile dem(input, o.dem);
+  const io::DemFile dem(input, task_dem(o));
   const io::Dem& info = dem.info();
   if (first_row > info.rows || rows > info.rows - first_row)
     throw Error("rows " + std::to_string(first_row) + " + " + std::to_string(rows) +
@@ -79,7 +87,7 @@ std::string sketch_band_bytes(const std::string& input, const std::vector<std::s
                               std::size_t count, std::size_t halo, const std::string& order) {
   const cli::Options o = band_options(options);
   const ResolvedParams params = resolve_as_reported(o.params, filter_from_bytes(filter));
-  const io::DemFile dem(input, o.dem);
+  const io::DemFile dem(input, task_dem(o));
   BandSpec spec{first, count, std::nullopt, halo};
   if (!order.empty()) spec.order = orders_from_bytes(order);
   return band_bytes(sketch_band(dem.source(), params, spec, z_ref));
@@ -90,7 +98,7 @@ std::string stitch_bands(const std::string& input, const std::string& output,
                          double z_ref, std::size_t profiles, const BandSource& bands) {
   const cli::Options o = band_run(input, output, options);
   const ResolvedParams params = resolve_as_reported(o.params, filter_from_bytes(filter));
-  const io::DemFile dem(o.input, o.dem);  // its CRS, and its grid for the drawing
+  const io::DemFile dem(o.input, task_dem(o));  // its CRS, and its grid for the drawing
   const bool drawn = params->strokes.drawn();
   std::optional<DrawingSetup> drawing;
   if (drawn) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -26,13 +27,18 @@ struct BandPlan {
 // does.
 cli::Options band_options(const std::vector<std::string>& options);
 
+// The DEM as a task of a run in bands opens it: as the options say, without reading a sample of
+// the DEM for its range, which only the notes the plan has already told need.
+io::DemOptions task_dem(const cli::Options& o);
+
 // A filter's report as bytes, as a run in bands hands it to its workers.
 std::string filter_bytes(const FilterReport& report);
 
 // Checks the silhouettes command's `options` (as typed) and paths for a run in bands (as
-// band_options), and resolves a fixed filter; an adaptive one is surveyed by the workers.
+// band_options), tells the notes on the DEM to `err` as the command does, and resolves a fixed
+// filter; an adaptive one is surveyed by the workers.
 BandPlan plan_bands(const std::string& input, const std::string& output,
-                    const std::vector<std::string>& options);
+                    const std::vector<std::string>& options, std::ostream& err);
 
 // The lowest height of the DEM's rows [first_row, first_row + rows), +infinity when none has
 // data: a part of a plan-oblique run's reference height (lowest_height_of_rows).

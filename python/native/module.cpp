@@ -114,8 +114,8 @@ auto quietly(Work&& work) {
 py::dict plan_run_in_bands(const std::string& input, const std::string& output,
                            const Strings& options, const RunHooks& hooks) {
   BandPlan plan;
-  run_from_python(hooks, [&](const ProgressFn&, std::ostream&) {
-    plan = tsk::python::plan_bands(input, output, options);
+  run_from_python(hooks, [&](const ProgressFn&, std::ostream& err) {
+    plan = tsk::python::plan_bands(input, output, options, err);
   });
   py::dict result;
   result["profiles"] = plan.profiles;

@@ -27,7 +27,7 @@ std::vector<float> read_window(const io::DemFile& dem, const SurveyWindow& w) {
 
 std::vector<SurveyWindow> survey_windows_of(const std::string& input,
                                             const std::vector<std::string>& options) {
-  const io::DemFile dem(input, band_options(options).dem);
+  const io::DemFile dem(input, task_dem(band_options(options)));
   std::vector<SurveyWindow> windows;
   for (const DemWindow& w : survey_windows(dem.info().grid.rows, dem.info().grid.cols))
     windows.push_back({w.row0, w.col0, w.rows, w.cols});
@@ -36,7 +36,7 @@ std::vector<SurveyWindow> survey_windows_of(const std::string& input,
 
 std::string survey_heights_part(const std::string& input, const std::vector<std::string>& options,
                                 const std::vector<SurveyWindow>& windows) {
-  const io::DemFile dem(input, band_options(options).dem);
+  const io::DemFile dem(input, task_dem(band_options(options)));
   HeightStepPart part;
   for (const SurveyWindow& w : windows) {
     const std::vector<float> heights = read_window(dem, w);
@@ -54,7 +54,7 @@ std::string merge_height_parts(const std::vector<std::string>& parts) {
 std::string survey_slopes_part(const std::string& input, const std::vector<std::string>& options,
                                const std::vector<SurveyWindow>& windows,
                                const std::string& heights) {
-  const io::DemFile dem(input, band_options(options).dem);
+  const io::DemFile dem(input, task_dem(band_options(options)));
   const double tolerance = SurveyBytes::height_step(heights).step().tolerance;
   const DemGrid& grid = dem.info().grid;
   SlopePart part;

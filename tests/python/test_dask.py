@@ -168,3 +168,27 @@ def test_a_worker_that_cannot_read_the_dem_ends_the_run_with_its_message(tmp_pat
         with pytest.raises(terrain_sketch.Error, match="dem.tif"):
             terrain_sketch.dask.silhouettes("dem.tif", "out.gpkg", c)
     assert os.listdir(here) == ["dem.tif"]
+
+
+def test_the_notes_on_the_dem_are_told_as_one_machine_tells_them(tmp_path, client, caplog):
+    # A DEM without a CRS whose corner holds a common fill value: the run goes on, with notes.
+    heights = gdal.Open(str(SAMPLE)).ReadAsArray().astype(np.float32)
+    heights[:20, :20] = -9999
+    dem = gdal.GetDriverByName("GTiff").Create(str(tmp_path / "dem.tif"), heights.shape[1],
+                                               heights.shape[0], 1, gdal.GDT_Float32)
+    dem.SetGeoTransform(gdal.Open(str(SAMPLE)).GetGeoTransform())
+    dem.GetRasterBand(1).WriteArray(heights)
+    dem = None
+
+    def notes(run):
+        caplog.clear()
+        with caplog.at_level("INFO", logger="terrain_sketch"):
+            run()
+        return [r.getMessage() for r in caplog.records if r.getMessage().startswith("note:")]
+
+    one = notes(lambda: terrain_sketch.silhouettes(tmp_path / "dem.tif", tmp_path / "one.gpkg",
+                                                   strokes="exact"))
+    spread = notes(lambda: terrain_sketch.dask.silhouettes(
+        tmp_path / "dem.tif", tmp_path / "bands.gpkg", client, strokes="exact"))
+    assert any("CRS" in note for note in one) and any("-9999" in note for note in one), one
+    assert [n for n in spread if "filter" not in n] == [n for n in one if "filter" not in n]
