@@ -81,10 +81,11 @@ def _filter(client, input_path, arguments, plan):
 
 
 def _band_width(profiles, workers):
-    """About eight bands a worker, so that the client starts early and a slow band holds up
-    little (the fastest width on the 8000^2 benchmark, docs/DISTRIBUTED.md), and none narrower
-    than four halos, so that guessing costs little."""
-    return max(4 * HALO, math.ceil(profiles / max(1, 8 * workers)))
+    """About four bands a worker, so that the client starts while the workers are busy and a slow
+    band holds up little, while each band's halo and fixed cost stay small (on the 8000^2
+    benchmark, four a worker was as fast as eight or faster in every round measured in turns,
+    docs/DISTRIBUTED.md), and none narrower than four halos, so that guessing costs little."""
+    return max(4 * HALO, math.ceil(profiles / max(1, 4 * workers)))
 
 
 def silhouettes(input, output, client=None, band_profiles=None, *, progress=None, **options):
@@ -92,7 +93,7 @@ def silhouettes(input, output, client=None, band_profiles=None, *, progress=None
 
     The silhouettes command on a Dask cluster: `client` (a dask.distributed.Client; None makes a
     LocalCluster of one single-threaded worker process a core for the run), bands of
-    `band_profiles` profiles (None: about eight a worker), and the options of
+    `band_profiles` profiles (None: about four a worker), and the options of
     terrain_sketch.silhouettes() but those that need the whole DEM on one machine: the filter
     fixed or adapted to the whole DEM (surveyed once, by the workers), not locally, and no files
     beyond OUTPUT. Drawn strokes are drawn by the bands, those near a band's edges by the client
@@ -179,7 +180,7 @@ The silhouettes command on a Dask cluster, with the same strokes and statistics 
 
   --scheduler ADDRESS  the cluster's scheduler (tcp://HOST:8786); without it, a LocalCluster of
                        one single-threaded worker process a core
-  --band-profiles N    profiles a band (default: about eight bands a worker)
+  --band-profiles N    profiles a band (default: about four bands a worker)
   OPTIONS              those of `terrain-sketch silhouettes --help`, but those that need the
                        whole DEM on one machine (a locally adaptive filter) and the outputs
                        beyond OUTPUT (--preview, --stats-json, --timings)
