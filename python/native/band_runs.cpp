@@ -95,7 +95,8 @@ std::string sketch_band_bytes(const std::string& input, const std::vector<std::s
 
 std::string stitch_bands(const std::string& input, const std::string& output,
                          const std::vector<std::string>& options, const std::string& filter,
-                         double z_ref, std::size_t profiles, const BandSource& bands) {
+                         double z_ref, std::size_t profiles, const BandSource& bands,
+                         std::ostream& err) {
   const cli::Options o = band_run(input, output, options);
   const ResolvedParams params = resolve_as_reported(o.params, filter_from_bytes(filter));
   const io::DemFile dem(o.input, task_dem(o));  // its CRS, and its grid for the drawing
@@ -119,6 +120,7 @@ std::string stitch_bands(const std::string& input, const std::string& output,
         result = stitcher.finish(profiles);
       },
       io::kStrokeLayer, drawn, [&] { return run_note(cli::run_facts(o, result.filter)); });
+  cli::print_filter(result.filter, err);
   return cli::stats_json(result.stats, result.filter);
 }
 

@@ -61,10 +61,12 @@ struct BandSource {
 
 // Stitches the bands of a run as they come and writes each stroke as soon as it is whole (drawn
 // strokes: drawn here, in one run's order), into OUTPUT written whole at the end, with its note,
-// as the silhouettes command writes it. z_ref: the DEM's lowest height (plan-oblique geometry).
-// Returns the stage statistics as JSON.
+// as the silhouettes command writes it, then tells the adaptive filter's cut-offs to `err` as the
+// command does. z_ref: the DEM's lowest height (plan-oblique geometry). Returns the stage
+// statistics as JSON.
 std::string stitch_bands(const std::string& input, const std::string& output,
                          const std::vector<std::string>& options, const std::string& filter,
-                         double z_ref, std::size_t profiles, const BandSource& bands);
+                         double z_ref, std::size_t profiles, const BandSource& bands,
+                         std::ostream& err);
 
 }  // namespace tsk::python

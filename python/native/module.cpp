@@ -195,8 +195,8 @@ std::string stitch(const std::string& input, const std::string& output, const St
                            return again(first, count, py::bytes(order)).cast<std::string>();
                          }};
   std::string statistics;
-  run_from_python(hooks, [&](const ProgressFn&, std::ostream&) {
-    statistics = stitch_bands(input, output, options, filter, z_ref, profiles, bands);
+  run_from_python(hooks, [&](const ProgressFn&, std::ostream& err) {
+    statistics = stitch_bands(input, output, options, filter, z_ref, profiles, bands, err);
   });
   return statistics;
 }

@@ -193,8 +193,14 @@ def main(argv=None):
     LocalCluster of a worker process a core), the width of a band, and the silhouettes command's
     options as `terrain-sketch silhouettes` takes them. Exits 0, 1 when the run cannot be done,
     2 on bad options, 130 on Ctrl-C."""
+    import logging
     import sys
     args = list(sys.argv[1:] if argv is None else argv)
+    # The notes on the DEM and the filter on stderr, as the command line tells them.
+    notes = logging.StreamHandler(sys.stderr)
+    notes.setFormatter(logging.Formatter("%(message)s"))
+    logging.getLogger("terrain_sketch").addHandler(notes)
+    logging.getLogger("terrain_sketch").setLevel(logging.INFO)
     if any(a in ("-h", "--help") for a in args):
         print(_USAGE + "\n" + _HELP)
         return 0

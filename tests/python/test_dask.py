@@ -84,7 +84,7 @@ def test_a_dem_of_4000_squared(tmp_path, client):
     assert len({t["worker"] for t in survey}) == 2 and len(survey) == 4
 
 
-def test_from_a_shell(tmp_path, client):
+def test_from_a_shell(tmp_path, client, cli):
     # python3 -m terrain_sketch.dask: the command line's options, the scheduler's address.
     import subprocess
     import sys
@@ -100,6 +100,12 @@ def test_from_a_shell(tmp_path, client):
     assert done.stdout.strip() == (f"{tmp_path / 'bands.gpkg'}: {single['factual_strokes']} "
                                    f"factual and {single['formulated_strokes']} formulated strokes")
     assert rows(tmp_path / "bands.gpkg") == rows(tmp_path / "one.gpkg")
+    # The notes on stderr, as the command line's.
+    code, said = cli("silhouettes", SAMPLE, tmp_path / "cli.gpkg", "--azimuth", "200")
+    assert code == 0
+    cli_notes = [line for line in said.splitlines() if line.startswith("note:")]
+    assert cli_notes and [line for line in done.stderr.splitlines()
+                          if line.startswith("note:")] == cli_notes
     refused = run(SAMPLE, tmp_path / "no.gpkg", "--observer", "1,2", "--scheduler",
                   client.scheduler.address)
     assert refused.returncode == 2
@@ -170,8 +176,9 @@ def test_a_worker_that_cannot_read_the_dem_ends_the_run_with_its_message(tmp_pat
     assert os.listdir(here) == ["dem.tif"]
 
 
-def test_the_notes_on_the_dem_are_told_as_one_machine_tells_them(tmp_path, client, caplog):
-    # A DEM without a CRS whose corner holds a common fill value: the run goes on, with notes.
+def test_the_notes_on_the_dem_and_filter_are_told_as_one_machine_tells_them(tmp_path, client, caplog):
+    # A DEM without a CRS whose corner holds a common fill value: the run goes on, with notes,
+    # and the adaptive filter's cut-offs.
     heights = gdal.Open(str(SAMPLE)).ReadAsArray().astype(np.float32)
     heights[:20, :20] = -9999
     dem = gdal.GetDriverByName("GTiff").Create(str(tmp_path / "dem.tif"), heights.shape[1],
@@ -191,4 +198,5 @@ def test_the_notes_on_the_dem_are_told_as_one_machine_tells_them(tmp_path, clien
     spread = notes(lambda: terrain_sketch.dask.silhouettes(
         tmp_path / "dem.tif", tmp_path / "bands.gpkg", client, strokes="exact"))
     assert any("CRS" in note for note in one) and any("-9999" in note for note in one), one
-    assert [n for n in spread if "filter" not in n] == [n for n in one if "filter" not in n]
+    assert any("adaptive slope filter" in note for note in one), one
+    assert spread == one
