@@ -200,3 +200,41 @@ TEST_CASE("profile candidates equal a cell-by-cell reading of the flags", "[chai
     }
   }
 }
+
+TEST_CASE("the linker records the pairs of chains crossing in whose order decided a join",
+          "[chaining][bands]") {
+  const auto candidates = [](std::vector<std::int32_t> cells) {
+    return ProfileCandidates{cells, cells};
+  };
+  // Chains open at cells 2 and 6 of a profile (indices 0 and 1), in `order`, then the next
+  // profile, formulated chains within `window` cells.
+  const auto pairs = [&](std::vector<std::uint32_t> order, std::vector<std::int32_t> next,
+                         int window) {
+    ChainLinker linker(false, window);
+    linker.start_from(candidates({2, 6}), order);
+    linker.record_deciding_pairs();
+    linker.add_profile(candidates(next));
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+    for (const OrderPair& p : linker.deciding_pairs()) out.emplace_back(p.before, p.after);
+    return out;
+  };
+  using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+  // Both want cell 4: the older takes it, and the order decided the join.
+  CHECK(pairs({0, 1}, {4}, 2) == Pairs{{0, 1}});
+  CHECK(pairs({1, 0}, {4}, 2) == Pairs{{1, 0}});
+  // Each has a cell of its own: no order decides anything.
+  CHECK(pairs({0, 1}, {1, 7}, 2).empty());
+  // The younger reaches the cell the older took, but has a nearer one: no pair.
+  CHECK(pairs({0, 1}, {3, 6}, 3).empty());
+  // Cells 4 and 8 are as near to 6, and the front one wins a tie: taken by the chain at 2, it
+  // decided that the chain at 6 went to 8; taken first by the chain at 6, it closed the other.
+  CHECK(pairs({0, 1}, {4, 8}, 2) == Pairs{{0, 1}});
+  CHECK(pairs({1, 0}, {4, 8}, 2) == Pairs{{1, 0}});
+  // Chains started later never compete before a chain crossing in: only crossing chains pair up.
+  ChainLinker linker(false, 2);
+  linker.start_from(candidates({2}), {0});
+  linker.record_deciding_pairs();
+  linker.add_profile(candidates({2, 10}));
+  linker.add_profile(candidates({11}));
+  CHECK(linker.deciding_pairs().empty());
+}

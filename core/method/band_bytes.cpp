@@ -93,6 +93,8 @@ std::string band_bytes(const BandSketch& band) {
   w.put(band.filter);
   put_orders(w, band.in);
   put_orders(w, band.out);
+  w.put(band.deciding.factual);
+  w.put(band.deciding.formulated);
   w.put(static_cast<std::uint64_t>(band.strokes.size()));
   for (const Stroke& stroke : band.strokes) put_stroke(w, stroke);
   w.put(band.keys);
@@ -126,6 +128,8 @@ BandSketch band_from_bytes(const std::string& bytes) {
   r.get(band.filter);
   get_orders(r, band.in);
   get_orders(r, band.out);
+  r.get(band.deciding.factual);
+  r.get(band.deciding.formulated);
   r.get(strokes);
   for (std::uint64_t k = 0; k < strokes; ++k) {
     band.strokes.emplace_back();

@@ -175,8 +175,64 @@ void BandStitcher::keep(Stroke&& stroke) {
   }
 }
 
+namespace {
+
+// Each chain's place in `order` (the indices of their cells), or an empty list when `order` does
+// not hold each of `cells` cells once.
+std::vector<std::size_t> places(const std::vector<std::uint32_t>& order, std::size_t cells) {
+  std::vector<std::size_t> place(cells, cells);
+  if (order.size() != cells) return {};
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    if (order[k] >= cells || place[order[k]] != cells) return {};
+    place[order[k]] = k;
+  }
+  return place;
+}
+
+// Whether `truth`, an order of the same chains as the band's guess, keeps each pair whose order
+// decided a join of the band: then the band joined every cell as linked from `truth`.
+bool keeps_deciding_pairs(const BandSketch& band, const BandOrders& truth, StrokeClass cls) {
+  const std::vector<std::uint32_t>& guess = band.in.of(cls);
+  const std::vector<std::size_t> place = places(truth.of(cls), guess.size());
+  if (place.empty() != guess.empty() || places(guess, guess.size()).size() != guess.size())
+    return false;
+  for (const OrderPair& pair : band.deciding.of(cls)) {
+    if (pair.before >= place.size() || pair.after >= place.size() ||
+        place[pair.before] > place[pair.after])
+      return false;
+  }
+  return true;
+}
+
+// A band linked from a guess the true order keeps: the chains that cross into it and out of it
+// come first in its order out (older than any it started), ordered there as `truth` has them.
+void order_survivors(BandSketch& band, const BandOrders& truth, StrokeClass cls) {
+  std::vector<std::uint32_t>& out = band.out.of(cls);
+  const std::vector<std::size_t> place = places(truth.of(cls), band.in.of(cls).size());
+  std::vector<std::int64_t> in_of(out.size(), -1);
+  for (const BandPiece& piece : band.pieces) {
+    if (piece.cls != cls || piece.in < 0 || piece.out < 0) continue;
+    if (static_cast<std::size_t>(piece.out) >= out.size() ||
+        static_cast<std::size_t>(piece.in) >= place.size())
+      throw Error("a band's piece of a chain crossing it lies beyond its orders");
+    in_of[static_cast<std::size_t>(piece.out)] = piece.in;
+  }
+  const auto crossing = [&](std::uint32_t k) { return k < in_of.size() && in_of[k] >= 0; };
+  const auto started_here = std::find_if_not(out.begin(), out.end(), crossing);
+  if (std::any_of(started_here, out.end(), crossing))
+    throw Error("a band ordered a chain it started before one crossing into it");
+  std::sort(out.begin(), started_here, [&](std::uint32_t a, std::uint32_t b) {
+    return place[static_cast<std::size_t>(in_of[a])] < place[static_cast<std::size_t>(in_of[b])];
+  });
+}
+
+}  // namespace
+
 bool BandStitcher::follows(const BandSketch& band) const {
-  return band.first == next_first_ && (band.first == 0 || band.in == order_);
+  if (band.first != next_first_) return false;
+  if (band.first == 0 || band.in == order_) return true;
+  return keeps_deciding_pairs(band, order_, StrokeClass::factual) &&
+         keeps_deciding_pairs(band, order_, StrokeClass::formulated);
 }
 
 void BandStitcher::add(BandSketch&& band) {
@@ -187,6 +243,10 @@ void BandStitcher::add(BandSketch&& band) {
   }
   if (band.keys.size() != band.strokes.size())
     throw Error("a band's strokes and their places in the order do not match");
+  if (band.first > 0 && band.in != order_) {
+    for (const StrokeClass cls : {StrokeClass::factual, StrokeClass::formulated})
+      order_survivors(band, order_, cls);
+  }
   add_counts(band.stats, result_.stats);
   queue_drawn_groups(band.drawn);
   for (std::size_t k = 0; k < band.strokes.size(); ++k)

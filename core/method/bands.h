@@ -26,21 +26,23 @@
 
 namespace tsk {
 
-// The chains open after a profile, oldest first, as the indices of their cells among the
-// profile's chain candidates: one order per class.
-struct BandOrders {
-  std::vector<std::uint32_t> factual, formulated;
-  std::vector<std::uint32_t>& of(StrokeClass cls) {
+// A list for each class of strokes.
+template <typename T>
+struct ByClass {
+  std::vector<T> factual, formulated;
+  std::vector<T>& of(StrokeClass cls) { return cls == StrokeClass::factual ? factual : formulated; }
+  const std::vector<T>& of(StrokeClass cls) const {
     return cls == StrokeClass::factual ? factual : formulated;
   }
-  const std::vector<std::uint32_t>& of(StrokeClass cls) const {
-    return cls == StrokeClass::factual ? factual : formulated;
-  }
-  bool operator==(const BandOrders& o) const {
+  bool operator==(const ByClass& o) const {
     return factual == o.factual && formulated == o.formulated;
   }
-  bool operator!=(const BandOrders& o) const { return !(*this == o); }
+  bool operator!=(const ByClass& o) const { return !(*this == o); }
 };
+
+// The chains open after a profile, oldest first, as the indices of their cells among the
+// profile's chain candidates: one order per class.
+using BandOrders = ByClass<std::uint32_t>;
 
 struct BandSpec {
   std::size_t first = 0, count = 0;  // the profiles the band owns: [first, first + count)
@@ -92,6 +94,9 @@ struct BandSketch {
   std::vector<BandPiece> pieces;
   BandOrders in;   // the order at first - 1 the band linked from, given or guessed
   BandOrders out;  // the order after its last profile (none at the grid's end)
+  // A guessed `in`: the pairs of its chains whose order decided a join in the band
+  // (ChainLinker::deciding_pairs). A true order that keeps each pair links the band alike.
+  ByClass<OrderPair> deciding;
   FilterReport filter;
 };
 
@@ -117,9 +122,12 @@ class BandStitcher {
   BandStitcher(const ResolvedParams& params, StrokeSink sink = {},
                std::optional<DrawingSetup> drawing = std::nullopt);
   ~BandStitcher();
-  // Whether `band` is the next one and linked from the true order (else it must be sketched
-  // again from that order: add() with `again`).
+  // Whether `band` is the next one and linked as from the true order: from that order, or from a
+  // guess that keeps every pair of chains whose order decided a join (else it must be sketched
+  // again from the true order: add() with `again`).
   bool follows(const BandSketch& band) const;
+  // The order of the chains open where the next band starts.
+  const BandOrders& order() const { return order_; }
   // Throws Error unless it follows.
   void add(BandSketch&& band);
   // The band sketched again from the true order at its first profile.

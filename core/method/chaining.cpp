@@ -84,6 +84,7 @@ const std::vector<ChainRef>& ChainLinker::add_profile(const ProfileCandidates& n
     const std::int32_t i = last_.cell[o.k];
     const std::int32_t hi = factual_ ? last_.reach[o.k] : i + window_;
     const std::ptrdiff_t found = nearest_overlapping(next, used_, search_from_[o.k], i, hi);
+    if (recording_ && o.chain.id < crossing_end_) note_deciding_claims(next, o, hi, found);
     if (found < 0) {
       closed_.push_back(o.chain);
       continue;
@@ -118,6 +119,49 @@ void ChainLinker::start_from(const ProfileCandidates& last,
   closed_.clear();
   last_.cell.assign(last.cell.begin(), last.cell.end());
   last_.reach.assign(last.reach.begin(), last.reach.end());
+}
+
+void ChainLinker::record_deciding_pairs() {
+  recording_ = true;
+  crossing_end_ = started_;
+  crossing_ids_.clear();
+  crossing_cells_.clear();
+  deciding_.clear();
+  // Open chains keep the order they were started in, so their ids rise.
+  for (const Open& o : open_) {
+    crossing_ids_.push_back(o.chain.id);
+    crossing_cells_.push_back(static_cast<std::uint32_t>(o.k));
+  }
+}
+
+std::uint32_t ChainLinker::crossing_cell(std::size_t id) const {
+  const auto at = std::lower_bound(crossing_ids_.begin(), crossing_ids_.end(), id);
+  if (at == crossing_ids_.end() || *at != id) throw Error("a chain crossing in was not recorded");
+  return crossing_cells_[static_cast<std::size_t>(at - crossing_ids_.begin())];
+}
+
+void ChainLinker::note_deciding_claims(const ProfileCandidates& next, const Open& o,
+                                       std::int32_t hi, std::ptrdiff_t found) {
+  const std::int32_t i = last_.cell[o.k];
+  const auto gap = [&](std::size_t k) {
+    return std::llabs(static_cast<std::int64_t>(next.cell[k]) - i);
+  };
+  // As nearest_overlapping searches: the nearest wins, ties to the earlier.
+  for (std::size_t k = search_from_[o.k]; k < next.cell.size() && next.cell[k] <= hi; ++k) {
+    if (!used_[k] || joined_[k].id >= crossing_end_) continue;
+    if (found >= 0) {
+      const auto f = static_cast<std::size_t>(found);
+      if (gap(k) > gap(f) || (gap(k) == gap(f) && k > f)) continue;
+    }
+    deciding_.push_back({crossing_cell(joined_[k].id), crossing_cell(o.chain.id)});
+  }
+}
+
+std::vector<OrderPair> ChainLinker::deciding_pairs() const {
+  std::vector<OrderPair> pairs = deciding_;
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
 }
 
 const std::vector<ChainRef>& ChainLinker::close_all() {

@@ -29,6 +29,16 @@ struct ProfileCandidates {
 void profile_candidates(const std::uint8_t* flags, std::size_t length, bool factual,
                         ProfileCandidates& out, std::size_t first = 0);
 
+// Two chains, as the indices of their cells in a profile: `before` took a cell that `after`, later
+// in the order of the chains, would otherwise have taken.
+struct OrderPair {
+  std::uint32_t before, after;
+  bool operator<(const OrderPair& o) const {
+    return before != o.before ? before < o.before : after < o.after;
+  }
+  bool operator==(const OrderPair& o) const { return before == o.before && after == o.after; }
+};
+
 // A chain as the linker reports it: its id (ids count up in the order chains are started) and
 // its slot, a small index that a closed chain hands on to a later one, so a caller can keep the
 // cells of open chains in a vector indexed by slot and reuse its storage.
@@ -73,9 +83,22 @@ class ChainLinker {
   // left them: what a band of profiles links from (bands.h). Throws Error unless `order` holds
   // each candidate once.
   void start_from(const ProfileCandidates& last, const std::vector<std::uint32_t>& order);
+  // From now on, records the pairs of chains open now (a band's chains crossing in from the band
+  // before) whose order decided a join: one took a cell the other would rather have had. Linked
+  // from another order of these chains that keeps every such pair, the same profiles join every
+  // cell alike (each chain's choice depends only on the cells taken before it).
+  void record_deciding_pairs();
+  // The pairs recorded, as the indices of their chains' cells in the profile linked last when
+  // recording began; each once.
+  std::vector<OrderPair> deciding_pairs() const;
 
  private:
   std::uint32_t take_slot();
+  // Records the chains crossing in that took, before `o`, a cell `o` would rather have had than
+  // its choice `found` (any it could reach, when it found none).
+  void note_deciding_claims(const ProfileCandidates& next, const Open& o, std::int32_t hi,
+                            std::ptrdiff_t found);
+  std::uint32_t crossing_cell(std::size_t id) const;
 
   bool factual_;
   int window_;
@@ -88,6 +111,13 @@ class ChainLinker {
   std::vector<std::uint32_t> free_slots_;
   std::size_t started_ = 0;
   std::uint32_t slot_count_ = 0;
+  // Recording deciding pairs: chains with ids below crossing_end_ cross in; their ids (rising)
+  // and cells where recording began.
+  bool recording_ = false;
+  std::size_t crossing_end_ = 0;
+  std::vector<std::size_t> crossing_ids_;
+  std::vector<std::uint32_t> crossing_cells_;
+  std::vector<OrderPair> deciding_;
 };
 
 }  // namespace tsk

@@ -225,6 +225,8 @@ struct SilhouetteStream::State {
         links.in[o.chain.slot] = static_cast<std::int64_t>(o.k);
         order.push_back(static_cast<std::uint32_t>(o.k));
       }
+      // A guessed order may differ from the true one: the stitcher checks the pairs it decides.
+      if (!band->given) linker.record_deciding_pairs();
     }
     if (p < band->owned_first) return;
     for (std::size_t k = 0; k < joined->size(); ++k)
@@ -267,6 +269,7 @@ struct SilhouetteStream::State {
   // grid's end.
   void finish_band(Strokes& strokes, BandLinks& links) {
     ChainLinker& linker = strokes.linker;
+    if (!band->given) band->sketch.deciding.of(strokes.cls) = linker.deciding_pairs();
     if (band->owned_end == frame.profiles) {
       for (const ChainRef& chain : linker.close_all())
         finish_piece(strokes.cls, links, chain.slot, -1);
