@@ -122,18 +122,11 @@ TEST_CASE("a DEM on its own grid is read whole in two halves, as a turned one is
   values[3 * kCols + 4] = -9999;      // nodata in the upper half
   values[900 * kCols + 299] = -9999;  // and in the lower
   values[1000 * kCols + 10] = 12.5f;  // the lowest height, in the lower half
-  {
-    GDALAllRegister();
-    GDALDataset* ds = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-        path.c_str(), kCols, kRows, 1, GDT_Float32, nullptr);
-    REQUIRE(ds != nullptr);
-    const double gt[6] = {1000, 10, 0, 9000, 0, -10};
-    ds->SetGeoTransform(const_cast<double*>(gt));
-    ds->GetRasterBand(1)->SetNoDataValue(-9999);
-    REQUIRE(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, kCols, kRows, values.data(), kCols,
-                                           kRows, GDT_Float32, 0, 0) == CE_None);
-    GDALClose(ds);
-  }
+  const double gt[6] = {1000, 10, 0, 9000, 0, -10};
+  test::write_tiff(
+      path, kRows, kCols, 1,
+      [&](int, int r, int c) { return values[static_cast<std::size_t>(r) * kCols + c]; }, gt, 0,
+      -9999);
   const io::DemOptions options;
   const io::Dem as_it_lies = io::read_dem(path, options, 90.0);  // the DEM as it lies
   REQUIRE(as_it_lies.oriented.rows() == kRows);
@@ -157,20 +150,11 @@ TEST_CASE("a DEM opened without its range sample lacks only the notes on its val
   ScratchDir dir("range");
   const std::string path = dir / "filled.tif";
   constexpr int kSize = 64;
-  {
-    GDALAllRegister();
-    GDALDataset* ds = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-        path.c_str(), kSize, kSize, 1, GDT_Float32, nullptr);
-    REQUIRE(ds != nullptr);
-    const double gt[6] = {1000, 10, 0, 5000, 0, -10};
-    ds->SetGeoTransform(const_cast<double*>(gt));
-    // A common fill value in a corner, undeclared: the range's note, beside "no CRS".
-    std::vector<float> values(kSize * kSize, 100.0f);
-    values[0] = -9999;
-    REQUIRE(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, kSize, kSize, values.data(), kSize,
-                                           kSize, GDT_Float32, 0, 0) == CE_None);
-    GDALClose(ds);
-  }
+  // A common fill value in a corner, undeclared: the range's note, beside "no CRS".
+  const double gt[6] = {1000, 10, 0, 5000, 0, -10};
+  test::write_tiff(
+      path, kSize, kSize, 1, [](int, int r, int c) { return r == 0 && c == 0 ? -9999.0f : 100.0f; },
+      gt, 0);
   const auto codes = [&](bool sample_range) {
     io::DemOptions options;
     options.sample_range = sample_range;

@@ -193,8 +193,9 @@ std::vector<std::size_t> places(const std::vector<std::uint32_t>& order, std::si
 // decided a join of the band: then the band joined every cell as linked from `truth`.
 bool keeps_deciding_pairs(const BandSketch& band, const BandOrders& truth, StrokeClass cls) {
   const std::vector<std::uint32_t>& guess = band.in.of(cls);
+  // Both must order each of the profile's chains once.
   const std::vector<std::size_t> place = places(truth.of(cls), guess.size());
-  if (place.empty() != guess.empty() || places(guess, guess.size()).size() != guess.size())
+  if (place.size() != guess.size() || places(guess, guess.size()).size() != guess.size())
     return false;
   for (const OrderPair& pair : band.deciding.of(cls)) {
     if (pair.before >= place.size() || pair.after >= place.size() ||

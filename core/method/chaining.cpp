@@ -84,7 +84,7 @@ const std::vector<ChainRef>& ChainLinker::add_profile(const ProfileCandidates& n
     const std::int32_t i = last_.cell[o.k];
     const std::int32_t hi = factual_ ? last_.reach[o.k] : i + window_;
     const std::ptrdiff_t found = nearest_overlapping(next, used_, search_from_[o.k], i, hi);
-    if (recording_ && o.chain.id < crossing_end_) note_deciding_claims(next, o, hi, found);
+    if (o.chain.id < crossing_end_) note_deciding_claims(next, o, hi, found);
     if (found < 0) {
       closed_.push_back(o.chain);
       continue;
@@ -122,7 +122,6 @@ void ChainLinker::start_from(const ProfileCandidates& last,
 }
 
 void ChainLinker::record_deciding_pairs() {
-  recording_ = true;
   crossing_end_ = started_;
   crossing_ids_.clear();
   crossing_cells_.clear();

@@ -111,9 +111,8 @@ class ChainLinker {
   std::vector<std::uint32_t> free_slots_;
   std::size_t started_ = 0;
   std::uint32_t slot_count_ = 0;
-  // Recording deciding pairs: chains with ids below crossing_end_ cross in; their ids (rising)
-  // and cells where recording began.
-  bool recording_ = false;
+  // Recording deciding pairs: chains with ids below crossing_end_ cross in (none until
+  // record_deciding_pairs); their ids (rising) and cells where recording began.
   std::size_t crossing_end_ = 0;
   std::vector<std::size_t> crossing_ids_;
   std::vector<std::uint32_t> crossing_cells_;
