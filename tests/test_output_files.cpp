@@ -9,12 +9,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "catch_compat.h"
@@ -321,6 +323,31 @@ TEST_CASE("an output named as a member of another dataset is refused, the datase
   CHECK(features_read(dir / "o.shp") > 100);
   // The shapefile itself is its own dataset: writing it again replaces it.
   CHECK(run_cli({"silhouettes", kSample, dir / "o.shp"}).code == 0);
+}
+
+TEST_CASE("a dataset replaced while it is checked is never taken for a member of another",
+          "[io][concurrency]") {
+  // Another run putting its output in place renames each file over the earlier one; a check
+  // comparing the file GDAL lists with the named one by their inodes, read one after the other,
+  // saw two files when a rename fell between the two reads.
+  ScratchDir dir("replaced");
+  REQUIRE(run_cli({"silhouettes", kSample, dir / "o.shp"}).code == 0);
+  const std::filesystem::path shp = dir / "o.shp", first = dir / "first", second = dir / "second";
+  std::filesystem::copy_file(shp, first);
+  std::filesystem::copy_file(shp, second);
+  std::atomic<bool> done{false};
+  std::thread replacing([&] {
+    for (unsigned k = 0; !done; ++k) {
+      const std::filesystem::path next = dir / ".o.shp.next";
+      if (::link(k % 2 ? first.c_str() : second.c_str(), next.c_str()) == 0)
+        std::filesystem::rename(next, shp);
+    }
+  });
+  std::size_t taken_for_member = 0;
+  for (int k = 0; k < 4000; ++k) taken_for_member += !io::main_file_of_other_dataset(shp).empty();
+  done = true;
+  replacing.join();
+  CHECK(taken_for_member == 0);
 }
 
 TEST_CASE("a VRT reading a named pipe is refused before GDAL hangs on it", "[io][robustness]") {

@@ -165,6 +165,12 @@ std::string main_file_of_other_dataset(const std::string& path) {
   GDALAllRegister();
   const std::vector<std::string> files = listed_files(path);
   if (files.empty()) return {};
+  // Named alike, they are one file: comparing inodes alone, read one after the other, took a file
+  // that another run renamed over in between for two.
+  const auto normal = [](const std::string& p) {
+    return std::filesystem::absolute(p).lexically_normal();
+  };
+  if (normal(files.front()) == normal(path)) return {};
   std::error_code ec;
   return std::filesystem::equivalent(files.front(), path, ec) || ec ? std::string() : files.front();
 }
