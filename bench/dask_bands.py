@@ -3,7 +3,7 @@ against the command line with as many threads, on the same DEM (exact strokes), 
 costs: its sketch, its bytes, its edges, and the client's stitching.
 
     [RUNS=3] [STROKES=exact|drawn] /usr/bin/python3 bench/dask_bands.py BUILD_DIR DEM [WORKERS=2]
-        [BAND_PROFILES...]
+        [BAND_PROFILES|default ...]
 
 Prints for each band width: the Dask run's wall time (cluster started beforehand, as a user
 keeps one) and the CLI's, each Dask run in turn with a CLI run, the median of the pairs' ratios, the bands sketched again, and per band
@@ -18,7 +18,9 @@ import time
 
 build, dem = os.path.abspath(sys.argv[1]), sys.argv[2]
 workers = int(sys.argv[3]) if len(sys.argv) > 3 else 2
-widths = [int(w) for w in sys.argv[4:]] or [250, 500, 1000, 2000, 4000]
+# "default": the package's own cut (about four bands a worker, narrower at both ends).
+widths = [None if w == "default" else int(w) for w in sys.argv[4:]] or [None, 250, 500, 1000,
+                                                                        2000, 4000]
 sys.path.insert(0, os.path.join(build, "python"))
 
 import distributed  # noqa: E402
@@ -51,7 +53,7 @@ def band_figures(client, width):
     arguments = _options.to_arguments({"strokes": STROKES})
     plan = _native.plan_bands(dem, f"{OUT}/b.gpkg", arguments, _options.hooks(None))
     profiles, filter_report = plan["profiles"], tsd._filter(client, dem, arguments, plan)
-    bands = [(f, min(width, profiles - f)) for f in range(0, profiles, width)]
+    bands = tsd._bands(profiles, width or tsd._band_width(profiles, workers), width is None)
     results = client.gather([client.submit(timed_band, arguments, filter_report, f, c, pure=False)
                              for f, c in bands])
     start, again = time.monotonic(), 0
@@ -95,7 +97,7 @@ def main():
             ratio = statistics.median(d / c for d, c in pairs)
             band_s, band_bytes, stitch_s, again, count, pieces, edge_bytes = band_figures(
                 client, width)
-            print(f"bands of {width:5d} profiles ({count:3d} bands): {wall:.2f} s against the "
+            print(f"bands of {width or 'default':>7} profiles ({count:3d} bands): {wall:.2f} s against the "
                   f"CLI's {cli:.2f} s, {ratio:.2f}x (pairs "
                   f"{' '.join(f'{d / c:.2f}' for d, c in pairs)}); per band {band_s:.3f} s on a "
                   f"worker, {band_bytes / 1e6:.2f} MB; stitching and writing {stitch_s:.2f} s on "

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <unordered_set>
 
@@ -56,31 +57,85 @@ std::vector<std::size_t> pieces_in_order(const BandSketch& sketch, StrokeClass c
   return order;
 }
 
-// Groups the pieces `order` names as the drawing does; returns, by each group's first piece,
-// whether a piece of another band may join it.
-std::vector<char> group_pieces(const BandSketch& sketch, StrokeClass cls,
-                               const std::vector<std::size_t>& order, const DrawingSetup& setup,
-                               std::size_t profiles, StrokeGrouper& grouper) {
-  // An end on profile p may meet an end of another band's profile only this many profiles away.
-  const double reach = join_reach_profiles(setup);
-  const bool before = sketch.first > 0, after = sketch.first + sketch.count < profiles;
-  const auto near_edge = [&](std::int32_t p) {
+// Whether a piece's group may be joined by a piece of another band: an end of it near the band's
+// edges, or near a cell of a chain that crosses them (cut into pieces by the client).
+class OpenToOtherBands {
+ public:
+  OpenToOtherBands(const BandSketch& sketch, StrokeClass cls, const DrawingSetup& setup,
+                   std::size_t profiles)
+      : crossing_(sketch.pieces, cls, join_rule(setup).gap),
+        reach_(join_reach_profiles(setup)),
+        edge_before_(static_cast<double>(sketch.first) - 1.0),
+        edge_after_(static_cast<double>(sketch.first + sketch.count)),
+        before_(sketch.first > 0),
+        after_(sketch.first + sketch.count < profiles) {}
+  bool operator()(const Stroke& piece) const {
+    return near_edge(piece.chain.front().p) || near_edge(piece.chain.back().p) ||
+           crossing_.near(piece.points.front()) || crossing_.near(piece.points.back());
+  }
+
+ private:
+  // An end on profile p may meet an end of another band's profile only reach_ profiles away.
+  bool near_edge(std::int32_t p) const {
     const double q = static_cast<double>(p);
-    return (before && q - (static_cast<double>(sketch.first) - 1.0) <= reach) ||
-           (after && static_cast<double>(sketch.first + sketch.count) - q <= reach);
+    return (before_ && q - edge_before_ <= reach_) || (after_ && edge_after_ - q <= reach_);
+  }
+  CrossingCells crossing_;
+  double reach_, edge_before_, edge_after_;
+  bool before_, after_;
+};
+
+// Groups the pieces `order` names as the drawing does and moves those of the groups no other band
+// can join out of sketch.strokes (marking them in `taken`), in the order of their first pieces. A
+// group is taken once no piece still to add can reach it, as StrokeDrawer takes settled groups,
+// so that the grouper holds the pieces in flight rather than the whole band's.
+StrokeGroups closed_groups(BandSketch& sketch, StrokeClass cls,
+                           const std::vector<std::size_t>& order, const DrawingSetup& setup,
+                           std::size_t profiles, std::vector<char>& taken) {
+  StrokeGroups groups;
+  const auto move_group = [&](const std::vector<std::size_t>& members, std::size_t first) {
+    for (const std::size_t m : members) {
+      groups.pieces.push_back(std::move(sketch.strokes[order[m]]));
+      taken[order[m]] = 1;
+    }
+    groups.ends.push_back(groups.pieces.size());
+    groups.firsts.push_back(first);
   };
-  const CrossingCells crossing(sketch.pieces, cls, join_rule(setup).gap);
-  std::vector<char> open(order.size(), 0);
+  const JoinRule rule = join_rule(setup);
+  std::vector<std::size_t> members;
+  // Without a gap nothing joins: every piece is a group of its own that no band can reach.
+  if (rule.gap <= 0.0) {
+    for (std::size_t n = 0; n < order.size(); ++n) move_group(members = {n}, n);
+    return groups;
+  }
+  // frontier[n]: the first profile a piece from the n-th on reaches.
+  std::vector<std::int32_t> frontier(order.size() + 1, std::numeric_limits<std::int32_t>::max());
+  for (std::size_t n = order.size(); n-- > 0;)
+    frontier[n] = std::min(frontier[n + 1], sketch.strokes[order[n]].chain.front().p);
+  const OpenToOtherBands open_to_others(sketch, cls, setup, profiles);
+  const double reach = join_reach_profiles(setup);
+  StrokeGrouper grouper(rule);
+  std::vector<char> open(order.size(), 0), grouped(order.size(), 0);
+  std::size_t first_left = 0;  // the first piece whose group is still open to pieces to come
+  const auto take_settled = [&](std::size_t added, double frontier_profile) {
+    for (; first_left < added; ++first_left) {
+      if (grouped[first_left]) continue;
+      if (!(static_cast<double>(grouper.reach(first_left)) < frontier_profile - reach)) break;
+      grouper.take_group(first_left, members);
+      bool group_open = false;
+      for (const std::size_t m : members) group_open |= open[m], grouped[m] = 1;
+      if (!group_open) move_group(members, first_left);
+    }
+    grouper.forget_before(first_left);
+  };
   for (std::size_t n = 0; n < order.size(); ++n) {
+    take_settled(n, static_cast<double>(frontier[n]));
     const Stroke& piece = sketch.strokes[order[n]];
     grouper.add(piece);
-    open[n] = near_edge(piece.chain.front().p) || near_edge(piece.chain.back().p) ||
-              crossing.near(piece.points.front()) || crossing.near(piece.points.back());
+    open[n] = open_to_others(piece);
   }
-  std::vector<char> group_open(order.size(), 0);
-  for (std::size_t n = 0; n < order.size(); ++n)
-    if (open[n]) group_open[grouper.group_of(n)] = 1;
-  return group_open;
+  take_settled(order.size(), std::numeric_limits<double>::infinity());
+  return groups;
 }
 
 // Draws the groups of class `cls` that no other band can join into sketch.drawn, marking their
@@ -90,28 +145,7 @@ void draw_class(BandSketch& sketch, const DrawingSetup& setup, std::size_t profi
   for (std::size_t k = 0; k < sketch.strokes.size(); ++k)
     if (sketch.strokes[k].cls == cls && sketch.strokes[k].cells < kLeastDrawnCells) taken[k] = 1;
   const std::vector<std::size_t> order = pieces_in_order(sketch, cls);
-  const JoinRule rule = join_rule(setup);
-  // Without a gap nothing joins: every piece is a group of its own that no band can reach.
-  const bool joins = rule.gap > 0.0;
-  std::optional<StrokeGrouper> grouper;
-  std::vector<char> open(order.size(), 0);
-  if (joins) open = group_pieces(sketch, cls, order, setup, profiles, grouper.emplace(rule));
-  StrokeGroups groups;
-  std::vector<std::size_t> members;
-  for (std::size_t n = 0; n < order.size(); ++n) {
-    if (joins) {
-      if (grouper->group_of(n) != n || open[n]) continue;
-      grouper->take_group(n, members);
-    } else {
-      members.assign(1, n);
-    }
-    for (const std::size_t m : members) {
-      groups.pieces.push_back(std::move(sketch.strokes[order[m]]));
-      taken[order[m]] = 1;
-    }
-    groups.ends.push_back(groups.pieces.size());
-    groups.firsts.push_back(n);
-  }
+  StrokeGroups groups = closed_groups(sketch, cls, order, setup, profiles, taken);
   std::optional<std::size_t> last_group;
   StrokeDrawer(setup).draw(groups, [&](std::size_t first, Stroke&& stroke) {
     if (last_group != first) {

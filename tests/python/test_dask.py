@@ -77,11 +77,32 @@ def test_a_dem_of_4000_squared(tmp_path, client):
     same_run(tmp_path, client, path, 700, azimuth=270, strokes="exact")
     # The adaptive filter's survey (64 windows here) is a reduction over the workers: the heights'
     # step, then the slopes, a share of the windows each; the same filter as one machine's.
+    # Bands of the default width, narrower at both ends.
     with distributed.get_task_stream(client) as tasks:
-        same_run(tmp_path, client, path, 1000, azimuth=90)
+        same_run(tmp_path, client, path, None, azimuth=90)
     survey = [t for t in tasks.data if str(t["key"]).startswith(("_survey_heights",
                                                                  "_survey_slopes"))]
     assert len({t["worker"] for t in survey}) == 2 and len(survey) == 4
+    firsts = sorted({int(str(t["key"]).split("-")[3]) for t in tasks.data
+                     if str(t["key"]).startswith("terrain-sketch-band-")})
+    widths = np.diff(firsts)
+    assert len(firsts) > 8 and widths[0] == widths[1] == widths[2] // 2 < widths[3] // 3
+
+
+@pytest.mark.parametrize("profiles,width", [(8000, 1000), (4001, 1000), (4000, 256), (3999, 1000),
+                                            (9, 1), (1, 5)])
+def test_bands_cover_every_profile_once(profiles, width):
+    for taper in (False, True):
+        bands = terrain_sketch.dask._bands(profiles, width, taper)
+        assert [first for first, _ in bands] == [0] + list(np.cumsum([c for _, c in bands]))[:-1]
+        assert sum(count for _, count in bands) == profiles and min(c for _, c in bands) >= 1
+        counts = [count for _, count in bands]
+        if taper and profiles >= 4 * width:  # a quarter, a quarter and a half at both ends
+            ends = [max(1, width // 4), max(1, width // 4), max(1, width // 2)]
+            assert counts[:3] == ends and counts[-3:] == ends[::-1]
+            assert all(abs(c - width) <= width // 2 for c in counts[3:-3])
+        else:  # as asked, but the last
+            assert all(c == width for c in counts[:-1]) and counts[-1] <= width
 
 
 def test_from_a_shell(tmp_path, client, cli):
