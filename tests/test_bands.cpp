@@ -6,6 +6,7 @@
 // long enough, and the bands handed over as bytes. Drawn strokes are drawn partly by the bands (the
 // groups far from their edges) and partly by the stitcher.
 #include <cstring>
+#include <new>
 
 #include "catch_compat.h"
 #include "core/drawn/drawn_strokes.h"
@@ -166,4 +167,40 @@ TEST_CASE("bands refuse what they cannot stitch", "[bands]") {
   CHECK_THROWS_WITH(orders_from_bytes(bytes), Catch::Contains("not an order"));
   CHECK_THROWS_WITH(sketch_band(dem.source(), params, BandSpec{400, 100, {}, 1}),
                     Catch::Contains("does not lie in the grid"));
+}
+
+TEST_CASE("a filter's report goes out as its values only, and comes back whole", "[bands]") {
+  // Two reports alike, made in memory that held different bytes: the padding of their structs
+  // (after the bool of the cut-offs) must not reach the bytes a worker sends.
+  alignas(FilterReport) unsigned char zeros[sizeof(FilterReport)], ones[sizeof(FilterReport)];
+  std::memset(zeros, 0x00, sizeof zeros);
+  std::memset(ones, 0xff, sizeof ones);
+  auto* a = new (zeros) FilterReport;
+  auto* b = new (ones) FilterReport;
+  for (FilterReport* r : {a, b}) {
+    r->choice.mode = FilterMode::adaptive;
+    r->cutoffs.diagonals = false;
+    r->scale = 0.275;
+    r->median_slope_pct = 6.6;
+    r->heights = {0.01, 0.005};
+  }
+  const std::string bytes = filter_report_bytes(*a);
+  CHECK(bytes == filter_report_bytes(*b));
+  const FilterReport back = filter_report_from_bytes(bytes);
+  CHECK(back.choice.mode == FilterMode::adaptive);
+  CHECK(back.choice.adapt == a->choice.adapt);
+  CHECK(back.choice.window == a->choice.window);
+  CHECK_FALSE(back.cutoffs.diagonals);
+  CHECK(back.cutoffs.row_cut_pct == a->cutoffs.row_cut_pct);
+  CHECK(back.cutoffs.ctrl_col_pct == a->cutoffs.ctrl_col_pct);
+  CHECK(back.scale == 0.275);
+  CHECK(back.heights.tolerance == 0.005);
+  CHECK(back.local_highest == a->local_highest);
+  // A choice out of range is refused, not read into an enum or a bool.
+  std::string bad = bytes;
+  bad[4] = 7;  // the filter's mode, after the mark
+  CHECK_THROWS_WITH(filter_report_from_bytes(bad), Catch::Contains("out of range"));
+  CHECK_THROWS_WITH(filter_report_from_bytes(bytes + "x"), Catch::Contains("not a filter's"));
+  a->~FilterReport();
+  b->~FilterReport();
 }

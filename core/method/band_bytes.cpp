@@ -18,6 +18,38 @@ void get_orders(ByteReader& r, BandOrders& o) {
   r.get(o.formulated);
 }
 
+constexpr std::uint32_t kFilterMagic = 0x54534b46;  // "TSKF"
+
+// Field by field: the report's structs hold padding (after a bool, before a double), which a
+// copy of their bytes would send as whatever the memory held.
+void put_filter(ByteWriter& w, const FilterReport& f) {
+  w.put(static_cast<std::uint8_t>(f.choice.mode));
+  w.put(static_cast<std::uint8_t>(f.choice.adapt));
+  w.put(f.choice.window);
+  w.put(static_cast<std::uint8_t>(f.cutoffs.diagonals));
+  for (const double v : {f.cutoffs.row_cut_pct, f.cutoffs.col_cut_pct, f.cutoffs.ctrl_col_pct,
+                         f.scale, f.median_slope_pct, f.heights.quantum, f.heights.tolerance,
+                         f.local_lowest, f.local_highest})
+    w.put(v);
+}
+
+void get_filter(ByteReader& r, FilterReport& f) {
+  std::uint8_t mode = 0, adapt = 0, diagonals = 0;
+  r.get(mode);
+  r.get(adapt);
+  r.get(f.choice.window);
+  r.get(diagonals);
+  if (mode > 1 || adapt > 1 || diagonals > 1)
+    throw Error("these bytes are not a filter's report of Terrain Sketch: a choice out of range");
+  f.choice.mode = static_cast<FilterMode>(mode);
+  f.choice.adapt = static_cast<Adaptivity>(adapt);
+  f.cutoffs.diagonals = diagonals == 1;
+  for (double* v : {&f.cutoffs.row_cut_pct, &f.cutoffs.col_cut_pct, &f.cutoffs.ctrl_col_pct,
+                    &f.scale, &f.median_slope_pct, &f.heights.quantum, &f.heights.tolerance,
+                    &f.local_lowest, &f.local_highest})
+    r.get(*v);
+}
+
 void get_class(ByteReader& r, StrokeClass& cls) {
   r.get(cls);
   if (cls != StrokeClass::factual && cls != StrokeClass::formulated)
@@ -90,7 +122,7 @@ std::string band_bytes(const BandSketch& band) {
   w.put(static_cast<std::uint64_t>(band.first));
   w.put(static_cast<std::uint64_t>(band.count));
   w.put(band.stats);
-  w.put(band.filter);
+  put_filter(w, band.filter);
   put_orders(w, band.in);
   put_orders(w, band.out);
   w.put(band.deciding.factual);
@@ -125,7 +157,7 @@ BandSketch band_from_bytes(const std::string& bytes) {
   band.first = static_cast<std::size_t>(first);
   band.count = static_cast<std::size_t>(count);
   r.get(band.stats);
-  r.get(band.filter);
+  get_filter(r, band.filter);
   get_orders(r, band.in);
   get_orders(r, band.out);
   r.get(band.deciding.factual);
@@ -164,6 +196,22 @@ BandOrders orders_from_bytes(const std::string& bytes) {
   get_orders(r, orders);
   r.finish();
   return orders;
+}
+
+std::string filter_report_bytes(const FilterReport& report) {
+  ByteWriter w;
+  w.put(kFilterMagic);
+  put_filter(w, report);
+  return w.take();
+}
+
+FilterReport filter_report_from_bytes(const std::string& bytes) {
+  ByteReader r(bytes, "a filter's report");
+  r.expect(kFilterMagic);
+  FilterReport report;
+  get_filter(r, report);
+  r.finish();
+  return report;
 }
 
 }  // namespace tsk

@@ -190,5 +190,8 @@ std::string band_bytes(const BandSketch& band);
 BandSketch band_from_bytes(const std::string& bytes);
 std::string orders_bytes(const BandOrders& orders);
 BandOrders orders_from_bytes(const std::string& bytes);
+// A filter's report as bytes, field by field so that no padding goes out, and back.
+std::string filter_report_bytes(const FilterReport& report);
+FilterReport filter_report_from_bytes(const std::string& bytes);
 
 }  // namespace tsk

@@ -9,23 +9,6 @@
 #include "io/write/vector_writer.h"
 
 namespace tsk::python {
-namespace {
-
-FilterReport filter_from_bytes(const std::string& bytes) {
-  ByteReader r(bytes, "a filter's report");
-  FilterReport report;
-  r.get(report);
-  r.finish();
-  return report;
-}
-
-}  // namespace
-
-std::string filter_bytes(const FilterReport& report) {
-  ByteWriter w;
-  w.put(report);
-  return w.take();
-}
 
 // The options of a run in bands: the silhouettes command's, but what it cannot take.
 cli::Options band_options(const std::vector<std::string>& options) {
@@ -67,8 +50,9 @@ BandPlan plan_bands(const std::string& input, const std::string& output,
   const OrientedFrame frame = make_frame(dem.info().grid, o.params.view.azimuth_deg);
   const bool survey = o.params.adaptive.mode == FilterMode::adaptive;
   o.params.validate();
-  return {frame.profiles, survey ? std::string() : filter_bytes(ResolvedParams(o.params).filter()),
-          survey, o.params.geometry == Geometry::oblique, dem.info().rows};
+  return {frame.profiles,
+          survey ? std::string() : filter_report_bytes(ResolvedParams(o.params).filter()), survey,
+          o.params.geometry == Geometry::oblique, dem.info().rows};
 }
 
 double lowest_height_of(const std::string& input, const std::vector<std::string>& options,
@@ -86,7 +70,7 @@ std::string sketch_band_bytes(const std::string& input, const std::vector<std::s
                               const std::string& filter, double z_ref, std::size_t first,
                               std::size_t count, std::size_t halo, const std::string& order) {
   const cli::Options o = band_options(options);
-  const ResolvedParams params = resolve_as_reported(o.params, filter_from_bytes(filter));
+  const ResolvedParams params = resolve_as_reported(o.params, filter_report_from_bytes(filter));
   const io::DemFile dem(input, task_dem(o));
   BandSpec spec{first, count, std::nullopt, halo};
   if (!order.empty()) spec.order = orders_from_bytes(order);
@@ -98,7 +82,7 @@ std::string stitch_bands(const std::string& input, const std::string& output,
                          double z_ref, std::size_t profiles, const BandSource& bands,
                          std::ostream& err) {
   const cli::Options o = band_run(input, output, options);
-  const ResolvedParams params = resolve_as_reported(o.params, filter_from_bytes(filter));
+  const ResolvedParams params = resolve_as_reported(o.params, filter_report_from_bytes(filter));
   const io::DemFile dem(o.input, task_dem(o));  // its CRS, and its grid for the drawing
   const bool drawn = params->strokes.drawn();
   std::optional<DrawingSetup> drawing;

@@ -31,9 +31,6 @@ cli::Options band_options(const std::vector<std::string>& options);
 // the DEM for its range, which only the notes the plan has already told need.
 io::DemOptions task_dem(const cli::Options& o);
 
-// A filter's report as bytes, as a run in bands hands it to its workers.
-std::string filter_bytes(const FilterReport& report);
-
 // Checks the silhouettes command's `options` (as typed) and paths for a run in bands (as
 // band_options), tells the notes on the DEM to `err` as the command does, and resolves a fixed
 // filter; an adaptive one is surveyed by the workers.

@@ -71,7 +71,7 @@ std::string filter_of_survey(const std::vector<std::string>& options, const std:
   SlopePart slopes;
   for (const std::string& part : slope_parts) slopes.merge(SurveyBytes::slopes(part));
   const SlopeSurvey survey = slopes.survey(SurveyBytes::height_step(heights).step());
-  return filter_bytes(report_of_survey(o.params, survey));
+  return filter_report_bytes(report_of_survey(o.params, survey));
 }
 
 }  // namespace tsk::python
