@@ -114,6 +114,25 @@ void get_drawn_groups(ByteReader& r, std::vector<DrawnGroup>& groups) {
   }
 }
 
+// A value as bytes that begin with the mark of its kind, and back.
+template <typename T, typename Put>
+std::string marked_bytes(std::uint32_t mark, const T& value, Put put) {
+  ByteWriter w;
+  w.put(mark);
+  put(w, value);
+  return w.take();
+}
+
+template <typename T, typename Get>
+T from_marked_bytes(const std::string& bytes, const char* what, std::uint32_t mark, Get get) {
+  ByteReader r(bytes, what);
+  r.expect(mark);
+  T value;
+  get(r, value);
+  r.finish();
+  return value;
+}
+
 }  // namespace
 
 std::string band_bytes(const BandSketch& band) {
@@ -183,35 +202,19 @@ BandSketch band_from_bytes(const std::string& bytes) {
 }
 
 std::string orders_bytes(const BandOrders& orders) {
-  ByteWriter w;
-  w.put(kOrderMagic);
-  put_orders(w, orders);
-  return w.take();
+  return marked_bytes(kOrderMagic, orders, put_orders);
 }
 
 BandOrders orders_from_bytes(const std::string& bytes) {
-  ByteReader r(bytes, "an order of chains");
-  r.expect(kOrderMagic);
-  BandOrders orders;
-  get_orders(r, orders);
-  r.finish();
-  return orders;
+  return from_marked_bytes<BandOrders>(bytes, "an order of chains", kOrderMagic, get_orders);
 }
 
 std::string filter_report_bytes(const FilterReport& report) {
-  ByteWriter w;
-  w.put(kFilterMagic);
-  put_filter(w, report);
-  return w.take();
+  return marked_bytes(kFilterMagic, report, put_filter);
 }
 
 FilterReport filter_report_from_bytes(const std::string& bytes) {
-  ByteReader r(bytes, "a filter's report");
-  r.expect(kFilterMagic);
-  FilterReport report;
-  get_filter(r, report);
-  r.finish();
-  return report;
+  return from_marked_bytes<FilterReport>(bytes, "a filter's report", kFilterMagic, get_filter);
 }
 
 }  // namespace tsk
