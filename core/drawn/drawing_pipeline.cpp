@@ -40,8 +40,19 @@ void DrawingPipeline::flush() {
 
 void DrawingPipeline::group(std::vector<Step>& steps) {
   auto settled = std::make_shared<Settled>();
-  for (Step& step : steps) {
+  for (std::size_t k = 0; k < steps.size(); ++k) {
     if (abandoned_) return;
+    Step& step = steps[k];
+    // The pieces were made on the linking thread: what the grouper reads of the next one first
+    // (its chain's end, its points' ends) is fetched while this one is grouped.
+    if (k + 1 < steps.size() && !steps[k + 1].settle) {
+      const Stroke& next = steps[k + 1].piece;
+      if (!next.chain.empty()) __builtin_prefetch(&next.chain.back());
+      if (!next.points.empty()) {
+        __builtin_prefetch(next.points.data());
+        __builtin_prefetch(&next.points.back());
+      }
+    }
     if (step.settle) {
       settled->emplace_back(step.cls, drawer(step.cls).take_settled(step.frontier));
     } else {
