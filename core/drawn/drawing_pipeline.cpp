@@ -43,16 +43,9 @@ void DrawingPipeline::group(std::vector<Step>& steps) {
   for (std::size_t k = 0; k < steps.size(); ++k) {
     if (abandoned_) return;
     Step& step = steps[k];
-    // The pieces were made on the linking thread: what the grouper reads of the next one first
-    // (its chain's end, its points' ends) is fetched while this one is grouped.
-    if (k + 1 < steps.size() && !steps[k + 1].settle) {
-      const Stroke& next = steps[k + 1].piece;
-      if (!next.chain.empty()) __builtin_prefetch(&next.chain.back());
-      if (!next.points.empty()) {
-        __builtin_prefetch(next.points.data());
-        __builtin_prefetch(&next.points.back());
-      }
-    }
+    // The pieces were made on the linking thread: the next one is fetched while this one is
+    // grouped.
+    if (k + 1 < steps.size() && !steps[k + 1].settle) prefetch_piece_ends(steps[k + 1].piece);
     if (step.settle) {
       settled->emplace_back(step.cls, drawer(step.cls).take_settled(step.frontier));
     } else {

@@ -35,6 +35,17 @@ std::vector<Stroke> join_strokes(std::vector<Stroke> strokes, const JoinRule& ru
 // through others. Joining one group never depends on another, so a group can be joined once no
 // stroke still to come can join it (join_strokes on its members gives what it gives them among
 // all the strokes).
+// Asks the processor for what StrokeGrouper::add reads of `piece` first (its chain's end, its
+// points' ends), for a caller to do so for the next piece while it adds this one: pieces made on
+// another thread, or visited out of the order they were made in, miss the cache otherwise.
+inline void prefetch_piece_ends(const Stroke& piece) {
+  if (!piece.chain.empty()) __builtin_prefetch(&piece.chain.back());
+  if (!piece.points.empty()) {
+    __builtin_prefetch(piece.points.data());
+    __builtin_prefetch(&piece.points.back());
+  }
+}
+
 class StrokeGrouper {
  public:
   explicit StrokeGrouper(const JoinRule& rule);

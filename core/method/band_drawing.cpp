@@ -130,6 +130,9 @@ StrokeGroups closed_groups(BandSketch& sketch, StrokeClass cls,
   };
   for (std::size_t n = 0; n < order.size(); ++n) {
     take_settled(n, static_cast<double>(frontier[n]));
+    // In the order of their keys, the pieces lie scattered over the band's strokes.
+    if (n + 2 < order.size()) __builtin_prefetch(&sketch.strokes[order[n + 2]]);
+    if (n + 1 < order.size()) prefetch_piece_ends(sketch.strokes[order[n + 1]]);
     const Stroke& piece = sketch.strokes[order[n]];
     grouper.add(piece);
     open[n] = open_to_others(piece);
