@@ -6,8 +6,8 @@ the adaptive filter's survey measures it, about 8 000 factual and 800 000 formul
     /usr/bin/python3 bench/hillshade_ratio.py BUILD_DIR [SIZE=8000] [PAIRS=5]
 
 Prints, for each run kind, the median wall time and peak memory over PAIRS runs, each run
-alternated with `gdaldem hillshade` (or `gdal_viewshed` for the panorama), the median of the
-per-pair ratios, the defaults' --timings and the stroke counts. The DEM is made once and kept in
+alternated with `gdaldem hillshade` (or `gdal_viewshed` for the panorama, or the same run with
+exact strokes for the drawn ones), the median of the per-pair ratios, the defaults' --timings and the stroke counts. The DEM is made once and kept in
 /tmp. Figures, not a test: nothing here passes or fails.
 """
 import json
@@ -108,6 +108,10 @@ said = compare("defaults (adaptive, drawn)", sketch + ["--timings"], "gdaldem hi
 print("  " + "\n  ".join(line for line in said.splitlines() if not line.startswith("TIME")))
 compare("exact (--filter fixed --strokes exact)",
         sketch + ["--filter", "fixed", "--strokes", "exact"], "gdaldem hillshade", shade)
+# The goal that drawn strokes cost at most 15 % more than exact ones, with each filter.
+compare("drawn, against exact (adaptive)", sketch, "--strokes exact", sketch + ["--strokes", "exact"])
+compare("drawn, against exact (fixed)", sketch + ["--filter", "fixed"], "--strokes exact",
+        sketch + ["--filter", "fixed", "--strokes", "exact"])
 centre = (500000 + 25 * size / 2, 5000000 - 25 * size / 2)
 compare("panorama, full circle at 2 m",
         [cli, "panorama", dem, os.path.join(work, "p.gpkg"), "--observer",
