@@ -31,10 +31,6 @@ struct JoinRule {
 // out in the order of their first piece in `strokes`.
 std::vector<Stroke> join_strokes(std::vector<Stroke> strokes, const JoinRule& rule);
 
-// Strokes of one class sorted, as they come, into the groups that joining may link, directly or
-// through others. Joining one group never depends on another, so a group can be joined once no
-// stroke still to come can join it (join_strokes on its members gives what it gives them among
-// all the strokes).
 // Asks the processor for what StrokeGrouper::add reads of `piece` first (its chain's end, its
 // points' ends), for a caller to do so for the next piece while it adds this one: pieces made on
 // another thread, or visited out of the order they were made in, miss the cache otherwise.
@@ -46,6 +42,10 @@ inline void prefetch_piece_ends(const Stroke& piece) {
   }
 }
 
+// Strokes of one class sorted, as they come, into the groups that joining may link, directly or
+// through others. Joining one group never depends on another, so a group can be joined once no
+// stroke still to come can join it (join_strokes on its members gives what it gives them among
+// all the strokes).
 class StrokeGrouper {
  public:
   explicit StrokeGrouper(const JoinRule& rule);
