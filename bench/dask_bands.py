@@ -97,8 +97,8 @@ def main():
             ratio = statistics.median(d / c for d, c in pairs)
             band_s, band_bytes, stitch_s, again, count, pieces, edge_bytes = band_figures(
                 client, width)
-            print(f"bands of {width or 'default':>7} profiles ({count:3d} bands): {wall:.2f} s against the "
-                  f"CLI's {cli:.2f} s, {ratio:.2f}x (pairs "
+            print(f"bands of {width or 'default':>7} profiles ({count:3d} bands): {wall:.2f} s "
+                  f"against the CLI's {cli:.2f} s, {ratio:.2f}x (pairs "
                   f"{' '.join(f'{d / c:.2f}' for d, c in pairs)}); per band {band_s:.3f} s on a "
                   f"worker, {band_bytes / 1e6:.2f} MB; stitching and writing {stitch_s:.2f} s on "
                   f"the client ({stitch_s / count * 1000:.1f} ms a band); sketched again "

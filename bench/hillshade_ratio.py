@@ -7,8 +7,9 @@ the adaptive filter's survey measures it, about 8 000 factual and 800 000 formul
 
 Prints, for each run kind, the median wall time and peak memory over PAIRS runs, each run
 alternated with `gdaldem hillshade` (or `gdal_viewshed` for the panorama, or the same run with
-exact strokes for the drawn ones), the median of the per-pair ratios, the defaults' --timings and the stroke counts. The DEM is made once and kept in
-/tmp. Figures, not a test: nothing here passes or fails.
+exact strokes for the drawn ones), the median of the per-pair ratios, the defaults' --timings and
+the stroke counts. The DEM is made once and kept in /tmp. Figures, not a test: nothing here
+passes or fails.
 """
 import json
 import os
@@ -109,7 +110,8 @@ print("  " + "\n  ".join(line for line in said.splitlines() if not line.startswi
 compare("exact (--filter fixed --strokes exact)",
         sketch + ["--filter", "fixed", "--strokes", "exact"], "gdaldem hillshade", shade)
 # The goal that drawn strokes cost at most 15 % more than exact ones, with each filter.
-compare("drawn, against exact (adaptive)", sketch, "--strokes exact", sketch + ["--strokes", "exact"])
+compare("drawn, against exact (adaptive)", sketch, "--strokes exact",
+        sketch + ["--strokes", "exact"])
 compare("drawn, against exact (fixed)", sketch + ["--filter", "fixed"], "--strokes exact",
         sketch + ["--filter", "fixed", "--strokes", "exact"])
 centre = (500000 + 25 * size / 2, 5000000 - 25 * size / 2)

@@ -93,8 +93,9 @@ def _bands(profiles, width, taper=False):
     """The bands as (first profile, profiles), of `width` profiles each but the last. Tapered
     (where there are four widths or more), the two bands at each end are a quarter as wide and the
     one next to them half as wide, so that the client starts stitching early and has little left to
-    stitch once the workers are done (on the 8000^2 benchmark, exact strokes, 1.20x the CLI's time
-    against 1.31x with even bands, in turns, docs/DISTRIBUTED.md)."""
+    stitch once the workers are done (on the 8000^2 benchmark, drawn strokes, 1.37x the CLI's time
+    against 1.51x with even bands, in turns; for exact strokes the rounds went either way,
+    docs/DISTRIBUTED.md)."""
     if not taper or profiles < 4 * width:
         sizes = [min(width, profiles - first) for first in range(0, profiles, width)]
     else:
