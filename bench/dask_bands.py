@@ -81,9 +81,8 @@ def band_figures(client, width):
 def main():
     os.makedirs(OUT, exist_ok=True)
     print(f"CLI, {workers} threads, {STROKES} strokes; each Dask run in turn with a CLI run")
-    with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                  dashboard_address=":0") as cluster, \
-            distributed.Client(cluster) as client:
+    # The cluster a run without a client makes, kept for all the runs, as a user keeps one.
+    with tsd.local_cluster(workers) as cluster, distributed.Client(cluster) as client:
         client.run(lambda: __import__("terrain_sketch"))
         for width in widths:
             pairs = []

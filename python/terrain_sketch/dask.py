@@ -106,20 +106,38 @@ def _bands(profiles, width, taper=False):
     return list(zip(itertools.accumulate([0] + sizes[:-1]), sizes))
 
 
+def local_cluster(workers=None):
+    """local_cluster(workers=None)
+
+    A dask.distributed.LocalCluster for runs on this machine, as silhouettes() makes one when
+    given no client: `workers` single-threaded worker processes (None: one a core) that send what
+    they return uncompressed. Bands cross the loopback here, where Dask's lz4 (used wherever lz4 is
+    installed) costs more than it saves: about 0.1 s of a worker's time for each 50 MB band, to
+    save a quarter of its bytes (docs/DISTRIBUTED.md). Keep one for several runs with
+    ``with local_cluster() as cluster, Client(cluster) as client: ...``.
+    """
+    from dask.distributed import LocalCluster
+
+    # A worker and the scheduler that disagree on compression send uncompressed; a flat key, as
+    # the nanny merges this over the whole configuration one level deep.
+    return LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
+                        processes=True, dashboard_address=":0",
+                        config={"distributed.comm.compression": False})
+
+
 def silhouettes(input, output, client=None, band_profiles=None, *, progress=None, **options):
     """silhouettes(input, output, client=None, band_profiles=None, *, progress=None, **options)
 
-    The silhouettes command on a Dask cluster: `client` (a dask.distributed.Client; None makes a
-    LocalCluster of one single-threaded worker process a core for the run), bands of
-    `band_profiles` profiles (None: about four a worker, narrower at both ends), and the options of
-    terrain_sketch.silhouettes() but those that need the whole DEM on one machine: the filter
-    fixed or adapted to the whole DEM (surveyed once, by the workers), not locally, and no files
-    beyond OUTPUT. Drawn strokes are drawn by the bands, those near a band's edges by the client
-    (plan-oblique ones all by the client, which reads the DEM's lowest height on the workers). Returns the stage
-    statistics as a dict. Raises ValueError on bad options, terrain_sketch.Error when the run
-    cannot be done (a worker that cannot read the DEM ends it with its message); a worker lost
-    mid-run has its band sketched again by another. OUTPUT is written whole at the end, or not
-    at all.
+    The silhouettes command on a Dask cluster: `client` (a dask.distributed.Client; None makes
+    local_cluster() for the run), bands of `band_profiles` profiles (None: about four a worker,
+    narrower at both ends), and the options of terrain_sketch.silhouettes() but those that need
+    the whole DEM on one machine: the filter fixed or adapted to the whole DEM (surveyed once, by
+    the workers), not locally, and no files beyond OUTPUT. Drawn strokes are drawn by the bands,
+    those near a band's edges by the client (plan-oblique ones all by the client, which reads the
+    DEM's lowest height on the workers). Returns the stage statistics as a dict. Raises
+    ValueError on bad options, terrain_sketch.Error when the run cannot be done (a worker that
+    cannot read the DEM ends it with its message); a worker lost mid-run has its band sketched
+    again by another. OUTPUT is written whole at the end, or not at all.
     """
     input_path, output_path = _options.path_argument(input), _options.path_argument(output)
     return _run(input_path, output_path, client, band_profiles, _options.to_arguments(options),
@@ -128,14 +146,13 @@ def silhouettes(input, output, client=None, band_profiles=None, *, progress=None
 
 def _run(input_path, output_path, client, band_profiles, arguments, progress):
     """silhouettes() with the command line's arguments."""
-    from dask.distributed import Client, LocalCluster
+    from dask.distributed import Client
 
     hooks = _options.hooks(progress)
     plan = _native.plan_bands(input_path, output_path, arguments, hooks)
     cluster = None
     if client is None:
-        cluster = LocalCluster(n_workers=os.cpu_count() or 1, threads_per_worker=1,
-                               processes=True, dashboard_address=":0")
+        cluster = local_cluster()
         client = Client(cluster)
     try:
         profiles = plan["profiles"]

@@ -3,6 +3,7 @@
 report among them), on the sample and a 4000^2 DEM made of it, bands down to a few profiles, the
 adaptive filter's survey made by the workers, a worker killed mid-run, and the refusals."""
 
+import importlib.util
 import os
 import shutil
 import sqlite3
@@ -155,6 +156,45 @@ def test_a_worker_killed_mid_run(tmp_path):
         register(c, KillFirstBand(marker))
         same_run(tmp_path, c, SAMPLE, 40, azimuth=0)
     assert os.path.exists(marker)
+
+
+def watch_compressions():
+    """On a worker: records the compression Dask chooses for each frame it may compress (10 kB
+    or more) that it sends from now on."""
+    import distributed.protocol.core as core
+    chosen = core.maybe_compress
+    core.terrain_sketch_chosen = []
+
+    def watched(payload, **options):
+        compression, sent = chosen(payload, **options)
+        if memoryview(payload).nbytes >= 10_000:
+            core.terrain_sketch_chosen.append(compression)
+        return compression, sent
+
+    core.maybe_compress, core.terrain_sketch_unwatched = watched, chosen
+
+
+def compressions_chosen():
+    """On a worker: what watch_compressions() recorded, Dask's own choice put back."""
+    import distributed.protocol.core as core
+    core.maybe_compress = core.terrain_sketch_unwatched
+    return core.terrain_sketch_chosen
+
+
+def band_compressions(folder, client):
+    folder.mkdir()
+    client.run(watch_compressions)
+    same_run(folder, client, SAMPLE, 100, azimuth=90)
+    return [c for chosen in client.run(compressions_chosen).values() for c in chosen]
+
+
+def test_the_local_cluster_sends_bands_uncompressed(tmp_path, client):
+    with terrain_sketch.dask.local_cluster(2) as local, distributed.Client(local) as c:
+        chosen = band_compressions(tmp_path / "local", c)
+    assert chosen and all(c is None for c in chosen)
+    # A cluster as Dask makes it compresses them where lz4 is installed.
+    if importlib.util.find_spec("lz4"):
+        assert "lz4" in band_compressions(tmp_path / "plain", client)
 
 
 def test_options_a_run_in_bands_cannot_take(tmp_path, client):
