@@ -106,23 +106,54 @@ def _bands(profiles, width, taper=False):
     return list(zip(itertools.accumulate([0] + sizes[:-1]), sizes))
 
 
+class KeepFreedMemory:
+    """A Dask worker plugin that sets glibc's thresholds in the worker's process: blocks below
+    32 MiB (the most glibc allows) come from the heap, and up to 256 MiB of freed heap is kept
+    for the next band. local_cluster() starts its workers with it.
+
+    Dask starts workers with MALLOC_TRIM_THRESHOLD_=65536, which also fixes glibc's threshold for
+    taking blocks straight from the system at 128 kB: every larger block is handed back as it is
+    freed, and a band's grids and strokes fault their pages in afresh, band after band (about
+    1.5 s of processor time in a drawn run on the 8000^2 benchmark, docs/DISTRIBUTED.md). Elsewhere
+    than glibc, it does nothing."""
+
+    name = "terrain-sketch-keep-freed-memory"
+    MMAP_THRESHOLD = 32 << 20
+    TRIM_THRESHOLD = 256 << 20
+
+    def setup(self, worker=None):
+        import ctypes
+
+        mallopt = getattr(ctypes.CDLL(None), "mallopt", None)
+        if mallopt is None:
+            return
+        m_trim_threshold, m_mmap_threshold = -1, -3  # glibc's <malloc.h>
+        mallopt(m_mmap_threshold, self.MMAP_THRESHOLD)
+        mallopt(m_trim_threshold, self.TRIM_THRESHOLD)
+
+
 def local_cluster(workers=None):
     """local_cluster(workers=None)
 
     A dask.distributed.LocalCluster for runs on this machine, as silhouettes() makes one when
     given no client: `workers` single-threaded worker processes (None: one a core) that send what
-    they return uncompressed. Bands cross the loopback here, where Dask's lz4 (used wherever lz4 is
-    installed) costs more than it saves: about 0.1 s of a worker's time for each 50 MB band, to
-    save a quarter of its bytes (docs/DISTRIBUTED.md). Keep one for several runs with
+    they return uncompressed, and keep freed memory for the next band (KeepFreedMemory). Keep one
+    for several runs with
     ``with local_cluster() as cluster, Client(cluster) as client: ...``.
+
+    Bands cross the loopback here, where Dask's lz4 (used wherever lz4 is installed) costs more
+    than it saves: about 0.1 s of a worker's time for each 50 MB band, to save a quarter of its
+    bytes (docs/DISTRIBUTED.md).
     """
     from dask.distributed import LocalCluster
 
     # A worker and the scheduler that disagree on compression send uncompressed; a flat key, as
-    # the nanny merges this over the whole configuration one level deep.
+    # the nanny merges this over the whole configuration one level deep. The nanny hands the
+    # plugin to each worker it starts, again after a restart.
     return LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
                         processes=True, dashboard_address=":0",
-                        config={"distributed.comm.compression": False})
+                        config={"distributed.comm.compression": False},
+                        plugins=(KeepFreedMemory(),))
 
 
 def silhouettes(input, output, client=None, band_profiles=None, *, progress=None, **options):

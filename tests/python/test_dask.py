@@ -5,6 +5,7 @@ adaptive filter's survey made by the workers, a worker killed mid-run, and the r
 
 import importlib.util
 import os
+import platform
 import shutil
 import sqlite3
 
@@ -198,6 +199,42 @@ def test_the_local_cluster_sends_bands_uncompressed(tmp_path, client):
     if (dask.config.get("distributed.comm.compression") == "auto"
             and importlib.util.find_spec("lz4")):
         assert "lz4" in band_compressions(tmp_path / "plain", client)
+
+
+def heap_probe():
+    """On a worker: of 64 blocks of 1 MiB, how many glibc takes from the heap, and how many MiB
+    the heap still spans once they are freed."""
+    import ctypes
+
+    libc = ctypes.CDLL(None)
+    libc.malloc.restype = ctypes.c_void_p
+    libc.free.argtypes = [ctypes.c_void_p]
+
+    def heap():
+        for line in open("/proc/self/maps"):
+            if line.rstrip().endswith("[heap]"):
+                return [int(end, 16) for end in line.split()[0].split("-")]
+        return [0, 0]
+
+    blocks = [libc.malloc(1 << 20) for _ in range(64)]
+    low, high = heap()
+    inside = sum(low <= block < high for block in blocks)
+    for block in reversed(blocks):
+        libc.free(block)
+    return inside, (heap()[1] - low) >> 20
+
+
+@pytest.mark.skipif(platform.libc_ver()[0] != "glibc", reason="glibc's thresholds")
+def test_the_local_cluster_keeps_freed_memory_for_the_next_band(client):
+    with terrain_sketch.dask.local_cluster(2) as local, distributed.Client(local) as c:
+        probes = list(c.run(heap_probe).values())
+    assert len(probes) == 2
+    for inside, spanned in probes:
+        assert inside == 64 and spanned >= 64
+    # The control: Dask's own workers, started with MALLOC_TRIM_THRESHOLD_=65536, map each block
+    # apart and hand it back.
+    if set(client.run(os.environ.get, "MALLOC_TRIM_THRESHOLD_").values()) == {"65536"}:
+        assert all(inside == 0 for inside, _ in client.run(heap_probe).values())
 
 
 def test_options_a_run_in_bands_cannot_take(tmp_path, client):
