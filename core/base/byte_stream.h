@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -36,7 +37,7 @@ class ByteWriter {
 
 class ByteReader {
  public:
-  ByteReader(const std::string& bytes, const char* what) : bytes_(bytes), what_(what) {}
+  ByteReader(std::string_view bytes, const char* what) : bytes_(bytes), what_(what) {}
   template <typename T>
   void get(T& value) {
     static_assert(std::is_trivially_copyable<T>::value, "plain values only");
@@ -73,7 +74,7 @@ class ByteReader {
   [[noreturn]] void fail() const {
     throw Error(std::string("these bytes are not ") + what_ + " of this build of Terrain Sketch");
   }
-  const std::string& bytes_;
+  std::string_view bytes_;  // another's, which outlives the reader
   const char* what_;
   std::size_t at_ = 0;
 };

@@ -56,15 +56,14 @@ void get_class(ByteReader& r, StrokeClass& cls) {
     throw Error("these bytes are not a band's sketch of Terrain Sketch: a stroke of no class");
 }
 
-// `whole_chain`: a stroke drawn by its band keeps its chain, as one run's does.
-void put_stroke(ByteWriter& w, const Stroke& s, bool whole_chain = false) {
+// A stroke still to be drawn (a piece) goes with its whole chain, from which the drawing works;
+// an exact stroke, or one its band has drawn, with its first cell, which places it in the run's
+// order. The writer needs no more.
+void put_stroke(ByteWriter& w, const Stroke& s) {
   w.put(s.cls);
   w.put(s.points);
-  // A drawn stroke's piece is drawn from its whole chain; an exact stroke is placed by its first
-  // cell.
   w.put(s.vertices);
-  w.put(static_cast<std::uint8_t>(whole_chain));
-  if (s.vertices.empty() && !whole_chain) {
+  if (s.vertices.empty()) {
     w.put(s.chain.front());
   } else {
     w.put(s.chain);
@@ -80,11 +79,7 @@ void get_stroke(ByteReader& r, Stroke& s) {
   get_class(r, s.cls);
   r.get(s.points);
   r.get(s.vertices);
-  std::uint8_t whole_chain = 0;
-  r.get(whole_chain);
-  if (whole_chain > 1)
-    throw Error("these bytes are not a band's sketch of Terrain Sketch: a stroke's chain unmarked");
-  if (s.vertices.empty() && !whole_chain) {
+  if (s.vertices.empty()) {
     s.chain.resize(1);
     r.get(s.chain.front());
   } else {
@@ -154,7 +149,7 @@ std::string band_bytes(const BandSketch& band) {
     w.put(group.cls);
     w.put(group.key);
     w.put(static_cast<std::uint64_t>(group.strokes.size()));
-    for (const Stroke& stroke : group.strokes) put_stroke(w, stroke, true);
+    for (const Stroke& stroke : group.strokes) put_stroke(w, stroke);
   }
   w.put(static_cast<std::uint64_t>(band.pieces.size()));
   for (const BandPiece& piece : band.pieces) {
@@ -166,7 +161,7 @@ std::string band_bytes(const BandSketch& band) {
   return w.take();
 }
 
-BandSketch band_from_bytes(const std::string& bytes) {
+BandSketch band_from_bytes(std::string_view bytes) {
   ByteReader r(bytes, "a band's sketch");
   r.expect(kBandMagic);
   BandSketch band;

@@ -17,6 +17,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
@@ -183,11 +184,12 @@ class BandStitcher {
   std::unique_ptr<DrawingPipeline> drawing_;
 };
 
-// A band sketch as bytes and back, for a machine to hand it to another: an exact stroke's chain
-// keeps only its first cell, which is all the stitcher reads of it (a drawn stroke's piece keeps
-// its whole chain, which the drawing joins). Throws Error on bytes that are not one.
+// A band sketch as bytes and back, for a machine to hand it to another: an exact stroke's chain,
+// and that of a stroke its band has drawn, keep only their first cell, which is all the stitcher
+// reads of them (a drawn stroke's piece keeps its whole chain, which the drawing joins). Throws
+// Error on bytes that are not one.
 std::string band_bytes(const BandSketch& band);
-BandSketch band_from_bytes(const std::string& bytes);
+BandSketch band_from_bytes(std::string_view bytes);
 std::string orders_bytes(const BandOrders& orders);
 BandOrders orders_from_bytes(const std::string& bytes);
 // A filter's report as bytes, field by field so that no padding goes out, and back.

@@ -97,10 +97,10 @@ std::string stitch_bands(const std::string& input, const std::string& output,
         BandStitcher stitcher(
             params, [&write](Stroke&& stroke) { write(stroke); }, drawing);
         const auto again = [&bands](std::size_t first, std::size_t count, const BandOrders& order) {
-          return band_from_bytes(bands.again(first, count, orders_bytes(order)));
+          return band_from_bytes(bands.again(first, count, orders_bytes(order)).bytes);
         };
-        for (std::string bytes = bands.next(); !bytes.empty(); bytes = bands.next())
-          stitcher.add(band_from_bytes(bytes), again);
+        for (BandBytes band = bands.next(); !band.bytes.empty(); band = bands.next())
+          stitcher.add(band_from_bytes(band.bytes), again);
         result = stitcher.finish(profiles);
       },
       io::kStrokeLayer, drawn, [&] { return run_note(cli::run_facts(o, result.filter)); });

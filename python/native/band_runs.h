@@ -5,8 +5,10 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli/options.h"
@@ -49,11 +51,18 @@ std::string sketch_band_bytes(const std::string& input, const std::vector<std::s
                               const std::string& filter, double z_ref, std::size_t first,
                               std::size_t count, std::size_t halo, const std::string& order);
 
-// The bands of a run as they come back, in order: the band as its worker guessed it, or an empty
-// string after the last; and the band sketched again from an order of chains (bytes).
+// A band's bytes as they come back, held where they lie: `owner` keeps them, and lets them go as
+// the last copy of it goes.
+struct BandBytes {
+  std::shared_ptr<const void> owner;
+  std::string_view bytes;
+};
+
+// The bands of a run as they come back, in order: the band as its worker guessed it, or no bytes
+// after the last; and the band sketched again from an order of chains (bytes).
 struct BandSource {
-  std::function<std::string()> next;
-  std::function<std::string(std::size_t first, std::size_t count, const std::string& order)> again;
+  std::function<BandBytes()> next;
+  std::function<BandBytes(std::size_t first, std::size_t count, const std::string& order)> again;
 };
 
 // Stitches the bands of a run as they come and writes each stroke as soon as it is whole (drawn

@@ -181,6 +181,23 @@ double lowest_height(const std::string& input, const Strings& options, std::size
   return quietly([&] { return lowest_height_of(input, options, first_row, rows); });
 }
 
+// A band's bytes where Python holds them, without a copy; called with the interpreter's lock
+// held, and the bytes are let go under it.
+BandBytes held_band(py::object band) {
+  if (!PyBytes_Check(band.ptr()))
+    throw py::type_error("a band's sketch comes back as bytes, got " +
+                         std::string(py::str(py::type::of(band))));
+  const std::string_view bytes(PyBytes_AS_STRING(band.ptr()),
+                               static_cast<std::size_t>(PyBytes_GET_SIZE(band.ptr())));
+  auto* owner = new py::object(std::move(band));
+  return {std::shared_ptr<const void>(owner,
+                                      [](const void* held) {
+                                        py::gil_scoped_acquire lock;
+                                        delete static_cast<const py::object*>(held);
+                                      }),
+          bytes};
+}
+
 // Stitches the bands that `next()` hands back and writes OUTPUT (band_runs.h).
 std::string stitch(const std::string& input, const std::string& output, const Strings& options,
                    const std::string& filter, double z_ref, std::size_t profiles,
@@ -188,11 +205,11 @@ std::string stitch(const std::string& input, const std::string& output, const St
   // Called from the run, the interpreter's lock released: each call takes it.
   const BandSource bands{[&next] {
                            py::gil_scoped_acquire lock;
-                           return next().cast<std::string>();
+                           return held_band(next());
                          },
                          [&again](std::size_t first, std::size_t count, const std::string& order) {
                            py::gil_scoped_acquire lock;
-                           return again(first, count, py::bytes(order)).cast<std::string>();
+                           return held_band(again(first, count, py::bytes(order)));
                          }};
   std::string statistics;
   run_from_python(hooks, [&](const ProgressFn&, std::ostream& err) {

@@ -277,7 +277,8 @@ def test_a_worker_that_cannot_read_the_dem_ends_the_run_with_its_message(tmp_pat
     assert os.listdir(here) == ["dem.tif"]
 
 
-def test_the_notes_on_the_dem_and_filter_are_told_as_one_machine_tells_them(tmp_path, client, caplog):
+def test_the_notes_on_the_dem_and_filter_are_told_as_one_machine_tells_them(tmp_path, client,
+                                                                          caplog):
     # A DEM without a CRS whose corner holds a common fill value: the run goes on, with notes,
     # and the adaptive filter's cut-offs.
     heights = gdal.Open(str(SAMPLE)).ReadAsArray().astype(np.float32)
