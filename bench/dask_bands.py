@@ -43,9 +43,11 @@ def cli_seconds():
 
 
 def timed_band(arguments, filter_report, first, count):
+    """The band's sketch time and its bytes (copied after the timing: Dask pickles the pair, and
+    a memoryview does not pickle)."""
     start = time.monotonic()
     band = _native.sketch_band(dem, arguments, filter_report, 0.0, first, count, tsd.HALO, b"")
-    return time.monotonic() - start, band
+    return time.monotonic() - start, bytes(memoryview(band))
 
 
 def band_figures(client, width):
@@ -65,7 +67,8 @@ def band_figures(client, width):
     def sketch_again(first, count, order):
         nonlocal again
         again += 1
-        return _native.sketch_band(dem, arguments, filter_report, 0.0, first, count, 0, order)
+        return memoryview(_native.sketch_band(dem, arguments, filter_report, 0.0, first, count, 0,
+                                              order))
 
     _native.stitch_bands(dem, f"{OUT}/b.gpkg", arguments, filter_report, 0.0, profiles,
                          next_band, sketch_again, _native.RunHooks(None, None, False))

@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <memory>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -150,17 +151,39 @@ py::bytes filter_from_survey(const Strings& options, const std::string& heights,
   return py::bytes(quietly([&] { return filter_of_survey(options, heights, slopes); }));
 }
 
-py::bytes sketch_one_band(const std::string& input, const Strings& options,
-                          const std::string& filter, double z_ref, std::size_t first,
-                          std::size_t count, std::size_t halo, const std::string& order) {
-  return py::bytes(quietly(
-      [&] { return sketch_band_bytes(input, options, filter, z_ref, first, count, halo, order); }));
+// A band's bytes lent to Python through the buffer protocol: memoryview(band) reads them where
+// they lie, and Dask sends a memoryview without copying it.
+struct BandBuffer {
+  std::string bytes;
+};
+
+BandBuffer sketch_one_band(const std::string& input, const Strings& options,
+                           const std::string& filter, double z_ref, std::size_t first,
+                           std::size_t count, std::size_t halo, const std::string& order) {
+  return {quietly(
+      [&] { return sketch_band_bytes(input, options, filter, z_ref, first, count, halo, order); })};
+}
+
+// A band's bytes where Python holds them (bytes, a memoryview, a BandBuffer), without a copy;
+// called with the interpreter's lock held, and the bytes are let go under it.
+BandBytes held_band(const py::object& band) {
+  auto view = std::make_unique<Py_buffer>();
+  if (PyObject_GetBuffer(band.ptr(), view.get(), PyBUF_SIMPLE) != 0) throw py::error_already_set();
+  const std::string_view bytes(static_cast<const char*>(view->buf),
+                               static_cast<std::size_t>(view->len));
+  std::shared_ptr<Py_buffer> owner(view.release(), [](Py_buffer* held) {
+    py::gil_scoped_acquire lock;
+    PyBuffer_Release(held);
+    delete held;
+  });
+  return {std::move(owner), bytes};
 }
 
 // What a band's bytes hold: its strokes, and the pieces of chains crossing its edges with their
 // cells and the bytes those take (for the benchmark of runs in bands).
-py::dict band_summary(const std::string& bytes) {
-  const BandSketch band = quietly([&] { return band_from_bytes(bytes); });
+py::dict band_summary(const py::object& bytes) {
+  const BandBytes held = held_band(bytes);
+  const BandSketch band = quietly([&] { return band_from_bytes(held.bytes); });
   std::size_t cells = 0;
   for (const BandPiece& piece : band.pieces) cells += piece.cells.size();
   std::size_t drawn = 0;
@@ -179,23 +202,6 @@ py::dict band_summary(const std::string& bytes) {
 double lowest_height(const std::string& input, const Strings& options, std::size_t first_row,
                      std::size_t rows) {
   return quietly([&] { return lowest_height_of(input, options, first_row, rows); });
-}
-
-// A band's bytes where Python holds them, without a copy; called with the interpreter's lock
-// held, and the bytes are let go under it.
-BandBytes held_band(py::object band) {
-  if (!PyBytes_Check(band.ptr()))
-    throw py::type_error("a band's sketch comes back as bytes, got " +
-                         std::string(py::str(py::type::of(band))));
-  const std::string_view bytes(PyBytes_AS_STRING(band.ptr()),
-                               static_cast<std::size_t>(PyBytes_GET_SIZE(band.ptr())));
-  auto* owner = new py::object(std::move(band));
-  return {std::shared_ptr<const void>(owner,
-                                      [](const void* held) {
-                                        py::gil_scoped_acquire lock;
-                                        delete static_cast<const py::object*>(held);
-                                      }),
-          bytes};
 }
 
 // Stitches the bands that `next()` hands back and writes OUTPUT (band_runs.h).
@@ -255,6 +261,11 @@ PYBIND11_MODULE(_native, m) {
         py::arg("nodata"), py::arg("options"), py::arg("hooks"));
   m.def("plan_bands", &plan_run_in_bands, py::arg("input"), py::arg("output"), py::arg("options"),
         py::arg("hooks"));
+  py::class_<BandBuffer>(m, "BandBuffer", py::buffer_protocol())
+      .def_buffer([](BandBuffer& band) {
+        return py::buffer_info(band.bytes.data(), 1, py::format_descriptor<std::uint8_t>::format(),
+                               static_cast<py::ssize_t>(band.bytes.size()), true);
+      });
   m.def("sketch_band", &sketch_one_band, py::arg("input"), py::arg("options"), py::arg("filter"),
         py::arg("z_ref"), py::arg("first"), py::arg("count"), py::arg("halo"), py::arg("order"));
   m.def("band_summary", &band_summary, py::arg("band"));

@@ -29,10 +29,11 @@ HALO = 64
 
 
 def _sketch_band(input, arguments, filter_report, z_ref, first, count, halo, order):
-    """One task: a band of profiles sketched from the DEM's file, as bytes. On one thread: a
-    worker runs a task on each of its threads, and more threads a task would only contend."""
-    return _native.sketch_band(input, arguments + ["--threads", "1"], filter_report, z_ref,
-                               first, count, halo, order or b"")
+    """One task: a band of profiles sketched from the DEM's file, as a memoryview of its bytes,
+    which Dask sends without a copy. On one thread: a worker runs a task on each of its threads,
+    and more threads a task would only contend."""
+    return memoryview(_native.sketch_band(input, arguments + ["--threads", "1"], filter_report,
+                                          z_ref, first, count, halo, order or b""))
 
 
 def _lowest_height_of_rows(input, arguments, first_row, rows):
