@@ -261,11 +261,10 @@ PYBIND11_MODULE(_native, m) {
         py::arg("nodata"), py::arg("options"), py::arg("hooks"));
   m.def("plan_bands", &plan_run_in_bands, py::arg("input"), py::arg("output"), py::arg("options"),
         py::arg("hooks"));
-  py::class_<BandBuffer>(m, "BandBuffer", py::buffer_protocol())
-      .def_buffer([](BandBuffer& band) {
-        return py::buffer_info(band.bytes.data(), 1, py::format_descriptor<std::uint8_t>::format(),
-                               static_cast<py::ssize_t>(band.bytes.size()), true);
-      });
+  py::class_<BandBuffer>(m, "BandBuffer", py::buffer_protocol()).def_buffer([](BandBuffer& band) {
+    return py::buffer_info(band.bytes.data(), 1, py::format_descriptor<std::uint8_t>::format(),
+                           static_cast<py::ssize_t>(band.bytes.size()), true);
+  });
   m.def("sketch_band", &sketch_one_band, py::arg("input"), py::arg("options"), py::arg("filter"),
         py::arg("z_ref"), py::arg("first"), py::arg("count"), py::arg("halo"), py::arg("order"));
   m.def("band_summary", &band_summary, py::arg("band"));
