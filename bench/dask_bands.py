@@ -6,9 +6,9 @@ costs: its sketch, its bytes, its edges, and the client's stitching.
         [BAND_PROFILES|default ...]
 
 Prints for each band width: the Dask run's wall time (cluster started beforehand, as a user
-keeps one) and the CLI's, each Dask run in turn with a CLI run, the median of the pairs' ratios, the bands sketched again, and per band
-the median sketch time on a worker, bytes, pieces crossing its edges and the stitching time on
-the client. Figures, not a test.
+keeps one) and the CLI's, each Dask run in turn with a CLI run, the median of the pairs' ratios,
+the bands sketched again, and per band the median sketch time on a worker, bytes, pieces
+crossing its edges and the stitching time on the client. Figures, not a test.
 """
 import os
 import statistics

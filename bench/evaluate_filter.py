@@ -187,7 +187,8 @@ def turning(tool, work):
                 worst = max([worst] + [abs(sa[k] - sb[k]) for k in keys if k in sa])
             row.append(f"{filt} {worst:5.2f}")
         print(f"  {os.path.basename(dem):32s} " + "   ".join(row))
-    print("  and a tenth of a degree off (89.9 against 90), where the resampling moves every height:")
+    print("  and a tenth of a degree off (89.9 against 90), where the resampling moves every "
+          "height:")
     for dem in dems[-2:]:
         row = []
         for filt in ("fixed", "adaptive"):
@@ -208,7 +209,8 @@ def speed(tool, dem):
             tool.run("silhouettes", dem, filt)
             times[filt].append(time.perf_counter() - start)
     fixed, adaptive = (statistics.median(times[f]) for f in ("fixed", "adaptive"))
-    print(f"  fixed {fixed:.2f} s, adaptive {adaptive:.2f} s: {100 * (adaptive / fixed - 1):+.1f} %")
+    print(f"  fixed {fixed:.2f} s, adaptive {adaptive:.2f} s: "
+          f"{100 * (adaptive / fixed - 1):+.1f} %")
 
 
 def main():

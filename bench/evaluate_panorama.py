@@ -100,7 +100,8 @@ def agreement(cli, work):
             line = (f"  {name:26s} eye {height:4.1f} m: gdal_viewshed mean {np.mean(with_gdal):.2%}"
                     f" (min {min(with_gdal):.2%})")
             if with_exact:
-                line += f", exact line of sight mean {np.mean(with_exact):.2%} (min {min(with_exact):.2%})"
+                line += (f", exact line of sight mean {np.mean(with_exact):.2%} "
+                         f"(min {min(with_exact):.2%})")
             print(line)
 
 

@@ -8,7 +8,8 @@ class Strokes:
     and ``m``, the weight of each point of a drawn stroke, written as M in vector files; None for
     exact strokes). ``columns`` holds the attributes, one array per field, named and ordered as
     the vector outputs' fields (``class``, ``cells``, ``length``, ...; NaN for null).
-    ``statistics`` is the run's stage statistics as a dict, ``crs`` the DEM's CRS as WKT ("" for none)."""
+    ``statistics`` is the run's stage statistics as a dict, ``crs`` the DEM's CRS as WKT ("" for
+    none)."""
 
     def __init__(self, native):
         self.x = native["x"]
@@ -50,5 +51,6 @@ class Strokes:
         lines = [LineString(points[self.offsets[k]:self.offsets[k + 1]]) for k in range(len(self))]
         data = dict(self.columns)
         if self.m is not None:
-            data["weights"] = [self.m[self.offsets[k]:self.offsets[k + 1]] for k in range(len(self))]
+            data["weights"] = [self.m[self.offsets[k]:self.offsets[k + 1]]
+                               for k in range(len(self))]
         return geopandas.GeoDataFrame(data, geometry=lines, crs=self.crs or None)
