@@ -125,8 +125,9 @@ class KeepFreedMemory:
     def setup(self, worker=None):
         import ctypes
 
-        mallopt = getattr(ctypes.CDLL(None), "mallopt", None)
-        if mallopt is None:
+        try:
+            mallopt = ctypes.CDLL(None).mallopt
+        except (AttributeError, OSError, TypeError):  # not glibc, or no C library to open
             return
         m_trim_threshold, m_mmap_threshold = -1, -3  # glibc's <malloc.h>
         mallopt(m_mmap_threshold, self.MMAP_THRESHOLD)
