@@ -134,6 +134,12 @@ class KeepFreedMemory:
         mallopt(m_trim_threshold, self.TRIM_THRESHOLD)
 
 
+def dask_setup(worker):
+    """Dask's preload hook: ``dask worker ... --preload terrain_sketch.dask`` starts workers that
+    keep freed memory for the next band, as local_cluster()'s do (KeepFreedMemory)."""
+    KeepFreedMemory().setup(worker)
+
+
 def local_cluster(workers=None):
     """local_cluster(workers=None)
 

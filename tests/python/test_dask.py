@@ -231,6 +231,10 @@ def test_the_local_cluster_keeps_freed_memory_for_the_next_band(client):
     assert len(probes) == 2
     for inside, spanned in probes:
         assert inside == 64 and spanned >= 64
+    # A real cluster's workers, started with `--preload terrain_sketch.dask`, do the same.
+    with cluster(preload=["terrain_sketch.dask"]) as preloaded, \
+            distributed.Client(preloaded) as c:
+        assert [inside for inside, _ in c.run(heap_probe).values()] == [64, 64]
     # The control: Dask's own workers, started with MALLOC_TRIM_THRESHOLD_=65536, map each block
     # apart and hand it back.
     if set(client.run(os.environ.get, "MALLOC_TRIM_THRESHOLD_").values()) == {"65536"}:
