@@ -5,12 +5,16 @@
 #include <ogrsf_frmts.h>
 #include <spawn.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
+#include <sys/vfs.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -24,6 +28,7 @@
 #include "gdal_test_support.h"
 #include "io/read/gdal_util.h"
 #include "io/write/destination_lock.h"
+#include "io/write/early_writeback.h"
 #include "io/write/path_clashes.h"
 #include "io/write/raster_writer.h"
 
@@ -201,6 +206,51 @@ TEST_CASE("the outputs of a run killed before its commit are all the earlier run
   CHECK(slurp(stats) != stats_before);
   for (const auto& entry : std::filesystem::directory_iterator(dir.path))
     CHECK(entry.path().filename().string().find(".partial-") == std::string::npos);
+}
+
+// The pages of the file open as `fd` that are dirty (written, not yet handed to writeback), from
+// Linux's cachestat (6.5 on; its number is the same on every architecture); -1 where the kernel
+// has no cachestat.
+long long dirty_pages(int fd) {
+  struct {
+    std::uint64_t off, len;
+  } range{0, 0};
+  struct {
+    std::uint64_t cache, dirty, writeback, evicted, recently_evicted;
+  } stat{};
+  constexpr long kCachestat = 451;
+  if (syscall(kCachestat, fd, &range, &stat, 0) != 0) return -1;
+  return static_cast<long long>(stat.dirty);
+}
+
+TEST_CASE("a file still being written has its dirty pages handed to writeback early", "[io]") {
+  ScratchDir dir("writeback");
+  const std::string path = dir / "strokes.gpkg";
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+  REQUIRE(fd >= 0);
+  const std::string block(1 << 20, 'x');
+  for (int k = 0; k < 16; ++k) REQUIRE(::write(fd, block.data(), block.size()) == 1 << 20);
+  struct statfs where {};
+  REQUIRE(fstatfs(fd, &where) == 0);
+  constexpr long kTmpfs = 0x01021994;  // tmpfs keeps pages in memory: nothing to write back
+  const long long dirty_before = dirty_pages(fd);
+  if (dirty_before < 0 || where.f_type == kTmpfs) {
+    WARN("no cachestat or a tmpfs here: only the refusal below is checked");
+  } else {
+    // The kernel writes a file back 30 s after it was dirtied, or when a tenth of memory is dirty.
+    REQUIRE(dirty_before > 0);
+    io::EarlyWriteback writeback(path);
+    REQUIRE(writeback.start());
+    // Started, the writeback ends within seconds; untouched, the pages would stay dirty.
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (dirty_pages(fd) > 0 && std::chrono::steady_clock::now() < until)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    CHECK(dirty_pages(fd) == 0);
+  }
+  ::close(fd);
+  // A file it cannot open is left to the kernel, without an error.
+  io::EarlyWriteback missing(dir / "no such file");
+  CHECK_FALSE(missing.start());
 }
 
 TEST_CASE("an output replaces every file of the earlier one, side files included", "[io]") {

@@ -35,6 +35,8 @@ void append(std::vector<unsigned char>& out, T value) {
 
 // Rows inserted by one statement (gpkg::insert_rows_sql), fewer when a row binds many values.
 constexpr std::size_t kRowsPerInsert = 64;
+// Rows between two writebacks started early (early_writeback.h): about 7 MB of drawn strokes.
+constexpr std::size_t kRowsPerWriteback = 16384;
 
 // The connection and the statement that inserts a full batch of rows (prepared on the connection,
 // so declared after it).
@@ -52,7 +54,7 @@ class GpkgLineAppender::Rows {
 };
 
 GpkgLineAppender::GpkgLineAppender(GDALDataset& dataset, const std::string& table)
-    : dataset_(dataset), table_(table) {
+    : dataset_(dataset), table_(table), writeback_(dataset.GetDescription()) {
   OGRLayer* layer = dataset.GetLayerByName(table.c_str());
   if (!layer) throw Error("no layer '" + table + "' to write to");
   // GDAL creates the table when it syncs the layer.
@@ -211,7 +213,12 @@ void GpkgLineAppender::insert_waiting() {
     }
   }
   insert.step();
+  rows_unflushed_ += waiting_count_;
   waiting_count_ = 0;
+  if (rows_unflushed_ >= kRowsPerWriteback) {
+    writeback_.start();
+    rows_unflushed_ = 0;
+  }
   // SQLite numbers the rows, so that each goes to the table's end without a search for its id (15 %
   // of writing); the index's boxes were given the ids it gives.
   if (rows_->db.last_row_id() != next_id_ - 1)

@@ -18,6 +18,7 @@
 
 #include "core/method/strokes.h"
 #include "io/gpkg/gpkg_spatial_index.h"
+#include "io/write/early_writeback.h"
 
 class GDALDataset;
 
@@ -68,6 +69,8 @@ class GpkgLineAppender {
   std::vector<unsigned char> header_;  // the start of every geometry blob
   std::vector<Row> waiting_;           // their storage reused batch after batch
   std::size_t waiting_count_ = 0;
+  EarlyWriteback writeback_;        // of the file the dataset writes
+  std::size_t rows_unflushed_ = 0;  // rows inserted since the last writeback was started
   std::size_t fields_ = 0;
   std::int64_t next_id_ = 1;
   // In a deque: a vector doubling its 29 MB of boxes near the end of a run held 75 MB at once.
