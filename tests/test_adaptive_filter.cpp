@@ -72,6 +72,34 @@ TEST_CASE("the survey's median slope is the brute-force median within a bin", "[
   CHECK(survey.cells == 119u * 139u);
 }
 
+TEST_CASE("survey windows lie in their parts of the DEM and on block edges where they fit",
+          "[adaptive]") {
+  for (const auto& [rows, cols] : {std::pair<std::size_t, std::size_t>{8000, 8000},
+                                   {1700, 1400},
+                                   {2100, 30000},
+                                   {40000, 1201}}) {
+    CAPTURE(rows, cols);
+    const std::vector<DemWindow> windows = survey_windows(rows, cols);
+    REQUIRE(windows.size() == 64);
+    std::size_t on_block_edges = 0;
+    for (std::size_t k = 0; k < windows.size(); ++k) {
+      const DemWindow& w = windows[k];
+      const std::size_t a = k / 8, b = k % 8;
+      // Inside its eighth of the rows and of the columns (a part narrower than a window: centred
+      // on it, a cell beyond it either side), and inside the DEM.
+      CHECK(w.row0 + 1 >= a * rows / 8);
+      CHECK(w.row0 + w.rows <= std::min(rows, (a + 1) * rows / 8 + 1));
+      CHECK(w.col0 + 1 >= b * cols / 8);
+      CHECK(w.col0 + w.cols <= std::min(cols, (b + 1) * cols / 8 + 1));
+      // Within one block of 512 (so of 256) each way wherever a part is long enough for it.
+      const bool fits = w.row0 / 512 == (w.row0 + w.rows - 1) / 512 &&
+                        w.col0 / 512 == (w.col0 + w.cols - 1) / 512;
+      on_block_edges += fits && w.row0 % 512 == 0 && w.col0 % 512 == 0;
+    }
+    if (rows >= 8000 && cols >= 8000) CHECK(on_block_edges == 64);
+  }
+}
+
 TEST_CASE("a survey made in parts, through bytes and in any order, is the survey", "[adaptive]") {
   // 64 windows on a DEM over two million cells; float heights, then whole metres.
   HeightGrid z = rolling(1700, 1400);

@@ -63,7 +63,8 @@ inline float cell_slope_pct(const float* z, std::size_t cols, std::size_t c, dou
 HeightStep height_step(const float* heights, std::size_t count);
 
 // The windows a survey reads: the whole DEM when it has at most about two million cells, else 64
-// windows spread evenly over it. Each is a cell wider and taller than the cells it measures.
+// windows spread evenly over it, on multiples of 512 cells where they fit (a tiled DEM's blocks).
+// Each is a cell wider and taller than the cells it measures.
 std::vector<DemWindow> survey_windows(std::size_t rows, std::size_t cols);
 
 // Surveys a DEM of rows x cols cells of dx x dy ground units read through `read` (its
