@@ -43,9 +43,11 @@ void DrawingPipeline::group(std::vector<Step>& steps) {
   for (std::size_t k = 0; k < steps.size(); ++k) {
     if (abandoned_) return;
     Step& step = steps[k];
-    // The pieces were made on the linking thread: the next one is fetched while this one is
-    // grouped.
-    if (k + 1 < steps.size() && !steps[k + 1].settle) prefetch_piece_ends(steps[k + 1].piece);
+    // The pieces were made on the linking thread: the one after next is fetched while this one
+    // is grouped, and what the next one will look up in the groups' index.
+    if (k + 2 < steps.size() && !steps[k + 2].settle) prefetch_piece_ends(steps[k + 2].piece);
+    if (k + 1 < steps.size() && !steps[k + 1].settle)
+      drawer(steps[k + 1].cls).prefetch(steps[k + 1].piece);
     if (step.settle) {
       settled->emplace_back(step.cls, drawer(step.cls).take_settled(step.frontier));
     } else {

@@ -97,6 +97,10 @@ double StrokeDrawer::longest_step() const {
   return tsk::longest_step(setup_);
 }
 
+void StrokeDrawer::prefetch(const Stroke& piece) const {
+  if (piece.cells >= kLeastDrawnCells && rule_.gap > 0.0) groups_.prefetch(piece);
+}
+
 void StrokeDrawer::add(Stroke&& piece) {
   if (piece.cells < kLeastDrawnCells) return;
   if (rule_.gap > 0.0) groups_.add(piece);

@@ -86,6 +86,8 @@ class StrokeDrawer {
   double longest_step() const;
   // A piece of a complete chain's stroke (StrokeBuilder::drawn_pieces with longest_step()).
   void add(Stroke&& piece);
+  // Asks the processor for what add(piece) will look up (StrokeGrouper::prefetch).
+  void prefetch(const Stroke& piece) const;
   // Takes the groups whose every end lies more than the join gap before profile `frontier`, the
   // first profile a piece still to come may reach, up to the first group that does not; after the
   // last profile, with an infinite frontier, every group left.

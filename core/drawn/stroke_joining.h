@@ -56,6 +56,10 @@ class StrokeGrouper {
   // Adds a stroke (its chain in profile order) to the groups of the strokes not yet taken that
   // it may join. Returns its id: ids count up from 0 in the order strokes are added.
   std::size_t add(const Stroke& stroke);
+  // Asks the processor for what add(stroke) will look up first, for a caller to do so for the
+  // next stroke while it adds this one (the stroke's ends must be in the cache already:
+  // prefetch_piece_ends, a step earlier).
+  void prefetch(const Stroke& stroke) const;
   // A stroke's group, named by its first stroke.
   std::size_t group_of(std::size_t id);
   // The last profile any stroke of group `root` reaches.
