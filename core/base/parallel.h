@@ -105,6 +105,7 @@ class HandOff {
     if (batch_.empty()) return;
     auto taken = std::make_shared<std::vector<Item>>(std::move(batch_));
     batch_.clear();
+    batch_.reserve(taken->size());  // batches run alike: one allocation, not a doubling series
     batches_.run([this, taken] {
       for (Item& item : *taken) {
         if (abandoned_) return;

@@ -1,5 +1,6 @@
 #include "core/drawn/drawing_pipeline.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace tsk {
@@ -34,7 +35,9 @@ void DrawingPipeline::flush() {
   if (steps_.empty()) return;
   auto taken = std::make_shared<std::vector<Step>>(std::move(steps_));
   steps_.clear();
-  steps_.reserve(taken->size());
+  // A batch of steps runs to kStepsPerBatch and a profile's worth beyond, or stops short at the
+  // end of a batch of profiles: room for a full one, not a doubling series of moves.
+  steps_.reserve(std::max(taken->size(), kStepsPerBatch + kStepsPerBatch / 8));
   grouping_.run([this, taken] { group(*taken); });
 }
 

@@ -118,6 +118,8 @@ void ProfileChainCells::collect(const StrokeContext& context, const std::uint8_t
   profile_candidates(f, cells.end, false, formulated, cells.begin);
   factual_cells.clear();
   formulated_cells.clear();
+  factual_cells.reserve(factual.cell.size());  // one allocation, sized to fit
+  formulated_cells.reserve(formulated.cell.size());
   for (std::int32_t i : factual.cell)
     factual_cells.push_back(stroke_cell(context, p, static_cast<std::size_t>(i), true));
   for (std::int32_t i : formulated.cell)
