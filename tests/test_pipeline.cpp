@@ -289,9 +289,10 @@ TEST_CASE("run_in_strips reads every strip with its neighbours and equals the wh
                       for (std::size_t r = 0; r < count; ++r)
                         std::copy(z.row(first + r), z.row(first + r) + z.cols(), s.row(r));
                     });
-  // Profiles 0-15 with 16; 15-31 with 15 and 32; 31-47 with 31 and 48; 47-49 with 47.
-  CHECK(reads ==
-        std::vector<std::pair<std::size_t, std::size_t>>{{0, 17}, {15, 18}, {31, 18}, {47, 3}});
+  // Strips of 2, 4, 8, then 16 profiles: 0-1 with 2; 2-5 with 1 and 6; 6-13 with 5 and 14; 14-29
+  // with 13 and 30; 30-45 with 29 and 46; 46-49 with 45.
+  CHECK(reads == std::vector<std::pair<std::size_t, std::size_t>>{
+                     {0, 3}, {1, 6}, {5, 10}, {13, 18}, {29, 18}, {45, 5}});
   REQUIRE(strips.strokes.size() == whole.strokes.size());
   CHECK(strips.stats.generalised == whole.stats.generalised);
   CHECK_THROWS_AS(run_in_strips(frame, GeoTransform{}, {}, 0, 0, {}), Error);

@@ -2,6 +2,7 @@
 // grid held whole, and strips delivered by a reader.
 #include "core/method/silhouettes.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "core/base/stage_timing.h"
@@ -22,23 +23,30 @@ std::vector<StageFigure> stage_figures(const StageStats& s) {
 void stream_strips(SilhouetteStream& stream, const OrientedFrame& frame, std::size_t to,
                    std::size_t strip, const ProfileReader& read, unsigned threads) {
   check_strip_fits(frame, strip);
-  // The strip starting at `first` with its neighbours.
-  auto read_strip = [&](std::size_t first, HeightGrid& heights) {
+  // The strip of `count` profiles from `first`, with its neighbours.
+  auto read_strip = [&](std::size_t first, std::size_t count, HeightGrid& heights) {
     const std::size_t lo = first > 0 ? first - 1 : 0;
-    const std::size_t hi = std::min(frame.profiles, std::min(first + strip, to) + 1);
+    const std::size_t hi = std::min(frame.profiles, std::min(first + count, to) + 1);
     read(lo, hi - lo, heights);
   };
+  // The first strip is an eighth of a strip, each next one twice the one before, up to a strip:
+  // the stages start once an eighth is read, not a whole strip (on the 8000 x 8000 benchmark a
+  // core stood idle for the 0.09 s the first strip took to read). Strips change no result.
+  const auto after = [strip](std::size_t count) { return std::min(strip, 2 * count); };
   // The next strip is read while this one is processed, into memory of its own, by a reader of
   // its own.
   HeightGrid current, next;
   Worker reader(threads > 1);
   const std::size_t from = stream.next_profile();
-  reader.run([&] { read_strip(from, current); }).get();
-  for (std::size_t first = from; first < to; first += strip) {
+  std::size_t count = std::max<std::size_t>(1, strip / 8);
+  reader.run([&] { read_strip(from, count, current); }).get();
+  for (std::size_t first = from; first < to; first += count, count = after(count)) {
     std::future<void> reading;
-    if (first + strip < to) reading = reader.run([&, first] { read_strip(first + strip, next); });
+    if (first + count < to) {
+      reading = reader.run([&, first, count] { read_strip(first + count, after(count), next); });
+    }
     // If processing throws, the reader finishes the read before it goes.
-    stream.add_strip(current, first, std::min(strip, to - first));
+    stream.add_strip(current, first, std::min(count, to - first));
     if (reading.valid()) reading.get();
     std::swap(current, next);
   }
