@@ -2,7 +2,9 @@
 // the index give what a brute-force box test gives, and the index follows later edits.
 #include <ogrsf_frmts.h>
 
+#include <algorithm>
 #include <limits>
+#include <map>
 #include <memory>
 #include <random>
 #include <set>
@@ -72,6 +74,68 @@ TEST_CASE("pack_rtree grows a level each time the nodes fill", "[gpkg]") {
   CHECK(deep.nodes.front().number == 1);
   CHECK(deep.leaf_of.size() == 51 * 51 + 1);
   CHECK_THROWS_AS(io::pack_rtree(boxes(3), 40), Error);
+}
+
+TEST_CASE("pack_rtree's leaves hold the boxes as Sort-Tile-Recursive places them", "[gpkg]") {
+  // Boxes on a coarse lattice, so that many share a centre (ties go by id), some across zero
+  // (-0 and +0 centres), handed over in id order and shuffled.
+  const std::size_t per_node = 51, node_bytes = 4 + per_node * 24;
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> at(-40, 40), size(0, 3);
+  std::vector<io::IndexBox> boxes;
+  for (std::int64_t id = 1; id <= 6000; ++id) {
+    const double x = at(rng), y = at(rng), w = size(rng);
+    // Every third box centred on x = 0.
+    if (id % 3 == 0) {
+      boxes.emplace_back(id, -w, w, y, y + size(rng));
+    } else {
+      boxes.emplace_back(id, x - w, x + size(rng), y - size(rng), y + w);
+    }
+  }
+  boxes.emplace_back(6001, -0.0, -0.0, -0.0, -0.0);
+  boxes.emplace_back(6002, 0.0, 0.0, 0.0, 0.0);
+  // The reference: sorted by centre x then id, cut into slices of S nodes' boxes (S the square
+  // root of the node count, rounded up), each sorted by centre y then id and cut into nodes.
+  const auto centre = [](float lo, float hi) { return 0.5 * (double{lo} + double{hi}); };
+  std::vector<io::IndexBox> order = boxes;
+  std::sort(order.begin(), order.end(), [&](const io::IndexBox& a, const io::IndexBox& b) {
+    const double ca = centre(a.min_x, a.max_x), cb = centre(b.min_x, b.max_x);
+    return ca != cb ? ca < cb : a.id < b.id;
+  });
+  const std::size_t nodes = (order.size() + per_node - 1) / per_node;
+  std::size_t slices = 1;
+  while (slices * slices < nodes) ++slices;
+  std::vector<std::vector<std::int64_t>> leaves;
+  for (std::size_t from = 0; from < order.size(); from += slices * per_node) {
+    const auto end = order.begin() +
+                     static_cast<std::ptrdiff_t>(std::min(order.size(), from + slices * per_node));
+    std::sort(order.begin() + static_cast<std::ptrdiff_t>(from), end,
+              [&](const io::IndexBox& a, const io::IndexBox& b) {
+                const double ca = centre(a.min_y, a.max_y), cb = centre(b.min_y, b.max_y);
+                return ca != cb ? ca < cb : a.id < b.id;
+              });
+    for (auto k = order.begin() + static_cast<std::ptrdiff_t>(from); k < end;) {
+      leaves.emplace_back();
+      for (std::size_t n = 0; n < per_node && k < end; ++n, ++k) leaves.back().push_back(k->id);
+    }
+  }
+  for (const bool shuffled : {false, true}) {
+    CAPTURE(shuffled);
+    std::vector<io::IndexBox> given = boxes;
+    if (shuffled) std::shuffle(given.begin(), given.end(), rng);
+    const io::PackedRtree packed = io::pack_rtree(given, node_bytes);
+    // Each leaf's boxes, by the leaf's number, in the order the leaves were numbered.
+    std::map<std::int64_t, std::vector<std::int64_t>> by_leaf;
+    for (const auto& [id, leaf] : packed.leaf_of) by_leaf[leaf].push_back(id);
+    std::vector<std::vector<std::int64_t>> got;
+    for (auto& [leaf, ids] : by_leaf) got.push_back(ids);
+    std::vector<std::vector<std::int64_t>> want = leaves;
+    for (auto* v : {&got, &want}) {
+      for (auto& ids : *v) std::sort(ids.begin(), ids.end());
+      std::sort(v->begin(), v->end());
+    }
+    CHECK(got == want);
+  }
 }
 
 TEST_CASE("GeoPackage spatial index is whole and answers like a brute-force search", "[gpkg]") {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <functional>
 #include <limits>
@@ -89,6 +90,47 @@ void sort_in_halves(Iterator first, Iterator last, Less less) {
   std::inplace_merge(first, middle, last, less);
 }
 
+// A double's bits as an unsigned number in the double's order (-0 taken as +0).
+std::uint64_t ordered_bits(double v) {
+  v += 0.0;
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &v, sizeof bits);
+  return bits >> 63 ? ~bits : bits | (std::uint64_t{1} << 63);
+}
+
+// Sorts `cells` by (key(cell), id), keys finite: a radix sort of the keys' bits, 11 at a time,
+// which keeps cells of equal keys in the order they came, that of their ids (as a writer hands
+// them on, and as the levels above number their nodes; sorted first where they do not). On the
+// 8000 x 8000 benchmark's 830 000 boxes std::sort on two threads took 0.1 s of the serial end of
+// a run.
+template <typename Key>
+void sort_by_key(std::vector<Cell>& cells, Key key) {
+  const auto by_id = [](const Cell& a, const Cell& b) { return a.id < b.id; };
+  if (!std::is_sorted(cells.begin(), cells.end(), by_id))
+    std::sort(cells.begin(), cells.end(), by_id);
+  struct Keyed {
+    std::uint64_t bits;
+    std::size_t at;
+  };
+  std::vector<Keyed> keyed(cells.size()), moved(cells.size());
+  for (std::size_t k = 0; k < cells.size(); ++k) keyed[k] = {ordered_bits(key(cells[k])), k};
+  constexpr int kDigitBits = 11;
+  constexpr std::size_t kDigits = std::size_t{1} << kDigitBits;
+  std::vector<std::size_t> start(kDigits + 1);
+  for (int shift = 0; shift < 64; shift += kDigitBits) {
+    std::fill(start.begin(), start.end(), 0);
+    for (const Keyed& k : keyed) ++start[((k.bits >> shift) & (kDigits - 1)) + 1];
+    // A digit every key shares orders nothing.
+    if (std::find(start.begin(), start.end(), cells.size()) != start.end()) continue;
+    for (std::size_t d = 1; d <= kDigits; ++d) start[d] += start[d - 1];
+    for (const Keyed& k : keyed) moved[start[(k.bits >> shift) & (kDigits - 1)]++] = k;
+    keyed.swap(moved);
+  }
+  std::vector<Cell> sorted(cells.size());
+  for (std::size_t k = 0; k < keyed.size(); ++k) sorted[k] = cells[keyed[k].at];
+  cells.swap(sorted);
+}
+
 // Sort-Tile-Recursive: vertical slices by centre x, each cut into nodes by centre y, so that a
 // node holds boxes that lie close together.
 std::vector<Node> tile(std::vector<Cell> cells, std::size_t per_node) {
@@ -96,9 +138,7 @@ std::vector<Node> tile(std::vector<Cell> cells, std::size_t per_node) {
   auto slices = static_cast<std::size_t>(std::sqrt(static_cast<double>(node_count)));
   while (slices * slices < node_count) ++slices;
   const std::size_t slice_cells = std::max<std::size_t>(1, slices) * per_node;
-  sort_in_halves(cells.begin(), cells.end(), [](const Cell& a, const Cell& b) {
-    return centre_x(a) != centre_x(b) ? centre_x(a) < centre_x(b) : a.id < b.id;
-  });
+  sort_by_key(cells, centre_x);
   const auto at = [&cells](std::size_t i) {
     return cells.begin() + static_cast<std::ptrdiff_t>(std::min(i, cells.size()));
   };
