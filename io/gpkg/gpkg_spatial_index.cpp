@@ -7,10 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <functional>
 #include <limits>
 #include <memory>
-#include <thread>
 
 #include "core/base/errors.h"
 #include "core/base/parallel.h"
@@ -73,21 +71,26 @@ Cell cover(const Node& node, std::int64_t index) {
   return c;
 }
 
-// Sorts [first, last) by `less`, its two halves at once on two threads, then merged: the index is
-// built after the last stroke, when nothing else runs. `less` is a total order, so the result is
-// std::sort's.
-template <typename Iterator, typename Less>
-void sort_in_halves(Iterator first, Iterator last, Less less) {
-  constexpr std::ptrdiff_t kWorthAThread = 1 << 14;
-  if (last - first < kWorthAThread || resolve_threads(0) < 2) {
-    std::sort(first, last, less);
+// Sorts (id, value) pairs of unique ids by id. The ids a writer hands on run without a gap
+// (1, 2, ... n), and each pair then has its place without a sort (on the 8000 x 8000 benchmark,
+// sorting 830 000 pairs on two threads took 0.03 s of the serial end of a run).
+void sort_by_id(std::vector<std::pair<std::int64_t, std::int64_t>>& pairs) {
+  if (pairs.empty()) return;
+  const auto [lowest, highest] = std::minmax_element(pairs.begin(), pairs.end());
+  const std::int64_t first = lowest->first;
+  if (static_cast<std::uint64_t>(highest->first - first) + 1 != pairs.size()) {
+    std::sort(pairs.begin(), pairs.end());
     return;
   }
-  const Iterator middle = first + (last - first) / 2;
-  std::thread other([&] { std::sort(first, middle, less); });
-  std::sort(middle, last, less);
-  other.join();
-  std::inplace_merge(first, middle, last, less);
+  std::vector<std::pair<std::int64_t, std::int64_t>> placed(pairs.size(), {first - 1, 0});
+  for (const auto& pair : pairs) placed[static_cast<std::size_t>(pair.first - first)] = pair;
+  for (std::size_t k = 0; k < placed.size(); ++k) {
+    if (placed[k].first != first + static_cast<std::int64_t>(k)) {  // an id given twice
+      std::sort(pairs.begin(), pairs.end());
+      return;
+    }
+  }
+  pairs.swap(placed);
 }
 
 // A double's bits as an unsigned number in the double's order (-0 taken as +0).
@@ -369,7 +372,7 @@ void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
       parents);
   // In the order of the ids, so that each row lands at the end of the table's B-tree.
   std::vector<std::pair<std::int64_t, std::int64_t>> leaf_of = std::move(packed.leaf_of);
-  sort_in_halves(leaf_of.begin(), leaf_of.end(), std::less<>());
+  sort_by_id(leaf_of);
   insert_leaves(db, quoted_identifier(rtree + "_rowid"), leaf_of);
 
   for (const std::string& trigger : rtree_triggers(table, column, fid, rtree)) db.run(trigger);
