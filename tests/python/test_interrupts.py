@@ -53,19 +53,25 @@ def test_ctrl_c_stops_a_sketch_of_an_array():
 
 def test_progress_saying_stop_raises_cancelled(tmp_path):
     path = earlier_output(tmp_path)
-    seen = []
+    seen = {}  # each run's fractions
 
-    def stop_at_a_third(fraction):
-        seen.append(fraction)
-        return fraction < 0.3
+    def stop_at_a_third(run):
+        def progress(fraction):
+            seen.setdefault(run, []).append(fraction)
+            return fraction < 0.3
+        return progress
 
     with pytest.raises(terrain_sketch.Cancelled):
-        terrain_sketch.classify(SAMPLE, tmp_path / "c.tif", progress=stop_at_a_third)
+        terrain_sketch.classify(SAMPLE, tmp_path / "c.tif", progress=stop_at_a_third("classify"))
     with pytest.raises(terrain_sketch.Cancelled):
-        terrain_sketch.silhouettes(SAMPLE, path, progress=stop_at_a_third)
+        terrain_sketch.silhouettes(SAMPLE, path, progress=stop_at_a_third("silhouettes"))
     assert path.read_text() == "the earlier run's"
     assert sorted(os.listdir(tmp_path)) == ["strokes.geojson"]
-    assert seen == sorted(seen) and all(0 <= f <= 1 for f in seen)
+    assert sorted(seen) == ["classify", "silhouettes"]
+    for fractions in seen.values():
+        assert fractions == sorted(fractions) and all(0 <= f <= 1 for f in fractions)
+        # It stopped at the first fraction of a third or more.
+        assert fractions[-1] >= 0.3 and all(f < 0.3 for f in fractions[:-1])
 
 
 def test_progress_raising_stops_the_run_with_its_exception(tmp_path):
