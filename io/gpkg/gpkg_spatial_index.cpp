@@ -155,16 +155,13 @@ std::vector<Node> tile(std::vector<Cell> cells, std::size_t per_node) {
   auto slices = static_cast<std::size_t>(std::sqrt(static_cast<double>(node_count)));
   while (slices * slices < node_count) ++slices;
   const std::size_t slice_cells = std::max<std::size_t>(1, slices) * per_node;
-  sort_by_key(cells.data(), cells.data() + cells.size(), centre_x);
-  const auto at = [&cells](std::size_t i) {
-    return cells.begin() + static_cast<std::ptrdiff_t>(std::min(i, cells.size()));
-  };
+  // The cell at index i, or the end.
+  const auto at = [&cells](std::size_t i) { return cells.data() + std::min(i, cells.size()); };
+  sort_by_key(at(0), at(cells.size()), centre_x);
   parallel_for((cells.size() + slice_cells - 1) / slice_cells, 0,
                [&](std::size_t lo, std::size_t hi) {
                  for (std::size_t slice = lo; slice < hi; ++slice) {
-                   Cell* cell = cells.data();
-                   sort_by_key(cell + (at(slice * slice_cells) - cells.begin()),
-                               cell + (at((slice + 1) * slice_cells) - cells.begin()), centre_y);
+                   sort_by_key(at(slice * slice_cells), at((slice + 1) * slice_cells), centre_y);
                  }
                });
   std::vector<Node> nodes;
