@@ -37,6 +37,9 @@ GERMAN = {
     "the slope filter adapted to the DEM": "der an das DGM angepasste Neigungsfilter",
     "drawn strokes": "gezeichnete Striche",
     "drawn strokes for 1:%L1": "gezeichnete Striche für 1:%L1",
+    " from the DEM averaged %L1 x %L1 cells": " aus dem DGM, gemittelt über %L1 x %L1 Zellen",
+    "Drawn for 1:%L1, the DEM was averaged %L2 x %L2 cells first (to %L3 m a cell, about 0.4 mm on paper): the scale shows nothing finer.":
+        "Gezeichnet für 1:%L1: das DGM wurde zuerst über %L2 x %L2 Zellen gemittelt (auf %L3 m je Zelle, etwa 0,4 mm auf dem Papier); feiner zeigt der Maßstab nichts.",
     "Drawn for scale": "Gezeichnet für Maßstab",
     "Drawn strokes: the scale of the map they are drawn for (1:N). The shortest stroke (2 mm on paper), the smoothing, its tolerance and the join gap become at least what that scale needs, strokes outlining less than N/10 000 metres of relief are left out, and the layers' styles draw their widths true at that scale (the renderer's reference scale). Empty: for no scale; every stroke is still weighed by the relief it outlines.":
         "Gezeichnete Striche: der Maßstab der Karte, für die sie gezeichnet werden (1:N). Der kürzeste Strich (2 mm auf dem Papier), die Glättung, ihre Toleranz und die Verbindungslücke werden mindestens so groß, wie dieser Maßstab es verlangt; Striche, die weniger als N/10 000 Meter Relief umreißen, entfallen, und die Stile der Layer zeichnen ihre Breiten in diesem Maßstab wahr (der Bezugsmaßstab des Renderers). Leer: für keinen Maßstab; jeder Strich wird dennoch nach dem Relief gewichtet, das er umreißt.",

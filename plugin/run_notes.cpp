@@ -31,11 +31,12 @@ QString fromAzimuth(const ViewParams& view) {
 }
 
 QString sketchNote(const QString& dem, const ViewParams& view, const FilterReport& filter,
-                   const DrawnParams& strokes) {
-  const QString drawn =
-      strokes.scale > 0
-          ? tr("drawn strokes for 1:%L1").arg(QLocale().toString(strokes.scale, 'f', 0))
-          : tr("drawn strokes");
+                   const DrawnParams& strokes, std::size_t averaged) {
+  QString drawn = strokes.scale > 0
+                      ? tr("drawn strokes for 1:%L1").arg(QLocale().toString(strokes.scale, 'f', 0))
+                      : tr("drawn strokes");
+  if (averaged > 1)
+    drawn += tr(" from the DEM averaged %L1 x %L1 cells").arg(static_cast<qulonglong>(averaged));
   return tr("%1. Seen from %L2° (azimuth), vertical exaggeration %L3, base slope %L4 %; %5; %6. "
             "Terrain Sketch %7.")
       .arg(dem, number(view.azimuth_deg, 4), number(view.ve, 3), number(view.base_slope_pct, 3),

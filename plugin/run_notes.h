@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QString>
+#include <cstddef>
 
 #include "core/method/adaptive_filter.h"
 #include "core/method/params.h"
@@ -18,10 +19,10 @@ QString filterPhrase(const FilterReport& filter);
 QString fromAzimuth(const ViewParams& view);
 
 // The silhouettes' note: "jacksboro_utm16n, band 1. Seen from 250° (azimuth), vertical
-// exaggeration 2.5, base slope 40 %; <filterPhrase>; drawn strokes [for 1:250 000]. Terrain
-// Sketch 0.1.0."
+// exaggeration 2.5, base slope 40 %; <filterPhrase>; drawn strokes [for 1:250 000] [from the DEM
+// averaged 5 x 5 cells]. Terrain Sketch 0.1.0." (`averaged`: SilhouetteResult::averaged)
 QString sketchNote(const QString& dem, const ViewParams& view, const FilterReport& filter,
-                   const DrawnParams& strokes);
+                   const DrawnParams& strokes, std::size_t averaged = 1);
 
 // A panorama's note: "<dem>. Seen from 749008, 4009478, 2 m above the ground, from 300° to 30°
 // (azimuths from grid north); elevation angles drawn 3 times as tall as azimuths are wide.

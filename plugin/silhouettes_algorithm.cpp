@@ -5,6 +5,7 @@
 #include <qgsprocessingparameters.h>
 #include <qgsrasterlayer.h>
 
+#include <algorithm>
 #include <new>
 
 #include "core/base/errors.h"
@@ -250,7 +251,15 @@ QVariantMap SilhouettesAlgorithm::writeOutputs(const QVariantMap& parameters,
     });
   });
   SharedParameters::logFilter(result.filter, feedback);
-  mNote = sketchNote(demName(), mParams.view, result.filter, mParams.strokes);
+  if (feedback && result.averaged > 1) {
+    const double cell = std::min(dem.grid.dx, dem.grid.dy) * static_cast<double>(result.averaged);
+    feedback->pushInfo(tr("Drawn for 1:%L1, the DEM was averaged %L2 x %L2 cells first (to %L3 m "
+                          "a cell, about 0.4 mm on paper): the scale shows nothing finer.")
+                           .arg(QLocale().toString(mParams.strokes.scale, 'f', 0))
+                           .arg(static_cast<qulonglong>(result.averaged))
+                           .arg(cell, 0, 'g', 4));
+  }
+  mNote = sketchNote(demName(), mParams.view, result.filter, mParams.strokes, result.averaged);
   factual.finish(mNote);
   formulated.finish(mNote);
   mFactualId = factual.destination();

@@ -331,8 +331,10 @@ TEST_CASE("strokes drawn for a scale say so, and keep fewer strokes", "[cli][pre
   REQUIRE(own.size() == 1);
   REQUIRE(small.size() == 1);
   CHECK_THAT(own[0].description, Catch::Contains("; drawn strokes. Terrain Sketch"));
+  // The sample's 75 m cells are 0.075 mm at 1:1 000 000: drawn from it averaged to 375 m.
   CHECK_THAT(small[0].description,
-             Catch::Contains("; drawn strokes for 1:1000000. Terrain Sketch"));
+             Catch::Contains("; drawn strokes for 1:1000000 from the DEM averaged 5 x 5 cells. "
+                             "Terrain Sketch"));
   CHECK(small[0].features > 0);
   CHECK(small[0].features < own[0].features / 4);
   // Not a scale: refused by name.

@@ -15,6 +15,17 @@ double cells_on_paper(double mm, double scale, double cell) {
 
 }  // namespace
 
+std::size_t scale_averaging(double scale, const DemGrid& grid, const GeoTransform& geotransform) {
+  if (!(scale > 0.0) || !std::isfinite(scale)) return 1;
+  const auto& a = geotransform.a;
+  const double cell = std::min(std::hypot(a[1], a[4]), std::hypot(a[2], a[5]));
+  if (!(cell > 0.0) || !std::isfinite(cell)) return 1;
+  const double wanted = std::floor(scale / kOwnScalePerCell / cell);
+  const std::size_t most = std::min(grid.rows, grid.cols) / kLeastAveragedSide;
+  const double factor = std::min(wanted, static_cast<double>(most));
+  return factor >= 2.0 ? static_cast<std::size_t>(factor) : 1;
+}
+
 void fit_to_scale(DrawingSetup& setup) {
   DrawnParams& d = setup.drawn;
   const double cell = std::max(setup.cell, 1e-300);

@@ -4,6 +4,10 @@
 // scale the strokes outlining too little vanish.
 #pragma once
 
+#include <cstddef>
+
+#include "core/base/geotransform.h"
+#include "core/method/frame.h"
 #include "core/method/strokes.h"
 
 namespace tsk {
@@ -30,6 +34,15 @@ constexpr double kFullReliefPerScale = 1000.0;
 constexpr double kVanishingShare = 0.1;
 constexpr double kLeastReliefShare = 1.0 / 30.0;
 constexpr double kLeastReliefWeight = 0.4;
+
+// The shorter side, in cells, that averaging for a scale leaves a DEM at least.
+constexpr std::size_t kLeastAveragedSide = 32;
+
+// The cells a side that a DEM is averaged by (averaged_dem) before it is drawn for 1:scale: as
+// many as make cells of about 0.4 mm on paper (kOwnScalePerCell), when that is 2 or more, so
+// that a DEM finer than the scale needs and the same DEM averaged give one sketch; no more than
+// leaves kLeastAveragedSide cells on the shorter side. 1 without a scale (scale 0).
+std::size_t scale_averaging(double scale, const DemGrid& grid, const GeoTransform& geotransform);
 
 // Sets setup's relief at full weight, and for a given scale its vanishing relief and its smallest
 // stroke, smoothing, tolerance and join gap raised to what the scale needs (never lowered), from

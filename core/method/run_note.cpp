@@ -34,6 +34,8 @@ std::string run_note(const RunFacts& f) {
   put_filter(note, f.filter);
   note << "; " << (f.drawn ? "drawn strokes" : "the thesis's exact strokes");
   if (f.drawn && f.scale > 0.0) note << " for 1:" << std::fixed << std::setprecision(0) << f.scale;
+  if (f.drawn && f.averaged > 1)
+    note << " from the DEM averaged " << f.averaged << " x " << f.averaged << " cells";
   note << ". Terrain Sketch " << f.version << ".";
   return note.str();
 }

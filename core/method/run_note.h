@@ -3,6 +3,7 @@
 // words the same in the user's language.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "core/method/adaptive_filter.h"
@@ -18,11 +19,14 @@ struct RunFacts {
   bool drawn = true;    // drawn strokes, or the thesis's exact ones
   std::string version;  // of Terrain Sketch
   double scale = 0.0;   // drawn strokes: drawn for 1:scale (0: for no scale)
+  // Drawn for a scale far coarser than the DEM: the cells a side it was averaged by first.
+  std::size_t averaged = 1;
 };
 
 // "jacksboro_utm16n.tif, band 1. Seen from 250° (azimuth), vertical exaggeration 2.5, base slope
 // 40 %; the slope filter adapted to the DEM: row 20 %, column 12 %, control point 8.73 %; drawn
-// strokes. Terrain Sketch 0.1.0." ("drawn strokes for 1:250000" with a scale).
+// strokes. Terrain Sketch 0.1.0." ("drawn strokes for 1:250000" with a scale; "drawn strokes for
+// 1:1000000 from the DEM averaged 5 x 5 cells" when averaged for it).
 std::string run_note(const RunFacts& facts);
 
 // The same for another product of the view (`product`: "P-strokes", "Profile lines"), without the

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/base/errors.h"
+#include "core/drawn/drawing_scale.h"
 #include "core/method/visibility.h"
 
 namespace tsk {
@@ -53,6 +54,19 @@ SilhouetteResult sketch_held_dem(const HeldDem& dem, const SilhouetteParams& cho
   const ResolvedParams params = resolve_on(dem, choice);
   return run_silhouettes(dem.oriented, dem.frame, dem.source.geotransform, params, progress,
                          dem.lowest_height, std::move(sink));
+}
+
+SilhouetteResult sketch_held_strokes(const HeldDem& dem, const SilhouetteParams& choice,
+                                     const ProgressFn& progress, StrokeSink sink) {
+  require_view(dem, choice.view);
+  const bool averaged =
+      choice.strokes.drawn() &&
+      scale_averaging(choice.strokes.scale, dem.source.grid, dem.source.geotransform) > 1;
+  if (!averaged) return sketch_held_dem(dem, choice, progress, std::move(sink));
+  DemSource windows = dem.source;
+  windows.read = dem_windows(dem);
+  if (!windows.read) throw Error("the DEM held has no windows to average for the scale drawn for");
+  return sketch_silhouettes(windows, choice, 0, progress, std::move(sink));
 }
 
 PlanObliqueDrape lay_out_drape(const HeldDem& dem, const ViewParams& view, unsigned threads,

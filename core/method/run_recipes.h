@@ -39,6 +39,12 @@ ResolvedParams resolve_on(const HeldDem& dem, const SilhouetteParams& choice);
 SilhouetteResult sketch_held_dem(const HeldDem& dem, const SilhouetteParams& choice,
                                  const ProgressFn& progress = {}, StrokeSink sink = {});
 
+// The strokes of a DEM held whole, as sketch_silhouettes draws them from its windows: drawn for a
+// scale far coarser than the DEM, from the DEM averaged to that scale's cells (result.averaged;
+// the result then holds no cell classes); otherwise as sketch_held_dem.
+SilhouetteResult sketch_held_strokes(const HeldDem& dem, const SilhouetteParams& choice,
+                                     const ProgressFn& progress = {}, StrokeSink sink = {});
+
 // The drape's lattice for a DEM held whole: its visibility for the view, laid out in plan-oblique
 // space about the DEM's lowest height. Throws Error as sketch_held_dem does.
 PlanObliqueDrape lay_out_drape(const HeldDem& dem, const ViewParams& view, unsigned threads,

@@ -6,6 +6,8 @@
 #include <utility>
 
 #include "core/base/stage_timing.h"
+#include "core/drawn/drawing_scale.h"
+#include "core/method/averaged_dem.h"
 #include "core/method/plan_oblique.h"
 
 namespace tsk {
@@ -61,10 +63,10 @@ SilhouetteResult run_in_strips(const OrientedFrame& frame, const GeoTransform& g
   return stream.finish();
 }
 
-SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams& params,
-                                    std::size_t strip, const ProgressFn& progress,
-                                    StrokeSink sink) {
-  params.validate();
+namespace {
+
+SilhouetteResult sketch_source(const DemSource& dem, const SilhouetteParams& params,
+                               std::size_t strip, const ProgressFn& progress, StrokeSink sink) {
   const OrientedFrame frame = make_frame(dem.grid, params.view.azimuth_deg);
   const ResolvedParams run = adapt_filter(params, dem.grid, dem.read);
   // Plan-oblique geometry needs the DEM's lowest height before the first stroke: a pass of its
@@ -85,6 +87,22 @@ SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams
       },
       progress, std::move(sink));
   result.timings.reading = reading;
+  return result;
+}
+
+}  // namespace
+
+SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams& params,
+                                    std::size_t strip, const ProgressFn& progress,
+                                    StrokeSink sink) {
+  params.validate();
+  const std::size_t factor = params.strokes.drawn()
+                                 ? scale_averaging(params.strokes.scale, dem.grid, dem.geotransform)
+                                 : 1;
+  if (factor == 1) return sketch_source(dem, params, strip, progress, std::move(sink));
+  SilhouetteResult result =
+      sketch_source(averaged_dem(dem, factor), params, strip, progress, std::move(sink));
+  result.averaged = factor;
   return result;
 }
 

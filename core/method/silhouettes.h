@@ -30,6 +30,9 @@ struct SilhouetteResult {
   CellFlags flags;      // the per-cell classification, for diagnostics and tests
   FilterReport filter;  // the slope filter used (ResolvedParams::filter)
   double z_ref = 0.0;   // the height plan-oblique geometry kept in place
+  // Drawn for a scale far coarser than the DEM: the cells a side the DEM was averaged by before
+  // the method ran on it (averaged_dem); 1 when it ran on the DEM as it is.
+  std::size_t averaged = 1;
 };
 
 // Takes each stroke as soon as it is complete and every stroke of its class started before it has

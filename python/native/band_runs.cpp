@@ -4,6 +4,7 @@
 #include "cli/dem_note_text.h"
 #include "cli/options.h"
 #include "core/base/byte_stream.h"
+#include "core/drawn/drawing_scale.h"
 #include "core/drawn/drawn_strokes.h"
 #include "core/method/run_note.h"
 #include "io/write/vector_writer.h"
@@ -47,6 +48,17 @@ BandPlan plan_bands(const std::string& input, const std::string& output,
   io::check_vector_output(o.output, o.format);
   const io::DemFile dem(o.input, o.dem);
   cli::print_notes(dem.info().notes, err);
+  const std::size_t averaged =
+      o.params.strokes.drawn()
+          ? scale_averaging(o.params.strokes.scale, dem.info().grid, dem.info().geotransform)
+          : 1;
+  if (averaged > 1)
+    throw cli::UsageError("drawn for 1:" + number_text(o.params.strokes.scale) +
+                          ", the DEM is "
+                          "averaged " +
+                          std::to_string(averaged) + " x " + std::to_string(averaged) +
+                          " cells first, which a run in bands does not do: sketch it on one "
+                          "machine, or draw it for a larger scale");
   const OrientedFrame frame = make_frame(dem.info().grid, o.params.view.azimuth_deg);
   const bool survey = o.params.adaptive.mode == FilterMode::adaptive;
   o.params.validate();

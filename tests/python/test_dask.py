@@ -245,7 +245,9 @@ def test_options_a_run_in_bands_cannot_take(tmp_path, client):
     out = tmp_path / "out.gpkg"
     for options, words in [({"strokes": "exact", "adapt": "local"}, "not locally"),
                            ({"strokes": "exact", "preview": "p.svg"}, "OUTPUT only"),
-                           ({"strokes": "exact", "observer": (1, 2)}, "does not take")]:
+                           ({"strokes": "exact", "observer": (1, 2)}, "does not take"),
+                           # Drawn for a scale that averages the 75 m sample 5 x 5 cells first.
+                           ({"drawn_for": 1000000}, "averaged 5 x 5 cells first")]:
         with pytest.raises(ValueError, match=words):
             terrain_sketch.dask.silhouettes(SAMPLE, out, client, **options)
     with pytest.raises(terrain_sketch.Error, match="no.tif"):

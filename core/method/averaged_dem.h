@@ -1,0 +1,17 @@
+// A DEM averaged block by block: what a sketch drawn for a scale far coarser than the DEM is
+// drawn from, as a cartographer generalises the terrain before drawing it at that scale.
+#pragma once
+
+#include <cstddef>
+
+#include "core/method/silhouettes.h"
+
+namespace tsk {
+
+// `dem` with each block of factor x factor cells averaged to one cell `factor` times as large:
+// the mean of the block's cells with data (the blocks at the east and south edges hold fewer
+// cells), NaN where none has data. Its windows are read from `dem`, a block row at a time, so
+// the averaged DEM is never held whole. `dem` must outlive the result. factor 1 is `dem` itself.
+DemSource averaged_dem(const DemSource& dem, std::size_t factor);
+
+}  // namespace tsk
