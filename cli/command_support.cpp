@@ -1,5 +1,6 @@
 #include "cli/command_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -35,6 +36,16 @@ RunFacts run_facts(const Options& o, const FilterReport& filter) {
           o.params.strokes.drawn(),
           TSK_VERSION,
           o.params.strokes.scale};
+}
+
+void print_averaging(double scale, const DemGrid& grid, std::size_t averaged, std::ostream& err) {
+  if (averaged <= 1) return;
+  const auto old_precision = err.precision(4);
+  err << "note: drawn for 1:" << number_text(scale) << ", the DEM was averaged " << averaged
+      << " x " << averaged << " cells first (to "
+      << std::min(grid.dx, grid.dy) * static_cast<double>(averaged)
+      << " m a cell, about 0.4 mm on paper): the scale shows nothing finer\n";
+  err.precision(old_precision);
 }
 
 void print_filter(const FilterReport& r, std::ostream& err) {

@@ -22,6 +22,10 @@ SilhouetteResult sketch_whole(const Options& o, const io::HeldDemFile& dem,
 // Tells on `err` which cut-offs an adaptive filter chose, and why.
 void print_filter(const FilterReport& report, std::ostream& err);
 
+// Drawn for 1:scale far coarser than the DEM (`grid`): says that the DEM was averaged `averaged`
+// cells a side first (SilhouetteResult::averaged; nothing when 1).
+void print_averaging(double scale, const DemGrid& grid, std::size_t averaged, std::ostream& err);
+
 // The DEM as the outputs' notes name it: its file's name.
 std::string dem_name(const Options& o);
 

@@ -1,8 +1,6 @@
 // terrain-sketch silhouettes: the strokes, written as they complete.
-#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <iomanip>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -49,18 +47,6 @@ std::string note_of(const Options& o, const SilhouetteResult& result) {
   RunFacts facts = run_facts(o, result.filter);
   facts.averaged = result.averaged;
   return run_note(facts);
-}
-
-// What a user drawing for a scale far coarser than the DEM should know: the sketch is of the DEM
-// averaged to that scale's cells.
-void print_averaging(const Options& o, const io::Dem& dem, std::size_t averaged,
-                     std::ostream& err) {
-  if (averaged <= 1) return;
-  err << "note: drawn for 1:" << std::fixed << std::setprecision(0) << o.params.strokes.scale
-      << ", the DEM was averaged " << averaged << " x " << averaged << " cells first (to "
-      << std::defaultfloat << std::setprecision(4)
-      << std::min(dem.grid.dx, dem.grid.dy) * static_cast<double>(averaged)
-      << " m a cell, about 0.4 mm on paper): the scale shows nothing finer\n";
 }
 
 // The DEM of a run: held whole once for a preview, which draws over it too (refused when too
@@ -124,7 +110,7 @@ std::string silhouettes(const Args& args, std::ostream& out, std::ostream& err,
   const std::string statistics = report_statistics(o, result.stats, result.filter);
   if (preview) plotter = write_preview(o, result, std::move(drawn), dem.info(), note, progress);
   print_filter(result.filter, err);
-  print_averaging(o, dem.info(), result.averaged, err);
+  print_averaging(o.params.strokes.scale, dem.info().grid, result.averaged, err);
   if (o.page.plotter) print_plotter(plotter, !o.page.size.empty(), err);
   if (o.timings) print_timings(result.timings, write_s, commit_s, err);
   const StageStats& s = result.stats;

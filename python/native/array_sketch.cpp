@@ -51,6 +51,7 @@ StrokeColumns sketch_array(const io::MemoryBand& band, const io::MemoryRasterInf
       sketch_silhouettes(dem.source(), o.params, static_cast<std::size_t>(o.strips), progress,
                          [&columns](Stroke&& stroke) { add_stroke(stroke, columns); });
   cli::print_filter(result.filter, err);
+  cli::print_averaging(o.params.strokes.scale, dem.info().grid, result.averaged, err);
   columns.statistics = cli::stats_json(result.stats, result.filter);
   return columns;
 }

@@ -56,10 +56,15 @@ def same_strokes(strokes, path):
     {"azimuth": 270},
     {"azimuth": 200, "filter": "fixed", "strokes": "exact"},
     {"azimuth": 35, "adapt": "local", "geometry": "oblique"},
-], ids=["defaults", "exact", "local"])
-def test_array_strokes_are_the_files(tmp_path, options):
+    # Drawn for a scale that averages the 75 m sample 5 x 5 cells first.
+    {"azimuth": 250, "drawn_for": 1000000},
+], ids=["defaults", "exact", "local", "averaged"])
+def test_array_strokes_are_the_files(tmp_path, options, caplog):
     heights, transform, nodata, crs = read_dem(SAMPLE)
-    strokes = terrain_sketch.sketch(heights, transform, nodata, crs, **options)
+    with caplog.at_level("INFO"):
+        strokes = terrain_sketch.sketch(heights, transform, nodata, crs, **options)
+    averaged = "the DEM was averaged 5 x 5 cells first" in caplog.text
+    assert averaged == ("drawn_for" in options)
     statistics = terrain_sketch.silhouettes(SAMPLE, tmp_path / "file.gpkg", **options)
     same_strokes(strokes, str(tmp_path / "file.gpkg"))
     assert (strokes.m is None) == (options.get("strokes") == "exact")
