@@ -9,6 +9,8 @@
 #include <new>
 
 #include "core/base/errors.h"
+#include "core/drawn/drawing_scale.h"
+#include "core/method/averaged_dem.h"
 #include "core/method/silhouettes.h"
 #include "plugin/choice_parameter.h"
 #include "plugin/layer_style.h"
@@ -228,8 +230,12 @@ QVariantMap SilhouettesAlgorithm::writeOutputs(const QVariantMap& parameters,
                                                QgsProcessingFeedback* feedback) {
   RasterGrid& raster = preparedRaster();
   const DemSource dem = raster.source();
-  const OrientedFrame frame =
-      withCoreErrors([&] { return make_frame(dem.grid, mParams.view.azimuth_deg); });
+  // The grid the run sketches: the DEM's, or for a scale far coarser than it, the DEM averaged.
+  const std::size_t averaging =
+      mParams.strokes.drawn() ? scale_averaging(mParams.strokes.scale, dem.grid, dem.geotransform)
+                              : 1;
+  const OrientedFrame frame = withCoreErrors(
+      [&] { return make_frame(averaged_grid(dem.grid, averaging), mParams.view.azimuth_deg); });
   const std::size_t strip = mStrips > 0 ? static_cast<std::size_t>(mStrips) : strip_profiles(frame);
   // Worth saying only when the DEM does not fit one strip.
   const std::size_t strips = (frame.profiles + strip - 1) / strip;

@@ -36,15 +36,19 @@ void average_row(const DemSource& dem, std::size_t factor, std::size_t row, std:
 
 }  // namespace
 
+DemGrid averaged_grid(const DemGrid& grid, std::size_t factor) {
+  if (factor == 0) throw Error("a DEM cannot be averaged by a factor of 0");
+  const auto k = static_cast<double>(factor);
+  return {(grid.rows + factor - 1) / factor, (grid.cols + factor - 1) / factor, grid.dx * k,
+          grid.dy * k};
+}
+
 DemSource averaged_dem(const DemSource& dem, std::size_t factor) {
   if (factor == 0) throw Error("a DEM cannot be averaged by a factor of 0");
   if (factor == 1) return dem;
   DemSource coarse;
-  coarse.grid.rows = (dem.grid.rows + factor - 1) / factor;
-  coarse.grid.cols = (dem.grid.cols + factor - 1) / factor;
+  coarse.grid = averaged_grid(dem.grid, factor);
   const auto k = static_cast<double>(factor);
-  coarse.grid.dx = dem.grid.dx * k;
-  coarse.grid.dy = dem.grid.dy * k;
   coarse.geotransform = dem.geotransform;
   for (const int i : {1, 2, 4, 5}) coarse.geotransform.a[static_cast<std::size_t>(i)] *= k;
   const DemGrid grid = coarse.grid;

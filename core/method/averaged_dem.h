@@ -14,4 +14,7 @@ namespace tsk {
 // the averaged DEM is never held whole. `dem` must outlive the result. factor 1 is `dem` itself.
 DemSource averaged_dem(const DemSource& dem, std::size_t factor);
 
+// The grid of `grid` averaged `factor` cells a side (averaged_dem's).
+DemGrid averaged_grid(const DemGrid& grid, std::size_t factor);
+
 }  // namespace tsk

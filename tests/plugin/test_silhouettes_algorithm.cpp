@@ -139,6 +139,10 @@ TEST_CASE("the strips are mentioned only when the DEM takes more than one", "[pl
   CHECK_FALSE(whole.infos.join(' ').contains(QStringLiteral("strips")));
   REQUIRE(runAlgorithm(dem, {{"STRIPS", 100}}, dir, &strips).ok);
   CHECK(strips.infos.join(' ').contains(QStringLiteral("in 5 strips of 100 profiles")));
+  // Drawn for 1:1 000 000, the run sketches the DEM averaged 5 x 5 cells: 88 x 83 cells.
+  RecordingFeedback averaged;
+  REQUIRE(runAlgorithm(dem, {{"STRIPS", 20}, {"DRAWN_FOR", 1000000}}, dir, &averaged).ok);
+  CHECK(averaged.infos.join(' ').contains(QStringLiteral("in 5 strips of 20 profiles")));
 }
 
 TEST_CASE("drawn for a small scale, the sketch keeps its big landforms only", "[plugin][scale]") {
