@@ -166,14 +166,17 @@ TEST_CASE("profile candidates equal a cell-by-cell reading of the flags", "[chai
   // hidden zones must be read as the rule says, cell by cell, from any first cell.
   std::mt19937 rng(11);
   ProfileCandidates got;  // reused, as the pipeline reuses it
-  for (int round = 0; round < 400; ++round) {
-    const std::size_t length = rng() % 90;
+  for (int round = 0; round < 800; ++round) {
+    // Every other round, long hidden zones (as a panorama's), which are read eight cells at a time.
+    const bool long_zones = round % 2 == 1;
+    const std::size_t length = rng() % (long_zones ? 300 : 90);
     std::vector<std::uint8_t> f(length);
     for (std::uint8_t& v : f) {
-      const unsigned roll = rng() % 8;
-      v = roll < 3   ? static_cast<std::uint8_t>(rng() % 64)
-          : roll < 6 ? cell::valid | cell::hidden
-                     : cell::valid;
+      // Any bits, hidden, or valid: a hidden cell 3 times in 8, or 58 times in 64.
+      const unsigned roll = rng() % (long_zones ? 64 : 8);
+      const bool hidden = long_zones ? roll >= 6 : roll >= 3 && roll < 6;
+      v = roll < 3 ? static_cast<std::uint8_t>(rng() % 64)
+                   : static_cast<std::uint8_t>(cell::valid | (hidden ? cell::hidden : 0));
     }
     const std::size_t first = length ? rng() % (length + 1) : 0;
     for (bool factual : {true, false}) {

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 
+#include "core/base/vector_clones.h"
 #include "core/method/candidates.h"
 #include "core/method/profile_stages.h"
 #include "core/method/resample.h"
@@ -49,6 +50,21 @@ std::size_t first_leaving(std::size_t from, std::size_t end, Leaves&& leaves) {
   return from;
 }
 
+// The heights of samples [0, end) lowered by the curvature drop, in place, and the tangents of
+// their elevation angles: a loop of its own, which the compiler vectorises (the scan for the
+// running maximum after it cannot be).
+TSK_VECTOR_CLONES
+void lower_by_drop(const PanoramaRays& rays, std::size_t end, float* apparent, double* tangents) {
+  const double* drop = rays.drop.data();
+  const double* inverse_distance = rays.inverse_distance.data();
+  const double eye = rays.eye;
+  for (std::size_t k = 0; k < end; ++k) {
+    const double height = static_cast<double>(apparent[k]) - drop[k];
+    tangents[k] = (height - eye) * inverse_distance[k];
+    apparent[k] = static_cast<float>(height);
+  }
+}
+
 // Heights along the ray, lowered by the curvature drop, the tangents of their elevation angles,
 // and SPEC 1.2 on them: hidden below the running maximum, occluding before a hidden one; with
 // each hidden zone's depth below the sight line grazing its occluder. Sets s.end: the samples
@@ -69,23 +85,19 @@ void sample_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace&
   s.end = first_leaving(0, n, off_dem);
   std::fill(s.apparent.begin() + static_cast<std::ptrdiff_t>(s.end), s.apparent.end(), kNoData);
   sample_line(dem, place.at(0), place.along, s.end, s.apparent.data());
+  lower_by_drop(rays, s.end, s.apparent.data(), s.tangent.data());
   // The hot loop of a panorama: the arrays as plain pointers, which a flag's store cannot move.
-  float* apparent = s.apparent.data();
-  double* tangents = s.tangent.data();
+  const float* apparent = s.apparent.data();
+  const double* tangents = s.tangent.data();
   std::uint8_t* flags = s.flags.data();
-  const double* drop = rays.drop.data();
-  const double* inverse_distance = rays.inverse_distance.data();
   const double eye = rays.eye, step_m = rays.step_metres();
   double running_max = -std::numeric_limits<double>::infinity();
   std::size_t last_visible = n;  // the last visible sample, waiting for the next valid one
   std::size_t occluder = n;      // the occluding sample of the hidden zone under way
   double deepest = 0.0;          // its depth so far
   for (std::size_t k = 0; k < s.end; ++k) {
-    const double height = static_cast<double>(apparent[k]) - drop[k];
-    const double tangent = (height - eye) * inverse_distance[k];
-    apparent[k] = static_cast<float>(height);
-    tangents[k] = tangent;
     if (!is_data(apparent[k])) continue;  // nodata: the maximum carries over it
+    const double tangent = tangents[k];
     const bool hidden = tangent < running_max;
     flags[k] = static_cast<std::uint8_t>(cell::valid | (hidden ? cell::hidden : 0));
     if (hidden) {
@@ -107,19 +119,24 @@ void sample_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace&
   if (occluder != n) s.zone_depth[occluder] = deepest;
 }
 
-// The c-set (docs/PANORAMA.md 1.4): the slope along the ray falls away less steeply than the
-// sight line descends onto it, -B < gc < 0 with B = -tangent, each bound moved in by the
-// height tolerance. Compared as height steps (gc times the step), without a division.
-void select_candidates(const PanoramaRays& rays, double tolerance, RayScratch& s) {
-  const double step_m = rays.step_metres();
-  const float* apparent = s.apparent.data();
-  const double* tangents = s.tangent.data();
-  std::uint8_t* flags = s.flags.data();
-  for (std::size_t k = 0; k + 1 < s.end; ++k) {
+// The c-set (docs/PANORAMA.md 1.4) among samples [0, end - 1), marked in `flags`: the slope along
+// the ray falls away less steeply than the sight line descends onto it, -B < gc < 0 with
+// B = -tangent, each bound moved in by the height tolerance. Compared as height steps (gc times
+// the step), without a division; in a loop the compiler vectorises (the arrays do not overlap).
+TSK_VECTOR_CLONES
+void mark_candidates(const float* __restrict apparent, const double* __restrict tangents,
+                     std::uint8_t* __restrict flags, std::size_t end, double step_m,
+                     double tolerance) {
+  for (std::size_t k = 0; k + 1 < end; ++k) {
     const double rise = static_cast<double>(apparent[k + 1]) - static_cast<double>(apparent[k]);
     const bool candidate = (rise > tangents[k] * step_m + tolerance) & (rise < -tolerance);
     flags[k] |= static_cast<std::uint8_t>(candidate * cell::candidate);
   }
+}
+
+void select_candidates(const PanoramaRays& rays, double tolerance, RayScratch& s) {
+  mark_candidates(s.apparent.data(), s.tangent.data(), s.flags.data(), s.end, rays.step_metres(),
+                  tolerance);
 }
 
 // The slope across the ray at sample k, over two steps, one-sided beside nodata (SPEC 1.3).
@@ -136,13 +153,25 @@ double along_slope(const RayScratch& s, std::size_t k, double step_m) {
   return column_slope(s.apparent.data(), s.apparent.size(), k, step_m);
 }
 
+// The first sample from k on in the visible c-set (cell::candidate without cell::hidden), or
+// `end`: eight at a time, as most of a panorama's samples are hidden.
+std::size_t next_visible_candidate(const std::uint8_t* f, std::size_t k, std::size_t end) {
+  constexpr std::uint64_t kLowBits = 0x0101010101010101ull;
+  for (std::uint64_t word; k + 8 <= end; k += 8) {
+    std::memcpy(&word, f + k, sizeof word);
+    if ((word >> 3) & ~(word >> 1) & kLowBits) break;  // cell::candidate, not cell::hidden
+  }
+  while (k < end && (f[k] & (cell::candidate | cell::hidden)) != cell::candidate) ++k;
+  return k;
+}
+
 // SPEC 1.5 on the visible c-set; with local scales, each sample's slopes are divided by its
 // neighbourhood's scale first.
 void filter_samples(const HeightGrid& dem, const PanoramaRays& rays, const RayPlace& place,
                     const FilterRule& rule, const SlopeScaleMap* local_scale, RayScratch& s) {
   const double step_m = rays.step_metres();
-  for (std::size_t k = 0; k < s.end; ++k) {
-    if ((s.flags[k] & (cell::candidate | cell::hidden)) != cell::candidate) continue;
+  for (std::size_t k = next_visible_candidate(s.flags.data(), 0, s.end); k < s.end;
+       k = next_visible_candidate(s.flags.data(), k + 1, s.end)) {
     const double unscale = local_scale ? 1.0 / local_scale->scale_at(place.at(k)) : 1.0;
     const double col_pct = std::fabs(along_slope(s, k, step_m)) * 100.0 * unscale;
     const double row_pct = std::fabs(across_slope(dem, place, k, step_m)) * 100.0 * unscale;
