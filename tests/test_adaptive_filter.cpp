@@ -147,6 +147,25 @@ TEST_CASE("a survey made in parts, through bytes and in any order, is the survey
   CHECK_THROWS_AS(SurveyBytes::height_step(SurveyBytes::of(SlopePart())), Error);
 }
 
+TEST_CASE("a survey on any number of threads counts the slopes of one pass", "[adaptive]") {
+  // One window (the whole DEM) of 701 rows: six bands of rows, measured on 1 to 5 threads.
+  const HeightGrid z = rolling(701, 90);
+  const DemSource dem = memory_source(z, 5.0);
+  HeightStepPart step;
+  step.add(z.data(), z.size());
+  SlopePart one_pass;
+  one_pass.add(z.data(), {0, 0, z.rows(), z.cols()}, 5.0, 5.0, step.step().tolerance);
+  const SlopeSurvey expected = one_pass.survey(step.step());
+  REQUIRE(expected.cells == 700u * 89u);
+  for (const unsigned threads : {1u, 2u, 3u, 5u}) {
+    CAPTURE(threads);
+    const SlopeSurvey survey = survey_slopes(z.rows(), z.cols(), 5.0, 5.0, dem.read, threads);
+    CHECK(survey.median_slope_pct == expected.median_slope_pct);
+    CHECK(survey.cells == expected.cells);
+    CHECK(survey.flat_cells == expected.flat_cells);
+  }
+}
+
 TEST_CASE("the height step is found from the heights", "[adaptive]") {
   const std::vector<float> metres = {12, 15, NAN, 300, -4};
   CHECK(height_step(metres.data(), metres.size()).quantum == 1.0);

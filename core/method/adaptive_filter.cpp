@@ -49,7 +49,8 @@ ResolvedParams adapt_filter(const SilhouetteParams& choice, const DemGrid& grid,
   if (choice.adaptive.mode == FilterMode::fixed) return ResolvedParams(choice);
   choice.validate();
   if (!read) throw Error("an adaptive filter needs the DEM to survey");
-  const SlopeSurvey survey = survey_slopes(grid.rows, grid.cols, grid.dx, grid.dy, read);
+  const SlopeSurvey survey =
+      survey_slopes(grid.rows, grid.cols, grid.dx, grid.dy, read, choice.threads);
   FilterReport report = report_of_survey(choice, survey);
   SilhouetteParams out = choice;
   out.adaptive.mode = FilterMode::fixed;  // resolved: the stages take the cut-offs as they are

@@ -68,9 +68,10 @@ HeightStep height_step(const float* heights, std::size_t count);
 std::vector<DemWindow> survey_windows(std::size_t rows, std::size_t cols);
 
 // Surveys a DEM of rows x cols cells of dx x dy ground units read through `read` (its
-// survey_windows).
+// survey_windows, read on the calling thread), measuring the slopes on `threads` threads (0: every
+// core).
 SlopeSurvey survey_slopes(std::size_t rows, std::size_t cols, double dx, double dy,
-                          const WindowReader& read);
+                          const WindowReader& read, unsigned threads = 0);
 
 // A survey in parts, for a cluster whose machines each read some of the windows: the parts summed
 // give survey_slopes' survey exactly. First the heights' step, which the slopes need.
