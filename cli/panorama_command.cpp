@@ -3,6 +3,7 @@
 #include <cpl_conv.h>
 #include <gdal.h>
 
+#include <future>
 #include <ostream>
 #include <string>
 
@@ -89,8 +90,12 @@ std::string panorama(const Args& args, std::ostream& out, std::ostream& err,
   const std::vector<PeakLeader> leaders =
       lead_peaks(result, see_peaks(dem.oriented, dem.geotransform, result.rays, peaks));
   // The outputs need the DEM's grid and georeferencing, not its heights: freed, they make room
-  // for the visibility raster.
+  // for the visibility raster. Freed alongside the writing: giving a large DEM's pages back takes
+  // the kernel a while (the future waits for it, whatever happens).
+  HeightGrid heights = std::move(held.dem.oriented);
   held.dem.oriented = HeightGrid();
+  const std::future<void> freed =
+      std::async(std::launch::async, [&heights] { heights = HeightGrid(); });
   write_outputs(o, dem, run, leaders, progress, err);
   const std::string statistics = report_statistics(o, result.stats, run.filter);
   const StageStats& s = result.stats;
