@@ -197,8 +197,9 @@ const std::vector<OptionSpec> kOptionTable = {
     {"--extend", "CELLS", kStrokes, "drawn: run each end on along its direction, 0-10 (default 0)",
      kStroked, TSK_SET(params.strokes.extend_cells, parse_number)},
     {"--drawn-for", "N", kStrokes,
-     "drawn: for a map at 1:N: sized on paper, too little relief dropped (default: none)", kStroked,
-     TSK_SET(params.strokes.scale, parse_number)},
+     "drawn: for a map at 1:N: sized on paper, too little relief dropped, a DEM finer than "
+     "0.4 mm a cell averaged to it (default: none)",
+     kStroked, TSK_SET(params.strokes.scale, parse_number)},
     {"--placement", "P", kStrokes,
      "far (default) or near_and_far: which end of an f-set zone to keep", kChained,
      [](Options& o, const std::string&, const std::string& v) {

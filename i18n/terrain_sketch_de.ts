@@ -810,22 +810,22 @@
 <context>
     <name>SilhouettesAlgorithm</name>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="52" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="54" />
         <source>Silhouettes (factual and formulated)</source>
         <translation>Silhouetten (faktisch und formuliert)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="56" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="58" />
         <source>silhouette,occluding contour,sketch,oblique,panorama,block diagram,plan oblique,terrain,dem,hidden</source>
         <translation>Silhouette,Verdeckungskontur,Skizze,Schrägansicht,Panorama,Blockbild,Plan oblique,Gelände,DGM,verdeckt</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="62" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="64" />
         <source>Draws the silhouette lines of a DEM seen obliquely from above as vector strokes.</source>
         <translation>Zeichnet die Silhouettenlinien eines schräg von oben gesehenen DGM als Vektorstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="66" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="68" />
         <source>Finds the lines a cartographer sketches first when drawing terrain seen obliquely from above.
 
 Factual Silhouettes are occluding contours: cells beyond which the terrain hides what lies behind it, in a parallel view with vertical exaggeration and a base slope added along the line of sight. Formulated Silhouettes are back-facing slopes that the raised view brings into sight (the candidate set), kept where the slope filter finds them significant (outside the weak/weak corner of column slope against row slope), thinned to the cell furthest from the viewer and chained across profiles.
@@ -854,187 +854,187 @@ Die Stufenkennzahlen (Protokoll und Ausgaben), in Prozent der Zellen mit Daten: 
 Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Computer Science, University of Hull (Kapitel 4 und 5), als Erweiterung der Verdeckungskonturen von Visvalingam und Whelan (1998).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="114" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
         <source>Chaining window (cells)</source>
         <translation>Verkettungsfenster (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="115" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
         <source>Formulated strokes link cells on neighbouring profiles at most this many cells apart.</source>
         <translation>Formulierte Striche verbinden Zellen benachbarter Profile, die höchstens so viele Zellen auseinander liegen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="116" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="118" />
         <source>Minimum stroke cells</source>
         <translation>Mindestzahl Zellen je Strich</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="117" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="119" />
         <source>Strokes with fewer cells are dropped (generalisation). Drawn strokes keep shorter pieces only where they close a gap between longer ones.</source>
         <translation>Striche mit weniger Zellen werden verworfen (Generalisierung). Gezeichnete Striche behalten kürzere Stücke nur, wo sie eine Lücke zwischen längeren schließen.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="121" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
         <source>Formulated stroke placement</source>
         <translation>Lage der formulierten Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="125" />
         <source>Far end of each zone</source>
         <translation>Hinteres Ende jeder Zone</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="123" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="125" />
         <source>Near and far ends</source>
         <translation>Vorderes und hinteres Ende</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="126" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="128" />
         <source>Which cells of a filtered zone become formulated silhouette points.</source>
         <translation>Welche Zellen einer gefilterten Zone zu Punkten formulierter Silhouetten werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="127" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="129" />
         <source>Sub-cell occluding points</source>
         <translation>Verdeckungspunkte zwischen Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="128" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="130" />
         <source>Place factual points where the transformed profile peaks between cells instead of at cell centres (removes the thesis's halo).</source>
         <translation>Faktische Punkte dort setzen, wo das transformierte Profil zwischen den Zellen seinen Gipfel hat, statt in die Zellmitte (beseitigt den Halo der Dissertation).</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="132" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="134" />
         <source>Profiles per strip (0: automatic)</source>
         <translation>Profile je Streifen (0: automatisch)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="133" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="135" />
         <source>The DEM is read and processed this many profiles at a time, the next strip read while this one is processed, so DEMs larger than memory run too. 0 chooses 1024, more for profiles under 1024 cells (a million cells a strip), fewer for profiles over 4096 cells seen from 0, 90, 180 or 270 degrees (four million cells a strip, at least 256), or fewer when profiles are so long that the strips would take more than 512 MB. Strips that would take more than half of this machine's memory are refused.</source>
         <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, mehr für Profile unter 1024 Zellen (eine Million Zellen je Streifen), weniger für Profile über 4096 Zellen bei Blick aus 0, 90, 180 oder 270 Grad (vier Millionen Zellen je Streifen, mindestens 256), oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="140" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="142" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="141" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="143" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="142" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="144" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="143" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="145" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="157" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="159" />
         <source>Drawn (the default): strokes a cartographer would publish. Pieces of one class that continue each other across a small gap are joined before short strokes are dropped; points lie between cells where the profile peaks or the slope breaks, and are smoothed along the stroke; every point carries a weight (its M value) that tapers the ends and thins the strokes towards the back of the view, which the layers' styles draw. Exact: the thesis's strokes, a point at each cell centre.</source>
         <translation>Gezeichnet (Voreinstellung): Striche, wie sie ein Kartograf veröffentlichen würde. Stücke einer Klasse, die einander über eine kleine Lücke fortsetzen, werden verbunden, bevor kurze Striche entfallen; Punkte liegen zwischen den Zellen, wo das Profil gipfelt oder die Neigung bricht, und werden entlang des Strichs geglättet; jeder Punkt trägt ein Gewicht (seinen M-Wert), das die Enden verjüngt und die Striche zum hinteren Rand der Ansicht hin dünner macht, wie es die Stile der Layer zeichnen. Exakt: die Striche der Dissertation, ein Punkt in jeder Zellmitte.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="163" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="165" />
         <source>Drawn for scale</source>
         <translation>Gezeichnet für Maßstab</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="168" />
-        <source>Drawn strokes: the scale of the map they are drawn for (1:N). The shortest stroke (2 mm on paper), the smoothing, its tolerance and the join gap become at least what that scale needs, strokes outlining less than N/10 000 metres of relief are left out, and the layers' styles draw their widths true at that scale (the renderer's reference scale). Empty: for no scale; every stroke is still weighed by the relief it outlines.</source>
-        <translation>Gezeichnete Striche: der Maßstab der Karte, für die sie gezeichnet werden (1:N). Der kürzeste Strich (2 mm auf dem Papier), die Glättung, ihre Toleranz und die Verbindungslücke werden mindestens so groß, wie dieser Maßstab es verlangt; Striche, die weniger als N/10 000 Meter Relief umreißen, entfallen, und die Stile der Layer zeichnen ihre Breiten in diesem Maßstab wahr (der Bezugsmaßstab des Renderers). Leer: für keinen Maßstab; jeder Strich wird dennoch nach dem Relief gewichtet, das er umreißt.</translation>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="170" />
+        <source>Drawn strokes: the scale of the map they are drawn for (1:N). The shortest stroke (2 mm on paper), the smoothing, its tolerance and the join gap become at least what that scale needs, strokes outlining less than N/10 000 metres of relief are left out, and the layers' styles draw their widths true at that scale (the renderer's reference scale). A DEM at least twice as fine as the scale needs (cells under 0.4 mm on paper) is first averaged to it. Empty: for no scale; every stroke is still weighed by the relief it outlines.</source>
+        <translation>Gezeichnete Striche: der Maßstab der Karte, für die sie gezeichnet werden (1:N). Der kürzeste Strich (2 mm auf dem Papier), die Glättung, ihre Toleranz und die Verbindungslücke werden mindestens so groß, wie dieser Maßstab es verlangt; Striche, die weniger als N/10 000 Meter Relief umreißen, entfallen, und die Stile der Layer zeichnen ihre Breiten in diesem Maßstab wahr (der Bezugsmaßstab des Renderers). Ein DGM, das mindestens doppelt so fein ist, wie der Maßstab es verlangt (Zellen unter 0,4 mm auf dem Papier), wird zuerst darauf gemittelt. Leer: für keinen Maßstab; jeder Strich wird dennoch nach dem Relief gewichtet, das er umreißt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="174" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="177" />
         <source>Join gap (cells)</source>
         <translation>Verbindungslücke (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="175" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="178" />
         <source>Drawn strokes: ends of two strokes this close (in cells) are joined when their directions agree. 0 joins none.</source>
         <translation>Gezeichnete Striche: Enden zweier Striche, die so nahe beieinander liegen (in Zellen), werden verbunden, wenn ihre Richtungen übereinstimmen. 0 verbindet keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="177" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="180" />
         <source>Join angle (degrees)</source>
         <translation>Verbindungswinkel (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="178" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="181" />
         <source>Drawn strokes: the largest turn between two ends' directions, and the step between them, for them to be joined.</source>
         <translation>Gezeichnete Striche: die größte Drehung zwischen den Richtungen zweier Enden und dem Schritt zwischen ihnen, bei der sie noch verbunden werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="180" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="183" />
         <source>Smoothing (cells)</source>
         <translation>Glättung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="181" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="184" />
         <source>Drawn strokes: the width (sigma, in cells) of the Gaussian smoothing along each stroke. 0 keeps the points where they are.</source>
         <translation>Gezeichnete Striche: die Breite (Sigma, in Zellen) der Gaußschen Glättung entlang jedes Strichs. 0 lässt die Punkte, wo sie sind.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="183" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="186" />
         <source>Smoothing tolerance (cells)</source>
         <translation>Glättungstoleranz (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="184" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="187" />
         <source>Drawn strokes: no point moves farther than this (in cells) from its place on the exact chain, so smoothing never invents terrain.</source>
         <translation>Gezeichnete Striche: kein Punkt liegt weiter als dies (in Zellen) von seinem Platz auf der exakten Kette, so dass die Glättung nie Gelände erfindet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="186" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="189" />
         <source>Taper (share of the stroke)</source>
         <translation>Verjüngung (Anteil des Strichs)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="187" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="190" />
         <source>Drawn strokes: the share of a stroke's length over which each end thins.</source>
         <translation>Gezeichnete Striche: der Anteil der Strichlänge, über den jedes Ende dünner wird.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="188" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="191" />
         <source>Depth cue</source>
         <translation>Tiefenwirkung</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="189" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="192" />
         <source>Drawn strokes: the share of the weight strokes lose from the front of the view to its back.</source>
         <translation>Gezeichnete Striche: der Anteil des Gewichts, den Striche vom vorderen zum hinteren Rand der Ansicht verlieren.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="191" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="194" />
         <source>Over-extension (cells)</source>
         <translation>Überzeichnung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="192" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="195" />
         <source>Drawn strokes: each end runs on this far (in cells) along its direction, as a hand-drawn stroke does. 0: none.</source>
         <translation>Gezeichnete Striche: jedes Ende läuft so weit (in Zellen) in seiner Richtung weiter, wie es ein von Hand gezeichneter Strich tut. 0: keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="238" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="245" />
         <source>Processing the DEM in %1 strips of %2 profiles.</source>
         <translation>Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="256" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="263" />
         <source>Drawn for 1:%L1, the DEM was averaged %L2 x %L2 cells first (to %L3 m a cell, about 0.4 mm on paper): the scale shows nothing finer.</source>
         <translation>Gezeichnet für 1:%L1: das DGM wurde zuerst über %L2 x %L2 Zellen gemittelt (auf %L3 m je Zelle, etwa 0,4 mm auf dem Papier); feiner zeigt der Maßstab nichts.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="287" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="294" />
         <source>Factual silhouettes, %1</source>
         <translation>Faktische Silhouetten, %1</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="290" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="297" />
         <source>Formulated silhouettes, %1</source>
         <translation>Formulierte Silhouetten, %1</translation>
     </message>
@@ -1088,52 +1088,52 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <translation>von %L1°</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="37" />
+        <location filename="../plugin/run_notes.cpp" line="36" />
         <source>drawn strokes for 1:%L1</source>
         <translation>gezeichnete Striche für 1:%L1</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="40" />
+        <location filename="../plugin/run_notes.cpp" line="39" />
         <source> from the DEM averaged %L1 x %L1 cells</source>
         <translation> aus dem DGM, gemittelt über %L1 x %L1 Zellen</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="41" />
+        <location filename="../plugin/run_notes.cpp" line="40" />
         <source>%1. Seen from %L2° (azimuth), vertical exaggeration %L3, base slope %L4 %; %5; %6. Terrain Sketch %7.</source>
         <translation>%1. Gesehen aus %L2° (Azimut), Überhöhung %L3, Grundneigung %L4 %; %5; %6. Terrain Sketch %7.</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="51" />
+        <location filename="../plugin/run_notes.cpp" line="50" />
         <source>; %L1 samples per cell along each ray</source>
         <translation>; %L1 Abtastpunkte je Zelle entlang jedes Strahls</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="53" />
+        <location filename="../plugin/run_notes.cpp" line="52" />
         <source>%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from grid north); elevation angles drawn %L7 times as tall as azimuths are wide%9. Terrain Sketch %8.</source>
         <translation>%1. Gesehen von %L2, %L3, %L4 m über dem Boden, von %L5° bis %L6° (Azimute von Gitternord); Höhenwinkel %L7-mal so hoch gezeichnet, wie Azimute breit sind%9. Terrain Sketch %8.</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="38" />
+        <location filename="../plugin/run_notes.cpp" line="37" />
         <source>drawn strokes</source>
         <translation>gezeichnete Striche</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="44" />
+        <location filename="../plugin/run_notes.cpp" line="43" />
         <source>the thesis's exact strokes</source>
         <translation>die exakten Striche der Dissertation</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="65" />
+        <location filename="../plugin/run_notes.cpp" line="64" />
         <source>%1. %2 seen from %L3° (azimuth), vertical exaggeration %L4, base slope %L5 %</source>
         <translation>%1. %2, gesehen aus %L3° (Azimut), Überhöhung %L4, Grundneigung %L5 %</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="69" />
+        <location filename="../plugin/run_notes.cpp" line="68" />
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="71" />
+        <location filename="../plugin/run_notes.cpp" line="70" />
         <source>. Terrain Sketch %1.</source>
         <translation>. Terrain Sketch %1.</translation>
     </message>

@@ -171,8 +171,9 @@ void SilhouettesAlgorithm::addStrokeParameters() {
                  "stroke (2 mm on paper), the smoothing, its tolerance and the join gap become at "
                  "least what that scale needs, strokes outlining less than N/10 000 metres of "
                  "relief are left out, and the layers' styles draw their widths true at that "
-                 "scale (the renderer's reference scale). Empty: for no scale; every stroke is "
-                 "still weighed by the relief it outlines."));
+                 "scale (the renderer's reference scale). A DEM at least twice as fine as the "
+                 "scale needs (cells under 0.4 mm on paper) is first averaged to it. Empty: for "
+                 "no scale; every stroke is still weighed by the relief it outlines."));
   add(kJoinGap, tr("Join gap (cells)"), defaults.join_gap_cells, 0, 20,
       tr("Drawn strokes: ends of two strokes this close (in cells) are joined when their "
          "directions agree. 0 joins none."));
