@@ -6,6 +6,7 @@
 #include "core/base/byte_stream.h"
 #include "core/drawn/drawing_scale.h"
 #include "core/drawn/drawn_strokes.h"
+#include "core/method/averaged_dem.h"
 #include "core/method/run_note.h"
 #include "io/write/vector_writer.h"
 
@@ -28,6 +29,14 @@ io::DemOptions task_dem(const cli::Options& o) {
   return dem;
 }
 
+TaskDem::TaskDem(const std::string& input, const cli::Options& o)
+    : file_(input, task_dem(o)), file_source_(file_.source()) {
+  const io::Dem& dem = file_.info();
+  if (o.params.strokes.drawn())
+    averaged_ = scale_averaging(o.params.strokes.scale, dem.grid, dem.geotransform);
+  source_ = averaged_dem(file_source_, averaged_);
+}
+
 namespace {
 
 // The run's options and paths as the silhouettes command parses them, after refusing what a run
@@ -46,36 +55,26 @@ BandPlan plan_bands(const std::string& input, const std::string& output,
                     const std::vector<std::string>& options, std::ostream& err) {
   const cli::Options o = band_run(input, output, options);
   io::check_vector_output(o.output, o.format);
-  const io::DemFile dem(o.input, o.dem);
-  cli::print_notes(dem.info().notes, err);
-  const std::size_t averaged =
-      o.params.strokes.drawn()
-          ? scale_averaging(o.params.strokes.scale, dem.info().grid, dem.info().geotransform)
-          : 1;
-  if (averaged > 1)
-    throw cli::UsageError("drawn for 1:" + number_text(o.params.strokes.scale) +
-                          ", the DEM is "
-                          "averaged " +
-                          std::to_string(averaged) + " x " + std::to_string(averaged) +
-                          " cells first, which a run in bands does not do: sketch it on one "
-                          "machine, or draw it for a larger scale");
-  const OrientedFrame frame = make_frame(dem.info().grid, o.params.view.azimuth_deg);
+  const io::DemFile file(o.input, o.dem);  // with a sample of its range, for the notes
+  cli::print_notes(file.info().notes, err);
+  const TaskDem dem(o.input, o);
+  const OrientedFrame frame = make_frame(dem.source().grid, o.params.view.azimuth_deg);
   const bool survey = o.params.adaptive.mode == FilterMode::adaptive;
   o.params.validate();
   return {frame.profiles,
           survey ? std::string() : filter_report_bytes(ResolvedParams(o.params).filter()), survey,
-          o.params.geometry == Geometry::oblique, dem.info().rows};
+          o.params.geometry == Geometry::oblique, dem.source().grid.rows};
 }
 
 double lowest_height_of(const std::string& input, const std::vector<std::string>& options,
                         std::size_t first_row, std::size_t rows) {
   const cli::Options o = band_options(options);
-  const io::DemFile dem(input, task_dem(o));
-  const io::Dem& info = dem.info();
-  if (first_row > info.rows || rows > info.rows - first_row)
+  const TaskDem dem(input, o);
+  const DemGrid& grid = dem.source().grid;
+  if (first_row > grid.rows || rows > grid.rows - first_row)
     throw Error("rows " + std::to_string(first_row) + " + " + std::to_string(rows) +
-                " do not lie in the DEM's " + std::to_string(info.rows));
-  return lowest_height_of_rows(first_row, rows, info.cols, dem.source().read);
+                " do not lie in the DEM's " + std::to_string(grid.rows));
+  return lowest_height_of_rows(first_row, rows, grid.cols, dem.source().read);
 }
 
 std::string sketch_band_bytes(const std::string& input, const std::vector<std::string>& options,
@@ -83,7 +82,7 @@ std::string sketch_band_bytes(const std::string& input, const std::vector<std::s
                               std::size_t count, std::size_t halo, const std::string& order) {
   const cli::Options o = band_options(options);
   const ResolvedParams params = resolve_as_reported(o.params, filter_report_from_bytes(filter));
-  const io::DemFile dem(input, task_dem(o));
+  const TaskDem dem(input, o);
   BandSpec spec{first, count, std::nullopt, halo};
   if (!order.empty()) spec.order = orders_from_bytes(order);
   return band_bytes(sketch_band(dem.source(), params, spec, z_ref));
@@ -95,12 +94,12 @@ std::string stitch_bands(const std::string& input, const std::string& output,
                          std::ostream& err) {
   const cli::Options o = band_run(input, output, options);
   const ResolvedParams params = resolve_as_reported(o.params, filter_report_from_bytes(filter));
-  const io::DemFile dem(o.input, task_dem(o));  // its CRS, and its grid for the drawing
+  const TaskDem dem(o.input, o);  // its CRS, and the grid sketched for the drawing
   const bool drawn = params->strokes.drawn();
   std::optional<DrawingSetup> drawing;
   if (drawn) {
-    const OrientedFrame frame = make_frame(dem.info().grid, params->view.azimuth_deg);
-    drawing = drawing_setup(frame, dem.info().geotransform, params.params(), z_ref);
+    const OrientedFrame frame = make_frame(dem.source().grid, params->view.azimuth_deg);
+    drawing = drawing_setup(frame, dem.source().geotransform, params.params(), z_ref);
   }
   SilhouetteResult result;
   io::write_strokes(
@@ -115,8 +114,14 @@ std::string stitch_bands(const std::string& input, const std::string& output,
           stitcher.add(band_from_bytes(band.bytes), again);
         result = stitcher.finish(profiles);
       },
-      io::kStrokeLayer, drawn, [&] { return run_note(cli::run_facts(o, result.filter)); });
+      io::kStrokeLayer, drawn,
+      [&] {
+        RunFacts facts = cli::run_facts(o, result.filter);
+        facts.averaged = dem.averaged();
+        return run_note(facts);
+      });
   cli::print_filter(result.filter, err);
+  cli::print_averaging(o.params.strokes.scale, dem.info().grid, dem.averaged(), err);
   return cli::stats_json(result.stats, result.filter);
 }
 

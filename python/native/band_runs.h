@@ -13,6 +13,7 @@
 
 #include "cli/options.h"
 #include "core/method/bands.h"
+#include "io/read/dem_reader.h"
 
 namespace tsk::python {
 
@@ -32,6 +33,24 @@ cli::Options band_options(const std::vector<std::string>& options);
 // The DEM as a task of a run in bands opens it: as the options say, without reading a sample of
 // the DEM for its range, which only the notes the plan has already told need.
 io::DemOptions task_dem(const cli::Options& o);
+
+// A task's DEM as the run sketches it: the file's, or drawn for a scale far coarser than the DEM,
+// the DEM averaged to that scale's cells, as sketch_silhouettes averages it on one machine (the
+// same factor at every task, from the DEM and the options).
+class TaskDem {
+ public:
+  TaskDem(const std::string& input, const cli::Options& o);
+  TaskDem(const TaskDem&) = delete;  // the averaged source reads through file_source_
+  TaskDem& operator=(const TaskDem&) = delete;
+  const DemSource& source() const { return source_; }
+  const io::Dem& info() const { return file_.info(); }  // the file's CRS and notes
+  std::size_t averaged() const { return averaged_; }    // cells a side; 1: as it is
+
+ private:
+  io::DemFile file_;
+  DemSource file_source_, source_;
+  std::size_t averaged_ = 1;
+};
 
 // Checks the silhouettes command's `options` (as typed) and paths for a run in bands (as
 // band_options), tells the notes on the DEM to `err` as the command does, and resolves a fixed

@@ -9,8 +9,8 @@ namespace tsk::python {
 namespace {
 
 // Reads `w` of the DEM after checking that it lies in it (windows come from another machine).
-std::vector<float> read_window(const io::DemFile& dem, const SurveyWindow& w) {
-  const DemGrid& grid = dem.info().grid;
+std::vector<float> read_window(const TaskDem& dem, const SurveyWindow& w) {
+  const DemGrid& grid = dem.source().grid;
   const auto [row0, col0, rows, cols] = w;
   if (rows == 0 || cols == 0 || row0 > grid.rows || rows > grid.rows - row0 || col0 > grid.cols ||
       cols > grid.cols - col0)
@@ -27,16 +27,16 @@ std::vector<float> read_window(const io::DemFile& dem, const SurveyWindow& w) {
 
 std::vector<SurveyWindow> survey_windows_of(const std::string& input,
                                             const std::vector<std::string>& options) {
-  const io::DemFile dem(input, task_dem(band_options(options)));
+  const TaskDem dem(input, band_options(options));
   std::vector<SurveyWindow> windows;
-  for (const DemWindow& w : survey_windows(dem.info().grid.rows, dem.info().grid.cols))
+  for (const DemWindow& w : survey_windows(dem.source().grid.rows, dem.source().grid.cols))
     windows.push_back({w.row0, w.col0, w.rows, w.cols});
   return windows;
 }
 
 std::string survey_heights_part(const std::string& input, const std::vector<std::string>& options,
                                 const std::vector<SurveyWindow>& windows) {
-  const io::DemFile dem(input, task_dem(band_options(options)));
+  const TaskDem dem(input, band_options(options));
   HeightStepPart part;
   for (const SurveyWindow& w : windows) {
     const std::vector<float> heights = read_window(dem, w);
@@ -54,9 +54,9 @@ std::string merge_height_parts(const std::vector<std::string>& parts) {
 std::string survey_slopes_part(const std::string& input, const std::vector<std::string>& options,
                                const std::vector<SurveyWindow>& windows,
                                const std::string& heights) {
-  const io::DemFile dem(input, task_dem(band_options(options)));
+  const TaskDem dem(input, band_options(options));
   const double tolerance = SurveyBytes::height_step(heights).step().tolerance;
-  const DemGrid& grid = dem.info().grid;
+  const DemGrid& grid = dem.source().grid;
   SlopePart part;
   for (const SurveyWindow& w : windows) {
     const std::vector<float> z = read_window(dem, w);

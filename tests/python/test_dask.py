@@ -56,9 +56,11 @@ def same_run(tmp_path, client, dem, band_profiles, **options):
                                      {"azimuth": 0, "geometry": "oblique", "subcell": True,
                                       "strokes": "exact"},
                                      {},  # the defaults: adaptive filter, drawn strokes
-                                     {"azimuth": 135, "geometry": "oblique", "join_gap": 4}],
+                                     {"azimuth": 135, "geometry": "oblique", "join_gap": 4},
+                                     # the 75 m sample averaged 5 x 5 cells at every task
+                                     {"azimuth": 250, "drawn_for": 1000000}],
                          ids=["exact-fixed-90", "exact-200", "exact-oblique-0", "defaults",
-                              "drawn-oblique-135"])
+                              "drawn-oblique-135", "drawn-for-averaged"])
 def test_bands_give_the_strokes_of_one_machine(tmp_path, client, band_profiles, options):
     same_run(tmp_path, client, SAMPLE, band_profiles, **options)
 
@@ -245,9 +247,7 @@ def test_options_a_run_in_bands_cannot_take(tmp_path, client):
     out = tmp_path / "out.gpkg"
     for options, words in [({"strokes": "exact", "adapt": "local"}, "not locally"),
                            ({"strokes": "exact", "preview": "p.svg"}, "OUTPUT only"),
-                           ({"strokes": "exact", "observer": (1, 2)}, "does not take"),
-                           # Drawn for a scale that averages the 75 m sample 5 x 5 cells first.
-                           ({"drawn_for": 1000000}, "averaged 5 x 5 cells first")]:
+                           ({"strokes": "exact", "observer": (1, 2)}, "does not take")]:
         with pytest.raises(ValueError, match=words):
             terrain_sketch.dask.silhouettes(SAMPLE, out, client, **options)
     with pytest.raises(terrain_sketch.Error, match="no.tif"):
@@ -307,4 +307,11 @@ def test_the_notes_on_the_dem_and_filter_are_told_as_one_machine_tells_them(tmp_
         tmp_path / "dem.tif", tmp_path / "bands.gpkg", client, strokes="exact"))
     assert any("CRS" in note for note in one) and any("-9999" in note for note in one), one
     assert any("adaptive slope filter" in note for note in one), one
+    assert spread == one
+    # Drawn for a scale far coarser than the DEM: the averaging is told too.
+    one = notes(lambda: terrain_sketch.silhouettes(SAMPLE, tmp_path / "one.gpkg",
+                                                   drawn_for=1000000))
+    spread = notes(lambda: terrain_sketch.dask.silhouettes(SAMPLE, tmp_path / "bands.gpkg",
+                                                           client, drawn_for=1000000))
+    assert any("averaged 5 x 5 cells first" in note for note in one), one
     assert spread == one
