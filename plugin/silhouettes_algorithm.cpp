@@ -9,7 +9,6 @@
 #include <new>
 
 #include "core/base/errors.h"
-#include "core/drawn/drawing_scale.h"
 #include "core/method/averaged_dem.h"
 #include "core/method/silhouettes.h"
 #include "plugin/choice_parameter.h"
@@ -232,9 +231,7 @@ QVariantMap SilhouettesAlgorithm::writeOutputs(const QVariantMap& parameters,
   RasterGrid& raster = preparedRaster();
   const DemSource dem = raster.source();
   // The grid the run sketches: the DEM's, or for a scale far coarser than it, the DEM averaged.
-  const std::size_t averaging =
-      mParams.strokes.drawn() ? scale_averaging(mParams.strokes.scale, dem.grid, dem.geotransform)
-                              : 1;
+  const std::size_t averaging = run_averaging(mParams, dem.grid, dem.geotransform);
   const OrientedFrame frame = withCoreErrors(
       [&] { return make_frame(averaged_grid(dem.grid, averaging), mParams.view.azimuth_deg); });
   const std::size_t strip = mStrips > 0 ? static_cast<std::size_t>(mStrips) : strip_profiles(frame);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/base/errors.h"
+#include "core/drawn/drawing_scale.h"
 
 namespace tsk {
 namespace {
@@ -43,14 +44,18 @@ DemGrid averaged_grid(const DemGrid& grid, std::size_t factor) {
           grid.dy * k};
 }
 
+std::size_t run_averaging(const SilhouetteParams& params, const DemGrid& grid,
+                          const GeoTransform& geotransform) {
+  return params.strokes.drawn() ? scale_averaging(params.strokes.scale, grid, geotransform) : 1;
+}
+
 DemSource averaged_dem(const DemSource& dem, std::size_t factor) {
-  if (factor == 0) throw Error("a DEM cannot be averaged by a factor of 0");
   if (factor == 1) return dem;
   DemSource coarse;
-  coarse.grid = averaged_grid(dem.grid, factor);
-  const auto k = static_cast<double>(factor);
+  coarse.grid = averaged_grid(dem.grid, factor);  // refuses a factor of 0
   coarse.geotransform = dem.geotransform;
-  for (const int i : {1, 2, 4, 5}) coarse.geotransform.a[static_cast<std::size_t>(i)] *= k;
+  for (const int i : {1, 2, 4, 5})
+    coarse.geotransform.a[static_cast<std::size_t>(i)] *= static_cast<double>(factor);
   const DemGrid grid = coarse.grid;
   coarse.read = [&dem, factor, grid](const DemWindow& w, float* heights) {
     if (w.row0 > grid.rows || w.rows > grid.rows - w.row0 || w.col0 > grid.cols ||

@@ -17,4 +17,9 @@ DemSource averaged_dem(const DemSource& dem, std::size_t factor);
 // The grid of `grid` averaged `factor` cells a side (averaged_dem's).
 DemGrid averaged_grid(const DemGrid& grid, std::size_t factor);
 
+// The cells a side a run of `params` averages its DEM by before the method: for drawn strokes
+// with a scale, scale_averaging's; 1 for exact strokes, the thesis's method on the DEM as it is.
+std::size_t run_averaging(const SilhouetteParams& params, const DemGrid& grid,
+                          const GeoTransform& geotransform);
+
 }  // namespace tsk

@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "core/base/errors.h"
-#include "core/drawn/drawing_scale.h"
+#include "core/method/averaged_dem.h"
 #include "core/method/visibility.h"
 
 namespace tsk {
@@ -59,10 +59,8 @@ SilhouetteResult sketch_held_dem(const HeldDem& dem, const SilhouetteParams& cho
 SilhouetteResult sketch_held_strokes(const HeldDem& dem, const SilhouetteParams& choice,
                                      const ProgressFn& progress, StrokeSink sink) {
   require_view(dem, choice.view);
-  const bool averaged =
-      choice.strokes.drawn() &&
-      scale_averaging(choice.strokes.scale, dem.source.grid, dem.source.geotransform) > 1;
-  if (!averaged) return sketch_held_dem(dem, choice, progress, std::move(sink));
+  if (run_averaging(choice, dem.source.grid, dem.source.geotransform) == 1)
+    return sketch_held_dem(dem, choice, progress, std::move(sink));
   DemSource windows = dem.source;
   windows.read = dem_windows(dem);
   if (!windows.read) throw Error("the DEM held has no windows to average for the scale drawn for");

@@ -6,7 +6,6 @@
 #include <utility>
 
 #include "core/base/stage_timing.h"
-#include "core/drawn/drawing_scale.h"
 #include "core/method/averaged_dem.h"
 #include "core/method/plan_oblique.h"
 
@@ -96,10 +95,7 @@ SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams
                                     std::size_t strip, const ProgressFn& progress,
                                     StrokeSink sink) {
   params.validate();
-  const std::size_t factor = params.strokes.drawn()
-                                 ? scale_averaging(params.strokes.scale, dem.grid, dem.geotransform)
-                                 : 1;
-  if (factor == 1) return sketch_source(dem, params, strip, progress, std::move(sink));
+  const std::size_t factor = run_averaging(params, dem.grid, dem.geotransform);
   SilhouetteResult result =
       sketch_source(averaged_dem(dem, factor), params, strip, progress, std::move(sink));
   result.averaged = factor;

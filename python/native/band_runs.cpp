@@ -4,7 +4,6 @@
 #include "cli/dem_note_text.h"
 #include "cli/options.h"
 #include "core/base/byte_stream.h"
-#include "core/drawn/drawing_scale.h"
 #include "core/drawn/drawn_strokes.h"
 #include "core/method/averaged_dem.h"
 #include "core/method/run_note.h"
@@ -30,12 +29,13 @@ io::DemOptions task_dem(const cli::Options& o) {
 }
 
 TaskDem::TaskDem(const std::string& input, const cli::Options& o)
-    : file_(input, task_dem(o)), file_source_(file_.source()) {
-  const io::Dem& dem = file_.info();
-  if (o.params.strokes.drawn())
-    averaged_ = scale_averaging(o.params.strokes.scale, dem.grid, dem.geotransform);
-  source_ = averaged_dem(file_source_, averaged_);
-}
+    : TaskDem(input, o, task_dem(o)) {}
+
+TaskDem::TaskDem(const std::string& input, const cli::Options& o, const io::DemOptions& opened)
+    : file_(input, opened),
+      averaged_(run_averaging(o.params, file_.info().grid, file_.info().geotransform)),
+      file_source_(file_.source()),
+      source_(averaged_dem(file_source_, averaged_)) {}
 
 namespace {
 
@@ -55,9 +55,8 @@ BandPlan plan_bands(const std::string& input, const std::string& output,
                     const std::vector<std::string>& options, std::ostream& err) {
   const cli::Options o = band_run(input, output, options);
   io::check_vector_output(o.output, o.format);
-  const io::DemFile file(o.input, o.dem);  // with a sample of its range, for the notes
-  cli::print_notes(file.info().notes, err);
-  const TaskDem dem(o.input, o);
+  const TaskDem dem(o.input, o, o.dem);  // with a sample of its range, for the notes
+  cli::print_notes(dem.info().notes, err);
   const OrientedFrame frame = make_frame(dem.source().grid, o.params.view.azimuth_deg);
   const bool survey = o.params.adaptive.mode == FilterMode::adaptive;
   o.params.validate();

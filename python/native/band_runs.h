@@ -40,6 +40,8 @@ io::DemOptions task_dem(const cli::Options& o);
 class TaskDem {
  public:
   TaskDem(const std::string& input, const cli::Options& o);
+  // Opened as `opened` says (the plan reads a sample of the range for its notes; tasks do not).
+  TaskDem(const std::string& input, const cli::Options& o, const io::DemOptions& opened);
   TaskDem(const TaskDem&) = delete;  // the averaged source reads through file_source_
   TaskDem& operator=(const TaskDem&) = delete;
   const DemSource& source() const { return source_; }
@@ -48,8 +50,8 @@ class TaskDem {
 
  private:
   io::DemFile file_;
+  std::size_t averaged_;
   DemSource file_source_, source_;
-  std::size_t averaged_ = 1;
 };
 
 // Checks the silhouettes command's `options` (as typed) and paths for a run in bands (as
