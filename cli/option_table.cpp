@@ -1,5 +1,6 @@
 #include "cli/option_table.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <stdexcept>
@@ -11,6 +12,9 @@
 
 namespace tsk::cli {
 namespace {
+
+// The widest line of the help, in characters.
+constexpr std::size_t kHelpWidth = 96;
 
 // Parses a whole number or a finite decimal, refusing trailing junk.
 double parse_number(const std::string& option, const std::string& text) {
@@ -338,12 +342,25 @@ const std::vector<CommandSpec> kCommandTable = {
      "to tune the control point (OUTPUT: HTML page with an SVG diagram)"},
 };
 
-// `text` with every line after the first indented by `indent` spaces.
+// `text` laid out from column `indent` up to kHelpWidth: every line after the first indented,
+// and a line too long for the width broken at its last space that fits.
 std::string indent_lines(const std::string& text, std::size_t indent) {
+  const std::size_t room = kHelpWidth > indent + 20 ? kHelpWidth - indent : 20;
   std::string out;
-  for (char c : text) {
-    out += c;
-    if (c == '\n') out.append(indent, ' ');
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    std::string line = text.substr(start, end - start);
+    while (line.size() > room) {
+      const std::size_t cut = line.rfind(' ', room);
+      if (cut == std::string::npos || cut == 0) break;
+      out += line.substr(0, cut) + "\n" + std::string(indent, ' ');
+      line.erase(0, cut + 1);
+    }
+    out += line;
+    if (end == text.size()) break;
+    out += "\n" + std::string(indent, ' ');
+    start = end + 1;
   }
   return out;
 }

@@ -4,10 +4,17 @@
 #   cmake --build build --target package    ->  build/terrain-sketch_VERSION-qgisX.Y-PLATFORM.deb
 # Its dependencies come from the libraries the binaries link (dpkg-shlibdeps).
 find_program(TSK_GZIP gzip REQUIRED)
+# The page's commands and options come from the command line's own tables (cli/man_page.h).
+set(TSK_MAN_TEMPLATE ${PROJECT_SOURCE_DIR}/docs/man/terrain-sketch.1.in)
+set(TSK_MAN_SOURCE ${CMAKE_BINARY_DIR}/terrain-sketch.1)
 set(TSK_MAN_PAGE ${CMAKE_BINARY_DIR}/terrain-sketch.1.gz)
+add_custom_command(OUTPUT ${TSK_MAN_SOURCE}
+  COMMAND tsk-man-page ${TSK_MAN_TEMPLATE} ${TSK_MAN_SOURCE}
+  DEPENDS tsk-man-page ${TSK_MAN_TEMPLATE}
+  VERBATIM)
 add_custom_command(OUTPUT ${TSK_MAN_PAGE}
-  COMMAND ${TSK_GZIP} -9nc ${PROJECT_SOURCE_DIR}/docs/man/terrain-sketch.1 > ${TSK_MAN_PAGE}
-  DEPENDS ${PROJECT_SOURCE_DIR}/docs/man/terrain-sketch.1
+  COMMAND ${TSK_GZIP} -9nc ${TSK_MAN_SOURCE} > ${TSK_MAN_PAGE}
+  DEPENDS ${TSK_MAN_SOURCE}
   VERBATIM)
 add_custom_target(tsk_man_page ALL DEPENDS ${TSK_MAN_PAGE})
 install(FILES ${TSK_MAN_PAGE} DESTINATION share/man/man1)
