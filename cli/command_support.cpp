@@ -7,6 +7,7 @@
 
 #include "cli/dem_note_text.h"
 #include "core/base/errors.h"
+#include "core/drawn/drawing_scale.h"
 #include "io/write/output_files.h"
 
 namespace tsk::cli {
@@ -45,6 +46,39 @@ void print_averaging(double scale, const DemGrid& grid, std::size_t averaged, st
       << " x " << averaged << " cells first (to "
       << std::min(grid.dx, grid.dy) * static_cast<double>(averaged)
       << " m a cell, about 0.4 mm on paper): the scale shows nothing finer\n";
+  err.precision(old_precision);
+}
+
+void print_empty_run(const StageStats& stats, const SilhouetteParams& p, std::ostream& err) {
+  const EmptyRun cause = empty_run(stats);
+  if (cause == EmptyRun::not_empty) return;
+  const auto old_precision = err.precision(3);
+  err << "warning: no strokes: ";
+  if (cause == EmptyRun::nothing_seen) {
+    err << "no cell of the DEM is hidden, and none slopes away from the viewer gently enough to "
+           "be seen once tilted (under the base slope of "
+        << p.view.base_slope_pct << " % over the exaggeration of " << p.view.ve << ", "
+        << p.view.base_slope_pct / p.view.ve
+        << " %): the DEM is flat, or faces the viewer everywhere. Another --azimuth or a larger "
+           "--base-slope brings slopes into sight\n";
+  } else if (cause == EmptyRun::all_filtered) {
+    err << "the slope filter removed every candidate cell (c-set " << stats.pct(stats.candidate)
+        << " % of the cells), and no cell is hidden. Lower cut-offs (--row-cut, --col-cut, "
+           "--ctrl) keep more"
+        << (p.adaptive.mode == FilterMode::fixed ? ", or --filter adaptive scales them" : "")
+        << "\n";
+  } else {
+    err << "every chain was shorter than the shortest stroke kept (--min-cells "
+        << p.chain.min_cells << ")";
+    if (p.strokes.drawn() && p.strokes.scale > 0.0) {
+      err << "; drawn for 1:" << number_text(p.strokes.scale) << ", strokes under "
+          << kLeastStrokeMm << " mm on paper, or outlining under "
+          << number_text(p.strokes.scale / kFullReliefPerScale * kVanishingShare)
+          << " m of relief, are dropped too. A larger scale (a smaller N) keeps more\n";
+    } else {
+      err << ". A lower --min-cells keeps more\n";
+    }
+  }
   err.precision(old_precision);
 }
 

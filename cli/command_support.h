@@ -26,6 +26,10 @@ void print_filter(const FilterReport& report, std::ostream& err);
 // cells a side first (SilhouetteResult::averaged; nothing when 1).
 void print_averaging(double scale, const DemGrid& grid, std::size_t averaged, std::ostream& err);
 
+// A run that drew no stroke at all (empty_run): says on `err` which stage left nothing, and what
+// to change; nothing when it drew strokes.
+void print_empty_run(const StageStats& stats, const SilhouetteParams& params, std::ostream& err);
+
 // The DEM as the outputs' notes name it: its file's name.
 std::string dem_name(const Options& o);
 

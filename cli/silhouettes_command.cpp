@@ -111,6 +111,7 @@ std::string silhouettes(const Args& args, std::ostream& out, std::ostream& err,
   if (preview) plotter = write_preview(o, result, std::move(drawn), dem.info(), note, progress);
   print_filter(result.filter, err);
   print_averaging(o.params.strokes.scale, dem.info().grid, result.averaged, err);
+  print_empty_run(result.stats, o.params, err);
   if (o.page.plotter) print_plotter(plotter, !o.page.size.empty(), err);
   if (o.timings) print_timings(result.timings, write_s, commit_s, err);
   const StageStats& s = result.stats;

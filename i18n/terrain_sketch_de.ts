@@ -1019,22 +1019,42 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <translation>Gezeichnete Striche: jedes Ende läuft so weit (in Zellen) in seiner Richtung weiter, wie es ein von Hand gezeichneter Strich tut. 0: keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="245" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="243" />
         <source>Processing the DEM in %1 strips of %2 profiles.</source>
         <translation>Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="263" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="284" />
         <source>Drawn for 1:%L1, the DEM was averaged %L2 x %L2 cells first (to %L3 m a cell, about 0.4 mm on paper): the scale shows nothing finer.</source>
         <translation>Gezeichnet für 1:%L1: das DGM wurde zuerst über %L2 x %L2 Zellen gemittelt (auf %L3 m je Zelle, etwa 0,4 mm auf dem Papier); feiner zeigt der Maßstab nichts.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="294" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="297" />
+        <source>No strokes: no cell of the DEM is hidden, and none slopes away from the viewer gently enough to be seen once tilted (under the base slope of %L1 % over the exaggeration of %L2, %L3 %): the DEM is flat, or faces the viewer everywhere. Another view azimuth or a larger base slope brings slopes into sight.</source>
+        <translation>Keine Striche: keine Zelle des DGM ist verdeckt, und keine fällt vom Betrachter so sanft ab, dass sie nach dem Kippen zu sehen ist (unter der Grundneigung von %L1 % geteilt durch die Überhöhung von %L2, %L3 %): das DGM ist flach oder überall dem Betrachter zugewandt. Eine andere Blickrichtung oder eine größere Grundneigung bringt Hänge in Sicht.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="306" />
+        <source>No strokes: the slope filter removed every candidate cell, and no cell is hidden. Lower cut-offs keep more, or the slope filter adapted to the DEM scales them.</source>
+        <translation>Keine Striche: der Neigungsfilter hat jede Kandidatenzelle entfernt, und keine Zelle ist verdeckt. Niedrigere Grenzwerte behalten mehr, oder der an das DGM angepasste Neigungsfilter skaliert sie.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="313" />
+        <source>No strokes: every chain was shorter than the shortest stroke kept. Drawn for 1:%1, strokes under %L2 mm on paper, or outlining under %L3 m of relief, are dropped too: a larger scale (a smaller number) keeps more.</source>
+        <translation>Keine Striche: jede Kette war kürzer als der kürzeste behaltene Strich. Gezeichnet für 1:%1 entfallen auch Striche unter %L2 mm auf dem Papier oder solche, die weniger als %L3 m Relief umreißen: ein größerer Maßstab (eine kleinere Zahl) behält mehr.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="319" />
+        <source>No strokes: every chain was shorter than the shortest stroke kept (%L1 cells). A lower minimum stroke length keeps more.</source>
+        <translation>Keine Striche: jede Kette war kürzer als der kürzeste behaltene Strich (%L1 Zellen). Eine geringere Mindestzahl Zellen je Strich behält mehr.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="333" />
         <source>Factual silhouettes, %1</source>
         <translation>Faktische Silhouetten, %1</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="297" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="336" />
         <source>Formulated silhouettes, %1</source>
         <translation>Formulierte Silhouetten, %1</translation>
     </message>

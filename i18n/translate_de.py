@@ -8,6 +8,14 @@ import sys
 import xml.etree.ElementTree as ET
 
 GERMAN = {
+    "No strokes: no cell of the DEM is hidden, and none slopes away from the viewer gently enough to be seen once tilted (under the base slope of %L1 % over the exaggeration of %L2, %L3 %): the DEM is flat, or faces the viewer everywhere. Another view azimuth or a larger base slope brings slopes into sight.":
+        "Keine Striche: keine Zelle des DGM ist verdeckt, und keine fällt vom Betrachter so sanft ab, dass sie nach dem Kippen zu sehen ist (unter der Grundneigung von %L1 % geteilt durch die Überhöhung von %L2, %L3 %): das DGM ist flach oder überall dem Betrachter zugewandt. Eine andere Blickrichtung oder eine größere Grundneigung bringt Hänge in Sicht.",
+    "No strokes: the slope filter removed every candidate cell, and no cell is hidden. Lower cut-offs keep more, or the slope filter adapted to the DEM scales them.":
+        "Keine Striche: der Neigungsfilter hat jede Kandidatenzelle entfernt, und keine Zelle ist verdeckt. Niedrigere Grenzwerte behalten mehr, oder der an das DGM angepasste Neigungsfilter skaliert sie.",
+    "No strokes: every chain was shorter than the shortest stroke kept. Drawn for 1:%1, strokes under %L2 mm on paper, or outlining under %L3 m of relief, are dropped too: a larger scale (a smaller number) keeps more.":
+        "Keine Striche: jede Kette war kürzer als der kürzeste behaltene Strich. Gezeichnet für 1:%1 entfallen auch Striche unter %L2 mm auf dem Papier oder solche, die weniger als %L3 m Relief umreißen: ein größerer Maßstab (eine kleinere Zahl) behält mehr.",
+    "No strokes: every chain was shorter than the shortest stroke kept (%L1 cells). A lower minimum stroke length keeps more.":
+        "Keine Striche: jede Kette war kürzer als der kürzeste behaltene Strich (%L1 Zellen). Eine geringere Mindestzahl Zellen je Strich behält mehr.",
     "Tapered line (Terrain Sketch)": "Verjüngte Linie (Terrain Sketch)",
     "<h3>terrain_sketch_draws_taper()</h3><div>True while the Terrain Sketch plugin is loaded and draws the width of every vertex of drawn strokes. Its styles' stepped lines are enabled only where it is unknown.</div>":
         "<h3>terrain_sketch_draws_taper()</h3><div>Wahr, solange die Erweiterung Terrain Sketch geladen ist und die Breite jedes Stützpunkts gezeichneter Striche zeichnet. Die gestuften Linien ihrer Stile sind nur dort aktiv, wo die Funktion unbekannt ist.</div>",

@@ -9,6 +9,7 @@
 #include <new>
 
 #include "core/base/errors.h"
+#include "core/drawn/drawing_scale.h"
 #include "core/method/averaged_dem.h"
 #include "core/method/silhouettes.h"
 #include "plugin/choice_parameter.h"
@@ -255,14 +256,7 @@ QVariantMap SilhouettesAlgorithm::writeOutputs(const QVariantMap& parameters,
     });
   });
   SharedParameters::logFilter(result.filter, feedback);
-  if (feedback && result.averaged > 1) {
-    const double cell = std::min(dem.grid.dx, dem.grid.dy) * static_cast<double>(result.averaged);
-    feedback->pushInfo(tr("Drawn for 1:%L1, the DEM was averaged %L2 x %L2 cells first (to %L3 m "
-                          "a cell, about 0.4 mm on paper): the scale shows nothing finer.")
-                           .arg(QLocale().toString(mParams.strokes.scale, 'f', 0))
-                           .arg(static_cast<qulonglong>(result.averaged))
-                           .arg(cell, 0, 'g', 4));
-  }
+  if (feedback) tellOutcome(result, dem.grid, *feedback);
   mNote = sketchNote(demName(), mParams.view, result.filter, mParams.strokes, result.averaged);
   factual.finish(mNote);
   formulated.finish(mNote);
@@ -279,6 +273,55 @@ QVariantMap SilhouettesAlgorithm::writeOutputs(const QVariantMap& parameters,
   }
   releaseRaster();  // release the grid before QGIS loads the outputs
   return outputs;
+}
+
+void SilhouettesAlgorithm::tellOutcome(const SilhouetteResult& result, const DemGrid& grid,
+                                       QgsProcessingFeedback& feedback) const {
+  const double scale = mParams.strokes.drawn() ? mParams.strokes.scale : 0.0;
+  const QString scaleText = QLocale().toString(scale, 'f', 0);
+  if (result.averaged > 1) {
+    const double cell = std::min(grid.dx, grid.dy) * static_cast<double>(result.averaged);
+    feedback.pushInfo(tr("Drawn for 1:%L1, the DEM was averaged %L2 x %L2 cells first (to %L3 m "
+                         "a cell, about 0.4 mm on paper): the scale shows nothing finer.")
+                          .arg(scaleText)
+                          .arg(static_cast<qulonglong>(result.averaged))
+                          .arg(cell, 0, 'g', 4));
+  }
+  // A run that drew nothing says which stage left nothing, and which parameter to change.
+  const ViewParams& view = mParams.view;
+  switch (empty_run(result.stats)) {
+    case EmptyRun::not_empty:
+      return;
+    case EmptyRun::nothing_seen:
+      feedback.pushWarning(
+          tr("No strokes: no cell of the DEM is hidden, and none slopes away from the viewer "
+             "gently enough to be seen once tilted (under the base slope of %L1 % over the "
+             "exaggeration of %L2, %L3 %): the DEM is flat, or faces the viewer everywhere. "
+             "Another view azimuth or a larger base slope brings slopes into sight.")
+              .arg(view.base_slope_pct, 0, 'g', 3)
+              .arg(view.ve, 0, 'g', 3)
+              .arg(view.base_slope_pct / view.ve, 0, 'g', 3));
+      return;
+    case EmptyRun::all_filtered:
+      feedback.pushWarning(
+          tr("No strokes: the slope filter removed every candidate cell, and no "
+             "cell is hidden. Lower cut-offs keep more, or the slope filter "
+             "adapted to the DEM scales them."));
+      return;
+    case EmptyRun::all_short:
+      feedback.pushWarning(
+          scale > 0.0
+              ? tr("No strokes: every chain was shorter than the shortest stroke kept. Drawn for "
+                   "1:%1, strokes under %L2 mm on paper, or outlining under %L3 m of relief, are "
+                   "dropped too: a larger scale (a smaller number) keeps more.")
+                    .arg(scaleText)
+                    .arg(kLeastStrokeMm)
+                    .arg(scale / kFullReliefPerScale * kVanishingShare, 0, 'f', 0)
+              : tr("No strokes: every chain was shorter than the shortest stroke kept (%L1 "
+                   "cells). A lower minimum stroke length keeps more.")
+                    .arg(mParams.chain.min_cells));
+      return;
+  }
 }
 
 QVariantMap SilhouettesAlgorithm::postProcessAlgorithm(QgsProcessingContext& context,

@@ -31,6 +31,10 @@ class SilhouettesAlgorithm : public DemViewAlgorithm {
  private:
   void addStrokeParameters();
   void readStrokes(const QVariantMap& parameters, QgsProcessingContext& context);
+  // Tells what the user should know of a finished run: the DEM averaged for the scale, or why it
+  // drew no stroke at all.
+  void tellOutcome(const SilhouetteResult& result, const DemGrid& grid,
+                   QgsProcessingFeedback& feedback) const;
   SilhouetteParams mParams;
   int mStrips = 0;
   QString mFactualId;

@@ -21,6 +21,14 @@ std::vector<StageFigure> stage_figures(const StageStats& s) {
           {"formulated_strokes", static_cast<double>(s.formulated_strokes), true}};
 }
 
+EmptyRun empty_run(const StageStats& s) {
+  if (s.factual_strokes + s.formulated_strokes > 0) return EmptyRun::not_empty;
+  // Factual strokes start from occluding cells, formulated ones from the c-set through the filter.
+  if (s.occluding == 0 && s.candidate == 0) return EmptyRun::nothing_seen;
+  if (s.occluding == 0 && s.filtered == 0) return EmptyRun::all_filtered;
+  return EmptyRun::all_short;
+}
+
 void stream_strips(SilhouetteStream& stream, const OrientedFrame& frame, std::size_t to,
                    std::size_t strip, const ProfileReader& read, unsigned threads) {
   check_strip_fits(frame, strip);

@@ -52,6 +52,7 @@ StrokeColumns sketch_array(const io::MemoryBand& band, const io::MemoryRasterInf
                          [&columns](Stroke&& stroke) { add_stroke(stroke, columns); });
   cli::print_filter(result.filter, err);
   cli::print_averaging(o.params.strokes.scale, dem.info().grid, result.averaged, err);
+  cli::print_empty_run(result.stats, o.params, err);
   columns.statistics = cli::stats_json(result.stats, result.filter);
   return columns;
 }

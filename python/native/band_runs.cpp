@@ -121,6 +121,7 @@ std::string stitch_bands(const std::string& input, const std::string& output,
       });
   cli::print_filter(result.filter, err);
   cli::print_averaging(o.params.strokes.scale, dem.info().grid, dem.averaged(), err);
+  cli::print_empty_run(result.stats, o.params, err);
   return cli::stats_json(result.stats, result.filter);
 }
 

@@ -65,7 +65,11 @@ def path_argument(path):
 
 
 def log_line(line):
-    _LOG.info(line)
+    """A line the run tells: a warning (a run that drew nothing) as one, every note as info."""
+    if line.startswith("warning:"):
+        _LOG.warning(line)
+    else:
+        _LOG.info(line)
 
 
 def hooks(progress):

@@ -185,3 +185,38 @@ TEST_CASE("the run notes keep a layer's name as it is, placeholders and all", "[
   CHECK(product.title == QStringLiteral("Row slope, from 250°"));
   CHECK(product.abstract.startsWith(dem + QStringLiteral(". Row slope seen from 250°")));
 }
+
+TEST_CASE("a run that draws no stroke warns which stage left nothing", "[plugin][robustness]") {
+  QTemporaryDir dir;
+  // A flat DEM in UTM: nothing hidden, no slope seen edge-on.
+  const QString flat = dir.filePath(QStringLiteral("flat.tif"));
+  GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), flat.toUtf8().constData(), 40, 40, 1,
+                               GDT_Float32, nullptr);
+  REQUIRE(ds != nullptr);
+  double geotransform[6] = {500000, 10, 0, 4000000, 0, -10};
+  GDALSetGeoTransform(ds, geotransform);
+  OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
+  OSRImportFromEPSG(srs, 32616);
+  GDALSetSpatialRef(ds, srs);
+  OSRDestroySpatialReference(srs);
+  REQUIRE(GDALFillRaster(GDALGetRasterBand(ds, 1), 100.0, 0.0) == CE_None);
+  GDALClose(ds);
+  RecordingFeedback flatRun;
+  const Run run = runAlgorithm(flat, {}, dir, &flatRun);
+  INFO(run.error.toStdString());
+  REQUIRE(run.ok);
+  CHECK(run.results.value("FACTUAL_STROKES").toDouble() == 0);
+  CHECK(run.results.value("FORMULATED_STROKES").toDouble() == 0);
+  CHECK(flatRun.warnings.join(' ').contains(
+      QStringLiteral("No strokes: no cell of the DEM is hidden")));
+  // A real DEM whose chains are all shorter than the shortest stroke asked for.
+  const QString sample = kData + "/jacksboro_utm16n.tif";
+  RecordingFeedback shortRun;
+  REQUIRE(runAlgorithm(sample, {{"STROKES", 1}, {"MIN_CELLS", 5000}}, dir, &shortRun).ok);
+  CHECK(shortRun.warnings.join(' ').contains(
+      QStringLiteral("every chain was shorter than the shortest stroke kept")));
+  // The defaults draw strokes, and warn of none.
+  RecordingFeedback defaults;
+  REQUIRE(runAlgorithm(sample, {}, dir, &defaults).ok);
+  CHECK_FALSE(defaults.warnings.join(' ').contains(QStringLiteral("No strokes")));
+}

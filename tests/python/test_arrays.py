@@ -150,3 +150,20 @@ def test_geodataframe():
     np.testing.assert_array_equal(first, strokes.coordinates(0)[:, :2])
     np.testing.assert_array_equal(frame["weights"].iloc[0], strokes.coordinates(0)[:, 2])
     assert list(frame.columns[:3]) == ["class", "cells", "length"]
+
+
+def test_a_run_that_draws_nothing_warns_why(caplog):
+    # A flat DEM: nothing hidden and no slope seen edge-on, so no stroke, and a warning that says so
+    # (logged as a warning, not among the notes).
+    heights = np.full((40, 40), 100.0, dtype=np.float32)
+    with caplog.at_level("INFO", logger="terrain_sketch"):
+        strokes = terrain_sketch.sketch(heights, (500000, 10, 0, 4000000, 0, -10), None,
+                                        "EPSG:32616")
+    assert len(strokes) == 0
+    warnings = [r.getMessage() for r in caplog.records if r.levelname == "WARNING"]
+    assert any(w.startswith("warning: no strokes: no cell of the DEM is hidden") for w in warnings)
+    # The sample draws strokes, and warns of nothing.
+    caplog.clear()
+    with caplog.at_level("INFO", logger="terrain_sketch"):
+        assert len(terrain_sketch.sketch(*read_dem(SAMPLE))) > 0
+    assert not [r for r in caplog.records if r.levelname == "WARNING"]
