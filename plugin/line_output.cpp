@@ -15,6 +15,7 @@
 #include <cctype>
 #include <exception>
 #include <filesystem>
+#include <optional>
 
 #include "io/read/gdal_util.h"
 #include "io/write/output_set.h"
@@ -198,10 +199,13 @@ LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMa
   }
   mStaged = staged;
   const bool gpkg = !file.addsLayer && target.endsWith(QLatin1String(".gpkg"), Qt::CaseInsensitive);
+  std::optional<io::BulkLoadPages> pages;  // QGIS creates the file, in this thread
+  if (gpkg) pages.emplace();
   mSink.reset(QgsProcessingParameters::parameterAsSink(
       definition, sinkParameters, fields, measured ? kLineStringM : kLineString, crs, context,
       mDestination, QgsFeatureSink::SinkFlags(), QVariantMap(), QStringList(),
       gpkg ? QStringList{QStringLiteral("SPATIAL_INDEX=NO")} : QStringList()));
+  pages.reset();
   if (!mSink) throw QgsProcessingException(SinkErrors::invalidSinkError(parameters, key));
   const QVariantMap parts =
       QgsProviderRegistry::instance()->decodeUri(QStringLiteral("ogr"), mDestination);

@@ -50,6 +50,7 @@ class IndexedGpkg {
     return values;
   }
 
+  long long page_size() { return std::stoll(first_column("PRAGMA page_size").at(0)); }
   std::string rtree_check() { return first_column("SELECT rtreecheck('" + rtree_ + "')").at(0); }
   long long indexed(const std::string& where = "1") {
     return std::stoll(first_column("SELECT count(*) FROM " + rtree_ + " WHERE " + where).at(0));

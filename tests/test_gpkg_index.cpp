@@ -168,6 +168,24 @@ TEST_CASE("the command line's GeoPackages carry a whole spatial index", "[gpkg][
   test::check_spatial_index(dir / "p.gpkg", "pstrokes");
 }
 
+TEST_CASE("GeoPackages get pages sized for a bulk load unless the user sizes them", "[gpkg]") {
+  ScratchDir dir("gpkg-pages");
+  const std::string path = dir / "s.gpkg";
+  io::write_strokes(path, "", random_strokes(100, true, 1), "");
+  CHECK(IndexedGpkg(path, "silhouettes").page_size() == 16384);
+  REQUIRE(test::run_cli({"silhouettes", TSK_SAMPLE_DEM, dir / "cli.gpkg"}).code == 0);
+  CHECK(IndexedGpkg(dir / "cli.gpkg", "silhouettes").page_size() == 16384);
+  // The user's pragmas come after ours, and SQLite takes the last page size.
+  const std::string before = CPLGetConfigOption("OGR_SQLITE_PRAGMA", "");
+  CPLSetConfigOption("OGR_SQLITE_PRAGMA", "page_size=8192");
+  io::write_strokes(path, "", random_strokes(100, true, 1), "");
+  CPLSetConfigOption("OGR_SQLITE_PRAGMA", before.empty() ? nullptr : before.c_str());
+  IndexedGpkg user(path, "silhouettes");
+  CHECK(user.page_size() == 8192);
+  CHECK(user.rtree_check() == "ok");
+  CHECK(user.indexed() == 100);
+}
+
 TEST_CASE("GeoPackage spatial index follows features added and deleted later", "[gpkg]") {
   ScratchDir dir("gpkg-edit");
   const std::string path = dir / "s.gpkg";

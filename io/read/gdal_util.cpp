@@ -21,6 +21,12 @@ std::string shortened(const std::string& text) {
   return text.substr(0, kEnd) + " [...] " + text.substr(text.size() - kEnd);
 }
 
+// Our page size, then the user's pragmas: SQLite takes the last page_size it is given.
+std::string bulk_load_pragmas() {
+  const char* user = CPLGetConfigOption("OGR_SQLITE_PRAGMA", nullptr);
+  return std::string("page_size=16384") + (user && *user ? std::string(",") + user : "");
+}
+
 }  // namespace
 
 GdalErrorCapture::GdalErrorCapture() {
@@ -83,16 +89,18 @@ DatasetPtr open_raster(const std::string& path) {
   return dataset;
 }
 
-NoAuxFiles::NoAuxFiles() {
-  const char* before = CPLGetThreadLocalConfigOption("GDAL_PAM_ENABLED", nullptr);
+ThreadConfigOption::ThreadConfigOption(const char* key, const std::string& value) : key_(key) {
+  const char* before = CPLGetThreadLocalConfigOption(key, nullptr);
   had_ = before != nullptr;
   if (had_) before_ = before;
-  CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");
+  CPLSetThreadLocalConfigOption(key, value.c_str());
 }
 
-NoAuxFiles::~NoAuxFiles() {
-  CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", had_ ? before_.c_str() : nullptr);
+ThreadConfigOption::~ThreadConfigOption() {
+  CPLSetThreadLocalConfigOption(key_, had_ ? before_.c_str() : nullptr);
 }
+
+BulkLoadPages::BulkLoadPages() : ThreadConfigOption("OGR_SQLITE_PRAGMA", bulk_load_pragmas()) {}
 
 bool close_dataset(DatasetPtr& dataset) {
 #if GDAL_VERSION_NUM >= GDAL_COMPUTE_VERSION(3, 7, 0)

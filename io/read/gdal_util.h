@@ -36,18 +36,35 @@ struct GdalCloser {
 };
 using DatasetPtr = std::unique_ptr<GDALDataset, GdalCloser>;
 
-// While alive, datasets this thread opens leave no .aux.xml beside them: a look into a file
-// must not change what is there (GDAL 3.10 writes one for a GeoPackage raster it only opened).
-class NoAuxFiles {
+// While alive, GDAL's configuration option `key` is `value` for this thread; then it is what it
+// was again.
+class ThreadConfigOption {
  public:
-  NoAuxFiles();
-  ~NoAuxFiles();
-  NoAuxFiles(const NoAuxFiles&) = delete;
-  NoAuxFiles& operator=(const NoAuxFiles&) = delete;
+  ThreadConfigOption(const char* key, const std::string& value);
+  ~ThreadConfigOption();
+  ThreadConfigOption(const ThreadConfigOption&) = delete;
+  ThreadConfigOption& operator=(const ThreadConfigOption&) = delete;
 
  private:
+  const char* key_;
   std::string before_;
   bool had_ = false;
+};
+
+// While alive, datasets this thread opens leave no .aux.xml beside them: a look into a file
+// must not change what is there (GDAL 3.10 writes one for a GeoPackage raster it only opened).
+class NoAuxFiles : ThreadConfigOption {
+ public:
+  NoAuxFiles() : ThreadConfigOption("GDAL_PAM_ENABLED", "NO") {}
+};
+
+// While alive, the SQLite databases (GeoPackages) this thread creates get pages of 16 KiB rather
+// than 4 KiB, as strokes go into them in one bulk load: the 8000 x 8000 benchmark's 827 000 drawn
+// strokes write a 6 % smaller file in about 5 % less time, and a small output grows by a few
+// hundred KB. A page_size the user sets in OGR_SQLITE_PRAGMA comes after ours, and wins.
+class BulkLoadPages : ThreadConfigOption {
+ public:
+  BulkLoadPages();
 };
 
 // Closes `dataset` and returns false when GDAL says the close failed. GDAL 3.7 and later say so

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 
 #include "io/gpkg/gpkg_line_appender.h"
 #include "io/read/gdal_util.h"
@@ -262,7 +263,10 @@ void write_line_layers(const std::string& path, const std::string& format,
   }
   // Creates the layers at `target`, fills them and closes the file.
   const auto fill = [&](const std::string& target) {
+    std::optional<BulkLoadPages> pages;
+    if (database) pages.emplace();
     DatasetPtr ds(driver->Create(target.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+    pages.reset();
     if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
     const bool transaction = ds->StartTransaction() == OGRERR_NONE;
     for (const LineLayer& layer : layers) fill_line_layer(*ds, path, driver_name, layer, capture);

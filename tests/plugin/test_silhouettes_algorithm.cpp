@@ -64,9 +64,11 @@ TEST_CASE("the algorithm's strokes equal the core's on real DEMs", "[plugin]") {
         REQUIRE(line[q].y() == Approx(s.points[static_cast<std::size_t>(q)].y));
       }
     }
-    // QGIS wrote them without an index; the algorithm then built it in bulk.
-    test::check_spatial_index(
-        run.results.value("FACTUAL").toString().section('|', 0, 0).toStdString(), "factual");
+    // QGIS wrote them without an index; the algorithm then built it in bulk, on pages sized for it.
+    const std::string factualFile =
+        run.results.value("FACTUAL").toString().section('|', 0, 0).toStdString();
+    test::check_spatial_index(factualFile, "factual");
+    CHECK(test::IndexedGpkg(factualFile, "factual").page_size() == 16384);
     test::check_spatial_index(
         run.results.value("FORMULATED").toString().section('|', 0, 0).toStdString(), "formulated");
     QgsFeatureIterator fo = formulated.getFeatures();
