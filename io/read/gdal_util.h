@@ -37,7 +37,7 @@ struct GdalCloser {
 using DatasetPtr = std::unique_ptr<GDALDataset, GdalCloser>;
 
 // While alive, GDAL's configuration option `key` is `value` for this thread; then it is what it
-// was again.
+// was again. `key` is kept as given, so it must outlive the object (a string literal does).
 class ThreadConfigOption {
  public:
   ThreadConfigOption(const char* key, const std::string& value);
