@@ -178,6 +178,31 @@ TEST_CASE("strokes grouped as they stream join as they do all together", "[drawn
   CHECK(streamed == together);
 }
 
+TEST_CASE("grouping unites two strokes exactly when they join, at turns about the limit",
+          "[drawn][joining]") {
+  // Stroke a runs along x to the origin; stroke b leaves from (1, 0) turned by `turn`, so that the
+  // worst angle between the ends' directions and the step is the turn. Turns within a few 1e-9
+  // degrees of the limit: grouping decides them by cosines, joining by the angles themselves.
+  constexpr double kPi = 3.14159265358979323846;
+  int joined = 0;
+  for (int k = -300; k <= 300; ++k) {
+    const double turn = kRule.angle_deg + k * 1e-9;
+    CAPTURE(k);
+    const double cx = std::cos(turn * kPi / 180.0), cy = std::sin(turn * kPi / 180.0);
+    std::vector<StrokePoint> b;
+    for (int j = 0; j < 5; ++j) b.push_back({1.0 + j * cx, j * cy});
+    const std::vector<Stroke> pair{row_stroke(-4, 0, 0.0), line_stroke(b)};
+    StrokeGrouper grouper(kRule);
+    const std::size_t first = grouper.add(pair[0]), second = grouper.add(pair[1]);
+    const bool joins = join_strokes(pair, kRule).size() == 1;
+    CHECK((grouper.group_of(first) == grouper.group_of(second)) == joins);
+    if (k < -1) CHECK(joins);
+    if (k > 1) CHECK_FALSE(joins);
+    joined += joins ? 1 : 0;
+  }
+  CHECK(joined >= 300);
+}
+
 TEST_CASE("short pieces stay only where they close a gap between longer ones", "[drawn][joining]") {
   JoinRule rule = kRule;
   rule.least_piece_cells = 3;

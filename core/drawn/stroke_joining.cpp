@@ -52,21 +52,61 @@ double angle_between(double ax, double ay, double bx, double by) {
   return std::acos(c) * 180.0 / kPi;
 }
 
-// How badly end a leads on into end b (smaller is better), or a negative value when it does not.
-double join_cost(const StrokeEnd& a, const StrokeEnd& b, const JoinRule& rule) {
+// The largest angle two joining ends may turn through, and its cosine.
+struct AngleLimit {
+  double deg, cos;
+};
+
+// Whether angle_between(a, b) is at most `limit.deg` (at most 90), mostly without its arc cosine:
+// a cosine clear of the limit's by 1e-9 puts the angle more than 5e-8 degrees from it, far more
+// than the rounding of either.
+bool within_angle(double ax, double ay, double bx, double by, const AngleLimit& limit) {
+  const double la = std::sqrt(ax * ax + ay * ay), lb = std::sqrt(bx * bx + by * by);
+  if (la <= 0.0 || lb <= 0.0) return 180.0 <= limit.deg;
+  const double c = std::clamp((ax * bx + ay * by) / (la * lb), -1.0, 1.0);
+  constexpr double kClear = 1e-9;
+  if (c > limit.cos + kClear) return true;
+  if (c < limit.cos - kClear) return false;
+  return angle_between(ax, ay, bx, by) <= limit.deg;
+}
+
+// Whether end a leads on into end b: within the gap, and every direction there is to compare (the
+// ends' and the step's between them) within the angle, as within(ux, uy, vx, vy) says of each pair
+// of directions compared.
+template <typename Angle>
+bool leads_on(const StrokeEnd& a, const StrokeEnd& b, const JoinRule& rule, Angle&& within) {
   const double gx = b.at.x - a.at.x, gy = b.at.y - a.at.y;
   const double gap = std::sqrt(gx * gx + gy * gy);
-  if (gap > rule.gap) return -1.0;
+  if (gap > rule.gap) return false;
   const bool a_dir = a.dx != 0.0 || a.dy != 0.0, b_dir = b.dx != 0.0 || b.dy != 0.0;
-  if (!a_dir && !b_dir) return -1.0;
-  double worst = 0.0;
-  if (a_dir && b_dir) worst = angle_between(a.dx, a.dy, -b.dx, -b.dy);
+  if (!a_dir && !b_dir) return false;
+  if (a_dir && b_dir && !within(a.dx, a.dy, -b.dx, -b.dy)) return false;
   // A step shorter than a tenth of the gap has no direction of its own to compare.
   if (gap > 0.1 * rule.gap) {
-    if (a_dir) worst = std::max(worst, angle_between(a.dx, a.dy, gx, gy));
-    if (b_dir) worst = std::max(worst, angle_between(-b.dx, -b.dy, gx, gy));
+    if (a_dir && !within(a.dx, a.dy, gx, gy)) return false;
+    if (b_dir && !within(-b.dx, -b.dy, gx, gy)) return false;
   }
-  if (worst > rule.angle_deg) return -1.0;
+  return true;
+}
+
+// Whether end a leads on into end b (join_cost is not negative), without the cost: what grouping
+// asks of every pair of ends near each other.
+bool may_join(const StrokeEnd& a, const StrokeEnd& b, const JoinRule& rule,
+              const AngleLimit& limit) {
+  return leads_on(a, b, rule, [&](double ux, double uy, double vx, double vy) {
+    return within_angle(ux, uy, vx, vy, limit);
+  });
+}
+
+// How badly end a leads on into end b (smaller is better), or a negative value when it does not.
+double join_cost(const StrokeEnd& a, const StrokeEnd& b, const JoinRule& rule) {
+  double worst = 0.0;
+  const bool joins = leads_on(a, b, rule, [&](double ux, double uy, double vx, double vy) {
+    worst = std::max(worst, angle_between(ux, uy, vx, vy));
+    return worst <= rule.angle_deg;
+  });
+  if (!joins) return -1.0;
+  const double gap = distance(a.at, b.at);
   return gap / std::max(rule.gap, 1e-300) + worst / std::max(rule.angle_deg, 1e-9);
 }
 
@@ -384,11 +424,14 @@ struct StrokeGrouper::Index : EndIndex {
 };
 
 StrokeGrouper::StrokeGrouper(const JoinRule& rule)
-    : rule_(rule), index_(std::make_unique<Index>(rule.gap, std::size_t{1} << 12)) {}
+    : rule_(rule),
+      angle_cos_(std::cos(rule.angle_deg * kPi / 180.0)),
+      index_(std::make_unique<Index>(rule.gap, std::size_t{1} << 12)) {}
 
 StrokeGrouper::~StrokeGrouper() = default;
 
 std::size_t StrokeGrouper::add(const Stroke& stroke) {
+  const AngleLimit limit{rule_.angle_deg, angle_cos_};
   const std::size_t id = first_held_ + records_.size();
   records_.push_back({id, kNone, id, stroke.chain.empty() ? 0 : stroke.chain.back().p, {}});
   for (bool start : {true, false}) {
@@ -397,7 +440,7 @@ std::size_t StrokeGrouper::add(const Stroke& stroke) {
     const auto end_id = static_cast<std::uint32_t>(2 * id + (start ? 0 : 1));
     index_->near(end.at, [&](std::uint32_t other) {
       const EndRecord& o = record(stroke_of(other)).ends[other % 2];
-      if (stroke_of(other) != id && join_cost(end, {o.at, o.dx, o.dy}, rule_) >= 0.0)
+      if (stroke_of(other) != id && may_join(end, {o.at, o.dx, o.dy}, rule_, limit))
         unite(id, stroke_of(other));
     });
     index_->insert(end_id, end.at);

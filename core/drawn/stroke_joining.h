@@ -91,6 +91,7 @@ class StrokeGrouper {
   void unite(std::size_t a, std::size_t b);
 
   JoinRule rule_;
+  double angle_cos_;  // of the rule's angle, to compare directions by
   std::unique_ptr<Index> index_;
   std::vector<Record> records_;  // of strokes first_held_, first_held_ + 1, ...
   std::size_t first_held_ = 0;
