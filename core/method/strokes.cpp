@@ -113,12 +113,13 @@ void StrokeBuilder::Sums::add(double slope_pct, double row_slope_pct, double dep
 
 void StrokeBuilder::add(const StrokeCell& c, bool drawn) {
   if (drawn) {
-    drawn_.push_back({{c.dist, c.z, c.offset}, c.slope_pct, c.row_slope_pct, c.depth_m});
-  } else {
-    if (!chain_.empty()) length_ += std::hypot(c.map.x - last_map_.x, c.map.y - last_map_.y);
-    last_map_ = c.map;
-    sums_.add(c.slope_pct, c.row_slope_pct, c.depth_m, c.dist, c.z);
+    drawn_.push_back(
+        {c.cell, c.point, {c.dist, c.z, c.offset}, c.slope_pct, c.row_slope_pct, c.depth_m});
+    return;
   }
+  if (!chain_.empty()) length_ += std::hypot(c.map.x - last_map_.x, c.map.y - last_map_.y);
+  last_map_ = c.map;
+  sums_.add(c.slope_pct, c.row_slope_pct, c.depth_m, c.dist, c.z);
   chain_.push_back(c.cell);
   points_.push_back(c.point);
 }
@@ -140,11 +141,11 @@ Stroke StrokeBuilder::take(StrokeClass cls) {
 
 void StrokeBuilder::drawn_pieces(StrokeClass cls, double max_step,
                                  std::vector<Stroke>& pieces) const {
-  const std::size_t n = points_.size();
+  const std::size_t n = drawn_.size();
   std::size_t from = 0;
   double length = 0.0;
   for (std::size_t k = 1; k <= n; ++k) {
-    const double step = k < n ? distance(points_[k - 1], points_[k]) : 0.0;
+    const double step = k < n ? distance(drawn_[k - 1].point, drawn_[k].point) : 0.0;
     if (k < n && step <= max_step) {
       length += step;
       continue;
@@ -163,11 +164,15 @@ Stroke StrokeBuilder::drawn_piece(StrokeClass cls, std::size_t from, std::size_t
     sums.add(c.slope_pct, c.row_slope_pct, c.depth_m, c.vertex.dist, c.vertex.z);
   }
   Stroke s = attributes(cls, static_cast<int>(to - from), length, sums);
-  const auto first = static_cast<std::ptrdiff_t>(from), last = static_cast<std::ptrdiff_t>(to);
-  s.chain.assign(chain_.begin() + first, chain_.begin() + last);
-  s.points.assign(points_.begin() + first, points_.begin() + last);
-  s.vertices.reserve(to - from);
-  for (std::size_t k = from; k < to; ++k) s.vertices.push_back(drawn_[k].vertex);
+  s.chain.resize(to - from);
+  s.points.resize(to - from);
+  s.vertices.resize(to - from);
+  for (std::size_t k = from; k < to; ++k) {
+    const DrawnCell& c = drawn_[k];
+    s.chain[k - from] = c.cell;
+    s.points[k - from] = c.point;
+    s.vertices[k - from] = c.vertex;
+  }
   return s;
 }
 

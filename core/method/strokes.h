@@ -117,11 +117,11 @@ class StrokeBuilder {
  public:
   // drawn: keep what drawing needs of the cell instead, the attributes left to drawn_pieces.
   void add(const StrokeCell& c, bool drawn = false);
-  int cells() const { return static_cast<int>(chain_.size()); }
+  int cells() const { return static_cast<int>(chain_.size() + drawn_.size()); }
   // The profile of the first cell (the builder must hold one).
-  std::int32_t first_profile() const { return chain_.front().p; }
+  std::int32_t first_profile() const { return first_cell().p; }
   // The first cell (the builder must hold one): where the chain started.
-  ChainCell first_cell() const { return chain_.front(); }
+  ChainCell first_cell() const { return drawn_.empty() ? chain_.front() : drawn_.front().cell; }
   // The stroke so far with its attributes, its vectors sized to fit (cells added not drawn).
   Stroke stroke(StrokeClass cls) const;
   // The stroke so far, its vectors moved out of the builder, which is left empty.
@@ -150,8 +150,11 @@ class StrokeBuilder {
     void add(double slope_pct, double row_slope_pct, double depth_m, double from_front,
              double height);
   };
-  // A cell added drawn.
+  // A cell added drawn, whole in one record: a chain's cells are added one profile at a time,
+  // each to another of the open chains, and one record is one place in memory to miss.
   struct DrawnCell {
+    ChainCell cell;
+    StrokePoint point;
     StrokeVertex vertex;
     double slope_pct, row_slope_pct, depth_m;
   };
@@ -159,9 +162,9 @@ class StrokeBuilder {
   static Stroke attributes(StrokeClass cls, int cells, double length, const Sums& sums);
   // The drawn piece of cells [from, to).
   Stroke drawn_piece(StrokeClass cls, std::size_t from, std::size_t to, double length) const;
-  Chain chain_;
-  std::vector<StrokePoint> points_;
-  std::vector<DrawnCell> drawn_;
+  Chain chain_;                      // cells added not drawn
+  std::vector<StrokePoint> points_;  // of the cells added not drawn
+  std::vector<DrawnCell> drawn_;     // cells added drawn
   StrokePoint last_map_{};
   double length_ = 0.0;
   Sums sums_;
