@@ -4,6 +4,7 @@
 #include <ogrsf_frmts.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 
@@ -153,27 +154,27 @@ void GpkgLineAppender::add(const std::vector<StrokePoint>& points, const std::ve
     x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
     y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
   }
+  // The blob, sized once and written in place: the header, the envelope, then well-known binary
+  // (byte order, type 2 (LineString) or 2002 (LineString M), the number of points, the points).
+  const std::size_t per_point = (measured ? 3 : 2) * sizeof(double);
   std::vector<unsigned char>& blob = waiting_[waiting_count_].blob;
-  blob.assign(header_.begin(), header_.end());
-  for (double v : {x0, x1, y0, y1}) append(blob, v);
-  // Well-known binary: byte order, type 2 (LineString) or 2002 (LineString M), the number of
-  // points, the points.
-  append(blob, kLittleEndian);
-  append(blob, std::uint32_t{measured ? 2002u : 2u});
-  append(blob, static_cast<std::uint32_t>(points.size()));
+  blob.resize(header_.size() + 4 * sizeof(double) + 1 + 2 * sizeof(std::uint32_t) +
+              points.size() * per_point);
+  unsigned char* out = std::copy(header_.begin(), header_.end(), blob.data());
+  const auto put = [&out](auto value) {
+    std::memcpy(out, &value, sizeof value);
+    out += sizeof value;
+  };
+  for (double v : {x0, x1, y0, y1}) put(v);
+  put(kLittleEndian);
+  put(std::uint32_t{measured ? 2002u : 2u});
+  put(static_cast<std::uint32_t>(points.size()));
   static_assert(sizeof(StrokePoint) == 2 * sizeof(double), "points are x, y pairs");
   if (measured) {
-    std::size_t at = blob.size();
-    blob.resize(at + points.size() * 3 * sizeof(double));
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      const double xym[3] = {points[k].x, points[k].y, m[k]};
-      std::memcpy(blob.data() + at, xym, sizeof xym);
-      at += sizeof xym;
-    }
-  } else {
-    const std::size_t at = blob.size();
-    blob.resize(at + points.size() * sizeof(StrokePoint));
-    std::memcpy(blob.data() + at, points.data(), points.size() * sizeof(StrokePoint));
+    for (std::size_t k = 0; k < points.size(); ++k)
+      put(std::array<double, 3>{points[k].x, points[k].y, m[k]});
+  } else if (!points.empty()) {
+    std::memcpy(out, points.data(), points.size() * sizeof(StrokePoint));
   }
   boxes_.push_back({next_id_++, x0, x1, y0, y1});
   min_x_ = std::min(min_x_, x0), max_x_ = std::max(max_x_, x1);
