@@ -137,30 +137,13 @@ class BucketHeads {
     const Slot& slot = slots_[find_slot(key)];
     return slot.key == kEmpty ? kNone : slot.head;
   }
+  // Empties every bucket, keeping the table's storage.
+  void clear() {
+    std::fill(slots_.begin(), slots_.end(), Slot{kEmpty, kNone});
+    used_ = 0;
+  }
   // The slot bucket `key` is looked for from, to prefetch.
   const void* home_slot(std::uint64_t key) const { return &slots_[home(key)]; }
-  // The head of bucket `key`, or null if it has none; the table is left as it is.
-  std::uint32_t* find(std::uint64_t key) {
-    Slot& slot = slots_[find_slot(key)];
-    return slot.key == kEmpty ? nullptr : &slot.head;
-  }
-  // Forgets bucket `key` (emptied), so that the table holds only the buckets in use: a stream
-  // of strokes passes over ever new buckets.
-  void erase(std::uint64_t key) {
-    const std::size_t mask = slots_.size() - 1;
-    std::size_t hole = find_slot(key);
-    if (slots_[hole].key == kEmpty) return;
-    --used_;
-    // Backward shift: each key after the hole that may sit there (its home slot does not lie
-    // between the hole and where it sits) moves into it, and leaves the next hole.
-    for (std::size_t k = (hole + 1) & mask; slots_[k].key != kEmpty; k = (k + 1) & mask) {
-      if (((k - home(slots_[k].key)) & mask) >= ((k - hole) & mask)) {
-        slots_[hole] = slots_[k];
-        hole = k;
-      }
-    }
-    slots_[hole] = {kEmpty, kNone};
-  }
 
  private:
   static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
@@ -203,23 +186,11 @@ class EndIndex {
     next_[k] = head;
     head = end;
   }
-  // Forgets the links of the ends before `end`, all removed.
-  void forget_before(std::uint32_t end) {
-    const std::size_t gone = std::min<std::size_t>(end - first_held_, next_.size());
-    next_.erase(next_.begin(), next_.begin() + static_cast<std::ptrdiff_t>(gone));
-    first_held_ = end;
-  }
-  void remove(std::uint32_t end, StrokePoint at) {
-    const std::uint64_t k = key(at);
-    std::uint32_t* head = heads_.find(k);
-    if (!head) return;
-    for (std::uint32_t* link = head; *link != kNone; link = &next(*link)) {
-      if (*link == end) {
-        *link = next(end);
-        if (*head == kNone) heads_.erase(k);
-        return;
-      }
-    }
+  // Empties the index, keeping its storage, for ends from `first` on.
+  void clear(std::uint32_t first) {
+    heads_.clear();
+    next_.clear();
+    first_held_ = first;
   }
   // Calls f(end) for every end that may lie within `radius` of p: buckets are twice the radius
   // wide, so those in the 2 x 2 buckets nearest p.
@@ -433,14 +404,15 @@ StrokeGrouper::~StrokeGrouper() = default;
 std::size_t StrokeGrouper::add(const Stroke& stroke) {
   const AngleLimit limit{rule_.angle_deg, angle_cos_};
   const std::size_t id = first_held_ + records_.size();
-  records_.push_back({id, kNone, id, stroke.chain.empty() ? 0 : stroke.chain.back().p, {}});
+  records_.push_back({id, kNone, id, stroke.chain.empty() ? 0 : stroke.chain.back().p, false, {}});
   for (bool start : {true, false}) {
     const StrokeEnd end = stroke_end(stroke.points, start, 2.0 * rule_.gap);
     record(id).ends[start ? 0 : 1] = {end.at, end.dx, end.dy};
     const auto end_id = static_cast<std::uint32_t>(2 * id + (start ? 0 : 1));
     index_->near(end.at, [&](std::uint32_t other) {
-      const EndRecord& o = record(stroke_of(other)).ends[other % 2];
-      if (stroke_of(other) != id && may_join(end, {o.at, o.dx, o.dy}, rule_, limit))
+      const Record& r = record(stroke_of(other));
+      const EndRecord& o = r.ends[other % 2];
+      if (!r.taken && stroke_of(other) != id && may_join(end, {o.at, o.dx, o.dy}, rule_, limit))
         unite(id, stroke_of(other));
     });
     index_->insert(end_id, end.at);
@@ -478,10 +450,9 @@ void StrokeGrouper::take_group(std::size_t root, std::vector<std::size_t>& membe
   members.clear();
   for (std::size_t m = root; m != kNone; m = record(m).next) members.push_back(m);
   if (members.size() > 1) std::sort(members.begin(), members.end());
-  for (std::size_t m : members) {
-    for (std::size_t e : {2 * m, 2 * m + 1})
-      index_->remove(static_cast<std::uint32_t>(e), record(m).ends[e % 2].at);
-  }
+  // Their ends stay in the index, passed over, until it is made anew (forget_before): taking
+  // each out was a search of the table, long after the stroke was added, that missed the cache.
+  for (std::size_t m : members) record(m).taken = true;
 }
 
 void StrokeGrouper::forget_before(std::size_t id) {
@@ -491,7 +462,14 @@ void StrokeGrouper::forget_before(std::size_t id) {
   if (taken < kForgetAtLeast || 2 * taken < records_.size()) return;
   records_.erase(records_.begin(), records_.begin() + static_cast<std::ptrdiff_t>(taken));
   first_held_ += taken;
-  index_->forget_before(static_cast<std::uint32_t>(2 * first_held_));
+  // The index, made anew of the ends of the strokes not taken.
+  index_->clear(static_cast<std::uint32_t>(2 * first_held_));
+  for (std::size_t k = 0; k < records_.size(); ++k) {
+    if (records_[k].taken) continue;
+    const auto first_end = static_cast<std::uint32_t>(2 * (first_held_ + k));
+    index_->insert(first_end, records_[k].ends[0].at);
+    index_->insert(first_end + 1, records_[k].ends[1].at);
+  }
 }
 
 }  // namespace tsk

@@ -79,10 +79,12 @@ class StrokeGrouper {
     StrokePoint at;
     double dx, dy;
   };
-  // A stroke's place in its group (ids), its group's reach if it is the root, and its ends.
+  // A stroke's place in its group (ids), its group's reach if it is the root, whether its group
+  // has been taken, and its ends.
   struct Record {
     std::size_t parent, next, tail;
     std::int32_t reach;
+    bool taken;
     EndRecord ends[2];  // its start, its last point
   };
   struct Index;
