@@ -148,7 +148,7 @@ void sort_by_key(Cell* first, Cell* last, Key key) {
   for (auto run = keyed.begin(); run != keyed.end();) {
     const auto end =
         std::find_if(run, keyed.end(), [&](const Keyed& k) { return k.bits != run->bits; });
-    if (end - run > 1) std::stable_sort(run, end, by_id);
+    if (end - run > 1) std::sort(run, end, by_id);  // ids are unique: no order to keep
     run = end;
   }
   std::vector<Cell> sorted(count);
