@@ -203,6 +203,22 @@ TEST_CASE("grouping unites two strokes exactly when they join, at turns about th
   CHECK(joined >= 300);
 }
 
+TEST_CASE("a group once taken joins no stroke added later even one beside its ends",
+          "[drawn][joining]") {
+  // b carries a straight on, a cell beyond a's end: joined had a not been taken.
+  const Stroke a = row_stroke(0, 4, 0.0), b = row_stroke(5, 9, 0.0);
+  REQUIRE(join_strokes({a, b}, kRule).size() == 1);
+  StrokeGrouper grouper(kRule);
+  const std::size_t first = grouper.add(a);
+  std::vector<std::size_t> members;
+  grouper.take_group(first, members);
+  CHECK(members == std::vector<std::size_t>{first});
+  const std::size_t second = grouper.add(b);
+  CHECK(grouper.group_of(second) == second);
+  grouper.take_group(second, members);
+  CHECK(members == std::vector<std::size_t>{second});
+}
+
 TEST_CASE("short pieces stay only where they close a gap between longer ones", "[drawn][joining]") {
   JoinRule rule = kRule;
   rule.least_piece_cells = 3;
