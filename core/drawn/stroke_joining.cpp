@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <utility>
 
@@ -44,12 +45,21 @@ StrokeEnd stroke_end(const std::vector<StrokePoint>& pts, bool start, double rea
   return {at, (at.x - from.x) / len, (at.y - from.y) / len};
 }
 
+// Cosine of the angle between two directions; NaN when either is missing.
+double cosine_between(double ax, double ay, double bx, double by) {
+  const double la = std::sqrt(ax * ax + ay * ay), lb = std::sqrt(bx * bx + by * by);
+  if (la <= 0.0 || lb <= 0.0) return std::numeric_limits<double>::quiet_NaN();
+  return std::clamp((ax * bx + ay * by) / (la * lb), -1.0, 1.0);
+}
+
+// An angle in degrees from its cosine; 180 for a missing direction's NaN.
+double degrees_of(double cosine) {
+  return std::isnan(cosine) ? 180.0 : std::acos(cosine) * 180.0 / kPi;
+}
+
 // Angle between two directions in degrees; 180 when either is missing.
 double angle_between(double ax, double ay, double bx, double by) {
-  const double la = std::sqrt(ax * ax + ay * ay), lb = std::sqrt(bx * bx + by * by);
-  if (la <= 0.0 || lb <= 0.0) return 180.0;
-  const double c = std::clamp((ax * bx + ay * by) / (la * lb), -1.0, 1.0);
-  return std::acos(c) * 180.0 / kPi;
+  return degrees_of(cosine_between(ax, ay, bx, by));
 }
 
 // The largest angle two joining ends may turn through, and its cosine.
@@ -61,13 +71,11 @@ struct AngleLimit {
 // a cosine clear of the limit's by 1e-9 puts the angle more than 5e-8 degrees from it, far more
 // than the rounding of either.
 bool within_angle(double ax, double ay, double bx, double by, const AngleLimit& limit) {
-  const double la = std::sqrt(ax * ax + ay * ay), lb = std::sqrt(bx * bx + by * by);
-  if (la <= 0.0 || lb <= 0.0) return 180.0 <= limit.deg;
-  const double c = std::clamp((ax * bx + ay * by) / (la * lb), -1.0, 1.0);
+  const double c = cosine_between(ax, ay, bx, by);
   constexpr double kClear = 1e-9;
   if (c > limit.cos + kClear) return true;
   if (c < limit.cos - kClear) return false;
-  return angle_between(ax, ay, bx, by) <= limit.deg;
+  return degrees_of(c) <= limit.deg;
 }
 
 // Whether end a leads on into end b: within the gap, and every direction there is to compare (the
