@@ -498,6 +498,25 @@ TEST_CASE("a hand-off takes every item in order, a batch at a time, and passes o
       "disk full");
 }
 
+TEST_CASE("batch storage gives back the storage of batches done with, emptied", "[pipeline]") {
+  BatchStorage<std::vector<int>> storage;
+  CHECK(storage.take().capacity() == 0);  // none given back yet
+  std::vector<std::vector<int>> done(100, std::vector<int>(3, 7));
+  const auto* memory = done.data();
+  storage.give_back(std::move(done));
+  std::vector<std::vector<int>> again = storage.take();
+  CHECK(again.empty());  // its items gone
+  CHECK(again.capacity() >= 100);
+  CHECK(again.data() == memory);          // the same storage, not a copy
+  CHECK(storage.take().capacity() == 0);  // taken once only
+  // It keeps a few, not every batch ever given back.
+  for (int k = 0; k < 10; ++k) storage.give_back(std::vector<std::vector<int>>(50));
+  int kept = 0;
+  while (storage.take().capacity() > 0) ++kept;
+  CHECK(kept >= 1);
+  CHECK(kept <= 4);
+}
+
 TEST_CASE("strips too wide for the machine's memory are refused before any read",
           "[pipeline][strips]") {
   // Profiles 2^24 cells long: 2^16 of them in a strip would be 9 TiB.

@@ -34,7 +34,7 @@ void DrawingPipeline::settle(StrokeClass cls, double frontier) {
 void DrawingPipeline::flush() {
   if (steps_.empty()) return;
   auto taken = std::make_shared<std::vector<Step>>(std::move(steps_));
-  steps_.clear();
+  steps_ = step_storage_.take();
   // A batch of steps runs to kStepsPerBatch and a profile's worth beyond, or stops short at the
   // end of a batch of profiles: room for a full one, not a doubling series of moves.
   steps_.reserve(std::max(taken->size(), kStepsPerBatch + kStepsPerBatch / 8));
@@ -57,6 +57,7 @@ void DrawingPipeline::group(std::vector<Step>& steps) {
       drawer(step.cls).add(std::move(step.piece));
     }
   }
+  step_storage_.give_back(std::move(steps));
   finishing_.run([this, settled] { draw(*settled); });
 }
 

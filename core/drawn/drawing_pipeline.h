@@ -67,6 +67,7 @@ class DrawingPipeline {
 
   std::unique_ptr<StrokeDrawer> drawers_[2];  // factual, formulated
   std::vector<Step> steps_;                   // not given to the drawing yet
+  BatchStorage<Step> step_storage_;           // of the batches of steps the grouping is done with
   std::atomic<bool> abandoned_{false};
   // Declared last, in reverse order: each is stopped before the one it gives its work to.
   struct Drawn {

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/base/prefetch.h"
 #include "core/method/strokes.h"
 
 namespace tsk {
@@ -35,6 +36,10 @@ class ScanOrder {
       std::pop_heap(heap_.begin(), heap_.end(), later);
       const Held held = heap_.back();
       heap_.pop_back();
+      // A stroke waits in its slot long enough to leave the cache: the next one, and both that
+      // may come after it, are fetched while this one is handed on.
+      for (std::size_t k = 0; k < 3 && k < heap_.size(); ++k)
+        prefetch_record(strokes_[heap_[k].slot]);
       free_.push_back(held.slot);
       Stroke stroke = std::move(strokes_[held.slot]);  // its memory goes with it
       use(std::move(stroke), held.chain, held.piece);

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/base/errors.h"
+#include "core/base/prefetch.h"
 #include "core/base/stage_timing.h"
 #include "core/drawn/drawing_pipeline.h"
 #include "core/drawn/drawn_strokes.h"
@@ -26,6 +27,10 @@ std::size_t batch_profiles(std::size_t length) {
   return std::clamp<std::size_t>((std::size_t{1} << 20) / std::max<std::size_t>(1, length), 128,
                                  16384);
 }
+
+// How many cells ahead the linking fetches the builder of a cell's chain (and half as many, the
+// end of its cells).
+constexpr std::size_t kBuildersAhead = 6;
 
 // Whether drawn strokes are drawn, and handed on, on threads of their own.
 bool draws_alongside(const SilhouetteParams& p) {
@@ -156,7 +161,17 @@ struct SilhouetteStream::State {
     std::vector<StrokeBuilder>& open = strokes.open;
     if (open.size() < strokes.linker.slot_count()) open.resize(strokes.linker.slot_count());
     const bool drawn = drawing != nullptr;
-    for (std::size_t k = 0; k < joined.size(); ++k) open[joined[k].slot].add(cells[k], drawn);
+    for (std::size_t k = 0; k < joined.size(); ++k) {
+      // Each cell goes to another of about a thousand open chains, whose builder is seldom in the
+      // cache: it is fetched a few cells ahead with the cell's record (made on a stage thread),
+      // and then the end of its cells.
+      if (k + 2 * kBuildersAhead < joined.size()) {
+        __builtin_prefetch(&open[joined[k + 2 * kBuildersAhead].slot]);
+        prefetch_record(cells[k + 2 * kBuildersAhead]);
+      }
+      if (k + kBuildersAhead < joined.size()) open[joined[k + kBuildersAhead].slot].prefetch(drawn);
+      open[joined[k].slot].add(cells[k], drawn);
+    }
     close(strokes, strokes.linker.closed());
     hand_on(strokes, strokes.linker.oldest_open());
   }

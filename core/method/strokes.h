@@ -113,10 +113,15 @@ StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, b
 
 // A stroke built cell by cell as its chain grows (consecutive profiles): its geometry and the
 // running sums of its attributes, so that the records of its cells need not be kept.
-class StrokeBuilder {
+class alignas(64) StrokeBuilder {
  public:
   // drawn: keep what drawing needs of the cell instead, the attributes left to drawn_pieces.
   void add(const StrokeCell& c, bool drawn = false);
+  // Asks the processor for the place the next add() writes to (the builder's first cache line
+  // in the cache already).
+  void prefetch(bool drawn) const {
+    if (drawn) __builtin_prefetch(drawn_.data() + drawn_.size(), 1);
+  }
   int cells() const { return static_cast<int>(chain_.size() + drawn_.size()); }
   // The profile of the first cell (the builder must hold one).
   std::int32_t first_profile() const { return first_cell().p; }
@@ -162,9 +167,10 @@ class StrokeBuilder {
   static Stroke attributes(StrokeClass cls, int cells, double length, const Sums& sums);
   // The drawn piece of cells [from, to).
   Stroke drawn_piece(StrokeClass cls, std::size_t from, std::size_t to, double length) const;
+  // Cells added drawn; first, in the builder's first cache line, which the linking fetches.
+  std::vector<DrawnCell> drawn_;
   Chain chain_;                      // cells added not drawn
   std::vector<StrokePoint> points_;  // of the cells added not drawn
-  std::vector<DrawnCell> drawn_;     // cells added drawn
   StrokePoint last_map_{};
   double length_ = 0.0;
   Sums sums_;
