@@ -22,6 +22,8 @@ class ScanOrder {
     } else {
       slot = free_.back();
       free_.pop_back();
+      // A slot stays free long enough to leave the cache: the next one to fill is fetched now.
+      if (!free_.empty()) prefetch_record_to_write(strokes_[free_.back()]);
       strokes_[slot] = std::move(stroke);
     }
     heap_.push_back({chain, piece, slot});
