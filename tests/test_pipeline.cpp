@@ -499,7 +499,7 @@ TEST_CASE("a hand-off takes every item in order, a batch at a time, and passes o
 }
 
 TEST_CASE("batch storage gives back the storage of batches done with, emptied", "[pipeline]") {
-  BatchStorage<std::vector<int>> storage;
+  BatchStorage<std::vector<std::vector<int>>> storage;
   CHECK(storage.take().capacity() == 0);  // none given back yet
   std::vector<std::vector<int>> done(100, std::vector<int>(3, 7));
   const auto* memory = done.data();

@@ -88,20 +88,21 @@ class TasksBehind {
 // The storage of batches handed from one thread to another, kept to be filled again: a batch
 // allocated anew each time is memory the allocator gives back to the system, and the system
 // zeroes again when it is asked for more (a drawn run's batches of pieces, 1.6 MB each, made a
-// third of its page faults). Any thread may take or give back.
-template <typename Item>
+// third of its page faults). A Batch is a container, or a record of them, with clear(). Any
+// thread may take or give back.
+template <typename Batch>
 class BatchStorage {
  public:
-  // An empty vector, with the capacity of one given back if there is one.
-  std::vector<Item> take() {
+  // An empty batch, with the storage of one given back if there is one.
+  Batch take() {
     std::lock_guard<std::mutex> lock(mutex_);
     if (spare_.empty()) return {};
-    std::vector<Item> batch = std::move(spare_.back());
+    Batch batch = std::move(spare_.back());
     spare_.pop_back();
     return batch;
   }
   // Keeps the storage of a batch whose items are done with.
-  void give_back(std::vector<Item>&& batch) {
+  void give_back(Batch&& batch) {
     batch.clear();
     std::lock_guard<std::mutex> lock(mutex_);
     if (spare_.size() < kMostKept) spare_.push_back(std::move(batch));
@@ -110,7 +111,7 @@ class BatchStorage {
  private:
   static constexpr std::size_t kMostKept = 2;  // a producer takes one back as a consumer gives one
   std::mutex mutex_;
-  std::vector<std::vector<Item>> spare_;
+  std::vector<Batch> spare_;
 };
 
 // Items handed to `take`, in order, a batch at a time, on a thread of its own when `alongside`:
@@ -152,7 +153,7 @@ class HandOff {
   static constexpr std::size_t kBatchesBehind = 2;
   std::function<void(Item&&)> take_;
   std::vector<Item> batch_;
-  BatchStorage<Item> storage_;
+  BatchStorage<std::vector<Item>> storage_;
   std::atomic<bool> abandoned_{false};
   TasksBehind batches_;  // declared last: its tasks done before the rest goes
 };

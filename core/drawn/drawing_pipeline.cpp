@@ -42,7 +42,7 @@ void DrawingPipeline::flush() {
 }
 
 void DrawingPipeline::group(std::vector<Step>& steps) {
-  auto settled = std::make_shared<Settled>();
+  auto settled = std::make_shared<Settled>(settled_storage_.take());
   for (std::size_t k = 0; k < steps.size(); ++k) {
     if (abandoned_) return;
     Step& step = steps[k];
@@ -52,7 +52,11 @@ void DrawingPipeline::group(std::vector<Step>& steps) {
     if (k + 1 < steps.size() && !steps[k + 1].settle)
       drawer(steps[k + 1].cls).prefetch(steps[k + 1].piece);
     if (step.settle) {
-      settled->emplace_back(step.cls, drawer(step.cls).take_settled(step.frontier));
+      StrokeGroups& groups = settled->of(step.cls);
+      const std::size_t before = groups.ends.size();
+      drawer(step.cls).take_settled(step.frontier, groups);
+      if (groups.ends.size() > before)
+        settled->runs.push_back({step.cls, before, groups.ends.size()});
     } else {
       drawer(step.cls).add(std::move(step.piece));
     }
@@ -62,13 +66,15 @@ void DrawingPipeline::group(std::vector<Step>& steps) {
 }
 
 void DrawingPipeline::draw(Settled& settled) {
-  for (auto& [cls, groups] : settled) {
+  for (const Settled::Run& run : settled.runs) {
     if (abandoned_) return;
-    const StrokeClass of = cls;
-    drawer(of).draw(groups, [&](std::size_t group, Stroke&& stroke) {
-      writing_.add({of, group, std::move(stroke)});
-    });
+    const StrokeClass of = run.cls;
+    drawer(of).draw(settled.of(of), run.from_group, run.to_group,
+                    [&](std::size_t group, Stroke&& stroke) {
+                      writing_.add({of, group, std::move(stroke)});
+                    });
   }
+  settled_storage_.give_back(std::move(settled));
   writing_.flush();
 }
 

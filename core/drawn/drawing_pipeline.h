@@ -58,16 +58,32 @@ class DrawingPipeline {
     double frontier;  // a step that settles groups
     bool settle;
   };
-  using Settled = std::vector<std::pair<StrokeClass, StrokeGroups>>;
+  // The groups a batch of steps took, each class's in one StrokeGroups, and the runs of them in
+  // the order they were taken (one StrokeGroups per settling step asked for fresh memory each
+  // time: the run's most frequent page fault).
+  struct Settled {
+    struct Run {
+      StrokeClass cls;
+      std::size_t from_group, to_group;
+    };
+    StrokeGroups groups[2];  // factual, formulated
+    std::vector<Run> runs;
+    StrokeGroups& of(StrokeClass cls) { return groups[cls == StrokeClass::factual ? 0 : 1]; }
+    void clear() {
+      for (StrokeGroups& g : groups) g.clear();
+      runs.clear();
+    }
+  };
   StrokeDrawer& drawer(StrokeClass cls) { return *drawers_[cls == StrokeClass::factual ? 0 : 1]; }
   // The grouping: adds the pieces and takes the settled groups, then gives them to the finishing.
   void group(std::vector<Step>& steps);
   // The finishing: draws the groups taken, in order, and gives the strokes to the writing.
   void draw(Settled& settled);
 
-  std::unique_ptr<StrokeDrawer> drawers_[2];  // factual, formulated
-  std::vector<Step> steps_;                   // not given to the drawing yet
-  BatchStorage<Step> step_storage_;           // of the batches of steps the grouping is done with
+  std::unique_ptr<StrokeDrawer> drawers_[2];      // factual, formulated
+  std::vector<Step> steps_;                       // not given to the drawing yet
+  BatchStorage<std::vector<Step>> step_storage_;  // of batches of steps the grouping is done with
+  BatchStorage<Settled> settled_storage_;         // of the groups drawn
   std::atomic<bool> abandoned_{false};
   // Declared last, in reverse order: each is stopped before the one it gives its work to.
   struct Drawn {

@@ -108,11 +108,10 @@ void StrokeDrawer::add(Stroke&& piece) {
   drawn_.push_back(false);
 }
 
-StrokeGroups StrokeDrawer::take_settled(double frontier) {
+void StrokeDrawer::take_settled(double frontier, StrokeGroups& groups) {
   // Groups are taken in the order of their first pieces, up to the first one still open to
   // pieces to come: its ends must lie farther than the gap from the frontier.
   const double settled_before = frontier - join_reach_profiles(setup_);
-  StrokeGroups groups;
   while (!pending_.empty()) {
     const std::size_t first = first_pending_;
     if (rule_.gap > 0.0) {
@@ -136,13 +135,14 @@ StrokeGroups StrokeDrawer::take_settled(double frontier) {
     }
   }
   if (rule_.gap > 0.0) groups_.forget_before(first_pending_);
-  return groups;
 }
 
-void StrokeDrawer::draw(StrokeGroups& groups, const Out& out) const {
-  std::size_t begin = 0, group = 0;
-  for (std::size_t end : groups.ends) {
-    const std::size_t first_piece = groups.firsts[group++];
+void StrokeDrawer::draw(StrokeGroups& groups, std::size_t from_group, std::size_t to_group,
+                        const Out& out) const {
+  std::size_t begin = from_group > 0 ? groups.ends[from_group - 1] : 0;
+  for (std::size_t group = from_group; group < to_group; ++group) {
+    const std::size_t end = groups.ends[group];
+    const std::size_t first_piece = groups.firsts[group];
     const auto finish = [&](Stroke& stroke) {
       // The generalisation comes after joining: only pieces still short and alone are dropped.
       if (stroke.cells < setup_.min_cells || !finish_stroke(stroke, setup_)) return;

@@ -67,6 +67,11 @@ struct StrokeGroups {
   std::vector<Stroke> pieces;
   std::vector<std::size_t> ends;    // one past each group's last piece
   std::vector<std::size_t> firsts;  // each group's first piece, by the order pieces were added
+  void clear() {
+    pieces.clear();
+    ends.clear();
+    firsts.clear();
+  }
 };
 
 // Draws the strokes of one class as their chains complete, so that drawing and writing go on
@@ -90,11 +95,15 @@ class StrokeDrawer {
   void prefetch(const Stroke& piece) const;
   // Takes the groups whose every end lies more than the join gap before profile `frontier`, the
   // first profile a piece still to come may reach, up to the first group that does not; after the
-  // last profile, with an infinite frontier, every group left.
-  StrokeGroups take_settled(double frontier);
-  // Draws groups taken, in order, and hands the strokes the generalisation keeps to `out`. May
-  // run on another thread than the other calls.
-  void draw(StrokeGroups& groups, const Out& out) const;
+  // last profile, with an infinite frontier, every group left. Appends them to `into`.
+  void take_settled(double frontier, StrokeGroups& into);
+  // Draws groups [from_group, to_group) of those taken, in order, and hands the strokes the
+  // generalisation keeps to `out`. May run on another thread than the other calls.
+  void draw(StrokeGroups& groups, std::size_t from_group, std::size_t to_group,
+            const Out& out) const;
+  void draw(StrokeGroups& groups, const Out& out) const {
+    draw(groups, 0, groups.ends.size(), out);
+  }
 
  private:
   DrawingSetup setup_;
