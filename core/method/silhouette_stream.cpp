@@ -190,7 +190,13 @@ struct SilhouetteStream::State {
   // drawn strokes, which are generalised after joining); their slots' storage is reused.
   void close(Strokes& strokes, const std::vector<ChainRef>& chains) {
     const int min_cells = drawing ? kLeastDrawnCells : params.chain.min_cells;
-    for (const ChainRef& chain : chains) {
+    // A chain's first cells were added long before it closed: the builders of the chains closed
+    // are fetched first, then each one's cells while the one before is cut into pieces.
+    for (const ChainRef& chain : chains) __builtin_prefetch(&strokes.open[chain.slot]);
+    for (std::size_t c = 0; c < chains.size(); ++c) {
+      const ChainRef& chain = chains[c];
+      if (c + 1 < chains.size())
+        strokes.open[chains[c + 1].slot].prefetch_cells(drawing != nullptr);
       StrokeBuilder& builder = strokes.open[chain.slot];
       if (builder.cells() >= min_cells) {
         // Copies sized to fit: the builder keeps its storage for the slot's next chain (taking
