@@ -18,6 +18,15 @@ packages="qgis libqgis-dev qttools5-dev qttools5-dev-tools libsqlite3-dev cmake 
 packages=$(echo $packages)
 
 source "$repo/scripts/debian_root.sh"
+
+# Mounts that a killed run left in the chroot (its EXIT trap never ran), deepest first: a bind over
+# a folder deleted since fails the next mount there, and rm -rf of the chroot would reach /dev.
+unmount_stale() {
+  local target
+  awk -v r="$root/" 'index($2, r) == 1 {print $2}' /proc/mounts | sort -r |
+    while read -r target; do umount -l "$target" 2>/dev/null || true; done
+}
+unmount_stale
 make_chroot() {
   rm -rf "$root" "$root.new"
   mkdir -p "$cache"
