@@ -68,13 +68,13 @@ class DrawingPipeline {
     };
     StrokeGroups groups[2];  // factual, formulated
     std::vector<Run> runs;
-    StrokeGroups& of(StrokeClass cls) { return groups[cls == StrokeClass::factual ? 0 : 1]; }
+    StrokeGroups& of(StrokeClass cls) { return groups[class_index(cls)]; }
     void clear() {
       for (StrokeGroups& g : groups) g.clear();
       runs.clear();
     }
   };
-  StrokeDrawer& drawer(StrokeClass cls) { return *drawers_[cls == StrokeClass::factual ? 0 : 1]; }
+  StrokeDrawer& drawer(StrokeClass cls) { return *drawers_[class_index(cls)]; }
   // The grouping: adds the pieces and takes the settled groups, then gives them to the finishing.
   void group(std::vector<Step>& steps);
   // The finishing: draws the groups taken, in order, and gives the strokes to the writing.

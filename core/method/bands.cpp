@@ -10,10 +10,6 @@
 namespace tsk {
 namespace {
 
-std::size_t class_index(StrokeClass cls) {
-  return cls == StrokeClass::factual ? 0 : 1;
-}
-
 // SPEC 1.7's order: chains in the order they were started, by their first profile, then front to
 // back.
 bool started_before(const Stroke& a, const Stroke& b) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -15,6 +16,10 @@ namespace tsk {
 
 enum class StrokeClass : std::uint8_t { factual, formulated };
 const char* stroke_class_name(StrokeClass cls);
+// 0 for factual strokes, 1 for formulated ones: where a class's own state sits in a pair.
+inline std::size_t class_index(StrokeClass cls) {
+  return cls == StrokeClass::factual ? 0 : 1;
+}
 
 struct StrokePoint {
   double x;
