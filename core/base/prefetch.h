@@ -6,20 +6,25 @@
 
 namespace tsk {
 
+// Every cache line of `size` bytes from `at` (size > 0), to read them, or to write them when
+// kToWrite is 1.
+template <int kToWrite = 0>
+void prefetch_bytes(const void* at, std::size_t size) {
+  const char* bytes = static_cast<const char*>(at);
+  for (std::size_t b = 0; b < size; b += 64) __builtin_prefetch(bytes + b, kToWrite);
+  __builtin_prefetch(bytes + size - 1, kToWrite);
+}
+
 // Every cache line of a record, to read it.
 template <typename T>
 void prefetch_record(const T& record) {
-  const char* bytes = reinterpret_cast<const char*>(&record);
-  for (std::size_t b = 0; b < sizeof(T); b += 64) __builtin_prefetch(bytes + b);
-  __builtin_prefetch(bytes + sizeof(T) - 1);
+  prefetch_bytes(&record, sizeof(T));
 }
 
 // Every cache line of a record, to write it.
 template <typename T>
 void prefetch_record_to_write(const T& record) {
-  const char* bytes = reinterpret_cast<const char*>(&record);
-  for (std::size_t b = 0; b < sizeof(T); b += 64) __builtin_prefetch(bytes + b, 1);
-  __builtin_prefetch(bytes + sizeof(T) - 1, 1);
+  prefetch_bytes<1>(&record, sizeof(T));
 }
 
 }  // namespace tsk

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/base/geotransform.h"
+#include "core/base/prefetch.h"
 #include "core/method/chaining.h"
 #include "core/method/orient.h"
 #include "core/method/params.h"
@@ -132,9 +133,7 @@ class alignas(64) StrokeBuilder {
   // first cache line in the cache already).
   void prefetch_cells(bool drawn) const {
     if (!drawn || drawn_.empty()) return;
-    const char* bytes = reinterpret_cast<const char*>(drawn_.data());
-    const std::size_t size = std::min<std::size_t>(drawn_.size() * sizeof(DrawnCell), 256);
-    for (std::size_t b = 0; b < size; b += 64) __builtin_prefetch(bytes + b);
+    prefetch_bytes(drawn_.data(), std::min<std::size_t>(drawn_.size() * sizeof(DrawnCell), 256));
   }
   int cells() const { return static_cast<int>(chain_.size() + drawn_.size()); }
   // The profile of the first cell (the builder must hold one).
