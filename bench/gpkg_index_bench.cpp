@@ -31,7 +31,7 @@ tsk::io::DatasetPtr open_copy(const std::string& source, const std::string& copy
 double own_loader(const std::string& source, const std::string& copy) {
   tsk::io::DatasetPtr ds = open_copy(source, copy);
   OGRLayer* layer = ds->GetLayer(0);
-  std::vector<tsk::io::IndexBox> boxes;
+  tsk::io::IndexBoxes boxes;
   for (auto& feature : *layer) {
     OGREnvelope e;
     feature->GetGeometryRef()->getEnvelope(&e);
@@ -40,7 +40,7 @@ double own_loader(const std::string& source, const std::string& copy) {
   const std::string table = layer->GetName();
   const auto start = Clock::now();
   ds->StartTransaction();
-  tsk::io::add_gpkg_spatial_index(*ds, table, std::move(boxes));
+  tsk::io::add_gpkg_spatial_index(*ds, table, boxes);
   ds->CommitTransaction();
   ds.reset();
   return std::chrono::duration<double>(Clock::now() - start).count();

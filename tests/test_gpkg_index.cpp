@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -56,27 +57,64 @@ std::vector<Window> random_windows(unsigned seed) {
 
 }  // namespace
 
-TEST_CASE("pack_rtree grows a level each time the nodes fill", "[gpkg]") {
+TEST_CASE("a packed R-tree grows a level each time the nodes fill", "[gpkg]") {
   const std::size_t node_bytes = 4 + 51 * 24;  // what SQLite makes on 4096-byte pages
-  const auto boxes = [](std::size_t n) {
-    std::vector<io::IndexBox> out(n);
+  const auto packed = [&](std::size_t n) {
+    io::IndexBoxes out(n);
     for (std::size_t i = 0; i < n; ++i)
       out[i] = {static_cast<std::int64_t>(i + 1), 1.0 * i, 1.0 * i + 2, 0.5 * i, 0.5 * i + 1};
-    return out;
+    return io::PackedRtree(out, node_bytes);
   };
-  CHECK(io::pack_rtree(boxes(0), node_bytes).depth == 0);
-  CHECK(io::pack_rtree(boxes(0), node_bytes).nodes.size() == 1);
-  CHECK(io::pack_rtree(boxes(51), node_bytes).depth == 0);
-  CHECK(io::pack_rtree(boxes(52), node_bytes).depth == 1);
-  CHECK(io::pack_rtree(boxes(51 * 51), node_bytes).depth == 1);
-  const io::PackedRtree deep = io::pack_rtree(boxes(51 * 51 + 1), node_bytes);
-  CHECK(deep.depth == 2);
-  CHECK(deep.nodes.front().number == 1);
-  CHECK(deep.leaf_of.size() == 51 * 51 + 1);
-  CHECK_THROWS_AS(io::pack_rtree(boxes(3), 40), Error);
+  CHECK(packed(0).depth() == 0);
+  CHECK(packed(0).node_count() == 1);
+  CHECK(packed(51).depth() == 0);
+  CHECK(packed(52).depth() == 1);
+  CHECK(packed(52).node_count() == 3);
+  CHECK(packed(51 * 51).depth() == 1);
+  const io::PackedRtree deep = packed(51 * 51 + 1);
+  CHECK(deep.depth() == 2);
+  // The root first, numbered 1 and holding the tree's depth; then the nodes below, each holding
+  // the number of the node above it as its parent.
+  io::RtreeNode root, below;
+  deep.node(0, root);
+  CHECK(root.number == 1);
+  CHECK(root.parent == 0);
+  CHECK(root.blob.size() == node_bytes);
+  CHECK(root.blob[0] == 0);
+  CHECK(root.blob[1] == 2);
+  CHECK(root.blob[3] == 2);  // two children
+  deep.node(1, below);
+  CHECK(below.number == 2);
+  CHECK(below.parent == 1);
+  CHECK(deep.leaf_entries().size() == 51 * 51 + 1);
+  const auto [first, leaf] = deep.leaves_by_id();
+  CHECK(first == 1);
+  CHECK(leaf.size() == 51 * 51 + 1);
+  CHECK_THROWS_AS(io::PackedRtree(io::IndexBoxes(3), 40), Error);
 }
 
-TEST_CASE("pack_rtree's leaves hold the boxes as Sort-Tile-Recursive places them", "[gpkg]") {
+TEST_CASE("a packed R-tree numbers the leaves by id only where the ids run without a gap",
+          "[gpkg]") {
+  const std::size_t node_bytes = 4 + 51 * 24;
+  const auto ids_by_leaf = [&](const std::vector<std::int64_t>& ids) {
+    io::IndexBoxes boxes;
+    for (std::int64_t id : ids) boxes.emplace_back(id, 1.0 * id, 1.0 * id + 1, 0.0, 1.0);
+    return io::PackedRtree(boxes, node_bytes).leaves_by_id();
+  };
+  std::vector<std::int64_t> shuffled(200);
+  std::iota(shuffled.begin(), shuffled.end(), std::int64_t{-50});
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(3));
+  const auto [first, leaf] = ids_by_leaf(shuffled);
+  CHECK(first == -50);
+  REQUIRE(leaf.size() == 200);
+  // Boxes side by side along x: 51 to a leaf in the order of x, the leaves numbered after the root.
+  for (std::size_t k = 0; k < leaf.size(); ++k) CHECK(leaf[k] == 2 + static_cast<int>(k / 51));
+  CHECK(ids_by_leaf({1, 2, 4, 5}).second.empty());  // a gap
+  CHECK(ids_by_leaf({1, 2, 2, 3}).second.empty());  // a repeat
+  CHECK(ids_by_leaf({}).second.empty());
+}
+
+TEST_CASE("a packed R-tree's leaves hold the boxes as Sort-Tile-Recursive places them", "[gpkg]") {
   // Boxes on a coarse lattice, so that many share a centre (ties go by id), some across zero
   // (-0 and +0 centres), handed over in id order and shuffled.
   const std::size_t per_node = 51, node_bytes = 4 + per_node * 24;
@@ -123,10 +161,10 @@ TEST_CASE("pack_rtree's leaves hold the boxes as Sort-Tile-Recursive places them
     CAPTURE(shuffled);
     std::vector<io::IndexBox> given = boxes;
     if (shuffled) std::shuffle(given.begin(), given.end(), rng);
-    const io::PackedRtree packed = io::pack_rtree(given, node_bytes);
+    const io::PackedRtree packed(io::IndexBoxes(given.begin(), given.end()), node_bytes);
     // Each leaf's boxes, by the leaf's number, in the order the leaves were numbered.
     std::map<std::int64_t, std::vector<std::int64_t>> by_leaf;
-    for (const auto& [id, leaf] : packed.leaf_of) by_leaf[leaf].push_back(id);
+    for (const auto& [id, leaf] : packed.leaf_entries()) by_leaf[leaf].push_back(id);
     std::vector<std::vector<std::int64_t>> got;
     for (auto& [leaf, ids] : by_leaf) got.push_back(ids);
     std::vector<std::vector<std::int64_t>> want = leaves;
@@ -331,7 +369,7 @@ TEST_CASE("an index built for features whose ids skip answers like a brute-force
     io::DatasetPtr ds(static_cast<GDALDataset*>(
         GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE, nullptr, nullptr, nullptr)));
     REQUIRE(ds);
-    std::vector<io::IndexBox> boxes;
+    io::IndexBoxes boxes;
     for (auto& feature : *ds->GetLayerByName("lines")) {
       OGREnvelope e;
       feature->GetGeometryRef()->getEnvelope(&e);
@@ -339,7 +377,7 @@ TEST_CASE("an index built for features whose ids skip answers like a brute-force
     }
     REQUIRE(boxes.size() == 600);
     REQUIRE(ds->StartTransaction() == OGRERR_NONE);
-    io::add_gpkg_spatial_index(*ds, "lines", std::move(boxes));
+    io::add_gpkg_spatial_index(*ds, "lines", boxes);
     REQUIRE(ds->CommitTransaction() == OGRERR_NONE);
   }
   IndexedGpkg gpkg(path, "lines");

@@ -255,9 +255,8 @@ void GpkgLineAppender::finish(const std::string& description) {
     count.step();
   }
   if (!count_trigger_.empty()) db.run(count_trigger_);
-  std::vector<IndexBox> boxes(boxes_.begin(), boxes_.end());
+  add_gpkg_spatial_index(dataset_, table_, boxes_);
   boxes_ = {};
-  add_gpkg_spatial_index(dataset_, table_, std::move(boxes));
 }
 
 GpkgFileAppender::GpkgFileAppender(const std::string& path, const std::string& table)

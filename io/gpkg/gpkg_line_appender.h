@@ -10,7 +10,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <limits>
 #include <memory>
 #include <string>
@@ -73,8 +72,7 @@ class GpkgLineAppender {
   std::size_t rows_unflushed_ = 0;  // rows inserted since the last writeback was started
   std::size_t fields_ = 0;
   std::int64_t next_id_ = 1;
-  // In a deque: a vector doubling its 29 MB of boxes near the end of a run held 75 MB at once.
-  std::deque<IndexBox> boxes_;
+  IndexBoxes boxes_;
   std::string count_trigger_;  // GDAL's, dropped while rows are inserted
   double min_x_ = std::numeric_limits<double>::infinity(), max_x_ = -min_x_;
   double min_y_ = min_x_, max_y_ = -min_x_;

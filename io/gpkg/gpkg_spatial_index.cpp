@@ -25,7 +25,6 @@ using gpkg::quoted_literal;
 // A box as the R-tree stores it (IndexBox): its `id` is a feature id in a leaf, a child's index in
 // its level otherwise.
 using Cell = IndexBox;
-using Node = std::vector<Cell>;
 
 double centre_x(const Cell& c) {
   return 0.5 * (double{c.min_x} + double{c.max_x});
@@ -58,40 +57,18 @@ IndexBox::IndexBox(std::int64_t feature, double x0, double x1, double y0, double
 
 namespace {
 
-Cell cover(const Node& node, std::int64_t index) {
+Cell cover(const Cell* first, const Cell* last, std::int64_t index) {
   Cell c;
   c.id = index;
   c.min_x = c.min_y = kInf;
   c.max_x = c.max_y = -kInf;
-  for (const Cell& child : node) {
-    c.min_x = std::min(c.min_x, child.min_x);
-    c.max_x = std::max(c.max_x, child.max_x);
-    c.min_y = std::min(c.min_y, child.min_y);
-    c.max_y = std::max(c.max_y, child.max_y);
+  for (const Cell* child = first; child != last; ++child) {
+    c.min_x = std::min(c.min_x, child->min_x);
+    c.max_x = std::max(c.max_x, child->max_x);
+    c.min_y = std::min(c.min_y, child->min_y);
+    c.max_y = std::max(c.max_y, child->max_y);
   }
   return c;
-}
-
-// Sorts (id, value) pairs of unique ids by id. The ids a writer hands on run without a gap
-// (1, 2, ... n), and each pair then has its place without a sort (on the 8000 x 8000 benchmark,
-// sorting 830 000 pairs on two threads took 0.03 s of the serial end of a run).
-void sort_by_id(std::vector<std::pair<std::int64_t, std::int64_t>>& pairs) {
-  if (pairs.empty()) return;
-  const auto [lowest, highest] = std::minmax_element(pairs.begin(), pairs.end());
-  const std::int64_t first = lowest->first;
-  if (static_cast<std::uint64_t>(highest->first - first) + 1 != pairs.size()) {
-    std::sort(pairs.begin(), pairs.end());
-    return;
-  }
-  std::vector<std::pair<std::int64_t, std::int64_t>> placed(pairs.size(), {first - 1, 0});
-  for (const auto& pair : pairs) placed[static_cast<std::size_t>(pair.first - first)] = pair;
-  for (std::size_t k = 0; k < placed.size(); ++k) {
-    if (placed[k].first != first + static_cast<std::int64_t>(k)) {  // an id given twice
-      std::sort(pairs.begin(), pairs.end());
-      return;
-    }
-  }
-  pairs.swap(placed);
 }
 
 // A double's bits as an unsigned number in the double's order (-0 taken as +0).
@@ -132,54 +109,54 @@ void radix_sort(std::vector<Keyed>& keyed, std::vector<Keyed>& spare) {
   }
 }
 
-// Sorts the cells [first, last) by (key(cell), id), keys finite: by their keys' bits, keeping the
-// order of equal ones, then each run of equal keys (boxes sharing a centre, few) by id. On the
-// 8000 x 8000 benchmark's 830 000 boxes, std::sort took 0.1 s of the serial end of a run for the
-// slices and as long again for the nodes within them.
-template <typename Key>
-void sort_by_key(Cell* first, Cell* last, Key key) {
-  const auto count = static_cast<std::size_t>(last - first);
-  std::vector<Keyed> keyed(count), spare;
-  for (std::size_t k = 0; k < count; ++k) keyed[k] = {ordered_bits(key(first[k])), k};
+// Copies cells [begin, end) of `from` (finite keys) into `to` in the order of (key(cell), id): by
+// their keys' bits, keeping the order of equal ones, then each run of equal keys (boxes sharing a
+// centre, few) by id. On the 8000 x 8000 benchmark's 830 000 boxes, std::sort took 0.1 s of the
+// serial end of a run for the slices and as long again for the nodes within them.
+template <typename Cells, typename Key>
+void sort_by_key(const Cells& from, std::size_t begin, std::size_t end, Key key, Cell* to) {
+  std::vector<Keyed> keyed(end - begin), spare;
+  for (std::size_t k = begin; k < end; ++k) keyed[k - begin] = {ordered_bits(key(from[k])), k};
   radix_sort(keyed, spare);
-  const auto by_id = [first](const Keyed& a, const Keyed& b) {
-    return first[a.at].id < first[b.at].id;
+  const auto by_id = [&from](const Keyed& a, const Keyed& b) {
+    return from[a.at].id < from[b.at].id;
   };
   for (auto run = keyed.begin(); run != keyed.end();) {
-    const auto end =
+    const auto run_end =
         std::find_if(run, keyed.end(), [&](const Keyed& k) { return k.bits != run->bits; });
-    if (end - run > 1) std::sort(run, end, by_id);  // ids are unique: no order to keep
-    run = end;
+    // Ids are unique: no order to keep. Boxes handed over in the order of their ids (a writer's)
+    // keep it through the x sort, where runs are long (strokes sharing a column of cells).
+    if (run_end - run > 1 && !std::is_sorted(run, run_end, by_id)) std::sort(run, run_end, by_id);
+    run = run_end;
   }
-  std::vector<Cell> sorted(count);
-  for (std::size_t k = 0; k < count; ++k) sorted[k] = first[keyed[k].at];
-  std::copy(sorted.begin(), sorted.end(), first);
+  for (const Keyed& k : keyed) *to++ = from[k.at];
 }
 
-// Sort-Tile-Recursive: vertical slices by centre x, each cut into nodes by centre y, so that a
-// node holds boxes that lie close together.
-std::vector<Node> tile(std::vector<Cell> cells, std::size_t per_node) {
-  const std::size_t node_count = (cells.size() + per_node - 1) / per_node;
+// Sort-Tile-Recursive: `cells` in vertical slices by centre x, each cut into nodes by centre y, so
+// that a node holds boxes that lie close together; into `cells` and `ends` of `level`.
+template <typename Cells, typename Level>
+void tile(const Cells& cells, std::size_t per_node, Level& level) {
+  const std::size_t count = cells.size();
+  const std::size_t node_count = (count + per_node - 1) / per_node;
   auto slices = static_cast<std::size_t>(std::sqrt(static_cast<double>(node_count)));
   while (slices * slices < node_count) ++slices;
   const std::size_t slice_cells = std::max<std::size_t>(1, slices) * per_node;
-  // The cell at index i, or the end.
-  const auto at = [&cells](std::size_t i) { return cells.data() + std::min(i, cells.size()); };
-  sort_by_key(at(0), at(cells.size()), centre_x);
-  parallel_for((cells.size() + slice_cells - 1) / slice_cells, 0,
-               [&](std::size_t lo, std::size_t hi) {
-                 for (std::size_t slice = lo; slice < hi; ++slice) {
-                   sort_by_key(at(slice * slice_cells), at((slice + 1) * slice_cells), centre_y);
-                 }
-               });
-  std::vector<Node> nodes;
-  for (std::size_t start = 0; start < cells.size(); start += slice_cells) {
-    const std::size_t end = std::min(cells.size(), start + slice_cells);
-    for (std::size_t k = start; k < end; k += per_node) {
-      nodes.emplace_back(at(k), at(std::min(end, k + per_node)));
+  std::vector<Cell> by_x(count);
+  sort_by_key(cells, 0, count, centre_x, by_x.data());
+  level.cells.resize(count);
+  parallel_for((count + slice_cells - 1) / slice_cells, 0, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t slice = lo; slice < hi; ++slice) {
+      const std::size_t begin = slice * slice_cells;
+      sort_by_key(by_x, begin, std::min(count, begin + slice_cells), centre_y,
+                  level.cells.data() + begin);
     }
+  });
+  for (std::size_t start = 0; start < count; start += slice_cells) {
+    const std::size_t end = std::min(count, start + slice_cells);
+    for (std::size_t k = start; k < end; k += per_node)
+      level.ends.push_back(std::min(end, k + per_node));
   }
-  return nodes;
+  if (count == 0) level.ends.push_back(0);  // an empty root
 }
 
 void put_big_endian(unsigned char* out, std::uint64_t value, int bytes) {
@@ -197,71 +174,102 @@ void put_float(unsigned char* out, float value) {
 
 }  // namespace
 
-PackedRtree pack_rtree(std::vector<IndexBox> boxes, std::size_t node_bytes) {
+PackedRtree::PackedRtree(const IndexBoxes& boxes, std::size_t node_bytes)
+    : node_bytes_(node_bytes) {
   if (node_bytes < 4 + 2 * kCellBytes) {
     throw Error("R-tree nodes of " + std::to_string(node_bytes) + " bytes cannot hold two boxes");
   }
   const std::size_t per_node = (node_bytes - 4) / kCellBytes;
-
-  // levels[0] holds the leaves (the boxes, as the R-tree stores them), levels.back() the root
-  // alone.
-  std::vector<std::vector<Node>> levels;
-  // Pushed, not listed in braces: an initializer list would copy every leaf.
-  levels.push_back(boxes.empty() ? std::vector<Node>(1) : tile(std::move(boxes), per_node));
-  while (levels.back().size() > 1) {
-    const std::vector<Node>& below = levels.back();
+  levels_.emplace_back();
+  tile(boxes, per_node, levels_.back());
+  while (levels_.back().ends.size() > 1) {
+    const Level& below = levels_.back();
     std::vector<Cell> covers;
-    covers.reserve(below.size());
-    for (std::size_t i = 0; i < below.size(); ++i) {
-      covers.push_back(cover(below[i], static_cast<std::int64_t>(i)));
+    covers.reserve(below.ends.size());
+    for (std::size_t i = 0, begin = 0; i < below.ends.size(); begin = below.ends[i++]) {
+      covers.push_back(cover(below.cells.data() + begin, below.cells.data() + below.ends[i],
+                             static_cast<std::int64_t>(i)));
     }
-    levels.push_back(tile(std::move(covers), per_node));
+    Level above;
+    tile(covers, per_node, above);
+    levels_.push_back(std::move(above));  // `below` is not used after this
   }
-
   // Numbers top down from the root's 1; each node's parent from the cells above it.
-  std::vector<std::vector<std::int64_t>> number(levels.size());
-  std::vector<std::vector<std::int64_t>> parent(levels.size());
   std::int64_t next = 1;
-  for (std::size_t level = levels.size(); level-- > 0;) {
-    number[level].resize(levels[level].size());
-    parent[level].assign(levels[level].size(), 0);
-    for (auto& n : number[level]) n = next++;
-    if (level + 1 < levels.size()) {
-      for (std::size_t j = 0; j < levels[level + 1].size(); ++j) {
-        for (const Cell& c : levels[level + 1][j]) {
-          parent[level][static_cast<std::size_t>(c.id)] = number[level + 1][j];
-        }
-      }
+  for (std::size_t level = levels_.size(); level-- > 0;) {
+    Level& l = levels_[level];
+    l.first_number = next;
+    next += static_cast<std::int64_t>(l.ends.size());
+    l.parent.assign(l.ends.size(), 0);
+    if (level + 1 == levels_.size()) continue;
+    const Level& above = levels_[level + 1];
+    for (std::size_t j = 0, begin = 0; j < above.ends.size(); begin = above.ends[j++]) {
+      for (std::size_t k = begin; k < above.ends[j]; ++k)
+        l.parent[static_cast<std::size_t>(above.cells[k].id)] =
+            above.first_number + static_cast<std::int64_t>(j);
     }
   }
+}
 
-  PackedRtree packed;
-  packed.depth = static_cast<int>(levels.size()) - 1;
-  std::size_t leaf_cells = 0;
-  for (const Node& leaf : levels.front()) leaf_cells += leaf.size();
-  packed.leaf_of.reserve(leaf_cells);
-  for (std::size_t level = levels.size(); level-- > 0;) {
-    for (std::size_t i = 0; i < levels[level].size(); ++i) {
-      const Node& node = levels[level][i];
-      RtreeNode out{number[level][i], parent[level][i], std::vector<unsigned char>(node_bytes)};
-      if (out.number == 1) put_big_endian(out.blob.data(), static_cast<unsigned>(packed.depth), 2);
-      put_big_endian(out.blob.data() + 2, node.size(), 2);
-      for (std::size_t k = 0; k < node.size(); ++k) {
-        const Cell& c = node[k];
-        const std::int64_t ref =
-            level == 0 ? c.id : number[level - 1][static_cast<std::size_t>(c.id)];
-        unsigned char* cell = out.blob.data() + 4 + k * kCellBytes;
-        put_big_endian(cell, static_cast<std::uint64_t>(ref), 8);
-        put_float(cell + 8, c.min_x);
-        put_float(cell + 12, c.max_x);
-        put_float(cell + 16, c.min_y);
-        put_float(cell + 20, c.max_y);
-        if (level == 0) packed.leaf_of.emplace_back(c.id, out.number);
-      }
-      packed.nodes.push_back(std::move(out));
+std::size_t PackedRtree::node_count() const {
+  std::size_t count = 0;
+  for (const Level& level : levels_) count += level.ends.size();
+  return count;
+}
+
+void PackedRtree::node(std::size_t k, RtreeNode& node) const {
+  std::size_t level = levels_.size() - 1;
+  while (k >= levels_[level].ends.size()) k -= levels_[level--].ends.size();
+  const Level& l = levels_[level];
+  node.number = l.first_number + static_cast<std::int64_t>(k);
+  node.parent = l.parent[k];
+  node.blob.assign(node_bytes_, 0);
+  unsigned char* out = node.blob.data();
+  const std::size_t begin = k > 0 ? l.ends[k - 1] : 0, end = l.ends[k];
+  if (node.number == 1) put_big_endian(out, static_cast<unsigned>(depth()), 2);
+  put_big_endian(out + 2, end - begin, 2);
+  for (std::size_t c = begin; c < end; ++c) {
+    const Cell& cell = l.cells[c];
+    const std::int64_t ref = level == 0 ? cell.id : levels_[level - 1].first_number + cell.id;
+    unsigned char* at = out + 4 + (c - begin) * kCellBytes;
+    put_big_endian(at, static_cast<std::uint64_t>(ref), 8);
+    put_float(at + 8, cell.min_x);
+    put_float(at + 12, cell.max_x);
+    put_float(at + 16, cell.min_y);
+    put_float(at + 20, cell.max_y);
+  }
+}
+
+std::vector<std::pair<std::int64_t, std::int64_t>> PackedRtree::leaf_entries() const {
+  const Level& leaves = levels_.front();
+  std::vector<std::pair<std::int64_t, std::int64_t>> entries;
+  entries.reserve(leaves.cells.size());
+  for (std::size_t i = 0, begin = 0; i < leaves.ends.size(); begin = leaves.ends[i++]) {
+    for (std::size_t k = begin; k < leaves.ends[i]; ++k)
+      entries.emplace_back(leaves.cells[k].id, leaves.first_number + static_cast<std::int64_t>(i));
+  }
+  return entries;
+}
+
+std::pair<std::int64_t, std::vector<std::int64_t>> PackedRtree::leaves_by_id() const {
+  const std::vector<Cell>& cells = levels_.front().cells;
+  if (cells.empty()) return {};
+  const auto lowest =
+      std::min_element(cells.begin(), cells.end(), [](const Cell& a, const Cell& b) {
+        return a.id < b.id;
+      })->id;
+  // 0 is no node's number: an id left at 0 has not been placed yet.
+  std::vector<std::int64_t> leaf(cells.size(), 0);
+  const Level& leaves = levels_.front();
+  for (std::size_t i = 0, begin = 0; i < leaves.ends.size(); begin = leaves.ends[i++]) {
+    for (std::size_t k = begin; k < leaves.ends[i]; ++k) {
+      const std::uint64_t at =
+          static_cast<std::uint64_t>(cells[k].id) - static_cast<std::uint64_t>(lowest);
+      if (at >= leaf.size() || leaf[at] != 0) return {};  // a gap (somewhere), or a repeat
+      leaf[at] = leaves.first_number + static_cast<std::int64_t>(i);
     }
   }
-  return packed;
+  return {lowest, std::move(leaf)};
 }
 
 namespace {
@@ -339,32 +347,35 @@ void insert_pairs(const Connection& db, const std::string& into,
                     });
 }
 
-// Inserts the leaf of each feature into the R-tree's rowid table `rowids`, the pairs (id, leaf)
-// sorted by id. Where the ids count up one by one from the first, as a writer's do, SQLite numbers
-// the rows after the first itself, so that each goes to the table's end without a search for its
-// id (a million strokes' rows: 0.16 s became 0.08 s).
-void insert_leaves(const Connection& db, const std::string& rowids,
-                   const std::vector<std::pair<std::int64_t, std::int64_t>>& leaf_of) {
+// Inserts the leaf of each feature into the R-tree's rowid table `rowids`, in the order of the
+// ids so that each row lands at the end of the table's B-tree. Where the ids count up one by one
+// from the first, as a writer's do, SQLite numbers the rows after the first itself, so that each
+// goes to the table's end without a search for its id (a million strokes' rows: 0.16 s became
+// 0.08 s).
+void insert_leaves(const Connection& db, const std::string& rowids, const PackedRtree& packed) {
   const std::string into = "INSERT INTO " + rowids + "(rowid, nodeno) VALUES ";
-  const auto gap = [](const auto& a, const auto& b) { return b.first != a.first + 1; };
-  if (leaf_of.empty() || std::adjacent_find(leaf_of.begin(), leaf_of.end(), gap) != leaf_of.end())
-    return insert_pairs(db, into, leaf_of);
-  insert_pairs(db, into, {leaf_of.front()});
+  const auto [first, leaf] = packed.leaves_by_id();
+  if (leaf.empty()) {
+    std::vector<std::pair<std::int64_t, std::int64_t>> entries = packed.leaf_entries();
+    std::sort(entries.begin(), entries.end());
+    return insert_pairs(db, into, entries);
+  }
+  insert_pairs(db, into, {std::make_pair(first, leaf.front())});
   constexpr std::size_t kRowsPerInsert = 512;
   static_assert(kRowsPerInsert <= gpkg::kMostBoundValues, "too many values a statement");
-  insert_in_batches(db, "INSERT INTO " + rowids + "(nodeno) VALUES ", "(?)", 1, kRowsPerInsert,
-                    leaf_of.size() - 1, [&](Connection::Statement& insert, std::size_t k, int at) {
-                      insert.bind(at, leaf_of[k + 1].second);
-                    });
-  if (db.last_row_id() != leaf_of.back().first)
+  insert_in_batches(
+      db, "INSERT INTO " + rowids + "(nodeno) VALUES ", "(?)", 1, kRowsPerInsert, leaf.size() - 1,
+      [&](Connection::Statement& insert, std::size_t k, int at) { insert.bind(at, leaf[k + 1]); });
+  const std::int64_t last = first + static_cast<std::int64_t>(leaf.size()) - 1;
+  if (db.last_row_id() != last)
     db.fail("SQLite numbered the spatial index's last row " + std::to_string(db.last_row_id()) +
-            ", not " + std::to_string(leaf_of.back().first));
+            ", not " + std::to_string(last));
 }
 
 }  // namespace
 
 void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
-                            std::vector<IndexBox> boxes) {
+                            const IndexBoxes& boxes) {
   OGRLayer* layer = dataset.GetLayerByName(table.c_str());
   if (!layer) throw Error("no layer '" + table + "' to index");
   const std::string column = layer->GetGeometryColumn();
@@ -380,22 +391,21 @@ void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
         db, "SELECT length(data) FROM " + quoted_identifier(rtree + "_node") + " WHERE nodeno = 1");
     if (root.step()) node_bytes = static_cast<std::size_t>(root.integer(0));
   }
-  PackedRtree packed = pack_rtree(std::move(boxes), node_bytes);
+  const PackedRtree packed(boxes, node_bytes);
   db.run("DELETE FROM " + quoted_identifier(rtree + "_node"));
   Connection::Statement node(
       db, "INSERT INTO " + quoted_identifier(rtree + "_node") + "(nodeno, data) VALUES (?, ?)");
   std::vector<std::pair<std::int64_t, std::int64_t>> parents;
-  for (const RtreeNode& n : packed.nodes) {
+  RtreeNode n;  // each node in turn, its blob's storage reused
+  for (std::size_t k = 0; k < packed.node_count(); ++k) {
+    packed.node(k, n);
     node.bind(1, n.number).bind(2, n.blob).step();
     if (n.parent != 0) parents.emplace_back(n.number, n.parent);
   }
   insert_pairs(
       db, "INSERT INTO " + quoted_identifier(rtree + "_parent") + "(nodeno, parentnode) VALUES ",
       parents);
-  // In the order of the ids, so that each row lands at the end of the table's B-tree.
-  std::vector<std::pair<std::int64_t, std::int64_t>> leaf_of = std::move(packed.leaf_of);
-  sort_by_id(leaf_of);
-  insert_leaves(db, quoted_identifier(rtree + "_rowid"), leaf_of);
+  insert_leaves(db, quoted_identifier(rtree + "_rowid"), packed);
 
   for (const std::string& trigger : rtree_triggers(table, column, fid, rtree)) db.run(trigger);
   db.run(
