@@ -47,7 +47,7 @@ double subcell_peak(const float* z, std::size_t length, std::size_t i, double d,
 }
 
 double subcell_break(const float* z, const std::uint8_t* flags, std::size_t length, std::size_t i,
-                     double d, const ViewParams& view, double height_tolerance) {
+                     double d, double ve, const CandidateBounds& bounds) {
   const double at = static_cast<double>(i);
   const auto in_zone = [&](std::size_t k) { return k < length && (flags[k] & cell::filtered); };
   // The zone's edge this cell stands for: the far one, or the near one for a near-end cell.
@@ -55,10 +55,9 @@ double subcell_break(const float* z, const std::uint8_t* flags, std::size_t leng
   // Inside the zone there is no edge here; a near edge needs a cell before it.
   if (!far_edge && (i == 0 || in_zone(i - 1))) return at;
   const std::size_t inner = far_edge ? i : i - 1, outer = inner + 1;
-  const double s_in = view.ve * column_slope(z, length, far_edge ? inner : outer, d);
-  const double s_out = view.ve * column_slope(z, length, far_edge ? outer : inner, d);
+  const double s_in = ve * column_slope(z, length, far_edge ? inner : outer, d);
+  const double s_out = ve * column_slope(z, length, far_edge ? outer : inner, d);
   if (!std::isfinite(s_in) || !std::isfinite(s_out)) return at;
-  const CandidateBounds bounds(view, d, height_tolerance);
   const double bound = s_out >= bounds.upper ? bounds.upper : bounds.lower;
   if (s_out == s_in) return at;
   // Fraction of the way from the zone's cell to the one outside at which the slope crosses.
@@ -78,7 +77,7 @@ StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, b
   if (factual && (ctx.subcell || ctx.drawn)) {
     along = subcell_peak(zp, length, i, d, ctx.view);
   } else if (!factual && ctx.drawn) {
-    along = subcell_break(zp, ctx.flags.row(row), length, i, d, ctx.view, ctx.height_tolerance);
+    along = subcell_break(zp, ctx.flags.row(row), length, i, d, ctx.view.ve, ctx.bounds);
   }
   ctx.geotransform.apply(ctx.frame.to_pixel(static_cast<double>(p), along), c.map.x, c.map.y);
   c.point = c.map;
@@ -164,14 +163,15 @@ Stroke StrokeBuilder::drawn_piece(StrokeClass cls, std::size_t from, std::size_t
     sums.add(c.slope_pct, c.row_slope_pct, c.depth_m, c.vertex.dist, c.vertex.z);
   }
   Stroke s = attributes(cls, static_cast<int>(to - from), length, sums);
-  s.chain.resize(to - from);
-  s.points.resize(to - from);
-  s.vertices.resize(to - from);
+  // Reserved and appended: sized with resize, each was filled with zeros first.
+  s.chain.reserve(to - from);
+  s.points.reserve(to - from);
+  s.vertices.reserve(to - from);
   for (std::size_t k = from; k < to; ++k) {
     const DrawnCell& c = drawn_[k];
-    s.chain[k - from] = c.cell;
-    s.points[k - from] = c.point;
-    s.vertices[k - from] = c.vertex;
+    s.chain.push_back(c.cell);
+    s.points.push_back(c.point);
+    s.vertices.push_back(c.vertex);
   }
   return s;
 }

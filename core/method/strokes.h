@@ -9,6 +9,7 @@
 
 #include "core/base/geotransform.h"
 #include "core/base/prefetch.h"
+#include "core/method/candidates.h"
 #include "core/method/chaining.h"
 #include "core/method/orient.h"
 #include "core/method/params.h"
@@ -92,6 +93,8 @@ struct StrokeContext {
   double height_tolerance = 0.0;  // the c-set's (SilhouetteParams::height_tolerance)
   double z_ref = 0.0;  // height that stays in place in plan-oblique geometry (the DEM minimum)
   std::size_t first_profile = 0;
+  // The c-set's bounds, for sub-cell breaks: worked out once, not for every cell.
+  CandidateBounds bounds{view, frame.d, height_tolerance};
 };
 
 // One cell of a stroke with what the stroke's geometry and attributes need from it.
@@ -111,9 +114,10 @@ double subcell_peak(const float* z, std::size_t length, std::size_t i, double d,
 
 // Position of a thinned (t-set) cell along its profile, refined to where the exaggerated column
 // slope, interpolated linearly between cell centres, leaves the c-set's bounds at the end of its
-// f-set zone (within half a cell, towards the zone's edge). `flags` is the profile's.
+// f-set zone (within half a cell, towards the zone's edge). `flags` is the profile's; `bounds`
+// are the c-set's for the view's exaggeration `ve`.
 double subcell_break(const float* z, const std::uint8_t* flags, std::size_t length, std::size_t i,
-                     double d, const ViewParams& view, double height_tolerance);
+                     double d, double ve, const CandidateBounds& bounds);
 
 // The record of cell i of profile p (a global profile index; the grid row is p - first_profile).
 StrokeCell stroke_cell(const StrokeContext& ctx, std::size_t p, std::size_t i, bool factual);
