@@ -19,14 +19,15 @@ packages=$(echo $packages)
 
 source "$repo/scripts/debian_root.sh"
 
-# Mounts that a killed run left in the chroot (its EXIT trap never ran), deepest first: a bind over
-# a folder deleted since fails the next mount there, and rm -rf of the chroot would reach /dev.
-unmount_stale() {
+# Every mount in the chroot, deepest first: at the end of a run, and before the next one for those
+# a killed run left (its EXIT trap never ran), as a bind over a folder deleted since fails the next
+# mount there, and rm -rf of the chroot would reach /dev.
+unmount_in_chroot() {
   local target
   awk -v r="$root/" 'index($2, r) == 1 {print $2}' /proc/mounts | sort -r |
     while read -r target; do umount -l "$target" 2>/dev/null || true; done
 }
-unmount_stale
+unmount_in_chroot
 make_chroot() {
   rm -rf "$root" "$root.new"
   mkdir -p "$cache"
@@ -42,20 +43,15 @@ if [ "$(cat "$root/.terrain-sketch-packages" 2>/dev/null)" != "$packages" ]; the
   echo "-- $suite chroot made in $(( $(date +%s) - start )) s"
 fi
 
-mounts=()
-unmount_all() {
-  for (( k=${#mounts[@]}-1; k>=0; k-- )); do umount -l "${mounts[k]}" 2>/dev/null || true; done
-}
-trap unmount_all EXIT
+trap unmount_in_chroot EXIT
 bind() {  # SOURCE TARGET [ro]
   mkdir -p "$2"
   mount --bind "$1" "$2"
-  mounts+=("$2")
   if [ "${3:-}" = ro ]; then mount -o remount,bind,ro "$2"; fi
 }
 bind /dev "$root/dev"
 bind /dev/pts "$root/dev/pts"
-mount -t proc proc "$root/proc" && mounts+=("$root/proc")
+mount -t proc proc "$root/proc"
 bind "$repo" "$root/src" ro
 if [ -n "$other_zip" ]; then cp "$other_zip" "$root/tmp/other-release.zip"; fi
 
