@@ -97,6 +97,7 @@ class StrokeGrouper {
   std::unique_ptr<Index> index_;
   std::vector<Record> records_;  // of strokes first_held_, first_held_ + 1, ...
   std::size_t first_held_ = 0;
+  std::vector<std::uint32_t> near_;  // the ends near a stroke's two ends, its storage reused
 };
 
 }  // namespace tsk
