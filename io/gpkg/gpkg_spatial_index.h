@@ -56,7 +56,8 @@ class PackedRtree {
   PackedRtree(const IndexBoxes& boxes, std::size_t node_bytes);
   int depth() const { return static_cast<int>(levels_.size()) - 1; }  // levels above the leaves
   std::size_t node_count() const;
-  // Node `k` in the order of their numbers (the root first) into `node`, its blob's storage reused.
+  // Node `k` (below node_count()) in the order of their numbers, the root first, into `node`, its
+  // blob's storage reused.
   void node(std::size_t k, RtreeNode& node) const;
   // (box id, its leaf's number) for every box, leaf by leaf.
   std::vector<std::pair<std::int64_t, std::int64_t>> leaf_entries() const;
