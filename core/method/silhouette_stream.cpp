@@ -374,17 +374,18 @@ void SilhouetteStream::add_strip(const HeightGrid& z, std::size_t first, std::si
   State& st = *state_;
   const std::size_t before = st.accept_strip(z, first, count);
   st.flags.reshape(z.rows(), z.cols(), kUnset);  // rows of the neighbours stay unused
-  const StrokeContext context{z,
-                              st.flags,
-                              st.frame,
-                              st.params.view,
-                              st.geotransform,
-                              st.params.geometry,
-                              st.params.subcell,
-                              st.params.strokes.drawn(),
-                              st.params.height_tolerance,
-                              st.z_ref,
-                              first - before};
+  const StrokeContext context{
+      z,
+      st.flags,
+      st.frame,
+      st.params.view,
+      st.geotransform,
+      st.params.geometry,
+      st.params.subcell,
+      st.params.strokes.drawn(),
+      CandidateBounds(st.params.view, st.frame.d, st.params.height_tolerance),
+      st.z_ref,
+      first - before};
   const unsigned threads = resolve_threads(st.params.threads);
   const std::size_t batch = batch_profiles(st.frame.length);
   std::mutex merge;

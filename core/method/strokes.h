@@ -89,12 +89,12 @@ struct StrokeContext {
   const GeoTransform& geotransform;
   Geometry geometry = Geometry::map;
   bool subcell = false;
-  bool drawn = false;             // points at sub-cell places, in map geometry, for drawn strokes
-  double height_tolerance = 0.0;  // the c-set's (SilhouetteParams::height_tolerance)
+  bool drawn = false;  // points at sub-cell places, in map geometry, for drawn strokes
+  // The c-set's bounds with its height tolerance (SilhouetteParams::height_tolerance), for sub-cell
+  // breaks: worked out once, not for every cell.
+  CandidateBounds bounds;
   double z_ref = 0.0;  // height that stays in place in plan-oblique geometry (the DEM minimum)
   std::size_t first_profile = 0;
-  // The c-set's bounds, for sub-cell breaks: worked out once, not for every cell.
-  CandidateBounds bounds{view, frame.d, height_tolerance};
 };
 
 // One cell of a stroke with what the stroke's geometry and attributes need from it.
