@@ -174,6 +174,14 @@ void put_float(unsigned char* out, float value) {
 
 }  // namespace
 
+template <typename F>
+void PackedRtree::for_each_cell(const Level& level, F&& f) {
+  for (std::size_t j = 0, begin = 0; j < level.ends.size(); begin = level.ends[j++]) {
+    for (std::size_t k = begin; k < level.ends[j]; ++k)
+      f(level.cells[k], level.first_number + static_cast<std::int64_t>(j));
+  }
+}
+
 PackedRtree::PackedRtree(const IndexBoxes& boxes, std::size_t node_bytes)
     : node_bytes_(node_bytes) {
   if (node_bytes < 4 + 2 * kCellBytes) {
@@ -202,12 +210,9 @@ PackedRtree::PackedRtree(const IndexBoxes& boxes, std::size_t node_bytes)
     next += static_cast<std::int64_t>(l.ends.size());
     l.parent.assign(l.ends.size(), 0);
     if (level + 1 == levels_.size()) continue;
-    const Level& above = levels_[level + 1];
-    for (std::size_t j = 0, begin = 0; j < above.ends.size(); begin = above.ends[j++]) {
-      for (std::size_t k = begin; k < above.ends[j]; ++k)
-        l.parent[static_cast<std::size_t>(above.cells[k].id)] =
-            above.first_number + static_cast<std::int64_t>(j);
-    }
+    for_each_cell(levels_[level + 1], [&l](const Cell& cell, std::int64_t number) {
+      l.parent[static_cast<std::size_t>(cell.id)] = number;
+    });
   }
 }
 
@@ -241,13 +246,11 @@ void PackedRtree::node(std::size_t k, RtreeNode& node) const {
 }
 
 std::vector<std::pair<std::int64_t, std::int64_t>> PackedRtree::leaf_entries() const {
-  const Level& leaves = levels_.front();
   std::vector<std::pair<std::int64_t, std::int64_t>> entries;
-  entries.reserve(leaves.cells.size());
-  for (std::size_t i = 0, begin = 0; i < leaves.ends.size(); begin = leaves.ends[i++]) {
-    for (std::size_t k = begin; k < leaves.ends[i]; ++k)
-      entries.emplace_back(leaves.cells[k].id, leaves.first_number + static_cast<std::int64_t>(i));
-  }
+  entries.reserve(levels_.front().cells.size());
+  for_each_cell(levels_.front(), [&entries](const Cell& cell, std::int64_t leaf) {
+    entries.emplace_back(cell.id, leaf);
+  });
   return entries;
 }
 
@@ -260,15 +263,17 @@ std::pair<std::int64_t, std::vector<std::int64_t>> PackedRtree::leaves_by_id() c
       })->id;
   // 0 is no node's number: an id left at 0 has not been placed yet.
   std::vector<std::int64_t> leaf(cells.size(), 0);
-  const Level& leaves = levels_.front();
-  for (std::size_t i = 0, begin = 0; i < leaves.ends.size(); begin = leaves.ends[i++]) {
-    for (std::size_t k = begin; k < leaves.ends[i]; ++k) {
-      const std::uint64_t at =
-          static_cast<std::uint64_t>(cells[k].id) - static_cast<std::uint64_t>(lowest);
-      if (at >= leaf.size() || leaf[at] != 0) return {};  // a gap (somewhere), or a repeat
-      leaf[at] = leaves.first_number + static_cast<std::int64_t>(i);
+  bool placed = true;
+  for_each_cell(levels_.front(), [&](const Cell& cell, std::int64_t number) {
+    const std::uint64_t at =
+        static_cast<std::uint64_t>(cell.id) - static_cast<std::uint64_t>(lowest);
+    if (at >= leaf.size() || leaf[at] != 0) {
+      placed = false;  // a gap (somewhere), or a repeat
+    } else {
+      leaf[at] = number;
     }
-  }
+  });
+  if (!placed) return {};
   return {lowest, std::move(leaf)};
 }
 

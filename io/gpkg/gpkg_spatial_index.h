@@ -74,6 +74,9 @@ class PackedRtree {
     std::vector<std::int64_t> parent;  // each node's parent's number (0 for the root)
     std::int64_t first_number = 0;     // its first node's
   };
+  // Calls f(cell, its node's number) for every cell of `level`, node by node.
+  template <typename F>
+  static void for_each_cell(const Level& level, F&& f);
   std::size_t node_bytes_;
   std::vector<Level> levels_;  // the leaves first, the root alone last
 };
