@@ -248,10 +248,10 @@ const std::vector<OptionSpec> kOptionTable = {
      TSK_FLAG(timings)},
     {"--strips", "N", kInputOutput,
      "read and process N profiles at a time (default: 1024, more for profiles\n"
-     "under 1024 cells, fewer at 0, 90, 180 or 270 for profiles over 4096\n"
-     "cells (4 Mi cells a strip, at least 256) or for profiles so long that\n"
-     "strips would pass 512 MB; memory is about 9 bytes x cells of N\n"
-     "profiles, 13 at a non-cardinal azimuth)",
+     "under 1024 cells, fewer for profiles over 4096 cells (4 Mi cells a\n"
+     "strip, at least 256) or for profiles so long that strips would pass\n"
+     "512 MB; memory is about 9 bytes x cells of N profiles, 13 at a\n"
+     "non-cardinal azimuth)",
      kSilhouettes,
      [](Options& o, const std::string& n, const std::string& v) {
        o.strips = parse_count(n, v, 1, " profile per strip");

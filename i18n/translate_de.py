@@ -402,14 +402,14 @@ GERMAN = {
     "The DEM is read and processed this many profiles at a time, the next strip read while "
     "this one is processed, so DEMs larger than memory run too. 0 chooses 1024, more for "
     "profiles under 1024 cells (a million cells a strip), fewer for profiles over 4096 cells "
-    "seen from 0, 90, 180 or 270 degrees (four million cells a strip, at least 256), or fewer "
+    "(four million cells a strip, at least 256), or fewer "
     "when profiles are so long that the strips would take more than 512 MB. Strips that would "
     "take more than half of this machine's memory are refused.":
         "Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen "
         "wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der "
         "Speicher sind. 0 wählt 1024, mehr für Profile unter 1024 Zellen (eine Million Zellen "
-        "je Streifen), weniger für Profile über 4096 Zellen bei Blick aus 0, 90, 180 oder 270 "
-        "Grad (vier Millionen Zellen je Streifen, mindestens 256), oder weniger, wenn die Profile "
+        "je Streifen), weniger für Profile über 4096 Zellen (vier "
+        "Millionen Zellen je Streifen, mindestens 256), oder weniger, wenn die Profile "
         "so lang sind, dass die Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses "
         "Rechners belegen würden, werden abgelehnt.",
     "The raster (%1 x %2 cells) is too large for this algorithm, which holds the whole DEM turned "

@@ -135,8 +135,8 @@ void SilhouettesAlgorithm::initAlgorithm(const QVariantMap&) {
       tr("The DEM is read and processed this many profiles at a time, the next strip read while "
          "this one is processed, so DEMs larger than memory run too. 0 chooses 1024, more for "
          "profiles under 1024 cells (a million cells a strip), fewer for profiles over 4096 "
-         "cells seen from 0, 90, 180 or 270 degrees (four million cells a strip, at least 256), "
-         "or fewer when profiles are so long that the strips would take more than 512 MB. "
+         "cells (four million cells a strip, at least 256), or fewer when profiles are so long "
+         "that the strips would take more than 512 MB. "
          "Strips that would take more than half of this machine's memory are refused."),
       true);
   add(new QgsProcessingParameterFeatureSink(kFactual, tr("Factual silhouettes"), kLineLayer),

@@ -5,10 +5,15 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
+#include <map>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "catch_compat.h"
 #include "gdal_test_support.h"
+#include "io/read/block_retention.h"
 #include "io/read/dem_reader.h"
 
 using namespace tsk;
@@ -75,6 +80,143 @@ TEST_CASE("band windows read a file's heights and let GDAL keep only the rows in
   }
   CHECK_THROWS_AS(io::BandWindows(path, 2), Error);
   CHECK_THROWS_AS(io::BandWindows(dir / "missing.tif", 1), Error);
+
+  // Bands of columns down the file, as from the south: after each band, GDAL still holds the
+  // blocks along its last columns in every block row, for the next band, and little else.
+  io::DatasetPtr dataset(static_cast<GDALDataset*>(GDALOpen(path.c_str(), GA_ReadOnly)));
+  REQUIRE(dataset != nullptr);
+  GDALRasterBand* band = dataset->GetRasterBand(1);
+  const io::BandWindows columns(std::move(dataset), path, 1);
+  const auto cached = [band](int x, int y) {
+    GDALRasterBlock* block = band->TryGetLockedBlockRef(x, y);
+    if (block) block->DropLock();
+    return block != nullptr;
+  };
+  const GIntBig block = static_cast<GIntBig>(kTile) * kTile * 4;
+  const GIntBig start = GDALGetCacheUsed64();
+  for (std::size_t first = 0; first + 100 < kCols; first += 100) {
+    std::vector<float> heights(kRows * 102);
+    for (std::size_t top = 0; top < kRows; top += 64)
+      columns.read({top, first, 64, 102}, heights.data() + top * 102);
+    CHECK(heights[(kRows - 1) * 102 + 101] ==
+          static_cast<float>(kRows - 1) * 1000.0f + static_cast<float>(first + 101));
+    const int edge = static_cast<int>((first + 101) / kTile);
+    for (int y = 0; y + 1 < kRows / kTile; ++y) REQUIRE(cached(edge, y));
+    // Each block row keeps a block at either side at most (the first band: no direction yet).
+    CHECK(GDALGetCacheUsed64() - start <= (2 * kRows / kTile + 2 * kCols / kTile) * block);
+  }
+}
+
+namespace {
+
+// GDAL's block cache as BlockRetention sees it: a read inflates each block it touches that is not
+// held, and a block stays held until it is dropped.
+struct InflationCount {
+  static constexpr std::size_t kRows = 512, kCols = 1024, kBlock = 64, kRun = 64;
+  std::set<std::pair<std::size_t, std::size_t>> held;  // (x, y)
+  std::map<std::pair<std::size_t, std::size_t>, int> inflated;
+  std::size_t most_held = 0;
+  io::BlockRetention retention{kRows, kCols, kBlock, kBlock, [this](std::size_t x, std::size_t y) {
+                                 held.erase({x, y});
+                               }};
+
+  // A window read as BandWindows::read reads it: in runs of rows, letting go above each.
+  void read(std::size_t row0, std::size_t rows, std::size_t col0, std::size_t cols) {
+    const std::size_t end = row0 + rows;
+    for (std::size_t top = row0; top < end;) {
+      const std::size_t run_end = std::min(end, (top / kRun + 1) * kRun);
+      for (std::size_t y = top / kBlock; y <= (run_end - 1) / kBlock; ++y) {
+        for (std::size_t x = col0 / kBlock; x <= (col0 + cols - 1) / kBlock; ++x) {
+          if (held.insert({x, y}).second) ++inflated[{x, y}];
+        }
+      }
+      retention.read(top, run_end, col0, cols);
+      retention.let_go_above((run_end - std::min<std::size_t>(run_end, 2)) / kBlock);
+      most_held = std::max(most_held, held.size());
+      top = run_end;
+    }
+  }
+  // Bands read one after another, each down from its top in windows of 16 rows, as DemBand::load
+  // reads a strip's band: band k spans columns columns(k, row) = [first, last) at each row.
+  void read_bands(std::size_t bands,
+                  const std::function<std::pair<long, long>(std::size_t, long)>& columns) {
+    for (std::size_t k = 0; k < bands; ++k) {
+      for (long top = 0; top < static_cast<long>(kRows); top += 16) {
+        long first = static_cast<long>(kCols), last = 0;
+        for (long r = top; r < top + 16; ++r) {
+          const auto [c0, c1] = columns(k, r);
+          first = std::min(first, std::max(0L, c0));
+          last = std::max(last, std::min(static_cast<long>(kCols), c1));
+        }
+        if (first < last) {
+          read(static_cast<std::size_t>(top), 16, static_cast<std::size_t>(first),
+               static_cast<std::size_t>(last - first));
+        }
+      }
+    }
+  }
+  bool each_inflated_once() const {
+    return std::all_of(inflated.begin(), inflated.end(),
+                       [](const auto& b) { return b.second == 1; });
+  }
+  std::size_t most_held_in_a_block_row() const {
+    std::map<std::size_t, std::size_t> per_row;
+    for (const auto& [x, y] : held) ++per_row[y];
+    std::size_t most = 0;
+    for (const auto& [y, n] : per_row) most = std::max(most, n);
+    return most;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("band windows keep the blocks along a band's edge for the next band, and only those",
+          "[io][strips]") {
+  using C = InflationCount;
+  constexpr std::size_t kBlockRows = C::kRows / C::kBlock, kBlocksPerRow = C::kCols / C::kBlock;
+  SECTION("strips down the whole width, as from the west: no block is kept") {
+    C count;
+    for (std::size_t top = 0; top + 2 < C::kRows; top += 98)
+      count.read(top, std::min<std::size_t>(100, C::kRows - top), 0, C::kCols);
+    CHECK(count.each_inflated_once());
+    CHECK(count.inflated.size() == kBlockRows * kBlocksPerRow);
+    CHECK(count.most_held <= 2 * kBlocksPerRow);
+    CHECK(count.held.size() <= kBlocksPerRow);
+  }
+  // Bands of 100 columns that overlap by two (the neighbours slopes need), as from the south or
+  // the north: a band's edge blocks are the next one's first.
+  for (const bool rightwards : {true, false}) {
+    DYNAMIC_SECTION("bands of columns, moving " << (rightwards ? "right" : "left")) {
+      C count;
+      count.read_bands(11, [rightwards](std::size_t k, long) {
+        const long first =
+            rightwards ? 100L * static_cast<long>(k) - 1
+                       : static_cast<long>(C::kCols) - 100L * (static_cast<long>(k) + 1) - 1;
+        return std::pair<long, long>{first, first + 102};
+      });
+      CHECK(count.each_inflated_once());
+      CHECK(count.inflated.size() == kBlockRows * kBlocksPerRow);
+      // A band's blocks and the last one's edge, not the blocks behind.
+      CHECK(count.most_held <= kBlockRows * 4 + 2 * kBlocksPerRow);
+      CHECK(count.most_held_in_a_block_row() <= 2);
+    }
+  }
+  // Bands whose edges slant, one column a row (as from 45 degrees) and five (nearly along the
+  // rows): in a block row, a band's edge spans as many columns as it slants across it.
+  for (const long slant : {1L, 5L, -3L}) {
+    DYNAMIC_SECTION("bands slanting " << slant << " columns a row") {
+      C count;
+      const long width = 230, reach = static_cast<long>(C::kRows) * std::abs(slant);
+      const auto bands =
+          static_cast<std::size_t>((static_cast<long>(C::kCols) + reach) / width + 2);
+      count.read_bands(bands, [&](std::size_t k, long row) {
+        const long first = static_cast<long>(k) * width - (slant > 0 ? reach : 0) + slant * row - 1;
+        return std::pair<long, long>{first, first + width + 2};
+      });
+      CHECK(count.each_inflated_once());
+      CHECK(count.inflated.size() == kBlockRows * kBlocksPerRow);
+    }
+  }
 }
 
 TEST_CASE("Web Mercator cells are scaled to ground metres with a note", "[io]") {

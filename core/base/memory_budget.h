@@ -15,8 +15,8 @@ namespace tsk {
 bool too_large_to_turn_whole(const OrientedFrame& frame);
 
 // Profiles per strip for a strip-by-strip run of this view: 1024, more for profiles under 1024
-// cells (1 Mi cells a strip, up to 65536 profiles), fewer for a cardinal view's profiles over
-// 4096 cells (4 Mi cells a strip, at least 256 profiles) and for profiles so long that a run's
+// cells (1 Mi cells a strip, up to 65536 profiles), fewer for profiles over 4096 cells (4 Mi
+// cells a strip, at least 256 profiles) and for profiles so long that a run's
 // strips (two of heights, the classification and, resampled, the band: 9 or 13 bytes a cell)
 // would pass 512 MiB, at least 16.
 std::size_t strip_profiles(const OrientedFrame& frame);

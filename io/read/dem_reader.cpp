@@ -224,8 +224,12 @@ BandWindows::BandWindows(DatasetPtr dataset, const std::string& path, int band)
   int block_width = 0, block_height = 0;
   band_->GetBlockSize(&block_width, &block_height);
   block_rows_ = static_cast<std::size_t>(std::max(1, block_height));
-  blocks_per_row_ = (cols_ + static_cast<std::size_t>(std::max(1, block_width)) - 1) /
-                    static_cast<std::size_t>(std::max(1, block_width));
+  GDALRasterBand* band_to_drop = band_;
+  retention_ = std::make_unique<BlockRetention>(
+      rows_, cols_, block_rows_, static_cast<std::size_t>(std::max(1, block_width)),
+      [band_to_drop](std::size_t x, std::size_t y) {
+        band_to_drop->FlushBlock(static_cast<int>(x), static_cast<int>(y), FALSE);
+      });
   // At least 64 rows a run, so that a file of one-row blocks is not read row by row.
   run_rows_ = block_rows_ * ((64 + block_rows_ - 1) / block_rows_);
 }
@@ -240,19 +244,12 @@ void BandWindows::read(const DemWindow& window, float* heights) const {
   const std::size_t end = window.row0 + window.rows;
   for (std::size_t top = window.row0; top < end;) {
     const std::size_t run_end = std::min(end, (top / run_rows_ + 1) * run_rows_);
-    cached_from_ = std::min(cached_from_, top / block_rows_);
     read_({top, window.col0, run_end - top, window.cols},
           heights + (top - window.row0) * window.cols);
+    if (window.cols > 0) retention_->read(top, run_end, window.col0, window.cols);
     // The next strip of a cardinal view starts on the row before this one's last.
-    drop_block_rows_above((run_end - std::min<std::size_t>(run_end, 2)) / block_rows_);
+    retention_->let_go_above((run_end - std::min<std::size_t>(run_end, 2)) / block_rows_);
     top = run_end;
-  }
-}
-
-void BandWindows::drop_block_rows_above(std::size_t keep) const {
-  for (; cached_from_ < keep; ++cached_from_) {
-    for (std::size_t x = 0; x < blocks_per_row_; ++x)
-      band_->FlushBlock(static_cast<int>(x), static_cast<int>(cached_from_), FALSE);
   }
 }
 

@@ -10,6 +10,7 @@
 #include "core/method/run_recipes.h"
 #include "core/method/silhouettes.h"
 #include "core/method/strokes.h"
+#include "io/read/block_retention.h"
 #include "io/read/dem_notes.h"
 #include "io/read/gdal_util.h"
 
@@ -68,7 +69,8 @@ Dem read_dem(const std::string& path, const DemOptions& options, double azimuth_
 // provider, which copies every block once more and leaves what it read in GDAL's process-wide
 // block cache (a share of the machine's memory in QGIS, so a whole large DEM). Readers go down
 // the DEM, strip by strip or band by band, so this one lets GDAL drop the blocks above the last
-// rows read as it goes: GDAL keeps about a run of block rows, whatever its cache's size.
+// rows read as it goes, but for those the next band will read again (BlockRetention): GDAL keeps
+// about a run of block rows and a few blocks a block row, whatever its cache's size.
 // One thread at a time.
 class BandWindows {
  public:
@@ -88,17 +90,14 @@ class BandWindows {
   void remember_failure(const std::string& message) { *earlier_failure_ = message; }
 
  private:
-  // Lets GDAL drop the blocks of the block rows above block row `keep`.
-  void drop_block_rows_above(std::size_t keep) const;
-
   DatasetPtr dataset_;
   std::shared_ptr<std::string> earlier_failure_ = std::make_shared<std::string>();
   GDALRasterBand* band_;
   WindowReader read_;
   std::size_t rows_, cols_;
-  std::size_t block_rows_ = 1, blocks_per_row_ = 1;
+  std::size_t block_rows_ = 1;
   std::size_t run_rows_ = 1;  // windows are read in runs of rows ending on these multiples
-  mutable std::size_t cached_from_ = static_cast<std::size_t>(-1);  // highest block row read
+  std::unique_ptr<BlockRetention> retention_;
 };
 
 // A DEM file open for a view, read window by window through BandWindows (so GDAL's cache holds
