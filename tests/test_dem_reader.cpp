@@ -217,6 +217,24 @@ TEST_CASE("band windows keep the blocks along a band's edge for the next band, a
       CHECK(count.inflated.size() == kBlockRows * kBlocksPerRow);
     }
   }
+  SECTION("a file in strips, a block to a row, keeps none: every band reads each whole") {
+    std::set<std::size_t> held;
+    std::size_t most = 0;
+    io::BlockRetention strips(C::kRows, C::kCols, 16, C::kCols,
+                              [&held](std::size_t x, std::size_t y) {
+                                CHECK(x == 0);
+                                held.erase(y);
+                              });
+    for (std::size_t first = 0; first + 100 <= C::kCols; first += 100) {
+      for (std::size_t top = 0; top < C::kRows; top += 16) {
+        held.insert(top / 16);
+        strips.read(top, top + 16, first, 100);
+        strips.let_go_above((top + 14) / 16);
+        most = std::max(most, held.size());
+      }
+    }
+    CHECK(most <= 2);
+  }
 }
 
 TEST_CASE("Web Mercator cells are scaled to ground metres with a note", "[io]") {

@@ -11,18 +11,21 @@ BlockRetention::BlockRetention(std::size_t rows, std::size_t cols, std::size_t b
     : block_rows_(std::max<std::size_t>(1, block_rows)),
       block_cols_(std::max<std::size_t>(1, block_cols)),
       cols_(cols),
+      block_row_count_((rows + block_rows_ - 1) / block_rows_),
+      blocks_per_row_((cols + block_cols_ - 1) / block_cols_),
       drop_(std::move(drop)),
-      rows_((rows + block_rows_ - 1) / block_rows_) {}
+      rows_(blocks_per_row_ > 1 ? block_row_count_ : 0) {}
 
 void BlockRetention::read(std::size_t top, std::size_t end, std::size_t col0, std::size_t cols) {
-  const std::size_t y0 = top / block_rows_;
-  const std::size_t y1 = std::min((end - 1) / block_rows_, rows_.size() - 1);
+  if (block_row_count_ == 0 || end <= top || cols == 0) return;
+  const std::size_t y0 = std::min(top / block_rows_, block_row_count_ - 1);
+  const std::size_t y1 = std::min((end - 1) / block_rows_, block_row_count_ - 1);
   if (held_from_ != kNone && y0 < held_from_) {
     // Back above the rows this pass holds: the next band. Its rows below are let go now.
     let_go_above(held_to_);
   }
   const std::size_t last = col0 + cols - 1;
-  for (std::size_t y = y0; y <= y1; ++y) {
+  for (std::size_t y = y0; y <= y1 && !rows_.empty(); ++y) {
     BlockRow& row = rows_[y];
     if (row.first_col == kNone) {
       row.start_end = end;
@@ -71,9 +74,21 @@ void BlockRetention::choose_kept(std::size_t y, Blocks kept[2]) const {
     const std::size_t from = std::max(row.first_col, row.last_col + 1 - width);
     kept[1] = {from / block_cols_, row.last_col / block_cols_};
   }
+  // Keeping every block of the row would hold the whole file as the bands go by.
+  if (covers_row(kept)) kept[0] = kept[1] = Blocks{};
+}
+
+bool BlockRetention::covers_row(const Blocks kept[2]) const {
+  const auto has = [kept](std::size_t x) { return kept[0].has(x) || kept[1].has(x); };
+  const bool gap_between = !kept[0].empty() && !kept[1].empty() && kept[1].first > kept[0].last + 1;
+  return has(0) && has(blocks_per_row_ - 1) && !gap_between;
 }
 
 void BlockRetention::let_go(std::size_t y) {
+  if (rows_.empty()) {
+    drop_(0, y);
+    return;
+  }
   BlockRow& row = rows_[y];
   if (row.first_col == kNone) return;  // not read in this pass: what it keeps stays kept
   Blocks kept[2];

@@ -9,7 +9,8 @@
 // 8000^2 benchmark, +72 % from 45 degrees in strips of 370 profiles). So in each block row a pass
 // leaves, the blocks at either side of the columns it read stay for the next pass, as wide as a
 // block and as far as the band's edge slants across the block row; but not a side the passes are
-// moving away from, nor any of a block row read across the whole width.
+// moving away from, nor any of a block row read across the whole width, nor every block of a row
+// (a file in strips has a block to a row, which every band reads whole).
 #pragma once
 
 #include <cstddef>
@@ -37,6 +38,7 @@ class BlockRetention {
   struct Blocks {
     std::size_t first = 1, last = 0;
     bool has(std::size_t x) const { return first <= x && x <= last; }
+    bool empty() const { return first > last; }
   };
   // What one block row holds for the passes: the columns this pass and the last one read there,
   // the blocks kept for the next pass, and where this pass's first and latest reads there ended
@@ -51,12 +53,17 @@ class BlockRetention {
   void let_go(std::size_t y);
   // The blocks of block row y to keep for the next pass.
   void choose_kept(std::size_t y, Blocks kept[2]) const;
+  // Whether `kept` is every block of a block row.
+  bool covers_row(const Blocks kept[2]) const;
   // How far the band's edge at a side (0: first columns, 1: last) slants across a block row, by
   // how far that side's column moved from the pass's first read of the row to its latest.
   std::size_t slant(const BlockRow& row, int side) const;
 
   std::size_t block_rows_, block_cols_, cols_;
+  std::size_t block_row_count_, blocks_per_row_;
   Drop drop_;
+  // Of every block row, when a block row has more than one block (a file in strips has one per
+  // row, which every band reads whole: none is kept, so none is followed).
   std::vector<BlockRow> rows_;
   std::size_t held_from_ = kNone, held_to_ = 0;  // block rows read in this pass, not let go
 };
