@@ -107,6 +107,10 @@ sketch = [cli, "silhouettes", dem, out, "--azimuth", "90"]
 print("DEM %s: %d x %d cells, %d pairs in turns" % (dem, size, size, pairs))
 said = compare("defaults (adaptive, drawn)", sketch + ["--timings"], "gdaldem hillshade", shade)
 print("  " + "\n  ".join(line for line in said.splitlines() if not line.startswith("TIME")))
+# Another azimuth: the DEM read in bands of slanting rows, resampled (hillshade has no azimuth
+# that changes how it reads).
+compare("defaults from 45 degrees", [cli, "silhouettes", dem, out, "--azimuth", "45"],
+        "gdaldem hillshade", shade)
 compare("exact (--filter fixed --strokes exact)",
         sketch + ["--filter", "fixed", "--strokes", "exact"], "gdaldem hillshade", shade)
 # The goal that drawn strokes cost at most 15 % more than exact ones, with each filter.
