@@ -24,8 +24,11 @@ void BlockRetention::read(std::size_t top, std::size_t end, std::size_t col0, st
     // Back above the rows this pass holds: the next band. Its rows below are let go now.
     let_go_above(held_to_);
   }
+  held_from_ = std::min(held_from_, y0);
+  held_to_ = std::max(held_to_, y1 + 1);
+  if (rows_.empty()) return;  // no block is kept, so no read is followed
   const std::size_t last = col0 + cols - 1;
-  for (std::size_t y = y0; y <= y1 && !rows_.empty(); ++y) {
+  for (std::size_t y = y0; y <= y1; ++y) {
     BlockRow& row = rows_[y];
     if (row.first_col == kNone) {
       row.start_end = end;
@@ -36,8 +39,6 @@ void BlockRetention::read(std::size_t top, std::size_t end, std::size_t col0, st
     row.first_col = std::min(row.first_col, col0);
     row.last_col = std::max(row.last_col, last);
   }
-  held_from_ = std::min(held_from_, y0);
-  held_to_ = std::max(held_to_, y1 + 1);
 }
 
 void BlockRetention::let_go_above(std::size_t keep) {
@@ -79,9 +80,8 @@ void BlockRetention::choose_kept(std::size_t y, Blocks kept[2]) const {
 }
 
 bool BlockRetention::covers_row(const Blocks kept[2]) const {
-  const auto has = [kept](std::size_t x) { return kept[0].has(x) || kept[1].has(x); };
   const bool gap_between = !kept[0].empty() && !kept[1].empty() && kept[1].first > kept[0].last + 1;
-  return has(0) && has(blocks_per_row_ - 1) && !gap_between;
+  return either_has(kept, 0) && either_has(kept, blocks_per_row_ - 1) && !gap_between;
 }
 
 void BlockRetention::let_go(std::size_t y) {
@@ -93,13 +93,12 @@ void BlockRetention::let_go(std::size_t y) {
   if (row.first_col == kNone) return;  // not read in this pass: what it keeps stays kept
   Blocks kept[2];
   choose_kept(y, kept);
-  const auto keeps = [&kept](std::size_t x) { return kept[0].has(x) || kept[1].has(x); };
   const Blocks read{row.first_col / block_cols_, row.last_col / block_cols_};
   for (std::size_t x = read.first; x <= read.last; ++x)
-    if (!keeps(x)) drop_(x, y);
+    if (!either_has(kept, x)) drop_(x, y);
   for (const Blocks& before : row.kept) {
     for (std::size_t x = before.first; x <= before.last; ++x)
-      if (!read.has(x) && !keeps(x)) drop_(x, y);
+      if (!read.has(x) && !either_has(kept, x)) drop_(x, y);
   }
   row.kept[0] = kept[0];
   row.kept[1] = kept[1];

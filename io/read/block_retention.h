@@ -26,8 +26,8 @@ class BlockRetention {
   BlockRetention(std::size_t rows, std::size_t cols, std::size_t block_rows, std::size_t block_cols,
                  Drop drop);
 
-  // Rows [top, end) of columns [col0, col0 + cols) have been read (end > top, cols > 0). A read
-  // that starts above the block rows this pass still holds starts a new pass.
+  // Rows [top, end) of columns [col0, col0 + cols) have been read (an empty read changes nothing).
+  // A read that starts above the block rows this pass still holds starts a new pass.
   void read(std::size_t top, std::size_t end, std::size_t col0, std::size_t cols);
   // Lets go of the block rows above block row `keep`: no read of this pass comes back to them.
   void let_go_above(std::size_t keep);
@@ -40,6 +40,9 @@ class BlockRetention {
     bool has(std::size_t x) const { return first <= x && x <= last; }
     bool empty() const { return first > last; }
   };
+  static bool either_has(const Blocks kept[2], std::size_t x) {
+    return kept[0].has(x) || kept[1].has(x);
+  }
   // What one block row holds for the passes: the columns this pass and the last one read there,
   // the blocks kept for the next pass, and where this pass's first and latest reads there ended
   // (the row after each, and its first and last column), to see how far the band's edge slants.

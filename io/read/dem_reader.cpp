@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/method/silhouettes.h"
+#include "io/read/block_retention.h"
 #include "io/read/dem_description.h"
 #include "io/read/gdal_util.h"
 
@@ -246,7 +247,7 @@ void BandWindows::read(const DemWindow& window, float* heights) const {
     const std::size_t run_end = std::min(end, (top / run_rows_ + 1) * run_rows_);
     read_({top, window.col0, run_end - top, window.cols},
           heights + (top - window.row0) * window.cols);
-    if (window.cols > 0) retention_->read(top, run_end, window.col0, window.cols);
+    retention_->read(top, run_end, window.col0, window.cols);
     // The next strip of a cardinal view starts on the row before this one's last.
     retention_->let_go_above((run_end - std::min<std::size_t>(run_end, 2)) / block_rows_);
     top = run_end;

@@ -10,11 +10,12 @@
 #include "core/method/run_recipes.h"
 #include "core/method/silhouettes.h"
 #include "core/method/strokes.h"
-#include "io/read/block_retention.h"
 #include "io/read/dem_notes.h"
 #include "io/read/gdal_util.h"
 
 namespace tsk::io {
+
+class BlockRetention;
 
 struct DemOptions {
   int band = 1;
