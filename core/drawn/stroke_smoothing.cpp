@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "core/base/vector_clones.h"
 
@@ -20,49 +21,73 @@ double polyline_length(const std::vector<StrokePoint>& points) {
 
 namespace {
 
+// Points summed together by truncated_means: one AVX2 vector of doubles.
+constexpr std::ptrdiff_t kLanes = 4;
+
 // The Gaussian's weights from `reach` points before a point to `reach` points after it, out to
-// three sigma; the same weights either side, so that a sum over points reads them in turn.
+// three sigma; the same weights either side, so that a sum over points reads them in turn. Zeros
+// lie beyond them for kLanes - 1 points more either side, which truncated_means reads.
 struct Kernel {
   std::vector<double> weights;
   std::ptrdiff_t reach = 0;
   double whole_sum = 0.0;  // of the weights, for a point with the whole kernel inside the stroke
   // The weight of a point `j` points after the centre (before it if negative).
-  const double* centre() const { return weights.data() + reach; }
+  const double* centre() const { return weights.data() + kLanes - 1 + reach; }
   void make(double sigma_points, std::size_t n) {
     reach = static_cast<std::ptrdiff_t>(
         std::min<std::size_t>(n, static_cast<std::size_t>(std::ceil(3.0 * sigma_points))));
-    weights.resize(static_cast<std::size_t>(2 * reach + 1));
+    weights.resize(static_cast<std::size_t>(2 * (reach + kLanes - 1) + 1));
+    double* w = weights.data() + kLanes - 1 + reach;
+    std::fill(w - reach - (kLanes - 1), w - reach, 0.0);
+    std::fill(w + reach + 1, w + reach + kLanes, 0.0);
     for (std::ptrdiff_t j = 0; j <= reach; ++j) {
       const auto jj = static_cast<double>(j * j);
-      weights[static_cast<std::size_t>(reach + j)] = weights[static_cast<std::size_t>(reach - j)] =
-          std::exp(-0.5 * jj / (sigma_points * sigma_points));
+      w[j] = w[-j] = std::exp(-0.5 * jj / (sigma_points * sigma_points));
     }
-    whole_sum = weights[static_cast<std::size_t>(reach)];
-    for (std::ptrdiff_t j = 1; j <= reach; ++j)
-      whole_sum += 2.0 * weights[static_cast<std::size_t>(reach + j)];
+    whole_sum = w[0];
+    for (std::ptrdiff_t j = 1; j <= reach; ++j) whole_sum += 2.0 * w[j];
   }
 };
 
-// The Gaussian mean about point k where the kernel runs past an end of the stroke: the weights
-// of the points it covers, renormalised; of heights too if `z` is given. (Summed in order from the
-// first point covered.)
-template <bool kHeights>
-StrokePoint truncated_mean(const std::vector<StrokePoint>& points, const Kernel& kernel,
-                           std::ptrdiff_t k, std::ptrdiff_t last,
-                           const std::vector<StrokeVertex>* vertices, double* z) {
-  const std::ptrdiff_t lo = std::max<std::ptrdiff_t>(0, k - kernel.reach);
-  const std::ptrdiff_t hi = std::min(last, k + kernel.reach);
-  const double* w = kernel.centre() - k;  // w[j]: the weight of point j
-  double sw = 0.0, sx = 0.0, sy = 0.0, sz = 0.0;
-  for (std::ptrdiff_t j = lo; j <= hi; ++j) {
-    const auto v = static_cast<std::size_t>(j);
-    sw += w[j];
-    sx += w[j] * points[v].x;
-    sy += w[j] * points[v].y;
-    if constexpr (kHeights) sz += w[j] * (*vertices)[v].z;
+// kLanes doubles, one per point summed, in the processor's vector registers (two SSE2 ones in the
+// baseline build).
+using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
+static_assert(kLanes == 4, "Lanes are written out as four values");
+
+// The Gaussian means about points [from, to), each over the points its kernel covers, its weights
+// renormalised; of heights too if `vertices` are given (into z[k] for point k). Each point's sums
+// add its points in order from the first covered. kLanes points are summed at a time, over every
+// point any of them covers: a point outside one's kernel has a zero weight there, and adding a
+// zero leaves a sum as it was (sums start at +0 and the points are finite), so the sums are those
+// of one point at a time, bit for bit.
+TSK_VECTOR_CLONES
+void truncated_means(const StrokePoint* points, std::ptrdiff_t last, const Kernel& kernel,
+                     std::ptrdiff_t from, std::ptrdiff_t to, StrokePoint* out,
+                     const StrokeVertex* vertices, double* z) {
+  const double* centre = kernel.centre();
+  for (std::ptrdiff_t k0 = from; k0 < to; k0 += kLanes) {
+    Lanes sw{}, sx{}, sy{}, sz{};
+    const std::ptrdiff_t lo = std::max<std::ptrdiff_t>(0, k0 - kernel.reach);
+    const std::ptrdiff_t hi = std::min(last, k0 + kLanes - 1 + kernel.reach);
+    for (std::ptrdiff_t j = lo; j <= hi; ++j) {
+      // Point j's weights about points k0 to k0 + kLanes - 1 (the kernel is symmetric).
+      Lanes w;
+      std::memcpy(&w, centre + (k0 - j), sizeof w);
+      const double x = points[j].x, y = points[j].y;
+      sw += w;
+      sx += w * Lanes{x, x, x, x};
+      sy += w * Lanes{y, y, y, y};
+      if (vertices) {
+        const double h = vertices[j].z;
+        sz += w * Lanes{h, h, h, h};
+      }
+    }
+    const Lanes mx = sx / sw, my = sy / sw, mz = sz / sw;
+    for (std::ptrdiff_t l = 0; l < kLanes && k0 + l < to; ++l) {
+      out[k0 + l] = {mx[l], my[l]};
+      if (vertices) z[k0 + l] = mz[l];
+    }
   }
-  if constexpr (kHeights) *z = sz / sw;
-  return {sx / sw, sy / sw};
 }
 
 // The Gaussian means about points [from, to), where the kernel lies whole inside the stroke:
@@ -82,6 +107,22 @@ void whole_kernel_means(const StrokePoint* points, const double* w, std::size_t 
   for (std::size_t k = from; k < to; ++k) out[k] = {out[k].x / total, out[k].y / total};
 }
 
+// Each of `count` smoothed points moved back within `tolerance` of its anchor, into `out`. Without
+// a branch, so that the loop vectorises: the scale back is worked out for every point and used
+// where one moved too far, and scaling by 1 leaves the others as they are. (The build leaves errno
+// alone here, so that sqrt needs no call.)
+TSK_VECTOR_CLONES
+void hold_within(const StrokePoint* smoothed, const StrokePoint* anchors, double tolerance,
+                 std::size_t count, StrokePoint* out) {
+  for (std::size_t k = 0; k < count; ++k) {
+    const double dx = smoothed[k].x - anchors[k].x, dy = smoothed[k].y - anchors[k].y;
+    const double moved_squared = dx * dx + dy * dy;
+    const double back = tolerance / std::sqrt(moved_squared);  // for every point, branch-free
+    const double scale = moved_squared > tolerance * tolerance ? back : 1.0;
+    out[k] = {anchors[k].x + dx * scale, anchors[k].y + dy * scale};
+  }
+}
+
 // One pass: the Gaussian mean about each inner point (of heights too, if `vertices` are given),
 // then each point held within `tolerance` of its anchor.
 void smoothing_pass(std::vector<StrokePoint>& points, const Kernel& kernel,
@@ -94,32 +135,21 @@ void smoothing_pass(std::vector<StrokePoint>& points, const Kernel& kernel,
   scratch.front() = points.front();
   scratch.back() = points.back();
   z.resize(vertices ? points.size() : 0);
-  const auto near_an_end = [&](std::ptrdiff_t k) {
-    const auto u = static_cast<std::size_t>(k);
-    scratch[u] = vertices ? truncated_mean<true>(points, kernel, k, last, vertices, &z[u])
-                          : truncated_mean<false>(points, kernel, k, last, nullptr, nullptr);
-  };
+  const StrokeVertex* heights = vertices ? vertices->data() : nullptr;
   // Points [whole_from, whole_to) have the whole kernel inside the stroke (heights are smoothed
   // point by point).
   const std::ptrdiff_t whole_from = vertices ? last : std::clamp<std::ptrdiff_t>(reach, 1, last);
   const std::ptrdiff_t whole_to = std::max(whole_from, last - reach + 1);
-  for (std::ptrdiff_t k = 1; k < whole_from; ++k) near_an_end(k);
+  truncated_means(points.data(), last, kernel, 1, whole_from, scratch.data(), heights, z.data());
   if (whole_from < whole_to) {
     whole_kernel_means(points.data(), kernel.centre(), static_cast<std::size_t>(reach + 1),
                        kernel.whole_sum, static_cast<std::size_t>(whole_from),
                        static_cast<std::size_t>(whole_to), scratch.data());
   }
-  for (std::ptrdiff_t k = whole_to; k < last; ++k) near_an_end(k);
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const StrokePoint anchor = anchors[k];
-    double dx = scratch[k].x - anchor.x, dy = scratch[k].y - anchor.y;
-    const double moved_squared = dx * dx + dy * dy;
-    if (moved_squared > tolerance * tolerance) {
-      const double scale = tolerance / std::sqrt(moved_squared);
-      dx *= scale, dy *= scale;
-    }
-    points[k] = {anchor.x + dx, anchor.y + dy};
-    if (vertices && k > 0 && static_cast<std::ptrdiff_t>(k) < last) (*vertices)[k].z = z[k];
+  truncated_means(points.data(), last, kernel, whole_to, last, scratch.data(), heights, z.data());
+  hold_within(scratch.data(), anchors.data(), tolerance, points.size(), points.data());
+  if (vertices) {
+    for (std::size_t k = 1; k + 1 < points.size(); ++k) (*vertices)[k].z = z[k];
   }
 }
 
