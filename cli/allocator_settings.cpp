@@ -1,12 +1,15 @@
 // jemalloc's settings, read as it starts; built into the program only where it links jemalloc.
-// Measured on the 8000 x 8000 benchmark's default run, medians of 6 in turns.
+// Measured on the 8000 x 8000 benchmark's default run, in turns.
 //
-// An arena per processor, not jemalloc's four per processor: a thread then reuses the memory
-// freed on its processor, where it took fresh pages from the kernel while the pages freed into
-// other arenas were handed back, each hand-back flushing every processor's address cache: 8 990
-// madvise calls became about 3 600, processor time 8.90 -> 7.58 s, wall time 5.23 -> 4.50 s, peak
-// memory 297 -> 315 MB (one arena: 7.44 s, 4.39 s, 276 MB here, but all of a larger machine's
-// threads would wait on it).
+// One arena for every thread. A run is a pipeline: strokes are made on one thread and freed on
+// another, and its threads move between processors. With an arena per processor (this file's
+// setting until 2026-12-05), memory freed into one arena waited there while the other took fresh
+// pages from the kernel, and its unused pages were handed back and faulted in again, zeroed each
+// time (the kernel's page clearing was 4-8 % of the run's processor time). One arena, 6 pairs:
+// processor time 0.960, wall time 0.947, peak memory 347 -> 306 MB; on 16 000 x 16 000, one pair,
+// 19.9 -> 16.1 s and 612 -> 594 MB. (Never handing pages back as well, dirty_decay_ms:-1, was
+// quicker still at 8000, 0.85, but held 880 MB at 16 000.) Its size classes each have a lock of
+// their own, and each thread's cache takes and gives back objects in batches.
 //
 // Huge pages asked for (where the system grants them on request, as Debian's does): the run's
 // buffers of strokes and chain cells are touched fresh in 2 MB pages, not 4 KB ones; 161 000 page
@@ -15,5 +18,5 @@
 //
 // A user's MALLOC_CONF is read after this, and wins.
 extern "C" {
-const char* malloc_conf = "percpu_arena:percpu,thp:always";  // the name jemalloc looks up
+const char* malloc_conf = "narenas:1,thp:always";  // the name jemalloc looks up
 }

@@ -107,22 +107,6 @@ void whole_kernel_means(const StrokePoint* points, const double* w, std::size_t 
   for (std::size_t k = from; k < to; ++k) out[k] = {out[k].x / total, out[k].y / total};
 }
 
-// Each of `count` smoothed points moved back within `tolerance` of its anchor, into `out`. Without
-// a branch, so that the loop vectorises: the scale back is worked out for every point and used
-// where one moved too far, and scaling by 1 leaves the others as they are. (The build leaves errno
-// alone here, so that sqrt needs no call.)
-TSK_VECTOR_CLONES
-void hold_within(const StrokePoint* smoothed, const StrokePoint* anchors, double tolerance,
-                 std::size_t count, StrokePoint* out) {
-  for (std::size_t k = 0; k < count; ++k) {
-    const double dx = smoothed[k].x - anchors[k].x, dy = smoothed[k].y - anchors[k].y;
-    const double moved_squared = dx * dx + dy * dy;
-    const double back = tolerance / std::sqrt(moved_squared);  // for every point, branch-free
-    const double scale = moved_squared > tolerance * tolerance ? back : 1.0;
-    out[k] = {anchors[k].x + dx * scale, anchors[k].y + dy * scale};
-  }
-}
-
 // One pass: the Gaussian mean about each inner point (of heights too, if `vertices` are given),
 // then each point held within `tolerance` of its anchor.
 void smoothing_pass(std::vector<StrokePoint>& points, const Kernel& kernel,
@@ -147,9 +131,16 @@ void smoothing_pass(std::vector<StrokePoint>& points, const Kernel& kernel,
                        static_cast<std::size_t>(whole_to), scratch.data());
   }
   truncated_means(points.data(), last, kernel, whole_to, last, scratch.data(), heights, z.data());
-  hold_within(scratch.data(), anchors.data(), tolerance, points.size(), points.data());
-  if (vertices) {
-    for (std::size_t k = 1; k + 1 < points.size(); ++k) (*vertices)[k].z = z[k];
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const StrokePoint anchor = anchors[k];
+    double dx = scratch[k].x - anchor.x, dy = scratch[k].y - anchor.y;
+    const double moved_squared = dx * dx + dy * dy;
+    if (moved_squared > tolerance * tolerance) {
+      const double scale = tolerance / std::sqrt(moved_squared);
+      dx *= scale, dy *= scale;
+    }
+    points[k] = {anchor.x + dx, anchor.y + dy};
+    if (vertices && k > 0 && static_cast<std::ptrdiff_t>(k) < last) (*vertices)[k].z = z[k];
   }
 }
 
