@@ -107,6 +107,23 @@ void whole_kernel_means(const StrokePoint* points, const double* w, std::size_t 
   for (std::size_t k = from; k < to; ++k) out[k] = {out[k].x / total, out[k].y / total};
 }
 
+// Each of `count` smoothed points moved back within `tolerance` of its anchor, into `out`. A loop
+// of its own, apart from the heights: the compiler then takes each point's x and y as a pair
+// (smoothing on the 4000^2 benchmark: 584 M instructions with the loop inside the pass, 519 M).
+TSK_VECTOR_CLONES
+void hold_within(const StrokePoint* smoothed, const StrokePoint* anchors, double tolerance,
+                 std::size_t count, StrokePoint* out) {
+  for (std::size_t k = 0; k < count; ++k) {
+    double dx = smoothed[k].x - anchors[k].x, dy = smoothed[k].y - anchors[k].y;
+    const double moved_squared = dx * dx + dy * dy;
+    if (moved_squared > tolerance * tolerance) {
+      const double scale = tolerance / std::sqrt(moved_squared);
+      dx *= scale, dy *= scale;
+    }
+    out[k] = {anchors[k].x + dx, anchors[k].y + dy};
+  }
+}
+
 // One pass: the Gaussian mean about each inner point (of heights too, if `vertices` are given),
 // then each point held within `tolerance` of its anchor.
 void smoothing_pass(std::vector<StrokePoint>& points, const Kernel& kernel,
@@ -131,16 +148,9 @@ void smoothing_pass(std::vector<StrokePoint>& points, const Kernel& kernel,
                        static_cast<std::size_t>(whole_to), scratch.data());
   }
   truncated_means(points.data(), last, kernel, whole_to, last, scratch.data(), heights, z.data());
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const StrokePoint anchor = anchors[k];
-    double dx = scratch[k].x - anchor.x, dy = scratch[k].y - anchor.y;
-    const double moved_squared = dx * dx + dy * dy;
-    if (moved_squared > tolerance * tolerance) {
-      const double scale = tolerance / std::sqrt(moved_squared);
-      dx *= scale, dy *= scale;
-    }
-    points[k] = {anchor.x + dx, anchor.y + dy};
-    if (vertices && k > 0 && static_cast<std::ptrdiff_t>(k) < last) (*vertices)[k].z = z[k];
+  hold_within(scratch.data(), anchors.data(), tolerance, points.size(), points.data());
+  if (vertices) {
+    for (std::size_t k = 1; k + 1 < points.size(); ++k) (*vertices)[k].z = z[k];
   }
 }
 
