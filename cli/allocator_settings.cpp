@@ -7,9 +7,10 @@
 // pages from the kernel, and its unused pages were handed back and faulted in again, zeroed each
 // time (the kernel's page clearing was 4-8 % of the run's processor time). One arena, 6 pairs:
 // processor time 0.960, wall time 0.947, peak memory 347 -> 306 MB; on 16 000 x 16 000, one pair,
-// 19.9 -> 16.1 s and 612 -> 594 MB. (Never handing pages back as well, dirty_decay_ms:-1, was
-// quicker still at 8000, 0.85, but held 880 MB at 16 000.) Its size classes each have a lock of
-// their own, and each thread's cache takes and gives back objects in batches.
+// 19.9 -> 16.1 s and 612 -> 594 MB. (Never handing pages back as well, dirty_decay_ms:-1: 0.986
+// over 8 pairs at 8000 and 23 MB more, and 835 MB at 16 000, whose spatial index could not reuse
+// what the stream left.) Its size classes each have a lock of their own, and each thread's cache
+// takes and gives back objects in batches.
 //
 // Huge pages asked for (where the system grants them on request, as Debian's does): the run's
 // buffers of strokes and chain cells are touched fresh in 2 MB pages, not 4 KB ones; 161 000 page
