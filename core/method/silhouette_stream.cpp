@@ -12,9 +12,9 @@
 #include "core/drawn/drawing_pipeline.h"
 #include "core/drawn/drawn_strokes.h"
 #include "core/method/bands.h"
+#include "core/method/chain_order.h"
 #include "core/method/chaining.h"
 #include "core/method/profile_stages.h"
-#include "core/method/scan_order.h"
 #include "core/method/silhouettes.h"
 
 namespace tsk {
@@ -50,7 +50,7 @@ struct SilhouetteStream::State {
     ChainLinker linker;
     StrokeClass cls;
     std::vector<StrokeBuilder> open;
-    ScanOrder order;
+    ChainOrder order;
     std::vector<Stroke> pieces;        // of the drawn chain closing, its storage reused
     std::vector<Stroke> handed_on;     // without a sink
     std::size_t count = 0, cells = 0;  // of the strokes handed on
@@ -217,7 +217,7 @@ struct SilhouetteStream::State {
   // Hands on the held strokes of chains started before chain `id`, oldest first: to the drawing
   // for drawn strokes.
   void hand_on(Strokes& strokes, std::size_t id) {
-    strokes.order.release_before(id, [&](Stroke&& stroke, std::size_t, std::size_t) {
+    strokes.order.release_before(id, [&](Stroke&& stroke) {
       if (drawing) {
         drawing->add_piece(strokes.cls, std::move(stroke));
       } else {

@@ -1,0 +1,89 @@
+#include <algorithm>
+#include <map>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "catch_compat.h"
+#include "core/base/errors.h"
+#include "core/method/chain_order.h"
+
+using namespace tsk;
+
+namespace {
+
+// A stroke that says which chain and piece it was held for.
+Stroke tagged(std::size_t chain, std::size_t piece) {
+  Stroke s;
+  s.cells = static_cast<int>(piece);
+  s.mean_z = static_cast<double>(chain);
+  s.points.assign(piece + 1, StrokePoint{static_cast<double>(chain), 0.0});
+  return s;
+}
+
+using Key = std::pair<std::size_t, std::size_t>;  // chain, piece
+
+// Chains open in order and close at random, as a linker's do: a closing chain holds 0 to 3
+// pieces, then everything before the oldest chain still open is handed on. The oracle is a
+// sorted map of what is held, emptied of keys before that chain.
+void run_random_scan(std::uint32_t seed, std::size_t chains, std::size_t most_open) {
+  std::mt19937 random(seed);
+  ChainOrder order;
+  std::map<Key, bool> held;
+  std::vector<std::size_t> open;  // ascending
+  std::vector<Key> handed, expected;
+  std::size_t started = 0;
+  while (started < chains || !open.empty()) {
+    const bool start =
+        started < chains && (open.empty() || (open.size() < most_open && random() % 3 != 0));
+    if (start) {
+      open.push_back(started++);
+      continue;
+    }
+    // Close one open chain at random; the oldest one less often, so that many are held.
+    const std::size_t at = open.size() == 1 ? 0 : 1 + random() % (open.size() - 1);
+    const std::size_t chain = open[random() % 8 == 0 ? 0 : at];
+    open.erase(std::find(open.begin(), open.end(), chain));
+    const std::size_t pieces = random() % 4;
+    for (std::size_t k = 0; k < pieces; ++k) {
+      order.hold(chain, k, tagged(chain, k));
+      held[{chain, k}] = true;
+    }
+    const std::size_t oldest = open.empty() ? started : open.front();
+    order.release_before(oldest, [&](Stroke&& s) {
+      handed.push_back({static_cast<std::size_t>(s.mean_z), static_cast<std::size_t>(s.cells)});
+      REQUIRE(s.points.size() == static_cast<std::size_t>(s.cells) + 1);
+    });
+    while (!held.empty() && held.begin()->first.first < oldest) {
+      expected.push_back(held.begin()->first);
+      held.erase(held.begin());
+    }
+    REQUIRE(handed == expected);
+  }
+  REQUIRE(held.empty());
+  REQUIRE(expected.size() > chains / 2);
+}
+
+}  // namespace
+
+TEST_CASE("chain order hands strokes on as a sorted map of those held does", "[strokes]") {
+  run_random_scan(1, 200, 5);
+  run_random_scan(2, 20000, 50);    // many held at once, the table forgotten and reused
+  run_random_scan(3, 20000, 3000);  // chains open long, across forgettings
+}
+
+TEST_CASE("chain order refuses strokes out of the scan's order", "[strokes]") {
+  ChainOrder order;
+  order.hold(0, 0, tagged(0, 0));
+  order.hold(3, 0, tagged(3, 0));
+  REQUIRE_THROWS_AS(order.hold(2, 1, tagged(2, 1)), Error);  // not after its piece 0
+  REQUIRE_THROWS_AS(order.hold(0, 0, tagged(0, 0)), Error);  // twice
+  std::vector<std::size_t> chains;
+  order.release_before(2,
+                       [&](Stroke&& s) { chains.push_back(static_cast<std::size_t>(s.mean_z)); });
+  REQUIRE(chains == std::vector<std::size_t>{0});
+  REQUIRE_THROWS_AS(order.hold(1, 0, tagged(1, 0)), Error);  // handed on already
+  order.release_before(10,
+                       [&](Stroke&& s) { chains.push_back(static_cast<std::size_t>(s.mean_z)); });
+  REQUIRE(chains == std::vector<std::size_t>{0, 3});
+}
