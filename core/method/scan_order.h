@@ -1,5 +1,7 @@
 // The strokes of closed chains held until every chain started before theirs has closed too, then
-// handed on oldest first: the order of SPEC 1.7's scan, whatever order the chains close in.
+// handed on oldest first: the order of SPEC 1.7's scan, whatever order the chains close in. Keyed
+// by any numbers in the scan's order (the bands' stitcher keys chains by their first cells); a
+// run's own chains, numbered as they start, are held by ChainOrder (chain_order.h).
 #pragma once
 
 #include <algorithm>
