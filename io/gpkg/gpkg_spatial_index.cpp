@@ -116,12 +116,18 @@ void radix_sort(std::vector<Keyed>& keyed, std::vector<Keyed>& spare) {
 template <typename Cells, typename Key>
 void sort_by_key(const Cells& from, std::size_t begin, std::size_t end, Key key, Cell* to) {
   std::vector<Keyed> keyed(end - begin), spare;
-  for (std::size_t k = begin; k < end; ++k) keyed[k - begin] = {ordered_bits(key(from[k])), k};
+  bool ids_rise = true;  // with the cells' places: then equal keys, kept in order, are in id order
+  for (std::size_t k = begin; k < end; ++k) {
+    keyed[k - begin] = {ordered_bits(key(from[k])), k};
+    if (k > begin && !(from[k - 1].id < from[k].id)) ids_rise = false;
+  }
   radix_sort(keyed, spare);
   const auto by_id = [&from](const Keyed& a, const Keyed& b) {
     return from[a.at].id < from[b.at].id;
   };
-  for (auto run = keyed.begin(); run != keyed.end();) {
+  // (A writer's boxes, and every level's covers, come in id order: checking each run there read
+  // the cells out of order, a cache miss each, 0.3 s of a 16 000^2 run's serial end.)
+  for (auto run = keyed.begin(); run != keyed.end() && !ids_rise;) {
     const auto run_end =
         std::find_if(run, keyed.end(), [&](const Keyed& k) { return k.bits != run->bits; });
     // Ids are unique: no order to keep. Boxes handed over in the order of their ids (a writer's)
