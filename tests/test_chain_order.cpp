@@ -74,6 +74,7 @@ TEST_CASE("chain order hands strokes on as a sorted map of those held does", "[s
 
 TEST_CASE("chain order refuses strokes out of the scan's order", "[strokes]") {
   ChainOrder order;
+  REQUIRE_THROWS_AS(order.hold(0, 1, tagged(0, 1)), Error);  // a piece before any piece 0
   order.hold(0, 0, tagged(0, 0));
   order.hold(3, 0, tagged(3, 0));
   REQUIRE_THROWS_AS(order.hold(2, 1, tagged(2, 1)), Error);  // not after its piece 0

@@ -24,7 +24,7 @@ class ChainOrder {
   void hold(std::size_t chain, std::size_t piece, Stroke&& stroke) {
     if (chain < table_start_ + released_)
       throw Error("a stroke held for a chain already handed on");
-    if (piece > 0 && chain != last_chain_)
+    if (piece > 0 && (chain != last_chain_ || last_slot_ == kNone))
       throw Error("a chain's pieces held apart from each other");
     const std::size_t at = chain - table_start_;
     if (piece == 0) {
