@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/base/errors.h"
-#include "core/base/prefetch.h"
+#include "core/method/stroke_slots.h"
 #include "core/method/strokes.h"
 
 namespace tsk {
@@ -31,7 +31,11 @@ class ChainOrder {
       if (firsts_.size() <= at) firsts_.resize(at + 1, kNone);
       if (firsts_[at] != kNone) throw Error("a chain's stroke held twice");
     }
-    const std::uint32_t slot = take_slot(std::move(stroke));
+    const std::size_t put = slots_.put(std::move(stroke));
+    if (put >= kNone) throw Error("too many strokes held at once");
+    const auto slot = static_cast<std::uint32_t>(put);
+    if (next_.size() <= slot) next_.resize(slot + std::size_t{1});
+    next_[slot] = kNone;
     (piece > 0 ? next_[last_slot_] : firsts_[at]) = slot;
     last_chain_ = chain;
     last_slot_ = slot;
@@ -50,14 +54,10 @@ class ChainOrder {
     // A stroke waits in its slot long enough to leave the cache: those a few places on are
     // fetched while one is handed on.
     constexpr std::size_t kAhead = 3;
-    for (std::size_t k = 0; k < std::min(kAhead, due_.size()); ++k)
-      prefetch_record(strokes_[due_[k]]);
+    for (std::size_t k = 0; k < std::min(kAhead, due_.size()); ++k) slots_.prefetch(due_[k]);
     for (std::size_t k = 0; k < due_.size(); ++k) {
-      if (k + kAhead < due_.size()) prefetch_record(strokes_[due_[k + kAhead]]);
-      const std::uint32_t slot = due_[k];
-      free_.push_back(slot);
-      Stroke stroke = std::move(strokes_[slot]);  // its memory goes with it
-      use(std::move(stroke));
+      if (k + kAhead < due_.size()) slots_.prefetch(due_[k + kAhead]);
+      use(slots_.take(due_[k]));
     }
     forget_released();
   }
@@ -65,24 +65,6 @@ class ChainOrder {
  private:
   static constexpr std::uint32_t kNone = static_cast<std::uint32_t>(-1);
   static constexpr std::size_t kForgetAtLeast = 4096;  // chains' entries, to forget at once
-
-  std::uint32_t take_slot(Stroke&& stroke) {
-    std::uint32_t slot;
-    if (free_.empty()) {
-      if (strokes_.size() >= kNone) throw Error("too many strokes held at once");
-      slot = static_cast<std::uint32_t>(strokes_.size());
-      strokes_.push_back(std::move(stroke));
-      next_.push_back(kNone);
-    } else {
-      slot = free_.back();
-      free_.pop_back();
-      // A slot stays free long enough to leave the cache: the next one to fill is fetched now.
-      if (!free_.empty()) prefetch_record_to_write(strokes_[free_.back()]);
-      strokes_[slot] = std::move(stroke);
-      next_[slot] = kNone;
-    }
-    return slot;
-  }
 
   // Drops the entries of chains handed on once they are most of the table, to move few.
   void forget_released() {
@@ -95,10 +77,9 @@ class ChainOrder {
   std::size_t table_start_ = 0;        // the chain of firsts_[0]
   std::size_t released_ = 0;           // entries of firsts_ handed on
   std::vector<std::uint32_t> firsts_;  // by chain from table_start_: its first piece's slot
-  std::vector<Stroke> strokes_;        // by slot
-  std::vector<std::uint32_t> next_;    // by slot: the slot of the chain's next piece
-  std::vector<std::uint32_t> free_;    // slots handed on
-  std::vector<std::uint32_t> due_;     // slots to hand on, its storage reused
+  StrokeSlots slots_;
+  std::vector<std::uint32_t> next_;  // by slot: the slot of the chain's next piece
+  std::vector<std::uint32_t> due_;   // slots to hand on, its storage reused
   std::size_t last_chain_ = 0;
   std::uint32_t last_slot_ = kNone;
 };

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/base/prefetch.h"
+#include "core/method/stroke_slots.h"
 #include "core/method/strokes.h"
 
 namespace tsk {
@@ -18,16 +18,7 @@ class ScanOrder {
  public:
   // Holds a stroke of chain `chain`, or its piece `piece` (drawn strokes: pieces in order).
   void hold(std::size_t chain, std::size_t piece, Stroke&& stroke) {
-    std::size_t slot = strokes_.size();
-    if (free_.empty()) {
-      strokes_.push_back(std::move(stroke));
-    } else {
-      slot = free_.back();
-      free_.pop_back();
-      // A slot stays free long enough to leave the cache: the next one to fill is fetched now.
-      if (!free_.empty()) prefetch_record_to_write(strokes_[free_.back()]);
-      strokes_[slot] = std::move(stroke);
-    }
+    const std::size_t slot = slots_.put(std::move(stroke));
     heap_.push_back({chain, piece, slot});
     std::push_heap(heap_.begin(), heap_.end(), later);
   }
@@ -42,29 +33,24 @@ class ScanOrder {
       heap_.pop_back();
       // A stroke waits in its slot long enough to leave the cache: the next one, and both that
       // may come after it, are fetched while this one is handed on.
-      for (std::size_t k = 0; k < 3 && k < heap_.size(); ++k)
-        prefetch_record(strokes_[heap_[k].slot]);
-      free_.push_back(held.slot);
-      Stroke stroke = std::move(strokes_[held.slot]);  // its memory goes with it
-      use(std::move(stroke), held.chain, held.piece);
+      for (std::size_t k = 0; k < 3 && k < heap_.size(); ++k) slots_.prefetch(heap_[k].slot);
+      use(slots_.take(held.slot), held.chain, held.piece);
     }
   }
 
  private:
-  // The heap orders small keys: a stroke stays in its slot while it is held (sifting strokes
-  // themselves cost 5 % of a default run).
+  // The heap orders small keys; the strokes stay in their slots.
   struct Held {
     std::size_t chain;
     std::size_t piece;
-    std::size_t slot;  // in strokes_
+    std::size_t slot;  // in slots_
   };
   // The heap's order: the oldest chain, and its first piece, on top.
   static bool later(const Held& a, const Held& b) {
     return a.chain != b.chain ? a.chain > b.chain : a.piece > b.piece;
   }
   std::vector<Held> heap_;
-  std::vector<Stroke> strokes_;
-  std::vector<std::size_t> free_;  // slots of strokes_ handed on
+  StrokeSlots slots_;
 };
 
 }  // namespace tsk
