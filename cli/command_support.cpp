@@ -54,7 +54,10 @@ void print_empty_run(const StageStats& stats, const SilhouetteParams& p, std::os
   if (cause == EmptyRun::not_empty) return;
   const auto old_precision = err.precision(3);
   err << "warning: no strokes: ";
-  if (cause == EmptyRun::nothing_seen) {
+  if (cause == EmptyRun::no_valid_cell) {
+    err << "every cell of the DEM is nodata (its declared nodata value, or NaN): check --band, "
+           "and the nodata value the file declares (gdal_edit.py -a_nodata or -unsetnodata)\n";
+  } else if (cause == EmptyRun::nothing_seen) {
     err << "no cell of the DEM is hidden, and none slopes away from the viewer gently enough to "
            "be seen once tilted (under the base slope of "
         << p.view.base_slope_pct << " % over the exaggeration of " << p.view.ve << ", "

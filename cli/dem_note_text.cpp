@@ -25,7 +25,7 @@ std::string note_text(const io::DemNote& note) {
     case io::DemNoteCode::several_bands:
       return "the raster has " + number(0) + " bands; band " + number(1) + " is used (--band)";
     case io::DemNoteCode::fill_value:
-      return "heights go down to " + number(0) +
+      return "some heights are " + number(0) +
              ", a common fill value: if those cells have no data, declare it as nodata "
              "(gdal_edit.py -a_nodata " +
              number(0) + " INPUT)";

@@ -545,11 +545,6 @@
         <translation>Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="181" />
-        <source>Heights go down to %1, a common fill value: if those cells have no data, set it as the layer's no data value (Layer Properties &gt; Transparency) or in the file.</source>
-        <translation>Die Höhen reichen bis %1 hinab, ein üblicher Füllwert: wenn diese Zellen keine Daten haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften &gt; Transparenz) oder in der Datei.</translation>
-    </message>
-    <message>
         <location filename="../plugin/raster_grid.cpp" line="186" />
         <source>Heights span %1 over a raster %2 across, more than any terrain: if they are millimetres or centimetres, give the band a scale in the file (gdal_edit.py -scale 0.001).</source>
         <translation>Die Höhen umfassen %1 auf einem Raster von %2 Breite, mehr als jedes Gelände: wenn es Millimeter oder Zentimeter sind, geben Sie dem Kanal in der Datei einen Maßstab (gdal_edit.py -scale 0.001).</translation>
@@ -568,6 +563,11 @@
         <location filename="../plugin/raster_grid.cpp" line="171" />
         <source>Mercator projection: map units are not ground metres here; cell sizes are scaled by cos(latitude of the centre) = %L1.</source>
         <translation>Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen werden mit cos(Breite der Mitte) = %L1 skaliert.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="181" />
+        <source>Some heights are %1, a common fill value: if those cells have no data, set it as the layer's no data value (Layer Properties &gt; Transparency) or in the file.</source>
+        <translation>Einige Höhen betragen %1, ein üblicher Füllwert: wenn diese Zellen keine Daten haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften &gt; Transparenz) oder in der Datei.</translation>
     </message>
     <message>
         <location filename="../plugin/raster_grid.cpp" line="317" />
@@ -914,147 +914,152 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <translation>Das DGM wird so viele Profile auf einmal gelesen und verarbeitet, der nächste Streifen wird gelesen, während dieser verarbeitet wird; so laufen auch DGM, die größer als der Speicher sind. 0 wählt 1024, mehr für Profile unter 1024 Zellen (eine Million Zellen je Streifen), weniger für Profile über 4096 Zellen (vier Millionen Zellen je Streifen, mindestens 256), oder weniger, wenn die Profile so lang sind, dass die Streifen mehr als 512 MB belegen würden. Streifen, die mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen würden, werden abgelehnt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="141" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="142" />
         <source>Factual silhouettes</source>
         <translation>Faktische Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="142" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="143" />
         <source>Occluding contours as line strokes.</source>
         <translation>Verdeckungskonturen als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="143" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="144" />
         <source>Formulated silhouettes</source>
         <translation>Formulierte Silhouetten</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="144" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="145" />
         <source>Formulated silhouettes as line strokes.</source>
         <translation>Formulierte Silhouetten als Linienstriche.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="158" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="159" />
         <source>Drawn (the default): strokes a cartographer would publish. Pieces of one class that continue each other across a small gap are joined before short strokes are dropped; points lie between cells where the profile peaks or the slope breaks, and are smoothed along the stroke; every point carries a weight (its M value) that tapers the ends and thins the strokes towards the back of the view, which the layers' styles draw. Exact: the thesis's strokes, a point at each cell centre.</source>
         <translation>Gezeichnet (Voreinstellung): Striche, wie sie ein Kartograf veröffentlichen würde. Stücke einer Klasse, die einander über eine kleine Lücke fortsetzen, werden verbunden, bevor kurze Striche entfallen; Punkte liegen zwischen den Zellen, wo das Profil gipfelt oder die Neigung bricht, und werden entlang des Strichs geglättet; jeder Punkt trägt ein Gewicht (seinen M-Wert), das die Enden verjüngt und die Striche zum hinteren Rand der Ansicht hin dünner macht, wie es die Stile der Layer zeichnen. Exakt: die Striche der Dissertation, ein Punkt in jeder Zellmitte.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="164" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="165" />
         <source>Drawn for scale</source>
         <translation>Gezeichnet für Maßstab</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="169" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="170" />
         <source>Drawn strokes: the scale of the map they are drawn for (1:N). The shortest stroke (2 mm on paper), the smoothing, its tolerance and the join gap become at least what that scale needs, strokes outlining less than N/10 000 metres of relief are left out, and the layers' styles draw their widths true at that scale (the renderer's reference scale). A DEM at least twice as fine as the scale needs (cells under 0.4 mm on paper) is first averaged to it. Empty: for no scale; every stroke is still weighed by the relief it outlines.</source>
         <translation>Gezeichnete Striche: der Maßstab der Karte, für die sie gezeichnet werden (1:N). Der kürzeste Strich (2 mm auf dem Papier), die Glättung, ihre Toleranz und die Verbindungslücke werden mindestens so groß, wie dieser Maßstab es verlangt; Striche, die weniger als N/10 000 Meter Relief umreißen, entfallen, und die Stile der Layer zeichnen ihre Breiten in diesem Maßstab wahr (der Bezugsmaßstab des Renderers). Ein DGM, das mindestens doppelt so fein ist, wie der Maßstab es verlangt (Zellen unter 0,4 mm auf dem Papier), wird zuerst darauf gemittelt. Leer: für keinen Maßstab; jeder Strich wird dennoch nach dem Relief gewichtet, das er umreißt.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="176" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="177" />
         <source>Join gap (cells)</source>
         <translation>Verbindungslücke (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="177" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="178" />
         <source>Drawn strokes: ends of two strokes this close (in cells) are joined when their directions agree. 0 joins none.</source>
         <translation>Gezeichnete Striche: Enden zweier Striche, die so nahe beieinander liegen (in Zellen), werden verbunden, wenn ihre Richtungen übereinstimmen. 0 verbindet keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="179" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="180" />
         <source>Join angle (degrees)</source>
         <translation>Verbindungswinkel (Grad)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="180" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="181" />
         <source>Drawn strokes: the largest turn between two ends' directions, and the step between them, for them to be joined.</source>
         <translation>Gezeichnete Striche: die größte Drehung zwischen den Richtungen zweier Enden und dem Schritt zwischen ihnen, bei der sie noch verbunden werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="182" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="183" />
         <source>Smoothing (cells)</source>
         <translation>Glättung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="183" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="184" />
         <source>Drawn strokes: the width (sigma, in cells) of the Gaussian smoothing along each stroke. 0 keeps the points where they are.</source>
         <translation>Gezeichnete Striche: die Breite (Sigma, in Zellen) der Gaußschen Glättung entlang jedes Strichs. 0 lässt die Punkte, wo sie sind.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="185" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="186" />
         <source>Smoothing tolerance (cells)</source>
         <translation>Glättungstoleranz (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="186" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="187" />
         <source>Drawn strokes: no point moves farther than this (in cells) from its place on the exact chain, so smoothing never invents terrain.</source>
         <translation>Gezeichnete Striche: kein Punkt liegt weiter als dies (in Zellen) von seinem Platz auf der exakten Kette, so dass die Glättung nie Gelände erfindet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="188" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="189" />
         <source>Taper (share of the stroke)</source>
         <translation>Verjüngung (Anteil des Strichs)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="189" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="190" />
         <source>Drawn strokes: the share of a stroke's length over which each end thins.</source>
         <translation>Gezeichnete Striche: der Anteil der Strichlänge, über den jedes Ende dünner wird.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="190" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="191" />
         <source>Depth cue</source>
         <translation>Tiefenwirkung</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="191" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="192" />
         <source>Drawn strokes: the share of the weight strokes lose from the front of the view to its back.</source>
         <translation>Gezeichnete Striche: der Anteil des Gewichts, den Striche vom vorderen zum hinteren Rand der Ansicht verlieren.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="193" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="194" />
         <source>Over-extension (cells)</source>
         <translation>Überzeichnung (Zellen)</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="194" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="195" />
         <source>Drawn strokes: each end runs on this far (in cells) along its direction, as a hand-drawn stroke does. 0: none.</source>
         <translation>Gezeichnete Striche: jedes Ende läuft so weit (in Zellen) in seiner Richtung weiter, wie es ein von Hand gezeichneter Strich tut. 0: keine.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="242" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="243" />
         <source>Processing the DEM in %1 strips of %2 profiles.</source>
         <translation>Das DGM wird in %1 Streifen zu je %2 Profilen verarbeitet.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="283" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="284" />
         <source>Drawn for 1:%L1, the DEM was averaged %L2 x %L2 cells first (to %L3 m a cell, about 0.4 mm on paper): the scale shows nothing finer.</source>
         <translation>Gezeichnet für 1:%L1: das DGM wurde zuerst über %L2 x %L2 Zellen gemittelt (auf %L3 m je Zelle, etwa 0,4 mm auf dem Papier); feiner zeigt der Maßstab nichts.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="296" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="297" />
+        <source>No strokes: every cell of the DEM is nodata (its declared nodata value, or NaN): check the band, and the no data value the layer or its file declares (Layer Properties &gt; Transparency).</source>
+        <translation>Keine Striche: jede Zelle des DGM ist NoData (sein angegebener NoData-Wert oder NaN): prüfen Sie das Band und den NoData-Wert, den der Layer oder seine Datei angibt (Layereigenschaften &gt; Transparenz).</translation>
+    </message>
+    <message>
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="303" />
         <source>No strokes: no cell of the DEM is hidden, and none slopes away from the viewer gently enough to be seen once tilted (under the base slope of %L1 % over the exaggeration of %L2, %L3 %): the DEM is flat, or faces the viewer everywhere. Another view azimuth or a larger base slope brings slopes into sight.</source>
         <translation>Keine Striche: keine Zelle des DGM ist verdeckt, und keine fällt vom Betrachter so sanft ab, dass sie nach dem Kippen zu sehen ist (unter der Grundneigung von %L1 % geteilt durch die Überhöhung von %L2, %L3 %): das DGM ist flach oder überall dem Betrachter zugewandt. Eine andere Blickrichtung oder eine größere Grundneigung bringt Hänge in Sicht.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="306" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="313" />
         <source>No strokes: the slope filter removed every candidate cell, and no cell is hidden. Lower cut-offs keep more, or the slope filter adapted to the DEM scales them.</source>
         <translation>Keine Striche: der Neigungsfilter hat jede Kandidatenzelle entfernt, und keine Zelle ist verdeckt. Niedrigere Grenzwerte behalten mehr, oder der an das DGM angepasste Neigungsfilter skaliert sie.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="313" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="320" />
         <source>No strokes: every chain was shorter than the shortest stroke kept. Drawn for 1:%1, strokes under %L2 mm on paper, or outlining under %L3 m of relief, are dropped too: a larger scale (a smaller number) keeps more.</source>
         <translation>Keine Striche: jede Kette war kürzer als der kürzeste behaltene Strich. Gezeichnet für 1:%1 entfallen auch Striche unter %L2 mm auf dem Papier oder solche, die weniger als %L3 m Relief umreißen: ein größerer Maßstab (eine kleinere Zahl) behält mehr.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="319" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="326" />
         <source>No strokes: every chain was shorter than the shortest stroke kept (%L1 cells). A lower minimum stroke length keeps more.</source>
         <translation>Keine Striche: jede Kette war kürzer als der kürzeste behaltene Strich (%L1 Zellen). Eine geringere Mindestzahl Zellen je Strich behält mehr.</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="333" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="340" />
         <source>Factual silhouettes, %1</source>
         <translation>Faktische Silhouetten, %1</translation>
     </message>
     <message>
-        <location filename="../plugin/silhouettes_algorithm.cpp" line="336" />
+        <location filename="../plugin/silhouettes_algorithm.cpp" line="343" />
         <source>Formulated silhouettes, %1</source>
         <translation>Formulierte Silhouetten, %1</translation>
     </message>

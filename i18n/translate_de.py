@@ -10,6 +10,8 @@ import xml.etree.ElementTree as ET
 GERMAN = {
     "No strokes: no cell of the DEM is hidden, and none slopes away from the viewer gently enough to be seen once tilted (under the base slope of %L1 % over the exaggeration of %L2, %L3 %): the DEM is flat, or faces the viewer everywhere. Another view azimuth or a larger base slope brings slopes into sight.":
         "Keine Striche: keine Zelle des DGM ist verdeckt, und keine fällt vom Betrachter so sanft ab, dass sie nach dem Kippen zu sehen ist (unter der Grundneigung von %L1 % geteilt durch die Überhöhung von %L2, %L3 %): das DGM ist flach oder überall dem Betrachter zugewandt. Eine andere Blickrichtung oder eine größere Grundneigung bringt Hänge in Sicht.",
+    "No strokes: every cell of the DEM is nodata (its declared nodata value, or NaN): check the band, and the no data value the layer or its file declares (Layer Properties > Transparency).":
+        "Keine Striche: jede Zelle des DGM ist NoData (sein angegebener NoData-Wert oder NaN): prüfen Sie das Band und den NoData-Wert, den der Layer oder seine Datei angibt (Layereigenschaften > Transparenz).",
     "No strokes: the slope filter removed every candidate cell, and no cell is hidden. Lower cut-offs keep more, or the slope filter adapted to the DEM scales them.":
         "Keine Striche: der Neigungsfilter hat jede Kandidatenzelle entfernt, und keine Zelle ist verdeckt. Niedrigere Grenzwerte behalten mehr, oder der an das DGM angepasste Neigungsfilter skaliert sie.",
     "No strokes: every chain was shorter than the shortest stroke kept. Drawn for 1:%1, strokes under %L2 mm on paper, or outlining under %L3 m of relief, are dropped too: a larger scale (a smaller number) keeps more.":
@@ -79,9 +81,9 @@ GERMAN = {
     "come out in %1.":
         "Die Einheit des KBS ist %1, nicht der Meter: die Höhen müssen ebenfalls in %1 sein, und "
         "Tiefen und Längen werden in %1 ausgegeben.",
-    "Heights go down to %1, a common fill value: if those cells have no data, set it as the "
+    "Some heights are %1, a common fill value: if those cells have no data, set it as the "
     "layer's no data value (Layer Properties > Transparency) or in the file.":
-        "Die Höhen reichen bis %1 hinab, ein üblicher Füllwert: wenn diese Zellen keine Daten "
+        "Einige Höhen betragen %1, ein üblicher Füllwert: wenn diese Zellen keine Daten "
         "haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften > Transparenz) "
         "oder in der Datei.",
     "The raster has %1 bands; band %2 is used.": "Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.",

@@ -178,7 +178,7 @@ QString RasterGrid::noteText(const io::DemNote& note) {
     case io::DemNoteCode::several_bands:
       return tr("The raster has %1 bands; band %2 is used.").arg(number(0)).arg(number(1));
     case io::DemNoteCode::fill_value:
-      return tr("Heights go down to %1, a common fill value: if those cells have no data, set "
+      return tr("Some heights are %1, a common fill value: if those cells have no data, set "
                 "it as the layer's no data value (Layer Properties > Transparency) or in the "
                 "file.")
           .arg(number(0));

@@ -292,6 +292,12 @@ void SilhouettesAlgorithm::tellOutcome(const SilhouetteResult& result, const Dem
   switch (empty_run(result.stats)) {
     case EmptyRun::not_empty:
       return;
+    case EmptyRun::no_valid_cell:
+      feedback.pushWarning(
+          tr("No strokes: every cell of the DEM is nodata (its declared nodata value, or NaN): "
+             "check the band, and the no data value the layer or its file declares (Layer "
+             "Properties > Transparency)."));
+      return;
     case EmptyRun::nothing_seen:
       feedback.pushWarning(
           tr("No strokes: no cell of the DEM is hidden, and none slopes away from the viewer "

@@ -178,6 +178,35 @@ TEST_CASE("the height step is found from the heights", "[adaptive]") {
   CHECK(step.tolerance == Approx(1e-6 * 1000.1234));
 }
 
+TEST_CASE("float's fill values change neither the height step nor the survey's median",
+          "[adaptive][robustness]") {
+  // An undeclared fill value made every step between real heights "flat" (a tolerance of a
+  // millionth of 3.4e38): the median was the histogram's top and the filter kept nothing.
+  const std::vector<float> floats = {12.345678f, 1000.1234f, 3.3333333f, 3.4028235e38f, -1e30f};
+  CHECK(height_step(floats.data(), floats.size()).tolerance == Approx(1e-6 * 1000.1234));
+  const std::vector<float> metres = {12, 15, -3.4028235e38f, 300};
+  CHECK(height_step(metres.data(), metres.size()).tolerance == 0.5);
+  for (const float fill : {3.4028235e38f, -3.4028235e38f, 1e30f, -1e30f}) {
+    CAPTURE(fill);
+    HeightGrid holed = rolling(120, 140), filled = holed;
+    for (std::size_t r = 30; r < 45; ++r) {
+      for (std::size_t c = 70; c < 85; ++c) holed(r, c) = NAN, filled(r, c) = fill;
+    }
+    const DemSource holed_dem = memory_source(holed, 10.0),
+                    filled_dem = memory_source(filled, 10.0);
+    const SlopeSurvey without =
+        survey_slopes(holed.rows(), holed.cols(), 10.0, 10.0, holed_dem.read);
+    const SlopeSurvey with =
+        survey_slopes(filled.rows(), filled.cols(), 10.0, 10.0, filled_dem.read);
+    // Fill values are nodata to the survey: the same slopes are counted as around a hole.
+    CHECK(with.heights.tolerance == without.heights.tolerance);
+    CHECK(with.median_slope_pct == without.median_slope_pct);
+    CHECK(with.cells == without.cells);
+    CHECK(with.flat_cells == without.flat_cells);
+    CHECK(without.cells < 119u * 139u);
+  }
+}
+
 TEST_CASE("the scale follows the median slope and is held within its bounds", "[adaptive]") {
   CHECK(filter_scale(kReferenceSlopePct) == 1.0);
   CHECK(filter_scale(kReferenceSlopePct / 2) == 0.5);

@@ -86,6 +86,17 @@ TEST_CASE("units, bands, fill values, relief and scales each get their note", "[
     CHECK(has(assess_dem(f), DemNoteCode::fill_value));
     CHECK_FALSE(has(assess_dem(f), DemNoteCode::implausible_relief));
   }
+  // Float's highest value is a fill value too; it used to be told as an implausible relief at
+  // most, and only when GDAL's sampled range found it.
+  for (double fill : {3.4028234663852886e38, 1e30}) {
+    f = utm_facts();
+    f.highest_value = fill;
+    CAPTURE(fill);
+    const DemAssessment a = assess_dem(f);
+    REQUIRE(has(a, DemNoteCode::fill_value));
+    CHECK(a.notes.back().numbers == std::vector<double>{fill});
+    CHECK_FALSE(has(a, DemNoteCode::implausible_relief));
+  }
   // 200 x 30 m = 6 km across: a relief over 30 km is no terrain's.
   f = utm_facts();
   f.highest_value = 200 + 30001;

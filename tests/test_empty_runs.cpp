@@ -33,6 +33,22 @@ TEST_CASE("a run that draws no stroke says which stage left nothing, and what to
     // The band of back slopes a tilted view shows: base slope over exaggeration, 40 / 2.5.
     CHECK_THAT(run.err, Catch::Contains("16 %"));
   }
+  SECTION("every cell nodata, declared or NaN: said so, not called flat") {
+    write_tiff(
+        dir / "declared.tif", 60, 60, 1, [](int, int, int) { return -9999.0f; }, kNorthUp, 32616,
+        -9999.0);
+    write_tiff(
+        dir / "nan.tif", 60, 60, 1, [](int, int, int) { return NAN; }, kNorthUp, 32616);
+    for (const char* name : {"declared", "nan"}) {
+      CAPTURE(name);
+      const auto run = run_cli(
+          {"silhouettes", dir / (std::string(name) + ".tif"), dir / (std::string(name) + ".gpkg")});
+      CHECK(run.code == 0);
+      CHECK_THAT(run.err,
+                 Catch::Contains(std::string(kNoStrokes) + "every cell of the DEM is nodata"));
+      CHECK(run.err.find("faces the viewer") == std::string::npos);
+    }
+  }
   SECTION("a plane sloping away at 5 %: every cell a candidate, the thesis's filter removes all") {
     write_plane(dir / "plane.tif", 0.5f);
     const auto fixed =

@@ -23,6 +23,7 @@ std::vector<StageFigure> stage_figures(const StageStats& s) {
 
 EmptyRun empty_run(const StageStats& s) {
   if (s.factual_strokes + s.formulated_strokes > 0) return EmptyRun::not_empty;
+  if (s.valid == 0) return EmptyRun::no_valid_cell;
   // Factual strokes start from occluding cells, formulated ones from the c-set through the filter.
   if (s.occluding == 0 && s.candidate == 0) return EmptyRun::nothing_seen;
   if (s.occluding == 0 && s.filtered == 0) return EmptyRun::all_filtered;

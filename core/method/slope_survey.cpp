@@ -119,8 +119,11 @@ HeightStep height_step(const float* heights, std::size_t count) {
 void HeightStepPart::add(const float* heights, std::size_t count) {
   for (std::size_t q = 0; q < multiples_.size(); ++q)
     if (multiples_[q] && !all_multiples(heights, count, kQuanta[q])) multiples_[q] = 0;
+  // A fill value's magnitude would make every step between real heights "flat": the survey
+  // then found no slope and scaled the filter by its most (0 formulated strokes).
   for (std::size_t k = 0; k < count; ++k) {
-    if (std::isfinite(heights[k])) largest_ = std::max(largest_, std::fabs(double{heights[k]}));
+    const double magnitude = std::fabs(double{heights[k]});
+    if (magnitude < kFillMagnitude) largest_ = std::max(largest_, magnitude);
   }
 }
 

@@ -34,6 +34,10 @@ class SlopeHistogram {
   std::uint64_t total_ = 0;
 };
 
+// Heights this far from 0 are float's fill values (3.4e38 and its negative, or 1e30), not
+// terrain: a DEM that does not declare them nodata still has its own heights' step and slopes.
+constexpr double kFillMagnitude = 1e30;
+
 // What the adaptive filter needs to know about a DEM's heights.
 struct HeightStep {
   double quantum = 0.0;    // 1, 0.5, 0.1 or 0.01 when every height is a multiple of it, else 0
@@ -48,13 +52,15 @@ struct SlopeSurvey {
 };
 
 // The slope of cell (r, c) of `z` (cols wide) in percent from its forward differences east and
-// south, or a negative number when it is flat (both steps within `tolerance`) or next to nodata.
+// south, or a negative number when it is flat (both steps within `tolerance`) or next to nodata
+// (NaN, or a fill value: steps to one are no terrain's).
 inline float cell_slope_pct(const float* z, std::size_t cols, std::size_t c, double dx, double dy,
                             double tolerance) {
-  const double here = z[c];
-  const double east = static_cast<double>(z[c + 1]) - here;
-  const double south = static_cast<double>(z[c + cols]) - here;
-  if (!(std::isfinite(east) && std::isfinite(south))) return -2.0f;
+  const double here = z[c], east_z = z[c + 1], south_z = z[c + cols];
+  if (!(std::fabs(here) < kFillMagnitude && std::fabs(east_z) < kFillMagnitude &&
+        std::fabs(south_z) < kFillMagnitude))
+    return -2.0f;
+  const double east = east_z - here, south = south_z - here;
   if (std::fabs(east) <= tolerance && std::fabs(south) <= tolerance) return -1.0f;
   return static_cast<float>(100.0 * std::hypot(east / dx, south / dy));
 }
@@ -84,7 +90,7 @@ class HeightStepPart {
  private:
   friend struct SurveyBytes;
   std::array<std::uint8_t, 4> multiples_{1, 1, 1, 1};  // of each quantum, 1 to 0.01
-  double largest_ = 0.0;                               // of the finite heights' magnitudes
+  double largest_ = 0.0;  // of the magnitudes of the heights that are not fill values
 };
 
 // The slopes of some windows, measured with the DEM's flat-cell tolerance.

@@ -32,10 +32,11 @@ std::vector<StageFigure> stage_figures(const StageStats& stats);
 // Why a run drew no stroke at all: the first stage that left nothing to draw, so that the user is
 // told what to change rather than handed empty layers without a word.
 enum class EmptyRun {
-  not_empty,     // it drew strokes
-  nothing_seen,  // no cell hides another or is seen edge-on (flat, or too gentle for the view)
-  all_filtered,  // the slope filter removed every candidate, and no cell hides another
-  all_short,     // chains were made, each shorter than the shortest stroke kept
+  not_empty,      // it drew strokes
+  no_valid_cell,  // every cell of the DEM is nodata (declared, or NaN)
+  nothing_seen,   // no cell hides another or is seen edge-on (flat, or too gentle for the view)
+  all_filtered,   // the slope filter removed every candidate, and no cell hides another
+  all_short,      // chains were made, each shorter than the shortest stroke kept
 };
 EmptyRun empty_run(const StageStats& stats);
 

@@ -3,15 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/method/slope_survey.h"
+
 namespace tsk::io {
 
 namespace {
 
 // True for the heights DEM producers write where they have none (-9999, -32767, -32768,
-// -99999, and float's lowest values): read as heights, in a raster that does not declare them
-// nodata, they make cliffs at its holes and edges that the silhouettes outline.
+// -99999, and float's lowest and highest values): read as heights, in a raster that does not
+// declare them nodata, they make cliffs at its holes and edges that the silhouettes outline.
 bool is_common_fill_value(double z) {
-  return z == -9999.0 || z == -32767.0 || z == -32768.0 || z == -99999.0 || z <= -1e30;
+  return z == -9999.0 || z == -32767.0 || z == -32768.0 || z == -99999.0 ||
+         std::fabs(z) >= kFillMagnitude;
 }
 
 // True when heights spanning `relief` rise more than five times the width `across` of their DEM
@@ -39,9 +42,11 @@ bool is_mercator(const std::string& proj) {
 // Notes on the band's values: a fill value among them, or a relief no terrain has.
 void assess_values(const DemFacts& f, double ground_scale, std::vector<DemNote>& notes) {
   if (!f.has_range) return;
-  if (is_common_fill_value(f.lowest_value)) {
-    notes.push_back({DemNoteCode::fill_value, {f.lowest_value}, {}});
-    return;
+  for (const double value : {f.lowest_value, f.highest_value}) {
+    if (is_common_fill_value(value)) {
+      notes.push_back({DemNoteCode::fill_value, {value}, {}});
+      return;
+    }
   }
   const double relief = std::fabs(f.scale) * (f.highest_value - f.lowest_value);
   const double across =

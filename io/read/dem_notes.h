@@ -34,7 +34,7 @@ enum class DemNoteCode {
   mercator_scaled,     // numbers: ground metres per map unit at the centre
   unit_not_metre,      // text: the unit's name
   several_bands,       // numbers: the band count, the band used
-  fill_value,          // numbers: the lowest value, a common fill value
+  fill_value,          // numbers: the lowest or highest value, a common fill value
   implausible_relief,  // numbers: the relief, the DEM's width (same unit)
   scaled_values,       // numbers: scale, offset
   assumed_cell_size,   // no georeferencing; numbers: the cell size given
