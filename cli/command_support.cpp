@@ -9,6 +9,7 @@
 #include "core/base/errors.h"
 #include "core/drawn/drawing_scale.h"
 #include "io/write/output_files.h"
+#include "io/write/vector_writer.h"
 
 namespace tsk::cli {
 
@@ -47,6 +48,12 @@ void print_averaging(double scale, const DemGrid& grid, std::size_t averaged, st
       << std::min(grid.dx, grid.dy) * static_cast<double>(averaged)
       << " m a cell, about 0.4 mm on paper): the scale shows nothing finer\n";
   err.precision(old_precision);
+}
+
+void print_lost_weights(const Options& o, const std::string& driver, std::ostream& err) {
+  if (!o.params.strokes.drawn() || io::keeps_m_values(driver)) return;
+  err << "note: " << driver << " keeps no M values, so the drawn strokes' weights (their taper "
+      << "and depth, which the styles draw) are left out; .gpkg, .fgb, .shp or .csv keep them\n";
 }
 
 void print_empty_run(const StageStats& stats, const SilhouetteParams& p, std::ostream& err) {

@@ -30,6 +30,10 @@ void print_averaging(double scale, const DemGrid& grid, std::size_t averaged, st
 // to change; nothing when it drew strokes.
 void print_empty_run(const StageStats& stats, const SilhouetteParams& params, std::ostream& err);
 
+// Drawn strokes to a format that keeps no M values (io::keeps_m_values): says on `err` that
+// their weights are lost, and which formats keep them.
+void print_lost_weights(const Options& o, const std::string& driver, std::ostream& err);
+
 // The DEM as the outputs' notes name it: its file's name.
 std::string dem_name(const Options& o);
 

@@ -74,7 +74,7 @@ void print_plotter(const io::PlotterReport& r, bool millimetres, std::ostream& e
 std::string silhouettes(const Args& args, std::ostream& out, std::ostream& err,
                         const ProgressFn& progress) {
   const Options o = parse("silhouettes", args);
-  io::check_vector_output(o.output, o.format);  // before any work
+  print_lost_weights(o, io::check_vector_output(o.output, o.format), err);  // before any work
   const bool preview = !o.preview.empty();
   RunDem dem;
   if (preview) {

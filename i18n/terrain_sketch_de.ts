@@ -160,22 +160,27 @@
 <context>
     <name>LineOutput</name>
     <message>
-        <location filename="../plugin/line_output.cpp" line="117" />
+        <location filename="../plugin/line_output.cpp" line="57" />
+        <source>%1 keeps no M values, so the drawn strokes' weights (their taper and depth, which the styles draw) are left out; GeoPackage, FlatGeobuf, Shapefile or CSV keep them.</source>
+        <translation>%1 speichert keine M-Werte, daher entfallen die Gewichte der gezeichneten Striche (ihre Verjüngung und Tiefe, die die Stile zeichnen); GeoPackage, FlatGeobuf, Shapefile oder CSV behalten sie.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/line_output.cpp" line="132" />
         <source>Internal error: no output set for %1.</source>
         <translation>Interner Fehler: keine Ausgabemenge für %1.</translation>
     </message>
     <message>
-        <location filename="../plugin/line_output.cpp" line="126" />
+        <location filename="../plugin/line_output.cpp" line="141" />
         <source>Waiting for another run writing %1.</source>
         <translation>Warte auf einen anderen Lauf, der %1 schreibt.</translation>
     </message>
     <message>
-        <location filename="../plugin/line_output.cpp" line="261" />
+        <location filename="../plugin/line_output.cpp" line="277" />
         <source>Could not write %1 whole: the file ends cut short. Is the disk full?</source>
         <translation>%1 konnte nicht vollständig geschrieben werden: die Datei bricht vorzeitig ab. Ist der Datenträger voll?</translation>
     </message>
     <message>
-        <location filename="../plugin/line_output.cpp" line="278" />
+        <location filename="../plugin/line_output.cpp" line="294" />
         <source>Could not write %1 whole: %2</source>
         <translation>%1 konnte nicht vollständig geschrieben werden: %2</translation>
     </message>

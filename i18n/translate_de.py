@@ -12,6 +12,8 @@ GERMAN = {
         "Keine Striche: keine Zelle des DGM ist verdeckt, und keine fällt vom Betrachter so sanft ab, dass sie nach dem Kippen zu sehen ist (unter der Grundneigung von %L1 % geteilt durch die Überhöhung von %L2, %L3 %): das DGM ist flach oder überall dem Betrachter zugewandt. Eine andere Blickrichtung oder eine größere Grundneigung bringt Hänge in Sicht.",
     "No strokes: every cell of the DEM is nodata (its declared nodata value, or NaN): check the band, and the no data value the layer or its file declares (Layer Properties > Transparency).":
         "Keine Striche: jede Zelle des DGM ist NoData (sein angegebener NoData-Wert oder NaN): prüfen Sie das Band und den NoData-Wert, den der Layer oder seine Datei angibt (Layereigenschaften > Transparenz).",
+    "%1 keeps no M values, so the drawn strokes' weights (their taper and depth, which the styles draw) are left out; GeoPackage, FlatGeobuf, Shapefile or CSV keep them.":
+        "%1 speichert keine M-Werte, daher entfallen die Gewichte der gezeichneten Striche (ihre Verjüngung und Tiefe, die die Stile zeichnen); GeoPackage, FlatGeobuf, Shapefile oder CSV behalten sie.",
     "No strokes: the slope filter removed every candidate cell, and no cell is hidden. Lower cut-offs keep more, or the slope filter adapted to the DEM scales them.":
         "Keine Striche: der Neigungsfilter hat jede Kandidatenzelle entfernt, und keine Zelle ist verdeckt. Niedrigere Grenzwerte behalten mehr, oder der an das DGM angepasste Neigungsfilter skaliert sie.",
     "No strokes: every chain was shorter than the shortest stroke kept. Drawn for 1:%1, strokes under %L2 mm on paper, or outlining under %L3 m of relief, are dropped too: a larger scale (a smaller number) keeps more.":

@@ -6,6 +6,7 @@
 #include <qgsprocessing.h>
 #include <qgsprocessingparameters.h>
 #include <qgsproviderregistry.h>
+#include <qgsvectorfilewriter.h>
 
 #include <QDir>
 #include <QFile>
@@ -19,6 +20,7 @@
 
 #include "io/read/gdal_util.h"
 #include "io/write/output_set.h"
+#include "io/write/vector_writer.h"
 #include "plugin/core_errors.h"
 #include "plugin/gpkg_line_sink.h"
 #include "plugin/qgis_compat.h"
@@ -43,6 +45,19 @@ struct FileTarget {
 FileTarget fileTarget(const QString& target) {
   const QString path = destinationFile(target);
   return {path, target.startsWith(QLatin1String("ogr:")) && QFileInfo(path).isFile()};
+}
+
+// Drawn strokes' weights are their M values: a file format that keeps none loses them, and the
+// styles then draw every stroke at one width. Said before the run, where the user can change it.
+void warnOfLostWeights(const QString& path, bool measured, QgsProcessingFeedback* feedback) {
+  if (!measured || path.isEmpty() || !feedback) return;
+  const QString driver = QgsVectorFileWriter::driverForExtension(QFileInfo(path).suffix());
+  if (driver.isEmpty() || io::keeps_m_values(driver.toStdString())) return;
+  feedback->pushWarning(
+      LineOutput::tr("%1 keeps no M values, so the drawn strokes' weights (their taper and depth, "
+                     "which the styles draw) are left out; GeoPackage, FlatGeobuf, Shapefile or "
+                     "CSV keep them.")
+          .arg(driver));
 }
 
 // The files beside `path` named after it: those its format keeps with it (a shapefile's .shx and
@@ -184,6 +199,7 @@ LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMa
   const QgsProcessingParameterDefinition* definition = algorithm.parameterDefinition(key);
   const QString target = outputTarget(algorithm, parameters, key, context);
   const FileTarget file = fileTarget(target);
+  warnOfLostWeights(file.path, measured, feedback);
   // A file written whole is staged, and put in place with the run's other outputs when the run has
   // done (DemViewAlgorithm::processAlgorithm): one that fails leaves the earlier file whole. A
   // layer added to a file is written there, one run at a time, and dropped if the run fails.

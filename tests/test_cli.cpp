@@ -192,8 +192,17 @@ TEST_CASE("output formats follow the extension", "[cli]") {
       INFO(run.err);
       REQUIRE(run.code == 0);
       CHECK(summarise(dir / name).features > 0);
+      // Drawn strokes' weights are M values, which GeoJSON, GML and KML do not keep.
+      const std::string extension = std::filesystem::path(name).extension().string();
+      const bool loses_m = extension == ".geojson" || extension == ".gml" || extension == ".kml";
+      const bool told = run.err.find("keeps no M values") != std::string::npos;
+      CHECK(told == (loses_m && std::string(command) == "silhouettes"));
     }
   }
+  const CliRun exact = run_cli(
+      {"silhouettes", kData + "/gorillas_utm32n.tif", dir / "exact.geojson", "--strokes", "exact"});
+  CHECK(exact.code == 0);
+  CHECK_THAT(exact.err, !Catch::Contains("M values"));
   const CliRun bad = run_cli({"silhouettes", kSample, dir / "out.xyz"});
   CHECK(bad.code == 1);
   CHECK_THAT(bad.err, Catch::Contains("--format"));
@@ -582,6 +591,15 @@ TEST_CASE("an undeclared fill value among the heights gets a note", "[cli]") {
   const CliRun declared = run_cli({"silhouettes", dir / "declared.tif", dir / "declared.gpkg"});
   CHECK(declared.code == 0);
   CHECK_THAT(declared.err, !Catch::Contains("fill value"));
+  // Float's highest value is a fill value too, and the survey leaves it out: the filter is the
+  // one the DEM with that strip declared nodata gets.
+  const auto high = [](int band, int r, int c) { return c < 6 ? 3.4028235e38f : hill(band, r, c); };
+  test::write_tiff(dir / "high.tif", 40, 40, 1, high, kNorthUp, 32616);
+  const CliRun high_run = run_cli({"silhouettes", dir / "high.tif", dir / "high.gpkg"});
+  CHECK(high_run.code == 0);
+  CHECK_THAT(high_run.err, Catch::Contains("e+38, a common fill value"));
+  const auto cut_offs = [](const std::string& err) { return err.substr(err.find("median slope")); };
+  CHECK(cut_offs(high_run.err).substr(0, 40) == cut_offs(declared.err).substr(0, 40));
 }
 
 TEST_CASE("a band's scale and offset turn its values into heights, as QGIS turns them", "[cli]") {

@@ -66,6 +66,12 @@ std::string vector_driver_for(const std::string& path, const std::string& format
   return it->second;
 }
 
+bool keeps_m_values(const std::string& driver_name) {
+  GDALAllRegister();
+  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
+  return driver && driver->GetMetadataItem(GDAL_DCAP_MEASURED_GEOMETRIES);
+}
+
 std::string check_vector_output(const std::string& path, const std::string& format) {
   // Only the database formats keep other data beside a layer (a project's GeoPackage) and open
   // in a moment; a GeoJSON or KML file is one layer, and opening it would parse all of it.

@@ -54,7 +54,7 @@ cli::Options band_run(const std::string& input, const std::string& output,
 BandPlan plan_bands(const std::string& input, const std::string& output,
                     const std::vector<std::string>& options, std::ostream& err) {
   const cli::Options o = band_run(input, output, options);
-  io::check_vector_output(o.output, o.format);
+  cli::print_lost_weights(o, io::check_vector_output(o.output, o.format), err);
   const TaskDem dem(o.input, o, o.dem);  // with a sample of its range, for the notes
   cli::print_notes(dem.info().notes, err);
   const OrientedFrame frame = make_frame(dem.source().grid, o.params.view.azimuth_deg);

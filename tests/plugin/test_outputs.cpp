@@ -340,6 +340,28 @@ TEST_CASE("strokes stream into shapefiles and memory layers too", "[plugin][outp
   CHECK(k == core.strokes.size());
 }
 
+TEST_CASE("drawn strokes to a format without M values are written with a warning",
+          "[plugin][outputs]") {
+  const QString dem = kData + "/gorillas_utm32n.tif";
+  QTemporaryDir dir;
+  const auto warned = [](const RecordingFeedback& log) {
+    return log.warnings.filter(QStringLiteral("keeps no M values")).size();
+  };
+  RecordingFeedback geojson;
+  const Run lost = runAlgorithm(dem, outputsAs(dir, "geojson"), dir, &geojson);
+  INFO(lost.error.toStdString());
+  REQUIRE(lost.ok);
+  CHECK(warned(geojson) == 2);  // one for each output
+  CHECK(QgsVectorLayer(lost.results.value("FORMULATED").toString(), "f", "ogr").featureCount() > 0);
+  RecordingFeedback gpkg, exact;
+  CHECK(runAlgorithm(dem, outputsAs(dir, "gpkg"), dir, &gpkg).ok);
+  CHECK(warned(gpkg) == 0);
+  QVariantMap exactGeojson = outputsAs(dir, "geojson");
+  exactGeojson.insert("STROKES", 1);  // exact strokes carry no weights
+  CHECK(runAlgorithm(dem, exactGeojson, dir, &exact).ok);
+  CHECK(warned(exact) == 0);
+}
+
 TEST_CASE("a run waits while another writes its output, and a wait cancelled removes nothing",
           "[plugin][outputs][concurrency]") {
   // Two runs writing one GeoPackage at once: the second, failing, deleted the first one's file.
