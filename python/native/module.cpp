@@ -48,6 +48,11 @@ GDALDataType gdal_type(const py::dtype& type) {
 
 io::MemoryBand memory_band(const py::array& heights) {
   if (heights.ndim() != 2) throw py::value_error("heights must be a 2-D array (rows, columns)");
+  if (heights.shape(0) == 0 || heights.shape(1) == 0) {
+    throw py::value_error("heights must have a row and a column at least, got " +
+                          std::to_string(heights.shape(0)) + " x " +
+                          std::to_string(heights.shape(1)));
+  }
   const GDALDataType type = gdal_type(heights.dtype());
   if (type == GDT_Unknown || heights.strides(0) <= 0 || heights.strides(1) <= 0)
     throw py::value_error("internal: heights must come as a native array of a GDAL type");

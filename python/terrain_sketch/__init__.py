@@ -72,6 +72,10 @@ def _heights_array(heights, nodata):
     if isinstance(heights, np.ma.MaskedArray):
         heights = heights.astype(np.float64).filled(np.nan)
     array = np.asarray(heights)
+    # Booleans, complex numbers, text and times are no heights: cast, a mask of True and False
+    # gave strokes round it without a word.
+    if array.dtype.kind in "bcmMSUV":
+        raise ValueError(f"heights must be real numbers, got an array of {array.dtype}")
     if nodata is None:
         nodata = getattr(heights, "attrs", {}).get("_FillValue")  # xarray's
     held = {"f4", "f8", "i2", "i4", "u1", "u2", "u4"}

@@ -118,6 +118,11 @@ def test_bad_arrays_and_options():
     heights, transform, nodata, crs = read_dem(SAMPLE)
     with pytest.raises(ValueError, match="2-D"):
         terrain_sketch.sketch(heights[0], transform, nodata, crs)
+    with pytest.raises(ValueError, match="a row and a column at least, got 0 x 414"):
+        terrain_sketch.sketch(heights[:0], transform, nodata, crs)
+    for not_heights in (heights > 300, heights.astype(complex), heights.astype(str)):
+        with pytest.raises(ValueError, match="heights must be real numbers, got an array of"):
+            terrain_sketch.sketch(not_heights, transform, nodata, crs)
     with pytest.raises(ValueError, match="neither reads nor writes files: preview"):
         terrain_sketch.sketch(heights, transform, nodata, crs, preview="p.svg")
     with pytest.raises(ValueError, match="does not take --observer"):
