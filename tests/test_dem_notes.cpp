@@ -1,6 +1,7 @@
 // The notes on a DEM that both front ends word (io/dem_notes.h), on facts with known answers.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "catch_compat.h"
 #include "io/read/dem_notes.h"
@@ -86,6 +87,11 @@ TEST_CASE("units, bands, fill values, relief and scales each get their note", "[
     CHECK(has(assess_dem(f), DemNoteCode::fill_value));
     CHECK_FALSE(has(assess_dem(f), DemNoteCode::implausible_relief));
   }
+  // QGIS's statistics of a band without a valid cell: least +DBL_MAX, greatest -DBL_MAX.
+  f = utm_facts();
+  f.lowest_value = std::numeric_limits<double>::max();
+  f.highest_value = -std::numeric_limits<double>::max();
+  CHECK(assess_dem(f).notes.empty());
   // Float's highest value is a fill value too; it used to be told as an implausible relief at
   // most, and only when GDAL's sampled range found it.
   for (double fill : {3.4028234663852886e38, 1e30}) {

@@ -41,7 +41,9 @@ bool is_mercator(const std::string& proj) {
 
 // Notes on the band's values: a fill value among them, or a relief no terrain has.
 void assess_values(const DemFacts& f, double ground_scale, std::vector<DemNote>& notes) {
-  if (!f.has_range) return;
+  // A range with its least above its greatest is none: QGIS's statistics of a band without a
+  // valid cell are +-DBL_MAX, which are no fill values.
+  if (!f.has_range || !(f.lowest_value <= f.highest_value)) return;
   for (const double value : {f.lowest_value, f.highest_value}) {
     if (is_common_fill_value(value)) {
       notes.push_back({DemNoteCode::fill_value, {value}, {}});

@@ -211,6 +211,18 @@ TEST_CASE("a run that draws no stroke warns which stage left nothing", "[plugin]
   CHECK(run.results.value("FORMULATED_STROKES").toDouble() == 0);
   CHECK(flatRun.warnings.join(' ').contains(
       QStringLiteral("No strokes: no cell of the DEM is hidden")));
+  // The same raster with its one height declared nodata: no cell at all, said so, and no fill
+  // value made up from QGIS's statistics of no cell (+-DBL_MAX).
+  ds = GDALOpen(flat.toUtf8().constData(), GA_Update);
+  REQUIRE(ds != nullptr);
+  GDALSetRasterNoDataValue(GDALGetRasterBand(ds, 1), 100.0);
+  GDALClose(ds);
+  RecordingFeedback nodataRun;
+  REQUIRE(runAlgorithm(flat, {}, dir, &nodataRun).ok);
+  const QString nodataWarnings = nodataRun.warnings.join(' ');
+  CHECK(nodataWarnings.contains(QStringLiteral("No strokes: every cell of the DEM is nodata")));
+  CHECK_FALSE(nodataWarnings.contains(QStringLiteral("fill value")));
+  CHECK_FALSE(nodataWarnings.contains(QStringLiteral("no cell of the DEM is hidden")));
   // A real DEM whose chains are all shorter than the shortest stroke asked for.
   const QString sample = kData + "/jacksboro_utm16n.tif";
   RecordingFeedback shortRun;
