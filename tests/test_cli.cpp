@@ -10,6 +10,7 @@
 #include <chrono>
 #include <csignal>
 #include <fstream>
+#include <set>
 #include <thread>
 
 #include "catch_compat.h"
@@ -35,6 +36,7 @@ struct VectorSummary {
   long long features = 0;
   std::map<std::string, long long> per_class;
   long long null_depth_formulated = 0;
+  long long measured = 0;  // features whose geometry read back has M values
   int epsg = 0;
   std::vector<std::string> fields;
 };
@@ -63,6 +65,7 @@ VectorSummary summarise(const std::string& path) {
       ++s.null_depth_formulated;
     }
     REQUIRE(feature->GetGeometryRef() != nullptr);
+    s.measured += feature->GetGeometryRef()->IsMeasured() ? 1 : 0;
   }
   GDALClose(ds);
   return s;
@@ -182,6 +185,7 @@ TEST_CASE("a shapefile keeps every attribute under its shortened name", "[cli]")
 
 TEST_CASE("output formats follow the extension", "[cli]") {
   ScratchDir dir("formats");
+  std::set<std::string> lost_m;  // the formats whose drawn strokes read back without M values
   for (const char* name :
        {"out.geojson", "out.shp", "out.fgb", "out.gml", "out.kml", "out.sqlite", "out.csv"}) {
     CAPTURE(name);
@@ -191,14 +195,22 @@ TEST_CASE("output formats follow the extension", "[cli]") {
       const CliRun run = run_cli({command, kData + "/gorillas_utm32n.tif", dir / name});
       INFO(run.err);
       REQUIRE(run.code == 0);
-      CHECK(summarise(dir / name).features > 0);
-      // Drawn strokes' weights are M values, which GeoJSON, GML and KML do not keep.
-      const std::string extension = std::filesystem::path(name).extension().string();
-      const bool loses_m = extension == ".geojson" || extension == ".gml" || extension == ".kml";
+      const VectorSummary written = summarise(dir / name);
+      CHECK(written.features > 0);
+      // Drawn strokes' weights are M values: told exactly when the file read back has none (GDAL
+      // 3.10's GeoJSON driver says it takes M values, and drops them).
       const bool told = run.err.find("keeps no M values") != std::string::npos;
-      CHECK(told == (loses_m && std::string(command) == "silhouettes"));
+      if (std::string(command) == "silhouettes") {
+        CHECK(told == (written.measured == 0));
+        if (written.measured == 0) lost_m.insert(name);
+      } else {
+        CHECK_FALSE(told);
+      }
     }
   }
+  // GML and KML keep no M values in any GDAL the project meets.
+  CHECK(lost_m.count("out.gml") == 1);
+  CHECK(lost_m.count("out.kml") == 1);
   const CliRun exact = run_cli(
       {"silhouettes", kData + "/gorillas_utm32n.tif", dir / "exact.geojson", "--strokes", "exact"});
   CHECK(exact.code == 0);

@@ -5,10 +5,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 
 #include "io/gpkg/gpkg_line_appender.h"
@@ -64,12 +66,6 @@ std::string vector_driver_for(const std::string& path, const std::string& format
                 ".csv, or name an OGR driver with --format");
   }
   return it->second;
-}
-
-bool keeps_m_values(const std::string& driver_name) {
-  GDALAllRegister();
-  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
-  return driver && driver->GetMetadataItem(GDAL_DCAP_MEASURED_GEOMETRIES);
 }
 
 std::string check_vector_output(const std::string& path, const std::string& format) {
@@ -327,6 +323,60 @@ std::vector<Field> stroke_fields() {
 }
 
 }  // namespace
+
+namespace {
+
+// Writes a line with M values 0.5 and 0.25 to `path` through `driver`, with our options.
+bool write_measured_line(GDALDriver& driver, const std::string& path,
+                         const std::string& driver_name) {
+  DatasetPtr ds(driver.Create(path.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+  OGRLayer* layer =
+      ds ? ds->CreateLayer("probe", nullptr, wkbLineStringM, line_layer_options(driver_name).List())
+         : nullptr;
+  if (!layer) return false;
+  OGRLineString line;
+  line.addPointM(0.0, 0.0, 0.5);
+  line.addPointM(1.0, 1.0, 0.25);
+  OGRFeature feature(layer->GetLayerDefn());
+  feature.SetGeometry(&line);
+  return layer->CreateFeature(&feature) == OGRERR_NONE && close_dataset(ds);
+}
+
+// Whether the first line of the file at `path` has the M value 0.25 at its second point.
+bool reads_back_measured_line(const std::string& path) {
+  DatasetPtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+  OGRLayer* layer = ds && ds->GetLayerCount() > 0 ? ds->GetLayer(0) : nullptr;
+  if (!layer) return false;
+  const std::unique_ptr<OGRFeature> feature(layer->GetNextFeature());
+  const OGRGeometry* geometry = feature ? feature->GetGeometryRef() : nullptr;
+  return geometry && geometry->IsMeasured() &&
+         wkbFlatten(geometry->getGeometryType()) == wkbLineString &&
+         geometry->toLineString()->getM(1) == 0.25;
+}
+
+}  // namespace
+
+bool keeps_m_values(const std::string& driver_name) {
+  // A GeoPackage's lines are written by our own appender, M values and all.
+  if (driver_name == "GPKG") return true;
+  // GDAL's DCAP_MEASURED_GEOMETRIES is no guide: GDAL 3.10's GeoJSON driver declares it and writes
+  // lines without their M values. So a line with M values is written to memory, with the options
+  // our outputs use, and read back. A driver that cannot write to memory (CSV) is taken to keep
+  // them: nothing is said that is not known.
+  GDALAllRegister();
+  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
+  if (!driver) return true;
+  static std::atomic<unsigned> probes{0};
+  const char* extension = driver->GetMetadataItem(GDAL_DMD_EXTENSION);
+  const std::string folder =
+      "/vsimem/tsk_m_probe_" + std::to_string(getpid()) + "_" + std::to_string(probes++);
+  const std::string path = folder + "/probe." + (extension ? extension : "dat");
+  const GdalErrorCapture quiet;
+  const bool kept =
+      !write_measured_line(*driver, path, driver_name) || reads_back_measured_line(path);
+  VSIRmdirRecursive(folder.c_str());
+  return kept;
+}
 
 void write_strokes(const std::string& path, const std::string& format, const std::string& srs_wkt,
                    const std::function<void(const StrokeWriter& write)>& produce,

@@ -32,8 +32,9 @@ inline constexpr const char* kPanoramaPeakLayer = "peaks";
 // would be destroyed. Returns the format's OGR driver name (vector_driver_for).
 std::string check_vector_output(const std::string& path, const std::string& format);
 
-// Whether OGR driver `driver_name` keeps M values (GDAL's DCAP_MEASURED_GEOMETRIES): GeoJSON, GML
-// and KML do not, and drawn strokes' weights written there are lost.
+// Whether OGR driver `driver_name` keeps M values, as a line written to memory and read back shows
+// (true when that cannot be told): GeoJSON, GML and KML do not, and drawn strokes' weights written
+// there are lost.
 bool keeps_m_values(const std::string& driver_name);
 
 // Writes one stroke to the layer being filled.

@@ -347,18 +347,27 @@ TEST_CASE("drawn strokes to a format without M values are written with a warning
   const auto warned = [](const RecordingFeedback& log) {
     return log.warnings.filter(QStringLiteral("keeps no M values")).size();
   };
-  RecordingFeedback geojson;
-  const Run lost = runAlgorithm(dem, outputsAs(dir, "geojson"), dir, &geojson);
-  INFO(lost.error.toStdString());
-  REQUIRE(lost.ok);
-  CHECK(warned(geojson) == 2);  // one for each output
-  CHECK(QgsVectorLayer(lost.results.value("FORMULATED").toString(), "f", "ogr").featureCount() > 0);
-  RecordingFeedback gpkg, exact;
-  CHECK(runAlgorithm(dem, outputsAs(dir, "gpkg"), dir, &gpkg).ok);
-  CHECK(warned(gpkg) == 0);
-  QVariantMap exactGeojson = outputsAs(dir, "geojson");
-  exactGeojson.insert("STROKES", 1);  // exact strokes carry no weights
-  CHECK(runAlgorithm(dem, exactGeojson, dir, &exact).ok);
+  // Warned exactly when the layers read back have no M values (GDAL 3.10's GeoJSON driver says
+  // it takes them, and drops them); GML keeps none in any GDAL the project meets.
+  int lost = 0;
+  for (const char* format : {"geojson", "gml", "gpkg", "fgb"}) {
+    CAPTURE(format);
+    RecordingFeedback log;
+    const Run run = runAlgorithm(dem, outputsAs(dir, format), dir, &log);
+    INFO(run.error.toStdString());
+    REQUIRE(run.ok);
+    QgsVectorLayer written(run.results.value("FORMULATED").toString(), "f", "ogr");
+    REQUIRE(written.featureCount() > 0);
+    const bool measured = QgsWkbTypes::hasM(written.wkbType());
+    CHECK(warned(log) == (measured ? 0 : 2));  // one for each output
+    lost += measured ? 0 : 1;
+    CHECK((std::string(format) != "gml" || !measured));
+  }
+  CHECK(lost >= 1);
+  RecordingFeedback exact;
+  QVariantMap exactGml = outputsAs(dir, "gml");
+  exactGml.insert("STROKES", 1);  // exact strokes carry no weights
+  CHECK(runAlgorithm(dem, exactGml, dir, &exact).ok);
   CHECK(warned(exact) == 0);
 }
 
