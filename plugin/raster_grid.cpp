@@ -70,7 +70,7 @@ io::DemFacts layerFacts(QgsRasterLayer& layer, int band,
   if (layer.providerType() == QLatin1String("gdal")) {
     const QgsRasterBandStats range =
         layer.dataProvider()->bandStatistics(band, kRangeStatistics, QgsRectangle(), 250000);
-    f.has_range = range.minimumValue <= range.maximumValue;  // not so without a valid cell
+    f.has_range = true;
     f.lowest_value = range.minimumValue;
     f.highest_value = range.maximumValue;
   }

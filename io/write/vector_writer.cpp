@@ -322,10 +322,6 @@ std::vector<Field> stroke_fields() {
   return fields;
 }
 
-}  // namespace
-
-namespace {
-
 // Writes a line with M values 0.5 and 0.25 to `path` through `driver`, with our options.
 bool write_measured_line(GDALDriver& driver, const std::string& path,
                          const std::string& driver_name) {
