@@ -56,12 +56,15 @@ void print_lost_weights(const Options& o, const std::string& driver, std::ostrea
       << "and depth, which the styles draw) are left out; .gpkg, .fgb, .shp or .csv keep them\n";
 }
 
-void print_empty_run(const StageStats& stats, const SilhouetteParams& p, std::ostream& err) {
+void print_empty_run(const StageStats& stats, const SilhouetteParams& p, std::ostream& err,
+                     DemOrigin origin) {
   const EmptyRun cause = empty_run(stats);
   if (cause == EmptyRun::not_empty) return;
   const auto old_precision = err.precision(3);
   err << "warning: no strokes: ";
-  if (cause == EmptyRun::no_valid_cell) {
+  if (cause == EmptyRun::no_valid_cell && origin == DemOrigin::array) {
+    err << "every height of the array is nodata (NaN, masked, or the value given as nodata=)\n";
+  } else if (cause == EmptyRun::no_valid_cell) {
     err << "every cell of the DEM is nodata (its declared nodata value, or NaN): check --band, "
            "and the nodata value the file declares (gdal_edit.py -a_nodata or -unsetnodata)\n";
   } else if (cause == EmptyRun::nothing_seen) {

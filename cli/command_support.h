@@ -4,6 +4,7 @@
 #include <ostream>
 #include <string>
 
+#include "cli/dem_note_text.h"
 #include "cli/options.h"
 #include "core/method/run_note.h"
 #include "core/method/silhouettes.h"
@@ -28,7 +29,8 @@ void print_averaging(double scale, const DemGrid& grid, std::size_t averaged, st
 
 // A run that drew no stroke at all (empty_run): says on `err` which stage left nothing, and what
 // to change; nothing when it drew strokes.
-void print_empty_run(const StageStats& stats, const SilhouetteParams& params, std::ostream& err);
+void print_empty_run(const StageStats& stats, const SilhouetteParams& params, std::ostream& err,
+                     DemOrigin origin = DemOrigin::file);
 
 // Drawn strokes to a format that keeps no M values (io::keeps_m_values): says on `err` that
 // their weights are lost, and which formats keep them.

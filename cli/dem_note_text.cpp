@@ -4,8 +4,9 @@
 
 namespace tsk::cli {
 
-std::string note_text(const io::DemNote& note) {
+std::string note_text(const io::DemNote& note, DemOrigin origin) {
   const auto number = [&note](std::size_t k) { return number_text(note.numbers.at(k)); };
+  const bool array = origin == DemOrigin::array;
   switch (note.code) {
     case io::DemNoteCode::geographic_crs:
       return "the CRS is geographic";
@@ -14,7 +15,8 @@ std::string note_text(const io::DemNote& note) {
              " is a colour channel (red, green, blue or alpha) of an image, not heights: give a "
              "DEM";
     case io::DemNoteCode::no_crs:
-      return "no CRS: coordinates are written without one, cell sizes taken as metres";
+      return array ? "no CRS (crs=): the strokes have none, cell sizes taken as metres"
+                   : "no CRS: coordinates are written without one, cell sizes taken as metres";
     case io::DemNoteCode::mercator_scaled:
       return "Mercator projection: map units are not ground metres here; cell sizes scaled by "
              "cos(latitude of the centre) = " +
@@ -26,21 +28,27 @@ std::string note_text(const io::DemNote& note) {
       return "the raster has " + number(0) + " bands; band " + number(1) + " is used (--band)";
     case io::DemNoteCode::fill_value:
       return "some heights are " + number(0) +
-             ", a common fill value: if those cells have no data, declare it as nodata "
-             "(gdal_edit.py -a_nodata " +
-             number(0) + " INPUT)";
+             ", a common fill value: if those cells have no data, " +
+             (array ? "pass nodata=" + number(0)
+                    : "declare it as nodata (gdal_edit.py -a_nodata " + number(0) + " INPUT)");
+    case io::DemNoteCode::fill_taken:
+      return "some heights are " + number(0) +
+             ", float's fill value, which no terrain has: those cells are taken as nodata";
     case io::DemNoteCode::implausible_relief:
       return "heights span " + number(0) + " over a DEM " + number(1) +
-             " across, more than any terrain: if they are millimetres or centimetres, give the "
-             "band a scale (gdal_edit.py -scale 0.001 INPUT)";
+             " across, more than any terrain: if they are millimetres or centimetres, " +
+             (array ? std::string("divide them by 1000 or 100")
+                    : std::string("give the band a scale (gdal_edit.py -scale 0.001 INPUT)"));
     case io::DemNoteCode::scaled_values:
       return "heights are the band's values x " + number(0) + " + " + number(1) +
              ", its scale and offset";
     case io::DemNoteCode::assumed_cell_size:
-      return "no georeferencing: cells taken as " + number(0) + " m squares";
+      return std::string(array ? "no transform" : "no georeferencing") + ": cells taken as " +
+             number(0) + " m squares";
     case io::DemNoteCode::cell_size_ignored:
-      return "--cell-size " + number(0) +
-             " is ignored: the raster's georeferencing gives its cells";
+      return array ? "cell_size=" + number(0) + " is ignored: the transform gives the cells"
+                   : "--cell-size " + number(0) +
+                         " is ignored: the raster's georeferencing gives its cells";
   }
   return "";
 }
@@ -57,8 +65,8 @@ std::string refusal_text(const io::DemRefused& refused) {
          " INPUT OUTPUT_utm.tif";
 }
 
-void print_notes(const std::vector<io::DemNote>& notes, std::ostream& err) {
-  for (const io::DemNote& note : notes) err << "note: " << note_text(note) << "\n";
+void print_notes(const std::vector<io::DemNote>& notes, std::ostream& err, DemOrigin origin) {
+  for (const io::DemNote& note : notes) err << "note: " << note_text(note, origin) << "\n";
 }
 
 }  // namespace tsk::cli

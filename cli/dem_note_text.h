@@ -10,12 +10,17 @@
 
 namespace tsk::cli {
 
-std::string note_text(const io::DemNote& note);
+// Where a DEM comes from, for the remedy a note names: a file, which GDAL's tools correct, or an
+// array that a Python call passes with its keywords.
+enum class DemOrigin { file, array };
+
+std::string note_text(const io::DemNote& note, DemOrigin origin = DemOrigin::file);
 
 // Why a DEM was refused, and the command that makes it fit.
 std::string refusal_text(const io::DemRefused& refused);
 
 // Each note on a line of its own, after "note: ".
-void print_notes(const std::vector<io::DemNote>& notes, std::ostream& err);
+void print_notes(const std::vector<io::DemNote>& notes, std::ostream& err,
+                 DemOrigin origin = DemOrigin::file);
 
 }  // namespace tsk::cli

@@ -54,8 +54,8 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaRun& run,
       panorama_note(dem_name(o), o.dem.band, o.panorama, run.exaggeration, TSK_VERSION);
   io::write_panorama_strokes(o.output, o.format, result.strokes, dem.srs_wkt, peaks,
                              run.exaggeration, note);
-  err << "note: the panorama layer draws its elevation angles " << run.exaggeration
-      << " times as tall as its azimuths are wide (--panorama-exaggeration)\n";
+  err << "note: the panorama layer draws its elevation angles " << elevation_drawn(run.exaggeration)
+      << " (--panorama-exaggeration)\n";
   stop_if_interrupted();
   if (!o.visibility.empty()) {
     io::write_visibility(
@@ -66,8 +66,8 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaRun& run,
   if (!o.preview.empty()) {
     const io::PanoramaPage page = lay_out_panorama(result, o.params.strokes, o.page, leaders);
     io::write_page(o.preview, page.page, o.page, progress);
-    err << "note: the preview's elevation angles are drawn " << page.exaggeration
-        << " times as tall as its azimuths are wide\n";
+    err << "note: the preview's elevation angles are drawn " << elevation_drawn(page.exaggeration)
+        << "\n";
   }
 }
 

@@ -26,8 +26,10 @@ GERMAN = {
     "Panorama exaggeration": "Überhöhung des Panoramas",
     "How many times as tall as its azimuths are wide the Panorama layer draws its elevation angles, 1 to 50. 0, the default, chooses up to 5 so that a wide field of view is no flat strip. The Panorama layout draws it so.":
         "Wie viel Mal so hoch, wie seine Azimute breit sind, der Panorama-Layer seine Höhenwinkel zeichnet, 1 bis 50. 0, die Voreinstellung, wählt bis zu 5, damit ein weites Blickfeld kein flacher Streifen ist. Das Panorama-Layout zeichnet es so.",
-    "%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from grid north); elevation angles drawn %L7 times as tall as azimuths are wide%9. Terrain Sketch %8.":
-        "%1. Gesehen von %L2, %L3, %L4 m über dem Boden, von %L5° bis %L6° (Azimute von Gitternord); Höhenwinkel %L7-mal so hoch gezeichnet, wie Azimute breit sind%9. Terrain Sketch %8.",
+    "%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from grid north); elevation angles drawn %7%9. Terrain Sketch %8.":
+        "%1. Gesehen von %L2, %L3, %L4 m über dem Boden, von %L5° bis %L6° (Azimute von Gitternord); Höhenwinkel %7 gezeichnet%9. Terrain Sketch %8.",
+    "to the same scale as azimuths": "im selben Maßstab wie die Azimute",
+    "%L1 times as tall as azimuths are wide": "%L1-mal so hoch, wie Azimute breit sind,",
     "; %L1 samples per cell along each ray": "; %L1 Abtastpunkte je Zelle entlang jedes Strahls",
     "%1 10 mm on the page: %L2° of azimuth.": "%1 10 mm auf der Seite: %L2° Azimut.",
     "Band %1 of the raster's %2 is a colour channel (red, green, blue or alpha) of an image, not heights: choose a DEM.":
@@ -88,6 +90,10 @@ GERMAN = {
         "Einige Höhen betragen %1, ein üblicher Füllwert: wenn diese Zellen keine Daten "
         "haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften > Transparenz) "
         "oder in der Datei.",
+    "Some heights are %1, float's fill value, which no terrain has: those cells are taken as no "
+    "data.":
+        "Einige Höhen betragen %1, der Füllwert für Gleitkommazahlen, den kein Gelände hat: diese "
+        "Zellen werden als NoData behandelt.",
     "The raster has %1 bands; band %2 is used.": "Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.",
     "Could not write %1 whole: %2": "%1 konnte nicht vollständig geschrieben werden: %2",
     "Could not write %1 whole: the file ends cut short. Is the disk full?":

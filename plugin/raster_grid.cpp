@@ -91,17 +91,15 @@ QString plainGdalFile(const QgsRasterLayer& layer) {
 
 }  // namespace
 
-// Copies a block of `count` rows into `out` as floats with NaN for nodata. Float32 blocks whose
-// nodata is a plain value (or absent) are copied in bulk; anything else cell by cell.
+// Copies a block of `count` rows into `out` as floats with NaN for nodata and for float's fill
+// values, as io's reader gives them. Float32 blocks whose nodata is a plain value (or absent) are
+// copied in bulk; anything else cell by cell.
 void copyHeights(QgsRasterBlock& block, int count, float* out) {
   const auto cells = static_cast<std::size_t>(count) * static_cast<std::size_t>(block.width());
   const bool plainNoData = block.hasNoDataValue() || !block.hasNoData();
   if (block.dataType() == Qgis::DataType::Float32 && plainNoData) {
     std::memcpy(out, block.bits(0), cells * sizeof(float));
-    if (block.hasNoDataValue()) {
-      const auto noData = static_cast<float>(block.noDataValue());
-      std::replace(out, out + cells, noData, kNoData);
-    }
+    mark_nodata(out, cells, block.hasNoDataValue(), static_cast<float>(block.noDataValue()));
     return;
   }
   for (int r = 0; r < count; ++r) {
@@ -112,6 +110,7 @@ void copyHeights(QgsRasterBlock& block, int count, float* out) {
           noData ? kNoData : static_cast<float>(v);
     }
   }
+  mark_nodata(out, cells, false, 0.0f);
 }
 
 RasterGrid::RasterGrid(QgsRasterLayer* layer, int band,
@@ -181,6 +180,10 @@ QString RasterGrid::noteText(const io::DemNote& note) {
       return tr("Some heights are %1, a common fill value: if those cells have no data, set "
                 "it as the layer's no data value (Layer Properties > Transparency) or in the "
                 "file.")
+          .arg(number(0));
+    case io::DemNoteCode::fill_taken:
+      return tr("Some heights are %1, float's fill value, which no terrain has: those cells are "
+                "taken as no data.")
           .arg(number(0));
     case io::DemNoteCode::implausible_relief:
       return tr("Heights span %1 over a raster %2 across, more than any terrain: if they are "

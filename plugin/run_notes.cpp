@@ -49,12 +49,15 @@ QString panoramaNote(const QString& dem, const PanoramaView& view, double exagge
       view.samples_per_cell > 1
           ? tr("; %L1 samples per cell along each ray").arg(view.samples_per_cell)
           : QString();
+  const QString drawn =
+      exaggeration == 1.0
+          ? tr("to the same scale as azimuths")
+          : tr("%L1 times as tall as azimuths are wide").arg(number(exaggeration, 3));
   return tr("%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from "
-            "grid north); elevation angles drawn %L7 times as tall as azimuths are wide%9. "
-            "Terrain Sketch %8.")
+            "grid north); elevation angles drawn %7%9. Terrain Sketch %8.")
       .arg(dem, QLocale().toString(view.observer_x, 'f', 0),
            QLocale().toString(view.observer_y, 'f', 0), number(view.observer_height, 4),
-           number(view.azimuth_from, 4), number(view.azimuth_to, 4), number(exaggeration, 3),
+           number(view.azimuth_from, 4), number(view.azimuth_to, 4), drawn,
            QStringLiteral(TSK_VERSION), sampled);
 }
 

@@ -80,7 +80,7 @@ TEST_CASE("units, bands, fill values, relief and scales each get their note", "[
   const DemAssessment bands = assess_dem(f);
   REQUIRE(has(bands, DemNoteCode::several_bands));
   CHECK(bands.notes.front().numbers == std::vector<double>{3, 2});
-  for (double fill : {-9999.0, -32767.0, -32768.0, -99999.0, -3.4e38}) {
+  for (double fill : {-9999.0, -32767.0, -32768.0, -99999.0}) {
     f = utm_facts();
     f.lowest_value = fill;
     CAPTURE(fill);
@@ -92,15 +92,16 @@ TEST_CASE("units, bands, fill values, relief and scales each get their note", "[
   f.lowest_value = std::numeric_limits<double>::max();
   f.highest_value = -std::numeric_limits<double>::max();
   CHECK(assess_dem(f).notes.empty());
-  // Float's highest value is a fill value too; it used to be told as an implausible relief at
-  // most, and only when GDAL's sampled range found it.
-  for (double fill : {3.4028234663852886e38, 1e30}) {
+  // Float's fill values, lowest or highest, are read as nodata, and told so; the highest used to
+  // be told as an implausible relief at most.
+  for (double fill : {3.4028234663852886e38, -3.4e38, 1e30, -1e30}) {
     f = utm_facts();
-    f.highest_value = fill;
+    (fill > 0 ? f.highest_value : f.lowest_value) = fill;
     CAPTURE(fill);
     const DemAssessment a = assess_dem(f);
-    REQUIRE(has(a, DemNoteCode::fill_value));
+    REQUIRE(has(a, DemNoteCode::fill_taken));
     CHECK(a.notes.back().numbers == std::vector<double>{fill});
+    CHECK_FALSE(has(a, DemNoteCode::fill_value));
     CHECK_FALSE(has(a, DemNoteCode::implausible_relief));
   }
   // 200 x 30 m = 6 km across: a relief over 30 km is no terrain's.

@@ -189,6 +189,9 @@ TEST_CASE("the panorama layer draws its elevation angles exaggerated, as chosen 
   CHECK(k == Approx(std::clamp(360.0 / (8.0 * span), 1.0, 5.0)).epsilon(0.01));
   CHECK(field > 300);
   CHECK_THAT(chosen_said, Catch::Contains("elevation angles") && Catch::Contains("times as tall"));
+  // Not exaggerated: said so, not "1 times as tall".
+  CHECK_THAT(true_said, Catch::Contains("elevation angles to the same scale as azimuths") &&
+                            !Catch::Contains("times as tall"));
 }
 
 TEST_CASE("panorama visibility agrees with exact sight lines, closer sampled finer, and GDAL's",

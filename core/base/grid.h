@@ -98,6 +98,23 @@ inline bool is_data(float z) {
   return std::isfinite(z);
 }
 
+// Heights this far from 0 are float's fill values (3.4e38 and its negative, or 1e30), never
+// terrain: a strip of them undeclared stood as a wall that hid everything behind it.
+constexpr double kFillMagnitude = 1e30;
+
+// Puts the core's NaN where a band's values hold no height: its nodata value, when it declares
+// one, and float's fill values (what a reader does to every window before the core sees it).
+inline void mark_nodata(float* values, std::size_t count, bool has_nodata, float nodata) {
+  constexpr auto fill = static_cast<float>(kFillMagnitude);
+  // Without a nodata value, a value that is not one: a comparison that never holds. Every value
+  // is stored back, chosen without a branch, so that the loop runs in vector lanes.
+  const float declared = has_nodata ? nodata : kNoData;
+  for (std::size_t k = 0; k < count; ++k) {
+    const float v = values[k];
+    values[k] = (v == declared) | (std::fabs(v) >= fill) ? kNoData : v;
+  }
+}
+
 // The lowest height with data among those added: the plan-oblique reference (SPEC 1.9), 0 when
 // none had data.
 class LowestHeight {

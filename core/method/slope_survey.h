@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/base/grid.h"
 #include "core/method/dem_windows.h"
 
 namespace tsk {
@@ -33,10 +34,6 @@ class SlopeHistogram {
   std::array<std::uint32_t, kBins> counts_{};
   std::uint64_t total_ = 0;
 };
-
-// Heights this far from 0 are float's fill values (3.4e38 and its negative, or 1e30), not
-// terrain: a DEM that does not declare them nodata still has its own heights' step and slopes.
-constexpr double kFillMagnitude = 1e30;
 
 // What the adaptive filter needs to know about a DEM's heights.
 struct HeightStep {

@@ -163,6 +163,13 @@ std::vector<StrokePoint> exaggerated(std::vector<StrokePoint> view, double exagg
   return view;
 }
 
+std::string elevation_drawn(double exaggeration) {
+  if (exaggeration == 1.0) return "to the same scale as azimuths";
+  std::ostringstream text;
+  text << exaggeration << " times as tall as azimuths are wide";
+  return text.str();
+}
+
 std::string panorama_note(const std::string& dem, int band, const PanoramaView& view,
                           double exaggeration, const std::string& version) {
   std::ostringstream note;
@@ -170,8 +177,8 @@ std::string panorama_note(const std::string& dem, int band, const PanoramaView& 
        << view.observer_x << ", " << view.observer_y << ", " << std::defaultfloat
        << std::setprecision(4) << view.observer_height << " m above the ground, from "
        << view.azimuth_from << "\xc2\xb0 to " << view.azimuth_to
-       << "\xc2\xb0 (azimuths from grid north); elevation angles drawn " << exaggeration
-       << " times as tall as azimuths are wide";
+       << "\xc2\xb0 (azimuths from grid north); elevation angles drawn "
+       << elevation_drawn(exaggeration);
   if (view.samples_per_cell > 1)
     note << "; " << view.samples_per_cell << " samples per cell along each ray";
   note << ". Terrain Sketch " << version << ".";

@@ -61,6 +61,9 @@ double panorama_exaggeration(const PanoramaResult& result, double asked);
 // Sketch 0.1.0."
 std::string panorama_note(const std::string& dem, int band, const PanoramaView& view,
                           double exaggeration, const std::string& version);
+// How tall elevation angles are drawn against azimuths: "K times as tall as azimuths are wide",
+// or "to the same scale as azimuths" when K is 1.
+std::string elevation_drawn(double exaggeration);
 // Points of the panorama (x azimuth, y elevation angle) with their elevation `exaggeration` times.
 std::vector<StrokePoint> exaggerated(std::vector<StrokePoint> view, double exaggeration);
 

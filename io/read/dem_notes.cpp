@@ -3,18 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/method/slope_survey.h"
+#include "core/base/grid.h"
 
 namespace tsk::io {
 
 namespace {
 
 // True for the heights DEM producers write where they have none (-9999, -32767, -32768,
-// -99999, and float's lowest and highest values): read as heights, in a raster that does not
-// declare them nodata, they make cliffs at its holes and edges that the silhouettes outline.
+// -99999): read as heights, in a raster that does not declare them nodata, they make cliffs at
+// its holes and edges that the silhouettes outline. (Float's fill values, which no terrain has,
+// are read as nodata.)
 bool is_common_fill_value(double z) {
-  return z == -9999.0 || z == -32767.0 || z == -32768.0 || z == -99999.0 ||
-         std::fabs(z) >= kFillMagnitude;
+  return z == -9999.0 || z == -32767.0 || z == -32768.0 || z == -99999.0;
 }
 
 // True when heights spanning `relief` rise more than five times the width `across` of their DEM
@@ -45,8 +45,10 @@ void assess_values(const DemFacts& f, double ground_scale, std::vector<DemNote>&
   // valid cell are +-DBL_MAX, which are no fill values.
   if (!f.has_range || !(f.lowest_value <= f.highest_value)) return;
   for (const double value : {f.lowest_value, f.highest_value}) {
-    if (is_common_fill_value(value)) {
-      notes.push_back({DemNoteCode::fill_value, {value}, {}});
+    // Float's fill values are read as nodata (mark_nodata); the others may be heights.
+    const bool taken = std::fabs(value) >= kFillMagnitude;
+    if (taken || is_common_fill_value(value)) {
+      notes.push_back({taken ? DemNoteCode::fill_taken : DemNoteCode::fill_value, {value}, {}});
       return;
     }
   }

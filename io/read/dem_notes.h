@@ -35,6 +35,7 @@ enum class DemNoteCode {
   unit_not_metre,      // text: the unit's name
   several_bands,       // numbers: the band count, the band used
   fill_value,          // numbers: the lowest or highest value, a common fill value
+  fill_taken,          // numbers: the lowest or highest value, float's fill value, read as nodata
   implausible_relief,  // numbers: the relief, the DEM's width (same unit)
   scaled_values,       // numbers: scale, offset
   assumed_cell_size,   // no georeferencing; numbers: the cell size given

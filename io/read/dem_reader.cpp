@@ -21,11 +21,12 @@
 namespace tsk::io {
 namespace {
 
-// Replaces the band's nodata value, if it has one, by the core's NaN in `values`.
+// Replaces the band's nodata value, if it has one, and float's fill values by the core's NaN in
+// `values`.
 void nodata_to_nan(GDALRasterBand& band, float* values, std::size_t count) {
   int has_nodata = 0;
   const auto nodata = static_cast<float>(band.GetNoDataValue(&has_nodata));
-  if (has_nodata) std::replace(values, values + count, nodata, kNoData);
+  mark_nodata(values, count, has_nodata != 0, nodata);
 }
 
 // Reads windows of the band as Float32, nodata to NaN, the band's scale and offset applied (a DEM

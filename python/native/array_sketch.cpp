@@ -38,7 +38,7 @@ StrokeColumns sketch_array(const io::MemoryBand& band, const io::MemoryRasterInf
                            std::ostream& err) {
   const cli::Options o = cli::parse_choices("silhouettes", options);
   const io::DemFile dem(io::wrap_memory_raster(band, info), "array", o.dem);
-  cli::print_notes(dem.info().notes, err);
+  cli::print_notes(dem.info().notes, err, cli::DemOrigin::array);
   StrokeColumns columns;
   columns.measured = o.params.strokes.drawn();
   columns.crs_wkt = dem.info().srs_wkt;
@@ -52,7 +52,7 @@ StrokeColumns sketch_array(const io::MemoryBand& band, const io::MemoryRasterInf
                          [&columns](Stroke&& stroke) { add_stroke(stroke, columns); });
   cli::print_filter(result.filter, err);
   cli::print_averaging(o.params.strokes.scale, dem.info().grid, result.averaged, err);
-  cli::print_empty_run(result.stats, o.params, err);
+  cli::print_empty_run(result.stats, o.params, err, cli::DemOrigin::array);
   columns.statistics = cli::stats_json(result.stats, result.filter);
   return columns;
 }

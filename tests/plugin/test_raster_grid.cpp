@@ -50,6 +50,34 @@ TEST_CASE("an undeclared fill value among the heights gets a warning", "[plugin]
   CHECK_FALSE(quiet.warnings.join(' ').contains("fill value"));
 }
 
+TEST_CASE("float's fill values are read as nodata, with a warning", "[plugin]") {
+  // A strip of float's highest value, undeclared, stood as a wall that hid the rest of the hill.
+  QTemporaryDir dir, declaredDir;
+  const auto filled = [](float fill) {
+    return [fill](int band, int r, int c) { return c < 6 ? fill : test::hill(band, r, c); };
+  };
+  const QString undeclared = dir.filePath("filled.tif");
+  const QString declared = declaredDir.filePath("declared.tif");
+  test::write_tiff(undeclared.toStdString(), 40, 40, 1, filled(3.4028235e38f), test::kNorthUp,
+                   32616);
+  test::write_tiff(declared.toStdString(), 40, 40, 1, filled(-1.0f), test::kNorthUp, 32616, -1.0);
+  RecordingFeedback log;
+  const QVariantMap fromWest{{"AZIMUTH", 270}};
+  REQUIRE(runAlgorithm(undeclared, fromWest, dir, &log).ok);
+  CHECK(log.warnings.join(' ').contains("taken as no data"));
+  REQUIRE(runAlgorithm(declared, fromWest, declaredDir).ok);
+  long long strokes = 0;
+  for (const QString& name : {QStringLiteral("factual.gpkg"), QStringLiteral("formulated.gpkg")}) {
+    const QgsVectorLayer read(dir.filePath(name), "read", "ogr");
+    const QgsVectorLayer oracle(declaredDir.filePath(name), "oracle", "ogr");
+    CAPTURE(name.toStdString());
+    CHECK(read.featureCount() == oracle.featureCount());
+    CHECK(read.extent() == oracle.extent());
+    strokes += oracle.featureCount();
+  }
+  CHECK(strokes > 0);
+}
+
 TEST_CASE("heights that rise more than any terrain get a warning", "[plugin]") {
   // The hill in millimetres: 300 000 over a raster 400 m across.
   QTemporaryDir dir;

@@ -172,3 +172,36 @@ def test_a_run_that_draws_nothing_warns_why(caplog):
     with caplog.at_level("INFO", logger="terrain_sketch"):
         assert len(terrain_sketch.sketch(*read_dem(SAMPLE))) > 0
     assert not [r for r in caplog.records if r.levelname == "WARNING"]
+
+
+def test_notes_on_an_array_name_its_keywords_not_gdal_tools(caplog):
+    # An array has no file to correct with gdal_edit.py: its notes name sketch()'s keywords.
+    heights, transform, nodata, crs = read_dem(SAMPLE)
+    heights = np.where(heights == nodata, np.nan, heights).astype(np.float32)
+
+    def told(*args, **options):
+        caplog.clear()
+        with caplog.at_level("INFO", logger="terrain_sketch"):
+            strokes = terrain_sketch.sketch(*args, **options)
+        return strokes, " ".join(r.getMessage() for r in caplog.records)
+
+    filled = heights.copy()
+    filled[:, :6] = -9999
+    _, said = told(filled, transform, None, crs)
+    assert "nodata=-9999" in said and "gdal_edit" not in said
+    # Float's fill value is taken as nodata: the strokes of the strip given as NaN.
+    filled[:, :6] = np.float32(3.4028235e38)
+    taken, said = told(filled, transform, None, crs)
+    assert "taken as nodata" in said and "gdal_edit" not in said
+    nan_strip = heights.copy()
+    nan_strip[:, :6] = np.nan
+    oracle, _ = told(nan_strip, transform, None, crs)
+    assert len(taken) == len(oracle) > 0
+    for k in range(len(oracle)):
+        np.testing.assert_array_equal(taken.coordinates(k), oracle.coordinates(k))
+    _, said = told(heights * 1000, transform, None, crs)
+    assert "divide them by 1000" in said and "gdal_edit" not in said
+    _, said = told(np.full((30, 30), np.nan), transform, None, crs)
+    assert "every height of the array is nodata" in said and "--band" not in said
+    _, said = told(heights, None, None, None, cell_size=75)
+    assert "no transform" in said and "crs=" in said
