@@ -19,6 +19,7 @@
 
 #include "core/method/silhouettes.h"
 #include "io/read/dem_reader.h"
+#include "io/read/gdal_util.h"
 #include "plugin/core_errors.h"
 #include "plugin/qgis_compat.h"
 
@@ -68,6 +69,9 @@ io::DemFacts layerFacts(QgsRasterLayer& layer, int band,
     f.has_centre = centreInDegrees(crs, layer.extent(), transforms, f);
   }
   if (layer.providerType() == QLatin1String("gdal")) {
+    // A band without a valid cell makes GDAL print "no valid pixels found" on each call: QGIS
+    // told it once as it loaded the layer, and the warning on all-nodata runs says it better.
+    const io::GdalErrorCapture quiet;
     const QgsRasterBandStats range =
         layer.dataProvider()->bandStatistics(band, kRangeStatistics, QgsRectangle(), 250000);
     f.has_range = true;

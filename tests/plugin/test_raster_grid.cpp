@@ -299,3 +299,22 @@ TEST_CASE("an RGB image is refused before the run, in the dialog's check", "[plu
   CHECK_FALSE(run.ok);
   CHECK(run.error.contains("colour channel"));
 }
+
+TEST_CASE("reading a raster without a valid cell prints no GDAL errors", "[plugin]") {
+  // GDAL printed "no valid pixels found in sampling" for each of our statistics calls, on top of
+  // the one QGIS prints as it loads such a layer; the run's warning says what is wrong.
+  QTemporaryDir dir;
+  const QString path = dir.filePath("empty.tif");
+  test::write_tiff(
+      path.toStdString(), 40, 40, 1, [](int, int, int) { return -1.0f; }, test::kNorthUp, 32616,
+      -1.0);
+  QgsRasterLayer layer(path, "empty", "gdal");
+  REQUIRE(layer.isValid());
+  static int printed = 0;
+  printed = 0;
+  CPLPushErrorHandler([](CPLErr, CPLErrorNum, const char*) { ++printed; });
+  const plugin::RasterGrid grid(&layer, 1, QgsCoordinateTransformContext());
+  CPLPopErrorHandler();
+  CHECK(printed == 0);
+  CHECK(grid.readsFileDirectly());
+}
