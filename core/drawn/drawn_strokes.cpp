@@ -122,12 +122,18 @@ void StrokeDrawer::take_settled(double frontier, StrokeGroups& groups) {
     } else {
       members_.assign(1, first);
     }
+    // A piece alone and shorter than the shortest stroke is dropped here, as drawing would drop
+    // it: a third of the pieces (2-cell ones mostly), no longer handed on to be dropped.
+    const bool dropped =
+        members_.size() == 1 && pending_[first - first_pending_].cells < setup_.min_cells;
     for (std::size_t id : members_) {
-      groups.pieces.push_back(std::move(pending_[id - first_pending_]));
+      if (!dropped) groups.pieces.push_back(std::move(pending_[id - first_pending_]));
       drawn_[id - first_pending_] = true;
     }
-    groups.ends.push_back(groups.pieces.size());
-    groups.firsts.push_back(first);
+    if (!dropped) {
+      groups.ends.push_back(groups.pieces.size());
+      groups.firsts.push_back(first);
+    }
     while (!drawn_.empty() && drawn_.front()) {
       pending_.pop_front();
       drawn_.pop_front();
