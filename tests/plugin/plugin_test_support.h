@@ -65,6 +65,24 @@ struct ViewStrips {
         loader(frame, source.read) {}
 };
 
+// Whether two grids hold the same heights, NaN where either has none.
+inline bool sameHeights(const HeightGrid& a, const HeightGrid& b) {
+  if (a.rows() != b.rows() || a.cols() != b.cols()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const float x = a.data()[k], y = b.data()[k];
+    if (!(x == y || (std::isnan(x) && std::isnan(y)))) return false;
+  }
+  return true;
+}
+
+// The heights of a raster's profiles for a view, read whole.
+inline HeightGrid viewHeights(plugin::RasterGrid& grid, double azimuth) {
+  ViewStrips strips(grid, azimuth);
+  HeightGrid heights;
+  strips.loader.load(0, strips.frame.profiles, heights);
+  return heights;
+}
+
 // The lowest height of a raster read window by window, as a plan-oblique run reads it first.
 inline double lowestOf(plugin::RasterGrid& grid) {
   const DemSource dem = grid.source();
