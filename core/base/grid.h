@@ -111,7 +111,7 @@ inline void mark_nodata(float* values, std::size_t count, bool has_nodata, float
   const float declared = has_nodata ? nodata : kNoData;
   for (std::size_t k = 0; k < count; ++k) {
     const float v = values[k];
-    values[k] = (v == declared) | (std::fabs(v) >= fill) ? kNoData : v;
+    values[k] = v == declared || std::fabs(v) >= fill ? kNoData : v;
   }
 }
 
