@@ -1,5 +1,7 @@
 #include "cli/dem_note_text.h"
 
+#include <cmath>
+
 #include "core/base/errors.h"
 
 namespace tsk::cli {
@@ -10,6 +12,16 @@ std::string note_text(const io::DemNote& note, DemOrigin origin) {
   switch (note.code) {
     case io::DemNoteCode::geographic_crs:
       return "the CRS is geographic";
+    case io::DemNoteCode::too_far:
+      return std::string(std::isfinite(note.numbers.at(0))
+                             ? "its corners lie up to " + number(0) +
+                                   " from the CRS's origin, too far for coordinates to tell a "
+                                   "thousandth of its " +
+                                   number(1) + " cells apart"
+                             : "a corner of it lies at a coordinate that is not a finite number") +
+             ": its georeferencing is wrong" +
+             (array ? "; give the transform in the CRS's units (transform=)"
+                    : "; set its corners, e.g. gdal_edit.py -a_ullr WEST NORTH EAST SOUTH INPUT");
     case io::DemNoteCode::colour_image:
       return "band " + number(1) + " of its " + number(0) +
              " is a colour channel (red, green, blue or alpha) of an image, not heights: give a "
@@ -53,16 +65,18 @@ std::string note_text(const io::DemNote& note, DemOrigin origin) {
   return "";
 }
 
-std::string refusal_text(const io::DemRefused& refused) {
+std::string refusal_text(const io::DemRefused& refused, DemOrigin origin) {
   const io::DemNote& note = refused.note();
-  if (note.code == io::DemNoteCode::colour_image)
-    return "'" + refused.path() + "': " + note_text(note);
+  if (note.code == io::DemNoteCode::colour_image || note.code == io::DemNoteCode::too_far)
+    return "'" + refused.path() + "': " + note_text(note, origin);
   if (note.code != io::DemNoteCode::geographic_crs) return refused.what();
+  const std::string utm = "EPSG:" + number_text(note.numbers.at(0));
   return "'" + refused.path() +
          "' is in a geographic CRS: its cell sizes are degrees, not metres like its heights. "
-         "Reproject it to a metric CRS first, e.g. gdalwarp -t_srs EPSG:" +
-         number_text(note.numbers.at(0)) + " -r bilinear " + io::kWarpNoData +
-         " INPUT OUTPUT_utm.tif";
+         "Reproject it to a metric CRS first, e.g. " +
+         (origin == DemOrigin::array ? "the UTM zone of its centre, " + utm
+                                     : "gdalwarp -t_srs " + utm + " -r bilinear " +
+                                           io::kWarpNoData + " INPUT OUTPUT_utm.tif");
 }
 
 void print_notes(const std::vector<io::DemNote>& notes, std::ostream& err, DemOrigin origin) {

@@ -16,8 +16,8 @@ enum class DemOrigin { file, array };
 
 std::string note_text(const io::DemNote& note, DemOrigin origin = DemOrigin::file);
 
-// Why a DEM was refused, and the command that makes it fit.
-std::string refusal_text(const io::DemRefused& refused);
+// Why a DEM was refused, and the command (or for an array, the keywords) that makes it fit.
+std::string refusal_text(const io::DemRefused& refused, DemOrigin origin = DemOrigin::file);
 
 // Each note on a line of its own, after "note: ".
 void print_notes(const std::vector<io::DemNote>& notes, std::ostream& err,

@@ -510,92 +510,102 @@
 <context>
     <name>RasterGrid</name>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="119" />
+        <location filename="../plugin/raster_grid.cpp" line="125" />
         <source>The input raster layer is not valid.</source>
         <translation>Der Eingaberasterlayer ist ungültig.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="124" />
+        <location filename="../plugin/raster_grid.cpp" line="130" />
         <source>Band %1 does not exist: the raster has %2 band(s).</source>
         <translation>Kanal %1 existiert nicht: das Raster hat %2 Kanal/Kanäle.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="131" />
+        <location filename="../plugin/raster_grid.cpp" line="137" />
         <source>The raster has no cells.</source>
         <translation>Das Raster hat keine Zellen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="156" />
+        <location filename="../plugin/raster_grid.cpp" line="162" />
         <source>Band %1 of the raster's %2 is a colour channel (red, green, blue or alpha) of an image, not heights: choose a DEM.</source>
         <translation>Band %1 der %2 Bänder des Rasters ist ein Farbkanal (Rot, Grün, Blau oder Alpha) eines Bildes, keine Höhen: wählen Sie ein DGM.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="161" />
+        <location filename="../plugin/raster_grid.cpp" line="168" />
+        <source>A corner of the raster lies at a coordinate that is not a finite number: its georeferencing is wrong. Set its corners, for example with gdal_edit.py -a_ullr WEST NORTH EAST SOUTH.</source>
+        <translation>Eine Ecke des Rasters liegt bei einer Koordinate, die keine endliche Zahl ist: seine Georeferenzierung ist falsch. Setzen Sie seine Ecken, zum Beispiel mit gdal_edit.py -a_ullr WEST NORTH EAST SOUTH.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="171" />
+        <source>The raster's corners lie up to %L1 from the CRS's origin, too far for coordinates to tell a thousandth of its %L2 cells apart: its georeferencing is wrong. Set its corners, for example with gdal_edit.py -a_ullr WEST NORTH EAST SOUTH.</source>
+        <translation>Die Ecken des Rasters liegen bis zu %L1 vom Ursprung des KBS entfernt, zu weit, als dass Koordinaten ein Tausendstel seiner Zellen von %L2 unterscheiden könnten: seine Georeferenzierung ist falsch. Setzen Sie seine Ecken, zum Beispiel mit gdal_edit.py -a_ullr WEST NORTH EAST SOUTH.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="177" />
         <source>The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres like its heights. Reproject it to a metric CRS first, for example with Raster &gt; Projections &gt; Warp (Reproject) to the UTM zone of the area.</source>
         <translation>Das Raster liegt in einem geographischen KBS (%1): seine Zellgrößen sind Grad, nicht Meter wie seine Höhen. Projizieren Sie es zuerst in ein metrisches KBS, zum Beispiel mit Raster &gt; Projektionen &gt; Transformieren (Reprojizieren) in die UTM-Zone des Gebiets.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="166" />
+        <location filename="../plugin/raster_grid.cpp" line="182" />
         <source>The raster has no CRS: cell sizes are taken as metres and the outputs have no CRS.</source>
         <translation>Das Raster hat kein KBS: Zellgrößen werden als Meter angenommen, die Ausgaben haben kein KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="174" />
+        <location filename="../plugin/raster_grid.cpp" line="190" />
         <source>The CRS's unit is %1, not the metre: the heights must be in %1 too, and depths and lengths come out in %1.</source>
         <translation>Die Einheit des KBS ist %1, nicht der Meter: die Höhen müssen ebenfalls in %1 sein, und Tiefen und Längen werden in %1 ausgegeben.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="178" />
+        <location filename="../plugin/raster_grid.cpp" line="194" />
         <source>The raster has %1 bands; band %2 is used.</source>
         <translation>Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="185" />
+        <location filename="../plugin/raster_grid.cpp" line="201" />
         <source>Some heights are %1, float's fill value, which no terrain has: those cells are taken as no data.</source>
         <translation>Einige Höhen betragen %1, der Füllwert für Gleitkommazahlen, den kein Gelände hat: diese Zellen werden als NoData behandelt.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="189" />
+        <location filename="../plugin/raster_grid.cpp" line="205" />
         <source>Heights span %1 over a raster %2 across, more than any terrain: if they are millimetres or centimetres, give the band a scale in the file (gdal_edit.py -scale 0.001).</source>
         <translation>Die Höhen umfassen %1 auf einem Raster von %2 Breite, mehr als jedes Gelände: wenn es Millimeter oder Zentimeter sind, geben Sie dem Kanal in der Datei einen Maßstab (gdal_edit.py -scale 0.001).</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="143" />
+        <location filename="../plugin/raster_grid.cpp" line="149" />
         <source>The raster is rotated: QGIS turns it north-up, and the cells it adds around it are left out as no data.</source>
         <translation>Das Raster ist gedreht: QGIS richtet es nach Norden aus, und die Zellen, die es dabei rundum hinzufügt, bleiben als NoData außen vor.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="148" />
+        <location filename="../plugin/raster_grid.cpp" line="154" />
         <source>Could not open the raster's data provider.</source>
         <translation>Der Datenanbieter des Rasters konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="170" />
+        <location filename="../plugin/raster_grid.cpp" line="186" />
         <source>Mercator projection: map units are not ground metres here; cell sizes are scaled by cos(latitude of the centre) = %L1.</source>
         <translation>Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen werden mit cos(Breite der Mitte) = %L1 skaliert.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="180" />
+        <location filename="../plugin/raster_grid.cpp" line="196" />
         <source>Some heights are %1, a common fill value: if those cells have no data, set it as the layer's no data value (Layer Properties &gt; Transparency) or in the file.</source>
         <translation>Einige Höhen betragen %1, ein üblicher Füllwert: wenn diese Zellen keine Daten haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften &gt; Transparenz) oder in der Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="320" />
+        <location filename="../plugin/raster_grid.cpp" line="336" />
         <source>The raster (%1 x %2 cells) is too large for this algorithm, which holds the whole DEM turned to the view: that would take more than half of this machine's memory. The Silhouettes algorithm reads large DEMs strip by strip; or clip or resample the DEM.</source>
         <translation>Das Raster (%1 x %2 Zellen) ist zu groß für diesen Algorithmus, der das ganze DGM zur Blickrichtung gedreht im Speicher hält: das würde mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen. Der Algorithmus Silhouetten liest große DGM Streifen für Streifen; oder schneiden Sie das DGM zu oder verringern Sie seine Auflösung.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="332" />
+        <location filename="../plugin/raster_grid.cpp" line="348" />
         <source>Not enough memory for a %1 x %2 raster.</source>
         <translation>Nicht genug Speicher für ein Raster von %1 x %2.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="341" />
+        <location filename="../plugin/raster_grid.cpp" line="357" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="296" />
+        <location filename="../plugin/raster_grid.cpp" line="312" />
         <source>Could not read rows %1 to %2 of the raster.</source>
         <translation>Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
     </message>
@@ -1153,32 +1163,32 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
         <translation>die exakten Striche der Dissertation</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="53" />
+        <location filename="../plugin/run_notes.cpp" line="54" />
         <source>to the same scale as azimuths</source>
         <translation>im selben Maßstab wie die Azimute</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="54" />
+        <location filename="../plugin/run_notes.cpp" line="55" />
         <source>%L1 times as tall as azimuths are wide</source>
         <translation>%L1-mal so hoch, wie Azimute breit sind,</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="55" />
+        <location filename="../plugin/run_notes.cpp" line="56" />
         <source>%1. Seen from %L2, %L3, %L4 m above the ground, from %L5° to %L6° (azimuths from grid north); elevation angles drawn %7%9. Terrain Sketch %8.</source>
         <translation>%1. Gesehen von %L2, %L3, %L4 m über dem Boden, von %L5° bis %L6° (Azimute von Gitternord); Höhenwinkel %7 gezeichnet%9. Terrain Sketch %8.</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="66" />
+        <location filename="../plugin/run_notes.cpp" line="67" />
         <source>%1. %2 seen from %L3° (azimuth), vertical exaggeration %L4, base slope %L5 %</source>
         <translation>%1. %2, gesehen aus %L3° (Azimut), Überhöhung %L4, Grundneigung %L5 %</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="70" />
+        <location filename="../plugin/run_notes.cpp" line="71" />
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../plugin/run_notes.cpp" line="72" />
+        <location filename="../plugin/run_notes.cpp" line="73" />
         <source>. Terrain Sketch %1.</source>
         <translation>. Terrain Sketch %1.</translation>
     </message>

@@ -34,6 +34,10 @@ GERMAN = {
     "%1 10 mm on the page: %L2° of azimuth.": "%1 10 mm auf der Seite: %L2° Azimut.",
     "Band %1 of the raster's %2 is a colour channel (red, green, blue or alpha) of an image, not heights: choose a DEM.":
         "Band %1 der %2 Bänder des Rasters ist ein Farbkanal (Rot, Grün, Blau oder Alpha) eines Bildes, keine Höhen: wählen Sie ein DGM.",
+    "A corner of the raster lies at a coordinate that is not a finite number: its georeferencing is wrong. Set its corners, for example with gdal_edit.py -a_ullr WEST NORTH EAST SOUTH.":
+        "Eine Ecke des Rasters liegt bei einer Koordinate, die keine endliche Zahl ist: seine Georeferenzierung ist falsch. Setzen Sie seine Ecken, zum Beispiel mit gdal_edit.py -a_ullr WEST NORTH EAST SOUTH.",
+    "The raster's corners lie up to %L1 from the CRS's origin, too far for coordinates to tell a thousandth of its %L2 cells apart: its georeferencing is wrong. Set its corners, for example with gdal_edit.py -a_ullr WEST NORTH EAST SOUTH.":
+        "Die Ecken des Rasters liegen bis zu %L1 vom Ursprung des KBS entfernt, zu weit, als dass Koordinaten ein Tausendstel seiner Zellen von %L2 unterscheiden könnten: seine Georeferenzierung ist falsch. Setzen Sie seine Ecken, zum Beispiel mit gdal_edit.py -a_ullr WEST NORTH EAST SOUTH.",
     "%1, band %2": "%1, Band %2",
     "from %L1°": "von %L1°",
     "Factual silhouettes, %1": "Faktische Silhouetten, %1",

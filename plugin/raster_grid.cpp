@@ -52,6 +52,8 @@ io::DemFacts layerFacts(QgsRasterLayer& layer, int band,
   f.cols = static_cast<std::size_t>(layer.width());
   f.cell_x = layer.extent().width() / layer.width();
   f.cell_y = layer.extent().height() / layer.height();
+  f.west = layer.extent().xMinimum();
+  f.north = layer.extent().yMaximum();
   f.bands = layer.bandCount();
   f.band = band;
   // QGIS numbers colour interpretations as GDAL does (3 to 6: red, green, blue, alpha), whatever
@@ -161,6 +163,17 @@ QString RasterGrid::noteText(const io::DemNote& note) {
                 "image, not heights: choose a DEM.")
           .arg(number(1))
           .arg(number(0));
+    case io::DemNoteCode::too_far:
+      if (!std::isfinite(number(0)))
+        return tr(
+            "A corner of the raster lies at a coordinate that is not a finite number: its "
+            "georeferencing is wrong. Set its corners, for example with gdal_edit.py "
+            "-a_ullr WEST NORTH EAST SOUTH.");
+      return tr("The raster's corners lie up to %L1 from the CRS's origin, too far for coordinates "
+                "to tell a thousandth of its %L2 cells apart: its georeferencing is wrong. Set "
+                "its corners, for example with gdal_edit.py -a_ullr WEST NORTH EAST SOUTH.")
+          .arg(number(0), 0, 'g', 3)
+          .arg(number(1), 0, 'g', 3);
     case io::DemNoteCode::geographic_crs:
       return tr("The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres "
                 "like its heights. Reproject it to a metric CRS first, for example with Raster > "

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <fstream>
 #include <set>
@@ -271,6 +272,14 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
   const double south_up[6] = {500000, 10, 0, 4000000, 0, 10};
   test::write_tiff(dir / "southup.tif", 40, 40, 1, hill, south_up, 32616);
   test::write_tiff(dir / "nogeo.tif", 40, 40, 1, hill, nullptr, 0);
+  // Georeferencing that places no cell: a corner not a number (a run drew nothing and blamed
+  // short chains), or so far out that doubles cannot tell the cells apart (strokes collapsed).
+  const double nan_origin[6] = {std::nan(""), 10, 0, 4000000, 0, -10};
+  test::write_tiff(dir / "nan_origin.tif", 40, 40, 1, hill, nan_origin, 32616);
+  const double far_origin[6] = {500000, 10, 0, 1e300, 0, -10};
+  test::write_tiff(dir / "far_origin.tif", 40, 40, 1, hill, far_origin, 32616);
+  const double tiny_cells[6] = {500000, 1e-300, 0, 4000000, 0, -1e-300};
+  test::write_tiff(dir / "tiny_cells.tif", 40, 40, 1, hill, tiny_cells, 32616);
   // A DEM in a GeoPackage, where the strokes could go too.
   test::write_tiff(dir / "hill.tif", 40, 40, 1, hill, kNorthUp, 32616);
   test::copy_raster_to_gpkg(dir / "hill.tif", dir / "dem.gpkg");
@@ -302,6 +311,10 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"silhouettes", dir / "rotated.tif", out}, "rotated"},
       {{"silhouettes", dir / "southup.tif", out}, "north-up"},
       {{"silhouettes", dir / "nogeo.tif", out}, "--cell-size"},
+      {{"silhouettes", dir / "nan_origin.tif", out}, "not all finite numbers (nan, 10"},
+      {{"silhouettes", dir / "far_origin.tif", out}, "too far for coordinates to tell"},
+      {{"silhouettes", dir / "tiny_cells.tif", out}, "thousandth of its 1e-300 cells"},
+      {{"profiles", dir / "far_origin.tif", out}, "gdal_edit.py -a_ullr"},
       {{"silhouettes", dir / "multi.tif", out, "--band", "3"}, "band 3 does not exist"},
       {{"silhouettes", kSample, out, "--filter", "thesis"}, "'adaptive' or 'fixed'"},
       {{"silhouettes", kSample, out, "--strokes", "smooth"}, "'drawn' or 'exact'"},

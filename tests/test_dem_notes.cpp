@@ -14,6 +14,7 @@ namespace {
 DemFacts utm_facts() {
   DemFacts f;
   f.rows = 100, f.cols = 200, f.cell_x = 30, f.cell_y = 30;
+  f.west = 731000, f.north = 4040000;
   f.has_crs = true, f.crs_id = "EPSG:32616";
   f.proj = "+proj=utm +zone=16 +datum=WGS84 +units=m +no_defs";
   f.has_centre = true, f.centre_lon = -84.1, f.centre_lat = 36.3;
@@ -50,6 +51,39 @@ TEST_CASE("a geographic DEM is refused with the UTM zone of its centre", "[io][n
   CHECK(zone_of(151.2, -33.9) == 32756);  // Sydney: zone 56, south
   CHECK(zone_of(-180, 0) == 32601);
   CHECK(zone_of(180, 0) == 32660);
+}
+
+TEST_CASE("a DEM whose coordinates cannot tell its cells apart is refused", "[io][notes]") {
+  const auto refusal = [](double west, double north, double cell) {
+    DemFacts f = utm_facts();
+    f.west = west, f.north = north, f.cell_x = f.cell_y = cell;
+    return assess_dem(f);
+  };
+  // Doubles near 1e14 are 1/64 apart, a two-thousandth of a 30 m cell: still told apart. Near
+  // 1e16 they are 2 apart; at 1e300 a whole DEM is one number.
+  CHECK_FALSE(refusal(-1e14, 1e14, 30).refused);
+  CHECK_FALSE(refusal(0, 0, 1e-6).refused);  // a micrometre grid at the origin
+  for (const double far : {1e16, -1e16, 1e300}) {
+    const DemAssessment a = refusal(731000, far, 30);
+    REQUIRE(a.refused);
+    REQUIRE(a.notes.size() == 1);
+    CHECK(a.notes.front().code == DemNoteCode::too_far);
+    CHECK(a.notes.front().numbers.at(0) == Approx(std::fabs(far)));
+    CHECK(a.notes.front().numbers.at(1) == 30);
+  }
+  // Cells of 1e-300 m near a UTM origin; a corner not a number; cells so large that the far
+  // corner overflows.
+  CHECK(refusal(731000, 4040000, 1e-300).refused);
+  const DemAssessment nan_corner = refusal(std::nan(""), 4040000, 30);
+  REQUIRE(nan_corner.refused);
+  CHECK(std::isnan(nan_corner.notes.front().numbers.at(0)));
+  const DemAssessment overflow = refusal(0, 0, 1e307);
+  REQUIRE(overflow.refused);
+  CHECK(std::isinf(overflow.notes.front().numbers.at(0)));
+  // Before the CRS's checks: a geographic DEM far out is refused for its coordinates.
+  DemFacts geographic = utm_facts();
+  geographic.geographic = true, geographic.north = 1e300;
+  CHECK(assess_dem(geographic).notes.front().code == DemNoteCode::too_far);
 }
 
 TEST_CASE("a Mercator DEM's cells are scaled by the cosine of its centre's latitude",

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <sstream>
 
 #include "io/read/dem_notes.h"
 #include "io/read/gdal_util.h"
@@ -26,6 +27,13 @@ void check_band(GDALDataset& dataset, const std::string& path, int band) {
   }
 }
 
+// GDAL's six numbers, for a message.
+std::string geotransform_text(const double* gt) {
+  std::ostringstream text;
+  for (int k = 0; k < 6; ++k) text << (k ? ", " : "") << gt[k];
+  return text.str();
+}
+
 // The geotransform of a north-up DEM, or of square cells of the given size for a raster without
 // georeferencing (with a note).
 void read_georeferencing(GDALDataset& dataset, const std::string& path, const DemOptions& options,
@@ -33,6 +41,11 @@ void read_georeferencing(GDALDataset& dataset, const std::string& path, const De
   double gt[6];
   const std::string warp = std::string("gdalwarp ") + kWarpNoData + " INPUT OUTPUT_northup.tif";
   if (dataset.GetGeoTransform(gt) == CE_None) {
+    if (!std::all_of(gt, gt + 6, [](double v) { return std::isfinite(v); })) {
+      throw Error("'" + path + "' has a geotransform that is not all finite numbers (" +
+                  geotransform_text(gt) +
+                  "); set its corners, e.g. gdal_edit.py -a_ullr WEST NORTH EAST SOUTH INPUT");
+    }
     if (gt[2] != 0.0 || gt[4] != 0.0) {
       throw Error("'" + path +
                   "' has a rotated or sheared geotransform; make it north-up first, "
@@ -113,6 +126,7 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
   DemFacts facts;
   facts.rows = dem.rows, facts.cols = dem.cols;
   facts.cell_x = dem.geotransform.a[1], facts.cell_y = -dem.geotransform.a[5];
+  facts.west = dem.geotransform.a[0], facts.north = dem.geotransform.a[3];
   facts.bands = dataset.GetRasterCount(), facts.band = options.band;
   const GDALColorInterp colour = dataset.GetRasterBand(options.band)->GetColorInterpretation();
   facts.colour_band = colour == GCI_RedBand || colour == GCI_GreenBand || colour == GCI_BlueBand ||

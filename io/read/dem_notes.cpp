@@ -1,6 +1,7 @@
 #include "io/read/dem_notes.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "core/base/grid.h"
@@ -39,6 +40,28 @@ bool is_mercator(const std::string& proj) {
          (at + key.size() == proj.size() || proj[at + key.size()] == ' ');
 }
 
+// The coordinate farthest from the CRS's origin among the DEM's corners, in map units (not
+// finite when a corner is not).
+double farthest_coordinate(const DemFacts& f) {
+  const double east = f.west + static_cast<double>(f.cols) * f.cell_x;
+  const double south = f.north - static_cast<double>(f.rows) * f.cell_y;
+  double farthest = 0.0;
+  for (const double c : {f.west, east, f.north, south}) {
+    if (!std::isfinite(c)) return c;
+    farthest = std::max(farthest, std::fabs(c));
+  }
+  return farthest;
+}
+
+// True when the DEM's coordinates, as doubles, cannot tell a thousandth of a cell apart (sub-cell
+// places and smoothing move points by less than a cell): a corner not finite, or cells too small
+// for how far from the origin they lie (doubles at x are about x * 2^-52 apart). A DEM at 1e308
+// drew its strokes collapsed onto a few coordinates, without a word.
+bool too_far_for_cells(const DemFacts& f) {
+  const double farthest = farthest_coordinate(f);
+  return !std::isfinite(farthest) || farthest * DBL_EPSILON > 1e-3 * std::min(f.cell_x, f.cell_y);
+}
+
 // Notes on the band's values: a fill value among them, or a relief no terrain has.
 void assess_values(const DemFacts& f, double ground_scale, std::vector<DemNote>& notes) {
   // A range with its least above its greatest is none: QGIS's statistics of a band without a
@@ -64,6 +87,12 @@ void assess_values(const DemFacts& f, double ground_scale, std::vector<DemNote>&
 
 DemAssessment assess_dem(const DemFacts& f) {
   DemAssessment a;
+  if (too_far_for_cells(f)) {
+    a.refused = true;
+    a.notes.push_back(
+        {DemNoteCode::too_far, {farthest_coordinate(f), std::min(f.cell_x, f.cell_y)}, {}});
+    return a;
+  }
   if (f.has_crs && f.geographic) {
     a.refused = true;
     a.notes.push_back({DemNoteCode::geographic_crs,

@@ -12,6 +12,7 @@ namespace tsk::io {
 struct DemFacts {
   std::size_t rows = 0, cols = 0;
   double cell_x = 0, cell_y = 0;  // cell width and height in map units
+  double west = 0, north = 0;     // the north-west corner, map units
   int bands = 1, band = 1;
   bool colour_band = false;  // the band is an image's red, green, blue or alpha channel
   bool has_crs = false;
@@ -29,6 +30,8 @@ struct DemFacts {
 
 enum class DemNoteCode {
   geographic_crs,      // refused; numbers: the EPSG code of the centre's UTM zone
+  too_far,             // refused: coordinates cannot tell the cells apart; numbers: the farthest
+                       // coordinate (not finite when a corner is not), the smaller cell side
   colour_image,        // refused: the band is a colour channel; numbers: the band count, the band
   no_crs,              // cell sizes taken as metres, outputs without a CRS
   mercator_scaled,     // numbers: ground metres per map unit at the centre
@@ -49,7 +52,7 @@ struct DemNote {
 };
 
 struct DemAssessment {
-  bool refused = false;       // the first note says why (a geographic CRS)
+  bool refused = false;       // the first note says why
   double ground_scale = 1.0;  // ground metres per map unit, for the cell sizes
   std::vector<DemNote> notes;
 };

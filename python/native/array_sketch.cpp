@@ -31,13 +31,23 @@ void add_stroke(const Stroke& stroke, StrokeColumns& columns) {
   set_stroke_attributes(row, stroke);
 }
 
+// The DEM of an array; a refusal words its remedy with the keywords, not GDAL's tools.
+io::DemFile array_dem(const io::MemoryBand& band, const io::MemoryRasterInfo& info,
+                      const io::DemOptions& options) {
+  try {
+    return io::DemFile(io::wrap_memory_raster(band, info), "array", options);
+  } catch (const io::DemRefused& refused) {
+    throw Error(cli::refusal_text(refused, cli::DemOrigin::array));
+  }
+}
+
 }  // namespace
 
 StrokeColumns sketch_array(const io::MemoryBand& band, const io::MemoryRasterInfo& info,
                            const std::vector<std::string>& options, const ProgressFn& progress,
                            std::ostream& err) {
   const cli::Options o = cli::parse_choices("silhouettes", options);
-  const io::DemFile dem(io::wrap_memory_raster(band, info), "array", o.dem);
+  const io::DemFile dem = array_dem(band, info, o.dem);
   cli::print_notes(dem.info().notes, err, cli::DemOrigin::array);
   StrokeColumns columns;
   columns.measured = o.params.strokes.drawn();

@@ -5,6 +5,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -86,19 +88,34 @@ py::dict columns_to_python(const StrokeColumns& c) {
   return result;
 }
 
+// GDAL's six numbers of an array's transform, checked: a NaN origin drew nothing and blamed
+// short chains.
+GeoTransform transform_of(const py::object& numbers) {
+  const auto values = numbers.cast<std::vector<double>>();
+  if (values.size() != 6) throw py::value_error("transform needs 6 numbers (GDAL's order)");
+  for (const double v : values)
+    if (!std::isfinite(v))
+      throw py::value_error("transform holds " + std::to_string(v) +
+                            ": its 6 numbers (GDAL's order) must be finite");
+  if (values[2] != 0.0 || values[4] != 0.0)
+    throw py::value_error(
+        "transform is rotated or sheared (its 3rd or 5th number is not 0): resample the array "
+        "north-up first");
+  if (values[1] == 0.0 || values[5] == 0.0)
+    throw py::value_error(
+        "transform gives cells of no width or height (its 2nd or 6th number is 0)");
+  GeoTransform gt;
+  std::copy(values.begin(), values.end(), gt.a.begin());
+  return gt;
+}
+
 // Sketches `heights` (kept alive by the caller while the run reads it).
 py::dict sketch(const py::array& heights, const py::object& geotransform, const std::string& crs,
                 const py::object& nodata, const Strings& options, const RunHooks& hooks) {
   const io::MemoryBand band = memory_band(heights);
   io::MemoryRasterInfo info;
   info.crs = crs;
-  if (!geotransform.is_none()) {
-    const auto values = geotransform.cast<std::vector<double>>();
-    if (values.size() != 6) throw py::value_error("transform needs 6 numbers (GDAL's order)");
-    GeoTransform gt;
-    for (std::size_t k = 0; k < 6; ++k) gt.a[k] = values[k];
-    info.geotransform = gt;
-  }
+  if (!geotransform.is_none()) info.geotransform = transform_of(geotransform);
   if (!nodata.is_none()) info.nodata = nodata.cast<double>();
   StrokeColumns columns;
   run_from_python(hooks, [&](const ProgressFn& progress, std::ostream& err) {

@@ -95,14 +95,34 @@ def _transform_numbers(transform):
     return tuple(float(v) for v in transform)
 
 
+def _north_up(array, numbers):
+    """A grid whose rows run from the south (a positive row step: netCDF's and xarray's order
+    often) or whose columns run from the east, as the same grid from the north-west: flipped, a
+    copy, with its transform's numbers to match."""
+    import numpy as np
+
+    if numbers is None or len(numbers) != 6 or array.ndim != 2 or numbers[2] or numbers[4]:
+        return array, numbers
+    x0, dx, _, y0, _, dy = numbers
+    rows, cols = array.shape
+    if dy > 0:
+        array, y0, dy = array[::-1], y0 + rows * dy, -dy
+    if dx < 0:
+        array, x0, dx = array[:, ::-1], x0 + cols * dx, -dx
+    if (x0, dx, y0, dy) == (numbers[0], numbers[1], numbers[3], numbers[5]):
+        return array, numbers
+    return np.ascontiguousarray(array), (x0, dx, 0.0, y0, 0.0, dy)
+
+
 def sketch(heights, transform=None, nodata=None, crs=None, *, progress=None, **options):
     heights_array, nodata = _heights_array(heights, nodata)
+    heights_array, numbers = _north_up(heights_array, _transform_numbers(transform))
     for key in options:
         if key in _FILE_OPTIONS:
             raise ValueError(f"sketch() neither reads nor writes files: {key} is an option of "
                              "silhouettes(), which does")
     crs_text = "" if crs is None else crs.to_wkt() if hasattr(crs, "to_wkt") else str(crs)
-    native = _native.sketch(heights_array, _transform_numbers(transform), crs_text,
+    native = _native.sketch(heights_array, numbers, crs_text,
                             None if nodata is None else float(nodata),
                             _options.to_arguments(options), _options.hooks(progress))
     return Strokes(native)
@@ -110,13 +130,14 @@ def sketch(heights, transform=None, nodata=None, crs=None, *, progress=None, **o
 
 sketch.__doc__ = f"""sketch(heights, transform=None, nodata=None, crs=None, *, progress=None, **options)
 
-The silhouettes of a DEM held as a 2-D array (rows from the north, heights in metres), returned
+The silhouettes of a DEM held as a 2-D array (heights in metres), returned
 as Strokes: coordinates and M values as numpy arrays, attributes as columns, and
 to_geodataframe(). The same recipe and options as silhouettes(), on the array in place.
 
     heights: a 2-D array of any numeric type (a masked array's mask is nodata; NaN is nodata)
     transform: GDAL's six numbers or an affine.Affine (rasterio's ds.transform); None for a grid
-        without georeferencing (then give cell_size)
+        without georeferencing (then give cell_size). Rows from the south (a positive row step,
+        netCDF's order) or columns from the east are read as a flipped copy
     nodata: the value that marks no data, if any
     crs: the CRS, as WKT, "EPSG:N" or an object with to_wkt() (rasterio's, pyproj's)
 

@@ -305,6 +305,35 @@ TEST_CASE("an RGB image is refused before the run, in the dialog's check", "[plu
   CHECK(run.error.contains("colour channel"));
 }
 
+TEST_CASE("a raster whose georeferencing places no cell is refused for it",
+          "[plugin][robustness]") {
+  // QGIS blamed the cell sizes ("got nan x 10", "got 10 x 0") of rasters whose corners are not a
+  // number or lie so far out that the extent's height rounds to nothing.
+  QTemporaryDir dir;
+  const double nanOrigin[6] = {std::nan(""), 10, 0, 4000000, 0, -10};
+  const double farOrigin[6] = {500000, 10, 0, 1e300, 0, -10};
+  const struct {
+    const char* name;
+    const double* geotransform;
+    const char* message;
+  } cases[] = {{"nan_origin.tif", nanOrigin, "not a finite number"},
+               {"far_origin.tif", farOrigin, "too far for coordinates"}};
+  for (const auto& c : cases) {
+    const QString path = dir.filePath(c.name);
+    test::write_tiff(path.toStdString(), 40, 40, 1, test::hill, c.geotransform, 32616);
+    std::unique_ptr<QgsProcessingAlgorithm> alg(algorithm()->create());
+    QgsProcessingContext context;
+    QString message;
+    const QVariantMap parameters = {{"INPUT", path},
+                                    {"FACTUAL", dir.filePath("f.gpkg")},
+                                    {"FORMULATED", dir.filePath("m.gpkg")}};
+    CHECK_FALSE(alg->checkParameterValues(parameters, context, &message));
+    CAPTURE(message.toStdString());
+    CHECK(message.contains(c.message));
+    CHECK(message.contains("gdal_edit.py -a_ullr"));
+  }
+}
+
 TEST_CASE("reading a raster without a valid cell prints no GDAL errors", "[plugin]") {
   // GDAL printed "no valid pixels found in sampling" for each of our statistics calls, on top of
   // the one QGIS prints as it loads such a layer; the run's warning says what is wrong.

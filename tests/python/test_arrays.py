@@ -205,3 +205,47 @@ def test_notes_on_an_array_name_its_keywords_not_gdal_tools(caplog):
     assert "every height of the array is nodata" in said and "--band" not in said
     _, said = told(heights, None, None, None, cell_size=75)
     assert "no transform" in said and "crs=" in said
+
+
+def test_grids_from_the_south_or_east_are_read_flipped():
+    # netCDF and xarray often hold rows from the south (a positive row step): the same ground,
+    # so the same strokes as the grid from the north, point for point.
+    heights, transform, nodata, crs = read_dem(SAMPLE)
+    rows, cols = heights.shape
+    x0, dx, _, y0, _, dy = transform
+    north_up = terrain_sketch.sketch(heights, transform, nodata, crs)
+    views = {
+        "rows from the south": (heights[::-1], (x0, dx, 0, y0 + rows * dy, 0, -dy)),
+        "columns from the east": (heights[:, ::-1], (x0 + cols * dx, -dx, 0, y0, 0, dy)),
+        "both": (heights[::-1, ::-1], (x0 + cols * dx, -dx, 0, y0 + rows * dy, 0, -dy)),
+    }
+    for name, (view, numbers) in views.items():
+        flipped = terrain_sketch.sketch(view, numbers, nodata, crs)
+        assert len(flipped) == len(north_up) > 0, name
+        np.testing.assert_array_equal(flipped.x, north_up.x, err_msg=name)
+        np.testing.assert_array_equal(flipped.y, north_up.y, err_msg=name)
+
+
+def test_a_transform_that_places_no_cell_is_refused():
+    heights, transform, nodata, crs = read_dem(SAMPLE)
+    x0, dx, _, y0, _, dy = transform
+    # Not finite: a run drew nothing and blamed the chains for being short.
+    for bad in (np.nan, np.inf):
+        with pytest.raises(ValueError, match="must be finite"):
+            terrain_sketch.sketch(heights, (bad, dx, 0, y0, 0, dy), nodata, crs)
+    with pytest.raises(ValueError, match="rotated or sheared"):
+        terrain_sketch.sketch(heights, (x0, dx, 5, y0, 5, dy), nodata, crs)
+    with pytest.raises(ValueError, match="no width or height"):
+        terrain_sketch.sketch(heights, (x0, 0, 0, y0, 0, dy), nodata, crs)
+    # So far out that doubles cannot tell the cells apart: strokes collapsed onto a few points.
+    for far in ((1e308, dx, 0, y0, 0, dy), (x0, 1e-300, 0, y0, 0, -1e-300)):
+        with pytest.raises(terrain_sketch.Error, match="too far for coordinates") as refused:
+            terrain_sketch.sketch(heights, far, nodata, crs)
+        assert "transform=" in str(refused.value) and "gdal_edit" not in str(refused.value)
+    # Cells so large that a corner is beyond any number.
+    with pytest.raises(terrain_sketch.Error, match="not a finite number"):
+        terrain_sketch.sketch(heights, (x0, 1e306, 0, y0, 0, -1e306), nodata, crs)
+    # A geographic array is told of the UTM zone, not of gdalwarp.
+    with pytest.raises(terrain_sketch.Error, match="EPSG:32616") as refused:
+        terrain_sketch.sketch(heights, (-87.0, 0.001, 0, 36.3, 0, -0.001), nodata, "EPSG:4326")
+    assert "gdalwarp" not in str(refused.value)
