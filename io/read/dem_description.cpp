@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <sstream>
 
 #include "io/read/dem_notes.h"
 #include "io/read/gdal_util.h"
@@ -29,9 +28,9 @@ void check_band(GDALDataset& dataset, const std::string& path, int band) {
 
 // GDAL's six numbers, for a message.
 std::string geotransform_text(const double* gt) {
-  std::ostringstream text;
-  for (int k = 0; k < 6; ++k) text << (k ? ", " : "") << gt[k];
-  return text.str();
+  std::string text;
+  for (int k = 0; k < 6; ++k) text += (k ? ", " : "") + number_text(gt[k]);
+  return text;
 }
 
 // The geotransform of a north-up DEM, or of square cells of the given size for a raster without
