@@ -60,6 +60,12 @@ TEST_CASE("orientation refuses empty grids, bad cell sizes and huge sizes", "[or
   CHECK_THROWS_AS(make_frame(3, 5, 0, 10, 90), Error);
   CHECK_THROWS_AS(make_frame(3, 5, 10, std::nan(""), 90), Error);
   CHECK_THROWS_AS(make_frame(3, 5, -1, 10, 90), Error);
+  // Cells beyond any terrain's, whose squares leave the doubles' range; the bounds themselves
+  // pass.
+  for (const double cell : {1e-300, 1e-13, 1e13, 1e300})
+    CHECK_THROWS_WITH(make_frame(3, 5, cell, 10, 90), Catch::Contains("beyond any terrain's"));
+  CHECK_THROWS_WITH(make_frame(3, 5, 10, 1e-20, 45), Catch::Contains("beyond any terrain's"));
+  CHECK_NOTHROW(make_frame(3, 5, 1e-12, 1e12, 90));
   CHECK_THROWS_AS(make_frame(std::size_t{1} << 32, 5, 10, 10, 90), Error);
   CHECK_THROWS_AS(checked_cell_count(std::size_t{1} << 31, std::size_t{1} << 31), Error);
 }

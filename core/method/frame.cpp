@@ -11,12 +11,21 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// No terrain has cells finer than a picometre or coarser than a billion kilometres. Beyond, the
+// products and squares of cell sizes leave the doubles' range: with cells of 1e-300 a panorama's
+// observer at the DEM's centre was "outside the DEM".
+constexpr double kLeastCell = 1e-12, kMostCell = 1e12;
+
 void check_dem(std::size_t rows, std::size_t cols, double dx, double dy) {
   if (rows == 0 || cols == 0) throw Error("the DEM has no cells");
   checked_cell_count(rows, cols);
-  if (!std::isfinite(dx) || !std::isfinite(dy) || dx <= 0.0 || dy <= 0.0) {
-    throw Error("cell sizes must be finite and positive, got " + number_text(dx) + " x " +
-                number_text(dy));
+  const std::string cells = number_text(dx) + " x " + number_text(dy);
+  if (!std::isfinite(dx) || !std::isfinite(dy) || dx <= 0.0 || dy <= 0.0)
+    throw Error("cell sizes must be finite and positive, got " + cells);
+  if (dx < kLeastCell || dy < kLeastCell || dx > kMostCell || dy > kMostCell) {
+    throw Error("cells of " + cells + " are beyond any terrain's (from " + number_text(kLeastCell) +
+                " to " + number_text(kMostCell) +
+                " map units): the georeferencing or the cell size given is wrong");
   }
 }
 
