@@ -55,6 +55,11 @@ std::string note_text(const io::DemNote& note, DemOrigin origin) {
       return "heights are the band's values x " + number(0) + " + " + number(1) +
              ", its scale and offset";
     case io::DemNoteCode::assumed_cell_size:
+      if (note.numbers.size() > 1 && note.numbers[1] > 0)
+        return "its " + number(1) +
+               " ground control points are not used (gdalwarp places it by them): cells taken "
+               "as " +
+               number(0) + " m squares in the grid's own frame";
       return std::string(array ? "no transform" : "no georeferencing") + ": cells taken as " +
              number(0) + " m squares";
     case io::DemNoteCode::cell_size_ignored:

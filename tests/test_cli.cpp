@@ -560,6 +560,34 @@ TEST_CASE("edge-case rasters give valid, possibly empty, outputs", "[cli][robust
       run_cli({"silhouettes", dir / "nogeo.tif", dir / "ng.gpkg", "--cell-size", "10"});
   CHECK(nogeo.code == 0);
   CHECK_THAT(nogeo.err, Catch::Contains("no georeferencing"));
+  // A raster placed by ground control points has georeferencing, only not a geotransform: it was
+  // told it had none, and with a cell size drawn in the grid's own frame without a word.
+  test::write_tiff(dir / "gcp.tif", 40, 40, 1, hill, nullptr, 0);
+  {
+    io::DatasetPtr gcp(static_cast<GDALDataset*>(GDALOpen((dir / "gcp.tif").c_str(), GA_Update)));
+    REQUIRE(gcp);
+    GDAL_GCP points[3];
+    GDALInitGCPs(3, points);
+    const double place[3][4] = {
+        {0, 0, 500000, 4000000}, {40, 0, 500400, 4000000}, {0, 40, 500000, 3999600}};
+    for (int k = 0; k < 3; ++k) {
+      points[k].dfGCPPixel = place[k][0], points[k].dfGCPLine = place[k][1];
+      points[k].dfGCPX = place[k][2], points[k].dfGCPY = place[k][3];
+    }
+    OGRSpatialReference utm;
+    utm.importFromEPSG(32616);
+    REQUIRE(gcp->SetGCPs(3, points, &utm) == CE_None);
+    GDALDeinitGCPs(3, points);
+  }
+  const CliRun by_gcps = run_cli({"silhouettes", dir / "gcp.tif", dir / "gcp.gpkg"});
+  CHECK(by_gcps.code == 1);
+  CHECK_THAT(by_gcps.err, Catch::Contains("is placed by 3 ground control points") &&
+                              Catch::Contains("gdalwarp -dstnodata -9999"));
+  CHECK_FALSE(std::filesystem::exists(dir / "gcp.gpkg"));
+  const CliRun gcps_unused =
+      run_cli({"silhouettes", dir / "gcp.tif", dir / "gcp.gpkg", "--cell-size", "10"});
+  CHECK(gcps_unused.code == 0);
+  CHECK_THAT(gcps_unused.err, Catch::Contains("its 3 ground control points are not used"));
   const CliRun ignored =
       run_cli({"silhouettes", kSample, dir / "ignored.gpkg", "--cell-size", "10"});
   CHECK(ignored.code == 0);

@@ -62,7 +62,14 @@ void read_georeferencing(GDALDataset& dataset, const std::string& path, const De
       dem.notes.push_back({DemNoteCode::cell_size_ignored, {options.cell_size}, {}});
   } else if (options.cell_size > 0.0) {
     dem.geotransform.a = {0.0, options.cell_size, 0.0, 0.0, 0.0, -options.cell_size};
-    dem.notes.push_back({DemNoteCode::assumed_cell_size, {options.cell_size}, {}});
+    const auto control_points = static_cast<double>(dataset.GetGCPCount());
+    dem.notes.push_back({DemNoteCode::assumed_cell_size, {options.cell_size, control_points}, {}});
+  } else if (dataset.GetGCPCount() > 0) {
+    // Told "no georeferencing", a user gave a cell size and got strokes in the grid's own frame.
+    throw Error("'" + path + "' is placed by " + std::to_string(dataset.GetGCPCount()) +
+                " ground control points, not a geotransform: warp it by them first, e.g. "
+                "gdalwarp " +
+                kWarpNoData + " INPUT OUTPUT_warped.tif");
   } else {
     throw Error("'" + path +
                 "' has no georeferencing, so its cell size is unknown; give it with --cell-size");

@@ -41,7 +41,7 @@ enum class DemNoteCode {
   fill_taken,          // numbers: the lowest or highest value, float's fill value, read as nodata
   implausible_relief,  // numbers: the relief, the DEM's width (same unit)
   scaled_values,       // numbers: scale, offset
-  assumed_cell_size,   // no georeferencing; numbers: the cell size given
+  assumed_cell_size,   // no geotransform; numbers: the cell size given, the ground control points
   cell_size_ignored,   // a cell size given for a georeferenced raster; numbers: it
 };
 
