@@ -65,8 +65,9 @@ void print_empty_run(const StageStats& stats, const SilhouetteParams& p, std::os
   if (cause == EmptyRun::no_valid_cell && origin == DemOrigin::array) {
     err << "every height of the array is nodata (NaN, masked, or the value given as nodata=)\n";
   } else if (cause == EmptyRun::no_valid_cell) {
-    err << "every cell of the DEM is nodata (its declared nodata value, or NaN): check --band, "
-           "and the nodata value the file declares (gdal_edit.py -a_nodata or -unsetnodata)\n";
+    err << "every cell of the DEM is nodata (its declared nodata value, NaN, or a height of 1e30 "
+           "or more): check --band, the nodata value the file declares (gdal_edit.py -a_nodata or "
+           "-unsetnodata), and the band's scale\n";
   } else if (cause == EmptyRun::nothing_seen) {
     err << "no cell of the DEM is hidden, and none slopes away from the viewer gently enough to "
            "be seen once tilted (under the base slope of "

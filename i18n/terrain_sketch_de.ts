@@ -535,37 +535,37 @@
         <translation>Eine Ecke des Rasters liegt bei einer Koordinate, die keine endliche Zahl ist: seine Georeferenzierung ist falsch. Setzen Sie seine Ecken, zum Beispiel mit gdal_edit.py -a_ullr WEST NORTH EAST SOUTH.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="171" />
+        <location filename="../plugin/raster_grid.cpp" line="172" />
         <source>The raster's corners lie up to %L1 from the CRS's origin, too far for coordinates to tell a thousandth of its %L2 cells apart: its georeferencing is wrong. Set its corners, for example with gdal_edit.py -a_ullr WEST NORTH EAST SOUTH.</source>
         <translation>Die Ecken des Rasters liegen bis zu %L1 vom Ursprung des KBS entfernt, zu weit, als dass Koordinaten ein Tausendstel seiner Zellen von %L2 unterscheiden könnten: seine Georeferenzierung ist falsch. Setzen Sie seine Ecken, zum Beispiel mit gdal_edit.py -a_ullr WEST NORTH EAST SOUTH.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="177" />
+        <location filename="../plugin/raster_grid.cpp" line="178" />
         <source>The raster is in a geographic CRS (%1): its cell sizes are degrees, not metres like its heights. Reproject it to a metric CRS first, for example with Raster &gt; Projections &gt; Warp (Reproject) to the UTM zone of the area.</source>
         <translation>Das Raster liegt in einem geographischen KBS (%1): seine Zellgrößen sind Grad, nicht Meter wie seine Höhen. Projizieren Sie es zuerst in ein metrisches KBS, zum Beispiel mit Raster &gt; Projektionen &gt; Transformieren (Reprojizieren) in die UTM-Zone des Gebiets.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="182" />
+        <location filename="../plugin/raster_grid.cpp" line="183" />
         <source>The raster has no CRS: cell sizes are taken as metres and the outputs have no CRS.</source>
         <translation>Das Raster hat kein KBS: Zellgrößen werden als Meter angenommen, die Ausgaben haben kein KBS.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="190" />
+        <location filename="../plugin/raster_grid.cpp" line="191" />
         <source>The CRS's unit is %1, not the metre: the heights must be in %1 too, and depths and lengths come out in %1.</source>
         <translation>Die Einheit des KBS ist %1, nicht der Meter: die Höhen müssen ebenfalls in %1 sein, und Tiefen und Längen werden in %1 ausgegeben.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="194" />
+        <location filename="../plugin/raster_grid.cpp" line="195" />
         <source>The raster has %1 bands; band %2 is used.</source>
         <translation>Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="201" />
+        <location filename="../plugin/raster_grid.cpp" line="202" />
         <source>Some heights are %1, float's fill value, which no terrain has: those cells are taken as no data.</source>
         <translation>Einige Höhen betragen %1, der Füllwert für Gleitkommazahlen, den kein Gelände hat: diese Zellen werden als NoData behandelt.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="205" />
+        <location filename="../plugin/raster_grid.cpp" line="206" />
         <source>Heights span %1 over a raster %2 across, more than any terrain: if they are millimetres or centimetres, give the band a scale in the file (gdal_edit.py -scale 0.001).</source>
         <translation>Die Höhen umfassen %1 auf einem Raster von %2 Breite, mehr als jedes Gelände: wenn es Millimeter oder Zentimeter sind, geben Sie dem Kanal in der Datei einen Maßstab (gdal_edit.py -scale 0.001).</translation>
     </message>
@@ -580,32 +580,32 @@
         <translation>Der Datenanbieter des Rasters konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="186" />
+        <location filename="../plugin/raster_grid.cpp" line="187" />
         <source>Mercator projection: map units are not ground metres here; cell sizes are scaled by cos(latitude of the centre) = %L1.</source>
         <translation>Mercator-Projektion: Karteneinheiten sind hier keine Meter im Gelände; die Zellgrößen werden mit cos(Breite der Mitte) = %L1 skaliert.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="196" />
+        <location filename="../plugin/raster_grid.cpp" line="197" />
         <source>Some heights are %1, a common fill value: if those cells have no data, set it as the layer's no data value (Layer Properties &gt; Transparency) or in the file.</source>
         <translation>Einige Höhen betragen %1, ein üblicher Füllwert: wenn diese Zellen keine Daten haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften &gt; Transparenz) oder in der Datei.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="336" />
+        <location filename="../plugin/raster_grid.cpp" line="337" />
         <source>The raster (%1 x %2 cells) is too large for this algorithm, which holds the whole DEM turned to the view: that would take more than half of this machine's memory. The Silhouettes algorithm reads large DEMs strip by strip; or clip or resample the DEM.</source>
         <translation>Das Raster (%1 x %2 Zellen) ist zu groß für diesen Algorithmus, der das ganze DGM zur Blickrichtung gedreht im Speicher hält: das würde mehr als die Hälfte des Arbeitsspeichers dieses Rechners belegen. Der Algorithmus Silhouetten liest große DGM Streifen für Streifen; oder schneiden Sie das DGM zu oder verringern Sie seine Auflösung.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="348" />
+        <location filename="../plugin/raster_grid.cpp" line="349" />
         <source>Not enough memory for a %1 x %2 raster.</source>
         <translation>Nicht genug Speicher für ein Raster von %1 x %2.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="357" />
+        <location filename="../plugin/raster_grid.cpp" line="358" />
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="312" />
+        <location filename="../plugin/raster_grid.cpp" line="313" />
         <source>Could not read rows %1 to %2 of the raster.</source>
         <translation>Die Zeilen %1 bis %2 des Rasters konnten nicht gelesen werden.</translation>
     </message>
@@ -1050,8 +1050,8 @@ Quelle: Beyond Factual to Formulated Silhouettes, Dissertation, Department of Co
     </message>
     <message>
         <location filename="../plugin/silhouettes_algorithm.cpp" line="297" />
-        <source>No strokes: every cell of the DEM is nodata (its declared nodata value, or NaN): check the band, and the no data value the layer or its file declares (Layer Properties &gt; Transparency).</source>
-        <translation>Keine Striche: jede Zelle des DGM ist NoData (sein angegebener NoData-Wert oder NaN): prüfen Sie das Band und den NoData-Wert, den der Layer oder seine Datei angibt (Layereigenschaften &gt; Transparenz).</translation>
+        <source>No strokes: every cell of the DEM is nodata (its declared nodata value, NaN, or a height of 1e30 or more): check the band, the no data value the layer or its file declares (Layer Properties &gt; Transparency), and the band's scale.</source>
+        <translation>Keine Striche: jede Zelle des DGM ist NoData (sein angegebener NoData-Wert, NaN oder eine Höhe von 1e30 oder mehr): prüfen Sie das Band, den NoData-Wert, den der Layer oder seine Datei angibt (Layereigenschaften &gt; Transparenz), und die Skalierung des Bands.</translation>
     </message>
     <message>
         <location filename="../plugin/silhouettes_algorithm.cpp" line="303" />

@@ -10,8 +10,8 @@ import xml.etree.ElementTree as ET
 GERMAN = {
     "No strokes: no cell of the DEM is hidden, and none slopes away from the viewer gently enough to be seen once tilted (under the base slope of %L1 % over the exaggeration of %L2, %L3 %): the DEM is flat, or faces the viewer everywhere. Another view azimuth or a larger base slope brings slopes into sight.":
         "Keine Striche: keine Zelle des DGM ist verdeckt, und keine fällt vom Betrachter so sanft ab, dass sie nach dem Kippen zu sehen ist (unter der Grundneigung von %L1 % geteilt durch die Überhöhung von %L2, %L3 %): das DGM ist flach oder überall dem Betrachter zugewandt. Eine andere Blickrichtung oder eine größere Grundneigung bringt Hänge in Sicht.",
-    "No strokes: every cell of the DEM is nodata (its declared nodata value, or NaN): check the band, and the no data value the layer or its file declares (Layer Properties > Transparency).":
-        "Keine Striche: jede Zelle des DGM ist NoData (sein angegebener NoData-Wert oder NaN): prüfen Sie das Band und den NoData-Wert, den der Layer oder seine Datei angibt (Layereigenschaften > Transparenz).",
+    "No strokes: every cell of the DEM is nodata (its declared nodata value, NaN, or a height of 1e30 or more): check the band, the no data value the layer or its file declares (Layer Properties > Transparency), and the band's scale.":
+        "Keine Striche: jede Zelle des DGM ist NoData (sein angegebener NoData-Wert, NaN oder eine Höhe von 1e30 oder mehr): prüfen Sie das Band, den NoData-Wert, den der Layer oder seine Datei angibt (Layereigenschaften > Transparenz), und die Skalierung des Bands.",
     "%1 keeps no M values, so the drawn strokes' weights (their taper and depth, which the styles draw) are left out; GeoPackage, FlatGeobuf, Shapefile or CSV keep them.":
         "%1 speichert keine M-Werte, daher entfallen die Gewichte der gezeichneten Striche (ihre Verjüngung und Tiefe, die die Stile zeichnen); GeoPackage, FlatGeobuf, Shapefile oder CSV behalten sie.",
     "No strokes: the slope filter removed every candidate cell, and no cell is hidden. Lower cut-offs keep more, or the slope filter adapted to the DEM scales them.":

@@ -294,9 +294,9 @@ void SilhouettesAlgorithm::tellOutcome(const SilhouetteResult& result, const Dem
       return;
     case EmptyRun::no_valid_cell:
       feedback.pushWarning(
-          tr("No strokes: every cell of the DEM is nodata (its declared nodata value, or NaN): "
-             "check the band, and the no data value the layer or its file declares (Layer "
-             "Properties > Transparency)."));
+          tr("No strokes: every cell of the DEM is nodata (its declared nodata value, NaN, or a "
+             "height of 1e30 or more): check the band, the no data value the layer or its file "
+             "declares (Layer Properties > Transparency), and the band's scale."));
       return;
     case EmptyRun::nothing_seen:
       feedback.pushWarning(
