@@ -35,8 +35,8 @@ def _value_text(key, spec, value):
         return ",".join(_value_text(key, spec, part) for part in value)
     if isinstance(value, float):
         return repr(value)
-    if isinstance(value, os.PathLike):
-        return os.fspath(value)
+    if isinstance(value, (os.PathLike, bytes)):
+        return os.fsdecode(value)
     return str(value)
 
 
@@ -59,8 +59,9 @@ def to_arguments(options):
 
 
 def path_argument(path):
-    """A path as an argument that cannot be taken for an option."""
-    text = os.fspath(path)
+    """A path (text, bytes or path-like, as open() takes) as an argument that cannot be taken for an
+    option."""
+    text = os.fsdecode(path)
     return "./" + text if text.startswith("-") else text
 
 

@@ -117,6 +117,17 @@ def test_bad_options_raise_value_error_with_the_command_lines_words(tmp_path, cl
         assert code == 1 and f"terrain-sketch: {raised.value}\n" == err
 
 
+def test_paths_as_text_bytes_or_path_objects_give_one_file(tmp_path):
+    # A path as bytes (os.fsencode's, a directory listing's) raised a TypeError from inside the
+    # package; open() takes all three.
+    for k, output in enumerate((str(tmp_path / "a.gpkg"), os.fsencode(tmp_path / "b.gpkg"),
+                                tmp_path / "c.gpkg")):
+        terrain_sketch.silhouettes(os.fsencode(SAMPLE) if k == 1 else SAMPLE, output,
+                                   preview=os.fsencode(tmp_path / f"p{k}.svg"))
+    sizes = {os.path.getsize(tmp_path / name) for name in ("a.gpkg", "b.gpkg", "c.gpkg")}
+    assert len(sizes) == 1 and os.path.exists(tmp_path / "p1.svg")
+
+
 def test_a_run_that_cannot_be_done_raises_an_os_error(tmp_path):
     with pytest.raises(OSError) as missing:
         terrain_sketch.silhouettes(tmp_path / "none.tif", tmp_path / "out.gpkg")
