@@ -4,6 +4,7 @@
 #include <gdal_utils.h>
 #include <ogrsf_frmts.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
 #include <sys/vfs.h>
@@ -29,6 +30,7 @@
 #include "io/read/gdal_util.h"
 #include "io/write/destination_lock.h"
 #include "io/write/early_writeback.h"
+#include "io/write/output_files.h"
 #include "io/write/path_clashes.h"
 #include "io/write/raster_writer.h"
 
@@ -449,4 +451,53 @@ TEST_CASE("a raster format that changes the values written fails the write, leav
   REQUIRE(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, 50, 40, read.data(), 50, 40, GDT_Byte, 0,
                                          0) == CE_None);
   CHECK(std::equal(read.begin(), read.end(), seen.data()));
+}
+
+TEST_CASE("text written as it is made reaches the file whole, or fails leaving nothing",
+          "[io][robustness]") {
+  ScratchDir dir("streamed_text");
+  // Bytes counted by the stream's put position, across its buffer's drains: what a PDF's
+  // cross-reference table is made of.
+  std::string expected;
+  std::vector<long long> offsets;
+  const auto write = [&](std::ostream& out) {
+    for (int k = 0; k < 20000; ++k) {
+      offsets.push_back(static_cast<long long>(out.tellp()));
+      const std::string line = std::to_string(k) + " 0 obj\n";
+      out << line;
+      expected += line;
+    }
+  };
+  io::write_text_file(dir / "whole.txt", write);
+  const std::string written = slurp(dir / "whole.txt");
+  REQUIRE(written == expected);
+  for (std::size_t k = 0; k < offsets.size(); k += 997)
+    CHECK(written.compare(static_cast<std::size_t>(offsets[k]), std::to_string(k).size() + 6,
+                          std::to_string(k) + " 0 obj") == 0);
+  // A file size limit stands in for a full disk: the write past it fails with the reason, and
+  // nothing is left, neither the file nor its staging.
+  const std::string errors = dir / "errors.txt";
+  const pid_t child = fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    const rlimit limit{8 * 1024, 8 * 1024};
+    setrlimit(RLIMIT_FSIZE, &limit);
+    std::signal(SIGXFSZ, SIG_IGN);
+    try {
+      io::write_text_file(dir / "cut.txt", [](std::ostream& out) {
+        for (int k = 0; k < 100000; ++k) out << k << " 0 obj\n";
+      });
+    } catch (const Error& e) {
+      std::ofstream(errors) << e.what();
+      _exit(1);
+    }
+    _exit(0);
+  }
+  int status = 0;
+  REQUIRE(waitpid(child, &status, 0) == child);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 1);
+  CHECK_THAT(slurp(errors), Catch::Contains("cut.txt") && Catch::Contains("File too large"));
+  std::filesystem::remove(errors);
+  CHECK(dir.file_count() == 1);  // whole.txt alone
 }

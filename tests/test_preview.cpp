@@ -121,6 +121,36 @@ GDALDataset* render_pdf(const std::string& pdf, const std::string& stem, int dpi
   return static_cast<GDALDataset*>(GDALOpen((stem + ".png").c_str(), GA_ReadOnly));
 }
 
+// Checks a PDF's structure as a reader that trusts it would read it: startxref names the
+// cross-reference table, each entry the offset of its object, and the content stream's length
+// (an object of its own, written after the stream) where "endstream" follows.
+void check_pdf_structure(const std::string& pdf) {
+  const std::size_t start_xref = pdf.rfind("startxref\n");
+  REQUIRE(start_xref != std::string::npos);
+  const std::size_t xref = std::stoul(pdf.substr(start_xref + 10));
+  REQUIRE(pdf.compare(xref, 5, "xref\n") == 0);
+  std::istringstream table(pdf.substr(xref + 5));
+  std::size_t first = 0, count = 0;
+  table >> first >> count;
+  REQUIRE(count > 1);
+  std::string offset, generation, kind;
+  table >> offset >> generation >> kind;  // the free entry 0
+  for (std::size_t k = 1; k < count; ++k) {
+    table >> offset >> generation >> kind;
+    const std::string head = std::to_string(k) + " 0 obj\n";
+    CAPTURE(k, offset);
+    CHECK(pdf.compare(std::stoul(offset), head.size(), head) == 0);
+  }
+  const std::string length_ref = "/Length ";
+  const std::size_t at = pdf.find(length_ref);
+  REQUIRE(at != std::string::npos);
+  const std::size_t object = std::stoul(pdf.substr(at + length_ref.size()));
+  const std::size_t stream = pdf.find("stream\n", at) + 7;
+  const std::string body = std::to_string(object) + " 0 obj\n";
+  const std::size_t length = std::stoul(pdf.substr(pdf.find("\n" + body) + body.size() + 1));
+  CHECK(pdf.compare(stream + length, 10, "\nendstream") == 0);
+}
+
 }  // namespace
 
 TEST_CASE("the PDF preview is a page of the sketch with a layer per class", "[cli][preview]") {
@@ -134,6 +164,7 @@ TEST_CASE("the PDF preview is a page of the sketch with a layer per class", "[cl
   CHECK_THAT(pdf, Catch::Contains("/Type /OCG /Name (Formulated silhouettes)"));
   // The sample is about as tall as wide in the sketch: an A4 page, portrait, in points.
   CHECK_THAT(pdf, Catch::Contains("/MediaBox [0 0 595.276 841.890]"));
+  check_pdf_structure(pdf);
   GDALDataset* page = render_pdf(dir / "s.pdf", dir / "page", 40);
   REQUIRE(page != nullptr);
   const int w = page->GetRasterXSize(), h = page->GetRasterYSize();

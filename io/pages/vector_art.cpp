@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <locale>
-#include <sstream>
+#include <ostream>
 #include <string>
 
 #include "core/drawn/stroke_outline.h"
@@ -71,12 +71,10 @@ std::string svg_colour(const ClassLook& l, double ink) {
 }
 
 // Numbers as vector formats want them: a point for the decimal, no exponent.
-std::ostringstream number_stream() {
-  std::ostringstream out;
+void format_numbers(std::ostream& out) {
   out.imbue(std::locale::classic());
   out.setf(std::ios::fixed);
   out.precision(3);
-  return out;
 }
 
 }  // namespace
@@ -106,7 +104,7 @@ std::string xml_text(const std::string& text) {
 }
 
 // The labels' layer: grey leaders, names in a sans-serif face.
-void write_svg_labels(std::ostringstream& svg, const SketchPage& page) {
+void write_svg_labels(std::ostream& svg, const SketchPage& page) {
   if (page.labels.empty()) return;
   svg << "<g id=\"labels\" inkscape:label=\"Peaks\" inkscape:groupmode=\"layer\" "
          "font-family=\"sans-serif\" font-size=\""
@@ -157,16 +155,10 @@ PlotterPage plan_plotter_page(const SketchPage& page) {
   return plotter;
 }
 
-void write_svg(const std::string& path, const SketchPage& page, const PlotterPage* plotter) {
-  std::ostringstream svg = number_stream();
-  const char* unit = page.millimetres ? "mm" : "";
-  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
-         "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\""
-      << page.width << unit << "\" height=\"" << page.height << unit << "\" viewBox=\"0 0 "
-      << page.width << " " << page.height << "\">\n";
-  if (!page.description.empty()) svg << "<desc>" << xml_text(page.description) << "</desc>\n";
-  if (!plotter) svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+namespace {
+
+// The page's strokes as SVG, one layer per class.
+void svg_classes(std::ostream& svg, const SketchPage& page, const PlotterPage* plotter) {
   for (std::size_t c = 0; c < 2; ++c) {
     const ClassLook l = look(kClassOrder[c]);
     svg << "<g id=\"" << l.id << "\" inkscape:label=\"" << l.label
@@ -186,47 +178,73 @@ void write_svg(const std::string& path, const SketchPage& page, const PlotterPag
                 });
     svg << "</g>\n";
   }
-  write_svg_labels(svg, page);
-  svg << "</svg>\n";
-  write_text_file(path, svg.str());
+}
+
+}  // namespace
+
+void write_svg(const std::string& path, const SketchPage& page, const PlotterPage* plotter) {
+  write_text_file(path, [&](std::ostream& svg) {
+    format_numbers(svg);
+    const char* unit = page.millimetres ? "mm" : "";
+    svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+           "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\""
+        << page.width << unit << "\" height=\"" << page.height << unit << "\" viewBox=\"0 0 "
+        << page.width << " " << page.height << "\">\n";
+    if (!page.description.empty()) svg << "<desc>" << xml_text(page.description) << "</desc>\n";
+    if (!plotter) svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    svg_classes(svg, page, plotter);
+    write_svg_labels(svg, page);
+    svg << "</svg>\n";
+  });
 }
 
 namespace {
 
-// A PDF's objects, numbered from 1, and its cross-reference table.
-class PdfFile {
+// A PDF written as it is made: its objects numbered from 1 in the order they are begun, their
+// offsets kept for the cross-reference table.
+class PdfWriter {
  public:
-  void add(const std::string& object) { objects_.push_back(object); }
-  std::string text() const {
-    std::string out = "%PDF-1.5\n%\xe2\xe3\xcf\xd3\n";
-    std::vector<std::size_t> offsets;
-    for (std::size_t k = 0; k < objects_.size(); ++k) {
-      offsets.push_back(out.size());
-      out += std::to_string(k + 1) + " 0 obj\n" + objects_[k] + "\nendobj\n";
-    }
-    const std::size_t xref = out.size();
-    out += "xref\n0 " + std::to_string(objects_.size() + 1) + "\n0000000000 65535 f \n";
-    for (std::size_t at : offsets) {
+  explicit PdfWriter(std::ostream& out) : out_(out) { out_ << "%PDF-1.5\n%\xe2\xe3\xcf\xd3\n"; }
+  // Begins the next object, whose body goes to the stream returned until end_object().
+  std::ostream& begin_object() {
+    offsets_.push_back(static_cast<std::size_t>(out_.tellp()));
+    out_ << offsets_.size() << " 0 obj\n";
+    return out_;
+  }
+  void end_object() { out_ << "\nendobj\n"; }
+  void object(const std::string& body) {
+    begin_object() << body;
+    end_object();
+  }
+  // The cross-reference table and the trailer; object 1 is the catalogue.
+  void finish() {
+    const auto xref = static_cast<std::size_t>(out_.tellp());
+    out_ << "xref\n0 " << offsets_.size() + 1 << "\n0000000000 65535 f \n";
+    for (std::size_t at : offsets_) {
       char line[24];
       std::snprintf(line, sizeof line, "%010zu 00000 n \n", at);
-      out += line;
+      out_ << line;
     }
-    out += "trailer\n<< /Size " + std::to_string(objects_.size() + 1) +
-           " /Root 1 0 R >>\nstartxref\n" + std::to_string(xref) + "\n%%EOF\n";
-    return out;
+    out_ << "trailer\n<< /Size " << offsets_.size() + 1 << " /Root 1 0 R >>\nstartxref\n"
+         << xref << "\n%%EOF\n";
   }
 
  private:
-  std::vector<std::string> objects_;
+  std::ostream& out_;
+  std::vector<std::size_t> offsets_;
 };
 
-}  // namespace
+// Points of 1/72 inch, y up: millimetres and pixels (taken as points) turned over.
+struct PdfPlace {
+  double to_pt, height;  // page units to points; the page's height in points
+  double x(const StrokePoint& p) const { return p.x * to_pt; }
+  double y(const StrokePoint& p) const { return height - p.y * to_pt; }
+};
 
-void write_pdf(const std::string& path, const SketchPage& page, const PlotterPage* plotter) {
-  // Points of 1/72 inch, y up: millimetres and pixels (taken as points) turned over.
-  const double to_pt = page.millimetres ? 72.0 / 25.4 : 1.0;
-  const double width = page.width * to_pt, height = page.height * to_pt;
-  std::ostringstream content = number_stream();
+// The page's strokes as a PDF content stream, a marked layer per class.
+void pdf_strokes(std::ostream& content, const SketchPage& page, const PlotterPage* plotter,
+                 const PdfPlace& at) {
   content << "1 J 1 j\n";
   for (std::size_t c = 0; c < 2; ++c) {
     const ClassLook l = look(kClassOrder[c]);
@@ -234,55 +252,74 @@ void write_pdf(const std::string& path, const SketchPage& page, const PlotterPag
             << l.rgb[0] << " " << l.rgb[1] << " " << l.rgb[2] << " RG " << l.rgb[0] << " "
             << l.rgb[1] << " " << l.rgb[2] << " rg\n";
     double current_ink = 1.0;
-    class_paths(
-        page, plotter, c,
-        [&](const std::vector<StrokePoint>& pts, bool closed, double w, double ink) {
-          if (ink !=
-              current_ink) {  // only lighter paths change the colour: others stay as they were
-            const std::array<double, 3> rgb = inked(l, ink);
-            content << rgb[0] << " " << rgb[1] << " " << rgb[2] << " RG " << rgb[0] << " " << rgb[1]
-                    << " " << rgb[2] << " rg\n";
-            current_ink = ink;
-          }
-          for (std::size_t k = 0; k < pts.size(); ++k)
-            content << pts[k].x * to_pt << " " << height - pts[k].y * to_pt
-                    << (k ? " l\n" : " m\n");
-          if (closed) {
-            content << "f\n";
-          } else {
-            content << (plotter ? (page.millimetres ? 0.3 : 1.0) : w) * to_pt << " w S\n";
-          }
-        });
+    class_paths(page, plotter, c,
+                [&](const std::vector<StrokePoint>& pts, bool closed, double w, double ink) {
+                  // Only lighter paths change the colour: the others stay as they were.
+                  if (ink != current_ink) {
+                    const std::array<double, 3> rgb = inked(l, ink);
+                    content << rgb[0] << " " << rgb[1] << " " << rgb[2] << " RG " << rgb[0] << " "
+                            << rgb[1] << " " << rgb[2] << " rg\n";
+                    current_ink = ink;
+                  }
+                  for (std::size_t k = 0; k < pts.size(); ++k)
+                    content << at.x(pts[k]) << " " << at.y(pts[k]) << (k ? " l\n" : " m\n");
+                  if (closed) {
+                    content << "f\n";
+                  } else {
+                    content << (plotter ? (page.millimetres ? 0.3 : 1.0) : w) * at.to_pt
+                            << " w S\n";
+                  }
+                });
     content << "EMC\n";
   }
-  if (!page.labels.empty()) {
-    content << "0.47 0.47 0.47 RG " << page.label_size() / 16 * to_pt << " w\n";
-    for (const PageLabel& l : page.labels) {
-      content << l.from.x * to_pt << " " << height - l.from.y * to_pt << " m " << l.to.x * to_pt
-              << " " << height - l.to.y * to_pt << " l S\n";
-    }
-    content << "0.2 0.2 0.2 rg\n";
-    for (const PageLabel& l : page.labels) {
-      content << "BT /F1 " << page.label_size() * to_pt << " Tf " << l.to.x * to_pt << " "
-              << height - l.to.y * to_pt << " Td (" << pdf_text(l.text) << ") Tj ET\n";
-    }
+}
+
+// A panorama's peaks: grey leaders, then the names in Helvetica (/F1).
+void pdf_labels(std::ostream& content, const SketchPage& page, const PdfPlace& at) {
+  if (page.labels.empty()) return;
+  content << "0.47 0.47 0.47 RG " << page.label_size() / 16 * at.to_pt << " w\n";
+  for (const PageLabel& l : page.labels)
+    content << at.x(l.from) << " " << at.y(l.from) << " m " << at.x(l.to) << " " << at.y(l.to)
+            << " l S\n";
+  content << "0.2 0.2 0.2 rg\n";
+  for (const PageLabel& l : page.labels) {
+    content << "BT /F1 " << page.label_size() * at.to_pt << " Tf " << at.x(l.to) << " "
+            << at.y(l.to) << " Td (" << pdf_text(l.text) << ") Tj ET\n";
   }
-  const std::string stream = content.str();
-  std::ostringstream media = number_stream();
-  media << "[0 0 " << width << " " << height << "]";
-  PdfFile pdf;
-  pdf.add(
-      "<< /Type /Catalog /Pages 2 0 R /OCProperties << /OCGs [5 0 R 6 0 R] /D << /Order "
-      "[5 0 R 6 0 R] >> >> >>");
-  pdf.add("<< /Type /Pages /Kids [3 0 R] /Count 1 >>");
-  pdf.add("<< /Type /Page /Parent 2 0 R /MediaBox " + media.str() +
-          " /Resources << /Properties << /L0 5 0 R /L1 6 0 R >> /Font << /F1 7 0 R >> >> "
-          "/Contents 4 0 R >>");
-  pdf.add("<< /Length " + std::to_string(stream.size()) + " >>\nstream\n" + stream + "\nendstream");
-  pdf.add(std::string("<< /Type /OCG /Name (") + look(kClassOrder[0]).label + ") >>");
-  pdf.add(std::string("<< /Type /OCG /Name (") + look(kClassOrder[1]).label + ") >>");
-  pdf.add("<< /Type /Font /Subtype /Type1 /BaseFont /Helvetica /Encoding /WinAnsiEncoding >>");
-  write_text_file(path, pdf.text());
+}
+
+}  // namespace
+
+void write_pdf(const std::string& path, const SketchPage& page, const PlotterPage* plotter) {
+  const double to_pt = page.millimetres ? 72.0 / 25.4 : 1.0;
+  const PdfPlace at{to_pt, page.height * to_pt};
+  write_text_file(path, [&](std::ostream& out) {
+    format_numbers(out);
+    PdfWriter pdf(out);
+    pdf.object(
+        "<< /Type /Catalog /Pages 2 0 R /OCProperties << /OCGs [5 0 R 6 0 R] /D << /Order "
+        "[5 0 R 6 0 R] >> >> >>");
+    pdf.object("<< /Type /Pages /Kids [3 0 R] /Count 1 >>");
+    pdf.begin_object() << "<< /Type /Page /Parent 2 0 R /MediaBox [0 0 " << page.width * to_pt
+                       << " " << at.height
+                       << "] /Resources << /Properties << /L0 5 0 R /L1 6 0 R >> /Font << /F1 "
+                          "7 0 R >> >> /Contents 4 0 R >>";
+    pdf.end_object();
+    // The content goes straight to the file: its length, known once it is written, is object 8.
+    pdf.begin_object() << "<< /Length 8 0 R >>\nstream\n";
+    const std::streamoff start = out.tellp();
+    pdf_strokes(out, page, plotter, at);
+    pdf_labels(out, page, at);
+    const std::streamoff length = out.tellp() - start;
+    out << "\nendstream";
+    pdf.end_object();
+    pdf.object(std::string("<< /Type /OCG /Name (") + look(kClassOrder[0]).label + ") >>");
+    pdf.object(std::string("<< /Type /OCG /Name (") + look(kClassOrder[1]).label + ") >>");
+    pdf.object("<< /Type /Font /Subtype /Type1 /BaseFont /Helvetica /Encoding /WinAnsiEncoding >>");
+    pdf.begin_object() << length;
+    pdf.end_object();
+    pdf.finish();
+  });
 }
 
 }  // namespace tsk::io

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <optional>
+#include <streambuf>
 #include <system_error>
 #include <vector>
 
@@ -83,17 +84,72 @@ fs::path hidden_beside(const fs::path& destination, const std::string& ending) {
          ("." + destination.filename().string().substr(0, kNameBytes) + ending);
 }
 
-void write_text_file(const fs::path& destination, const std::string& text) {
-  write_atomically(destination, [&](const fs::path& staged) {
-    FILE* file = std::fopen(staged.c_str(), "wb");
-    if (!file) throw Error("cannot write '" + destination.string() + "': " + std::strerror(errno));
-    const bool all = std::fwrite(text.data(), 1, text.size(), file) == text.size();
-    int reason = all ? 0 : errno;
-    if (std::fclose(file) != 0 && reason == 0) reason = errno;
-    if (!all || reason != 0) {
-      throw Error("cannot write '" + destination.string() +
-                  "': " + std::strerror(reason != 0 ? reason : EIO));
+namespace {
+
+// A stream's buffer that goes to an open file a buffer at a time, and remembers the first write
+// that failed (the stream then fails too). Its put position counts the bytes put so far.
+class FileText : public std::streambuf {
+ public:
+  explicit FileText(std::FILE* file) : file_(file) { setp(buffer_, buffer_ + sizeof buffer_); }
+  int failure() const { return failure_; }
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (!drain()) return traits_type::eof();
+    if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
+    *pptr() = traits_type::to_char_type(c);
+    pbump(1);
+    return c;
+  }
+  int sync() override { return drain() ? 0 : -1; }
+  pos_type seekoff(off_type offset, std::ios_base::seekdir way, std::ios_base::openmode) override {
+    if (offset != 0 || way != std::ios_base::cur) return pos_type(off_type(-1));
+    return pos_type(static_cast<off_type>(written_ + static_cast<std::size_t>(pptr() - pbase())));
+  }
+
+ private:
+  bool drain() {
+    const auto held = static_cast<std::size_t>(pptr() - pbase());
+    if (failure_ != 0) return false;
+    if (held > 0 && std::fwrite(pbase(), 1, held, file_) != held) {
+      failure_ = errno != 0 ? errno : EIO;
+      return false;
     }
+    written_ += held;
+    setp(buffer_, buffer_ + sizeof buffer_);
+    return true;
+  }
+  std::FILE* file_;
+  char buffer_[1 << 16];
+  std::size_t written_ = 0;
+  int failure_ = 0;
+};
+
+}  // namespace
+
+void write_text_file(const fs::path& destination, const std::string& text) {
+  write_text_file(destination, [&](std::ostream& out) {
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  });
+}
+
+void write_text_file(const fs::path& destination, const std::function<void(std::ostream&)>& write) {
+  write_atomically(destination, [&](const fs::path& staged) {
+    std::FILE* file = std::fopen(staged.c_str(), "wb");
+    if (!file) throw Error("cannot write '" + destination.string() + "': " + std::strerror(errno));
+    FileText text(file);
+    std::ostream out(&text);
+    try {
+      write(out);
+    } catch (...) {
+      std::fclose(file);
+      throw;
+    }
+    out.flush();
+    int reason = text.failure() != 0 ? text.failure() : out ? 0 : EIO;
+    if (std::fclose(file) != 0 && reason == 0) reason = errno != 0 ? errno : EIO;
+    if (reason != 0)
+      throw Error("cannot write '" + destination.string() + "': " + std::strerror(reason));
   });
 }
 

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <ostream>
 #include <string>
 
 namespace tsk::io {
@@ -24,6 +25,11 @@ void write_atomically(const std::filesystem::path& destination,
 
 // Writes `text` to `destination`, whole or not at all; throws Error with the system's reason.
 void write_text_file(const std::filesystem::path& destination, const std::string& text);
+// The same for text made as it is written: `write` puts it in a stream that goes to the file a
+// buffer at a time, whose tellp() counts the bytes put so far (a page of vector art made whole
+// first took five copies of 365 MB for the 8000^2 defaults' PDF).
+void write_text_file(const std::filesystem::path& destination,
+                     const std::function<void(std::ostream&)>& write);
 
 // The folder a path names a file in ("." for a bare file name).
 std::filesystem::path folder_of(const std::filesystem::path& path);
