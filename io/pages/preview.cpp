@@ -77,9 +77,9 @@ int CPL_STDCALL encoding_progress(double fraction, const char*, void* data) {
   return encoding.stopped ? FALSE : TRUE;
 }
 
-// Draws the page's paths, formulated first so factual strokes stay on top, and the labels'
-// leaders: a picture has no text, so its peaks show as leaders alone.
-void draw_page(Canvas& canvas, const SketchPage& page, const ProgressFn& progress) {
+// Draws the page's paths, `scale` pixels to a page unit, formulated first so factual strokes
+// stay on top, and the labels' leaders: a picture has no text, so its peaks show as leaders alone.
+void draw_page(Canvas& canvas, const SketchPage& page, double scale, const ProgressFn& progress) {
   std::size_t drawn = 0;
   const double total = 2.0 * static_cast<double>(std::max<std::size_t>(1, page.paths.size()));
   for (StrokeClass cls : {StrokeClass::formulated, StrokeClass::factual}) {
@@ -88,30 +88,27 @@ void draw_page(Canvas& canvas, const SketchPage& page, const ProgressFn& progres
       if (++drawn % 256 == 0) tell_progress(progress, 0.8 * static_cast<double>(drawn) / total);
       if (s.cls != cls) continue;
       for (std::size_t k = 1; k < s.points.size(); ++k) {
-        const double radius = 0.25 * (s.widths[k - 1] + s.widths[k]);
-        canvas.line(s.points[k - 1].x, s.points[k - 1].y, s.points[k].x, s.points[k].y, radius,
+        const double radius = 0.25 * (s.widths[k - 1] * scale + s.widths[k] * scale);
+        canvas.line(s.points[k - 1].x * scale, s.points[k - 1].y * scale, s.points[k].x * scale,
+                    s.points[k].y * scale, radius,
                     static_cast<float>(s.ink) * (factual ? 1.f : 0.6f));
       }
     }
   }
-  for (const PageLabel& l : page.labels) canvas.line(l.from.x, l.from.y, l.to.x, l.to.y, 0.5, 0.5f);
+  for (const PageLabel& l : page.labels)
+    canvas.line(l.from.x * scale, l.from.y * scale, l.to.x * scale, l.to.y * scale, 0.5, 0.5f);
   tell_progress(progress, 0.8);
 }
 
-void write_png_preview(const std::string& path, SketchPage page, const ProgressFn& progress) {
-  if (page.millimetres) {
-    const double px = kPixelsPerMm;
-    page.width = std::ceil(page.width * px), page.height = std::ceil(page.height * px);
-    for (PagePath& p : page.paths) {
-      for (StrokePoint& q : p.points) q.x *= px, q.y *= px;
-      for (double& w : p.widths) w *= px;
-    }
-    for (PageLabel& l : page.labels)
-      for (StrokePoint* q : {&l.from, &l.to}) q->x *= px, q->y *= px;
-  }
-  check_png_pixels(page.width, page.height);
-  Canvas canvas(static_cast<int>(page.width), static_cast<int>(page.height));
-  draw_page(canvas, page, progress);
+// The page drawn scaled on a canvas, not copied: a page of a million paths is a gigabyte.
+void write_png_preview(const std::string& path, const SketchPage& page,
+                       const ProgressFn& progress) {
+  const double scale = page.millimetres ? kPixelsPerMm : 1.0;
+  const double pixels_across = page.millimetres ? std::ceil(page.width * scale) : page.width;
+  const double pixels_down = page.millimetres ? std::ceil(page.height * scale) : page.height;
+  check_png_pixels(pixels_across, pixels_down);
+  Canvas canvas(static_cast<int>(pixels_across), static_cast<int>(pixels_down));
+  draw_page(canvas, page, scale, progress);
   GDALAllRegister();
   GdalErrorCapture capture;
   std::vector<GByte> pixels = canvas.pixels();
