@@ -18,6 +18,7 @@ From a shell, with the command line's options:
 import itertools
 import json
 import math
+import numbers
 import os
 import uuid
 
@@ -167,9 +168,10 @@ def local_cluster(workers=None):
 def silhouettes(input, output, client=None, band_profiles=None, *, progress=None, **options):
     """silhouettes(input, output, client=None, band_profiles=None, *, progress=None, **options)
 
-    The silhouettes command on a Dask cluster: `client` (a dask.distributed.Client; None makes
-    local_cluster() for the run), bands of `band_profiles` profiles (None: about four a worker,
-    narrower at both ends), and the options of terrain_sketch.silhouettes() but those that need
+    The silhouettes command on a Dask cluster: `client` (a dask.distributed.Client, or a
+    scheduler's address such as "tcp://scheduler:8786"; None makes local_cluster() for the run),
+    bands of `band_profiles` profiles (a whole number from 1; None: about four a worker, narrower
+    at both ends), and the options of terrain_sketch.silhouettes() but those that need
     the whole DEM on one machine: the filter fixed or adapted to the whole DEM (surveyed once, by
     the workers), not locally, and no files beyond OUTPUT. Drawn strokes are drawn by the bands,
     those near a band's edges by the client (plan-oblique ones all by the client, which reads the
@@ -183,27 +185,41 @@ def silhouettes(input, output, client=None, band_profiles=None, *, progress=None
                 progress)
 
 
+def _checked_band_profiles(band_profiles):
+    """None, or a whole number of profiles from 1 (0 was taken as None, "x" raised a TypeError)."""
+    if band_profiles is None:
+        return None
+    if (isinstance(band_profiles, bool) or not isinstance(band_profiles, numbers.Integral)
+            or band_profiles < 1):
+        raise ValueError("band_profiles must be a whole number of profiles, at least 1 (None: "
+                         f"chosen for the cluster), got {band_profiles!r}")
+    return int(band_profiles)
+
+
 def _run(input_path, output_path, client, band_profiles, arguments, progress):
-    """silhouettes() with the command line's arguments."""
+    """silhouettes() with the command line's arguments; `client` a Client, a scheduler's address,
+    or None."""
     from dask.distributed import Client
 
+    band_profiles = _checked_band_profiles(band_profiles)
     hooks = _options.hooks(progress)
     plan = _native.plan_bands(input_path, output_path, arguments, hooks)
-    cluster = None
+    cluster, own_client = None, client is None or isinstance(client, str)
     if client is None:
         cluster = local_cluster()
         client = Client(cluster)
+    elif isinstance(client, str):
+        client = Client(client)
     try:
         profiles = plan["profiles"]
         workers = len(client.scheduler_info()["workers"])
-        width = band_profiles or _band_width(profiles, workers)
-        if width < 1:
-            raise ValueError(f"band_profiles must be at least 1, got {width}")
+        width = band_profiles if band_profiles is not None else _band_width(profiles, workers)
         bands = _bands(profiles, width, taper=band_profiles is None)
         statistics = _stitch(client, input_path, output_path, arguments, plan, bands, progress)
     finally:
-        if cluster is not None:
+        if own_client:
             client.close()
+        if cluster is not None:
             cluster.close()
     return json.loads(statistics)
 
@@ -298,11 +314,7 @@ def main(argv=None):
             if not band_profiles.isdigit():
                 raise ValueError(f"--band-profiles takes a whole number, not {band_profiles!r}")
             band_profiles = int(band_profiles)
-        client = None
-        if chosen["--scheduler"]:
-            from dask.distributed import Client
-            client = Client(chosen["--scheduler"])
-        stats = _run(rest[0], rest[1], client, band_profiles, rest[2:], None)
+        stats = _run(rest[0], rest[1], chosen["--scheduler"], band_profiles, rest[2:], None)
     except ValueError as error:
         print(f"terrain_sketch.dask: {error}", file=sys.stderr)
         return 2

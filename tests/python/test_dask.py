@@ -252,7 +252,24 @@ def test_options_a_run_in_bands_cannot_take(tmp_path, client):
             terrain_sketch.dask.silhouettes(SAMPLE, out, client, **options)
     with pytest.raises(terrain_sketch.Error, match="no.tif"):
         terrain_sketch.dask.silhouettes(tmp_path / "no.tif", out, client, strokes="exact")
+    # 0 was taken as "chosen for the cluster"; text and fractions raised a TypeError from inside.
+    for width in (0, -1, "x", 2.5, True):
+        with pytest.raises(ValueError, match="band_profiles must be a whole number"):
+            terrain_sketch.dask.silhouettes(SAMPLE, out, client, width, strokes="exact")
     assert not os.listdir(tmp_path)
+
+
+def test_a_scheduler_named_by_its_address(tmp_path, client):
+    # A client's address, as `dask worker` and the shell's --scheduler take it: it raised an
+    # AttributeError.
+    address = client.scheduler.address
+    by_address = terrain_sketch.dask.silhouettes(SAMPLE, tmp_path / "a.gpkg", address, 40,
+                                                 strokes="exact")
+    by_client = terrain_sketch.dask.silhouettes(SAMPLE, tmp_path / "c.gpkg", client, 40,
+                                                strokes="exact")
+    assert by_address == by_client
+    assert rows(tmp_path / "a.gpkg") == rows(tmp_path / "c.gpkg")
+    assert client.status == "running"  # the run closed only the client it made
 
 
 class WorkInFolder(distributed.WorkerPlugin):
