@@ -32,6 +32,10 @@ def _value_text(key, spec, value):
     if isinstance(value, bool):
         raise ValueError(f"{key} takes {spec['value']}, not {value}")
     if isinstance(value, (tuple, list)):
+        # X,Y: its numbers counted (a third one was named as the second's fault).
+        parts = spec["value"].count(",") + 1
+        if parts > 1 and len(value) != parts:
+            raise ValueError(f"{key} takes {spec['value']}, {parts} numbers, not {value!r}")
         return ",".join(_value_text(key, spec, part) for part in value)
     if isinstance(value, float):
         return repr(value)

@@ -145,6 +145,13 @@ def test_a_run_that_cannot_be_done_raises_an_os_error(tmp_path):
     assert os.listdir(tmp_path) == ["dem.tif"]
 
 
+def test_an_observer_of_three_numbers_is_told_it_takes_two(tmp_path):
+    # The parser's words were "--observer needs a number, got '2,3'".
+    with pytest.raises(ValueError, match=r"observer takes X,Y, 2 numbers, not \(1, 2, 3\)"):
+        terrain_sketch.panorama(SAMPLE, tmp_path / "p.gpkg", observer=(1, 2, 3))
+    assert not os.listdir(tmp_path)
+
+
 def test_help_lists_each_commands_own_options():
     assert "azimuth (DEG)" in terrain_sketch.silhouettes.__doc__
     assert "observer" not in terrain_sketch.silhouettes.__doc__
