@@ -242,7 +242,13 @@ TEST_CASE("panorama refuses a view it cannot draw, and writes nothing", "[cli][p
   test::write_tiff(
       holes, 40, 40, 1, [](int, int r, int c) { return r < 20 && c < 20 ? -9999.0f : 100.0f; },
       test::kNorthUp, 32616, -9999);
+  // A DEM of one cell reaches less than a sample from any observer on it: a longer
+  // --max-distance, which the refusal advised, cannot help.
+  const std::string one_cell = dir / "one_cell.tif";
+  test::write_tiff(
+      one_cell, 1, 1, 1, [](int, int, int) { return 100.0f; }, test::kNorthUp, 32616);
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{one_cell, "--observer", "500005,3999995"}, "the DEM reaches only 7.07"},
       {{kSample, "--observer", "0,0"}, "outside the DEM"},
       {{holes, "--observer", "500050,3999950"}, "without data"},
       {{kSample, "--observer", kSummit, "--max-distance", "0"}, "must be a positive distance"},
@@ -279,7 +285,7 @@ TEST_CASE("panorama refuses a view it cannot draw, and writes nothing", "[cli][p
   const CliRun shp = run_cli({"panorama", kSample, dir / "out.shp", "--observer", kSummit});
   CHECK(shp.code == 1);
   CHECK_THAT(shp.err, Catch::Contains(".gpkg"));
-  CHECK(dir.file_count() == 1);  // holes.tif alone
+  CHECK(dir.file_count() == 2);  // holes.tif and one_cell.tif alone
 }
 
 namespace {

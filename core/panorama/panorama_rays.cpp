@@ -189,8 +189,13 @@ PanoramaRays plan_rays(const HeightGrid& dem, const GeoTransform& gt, const Pano
   const double farthest = farthest_corner(dem, gt, view.observer_x, view.observer_y);
   rays.max_distance = view.max_distance > 0.0 ? std::min(view.max_distance, farthest) : farthest;
   const double reach = rays.max_distance / rays.step;  // the range in steps
-  require(reach >= 1.0, "the range of " + number(rays.max_distance) +
-                            " map units is shorter than a cell: give a longer --max-distance");
+  // A longer range helps only where the DEM reaches farther (a one-cell DEM reaches half a cell).
+  require(reach >= 1.0, rays.max_distance < farthest
+                            ? "the range of " + number(rays.max_distance) +
+                                  " map units is shorter than a cell: give a longer --max-distance"
+                            : "the DEM reaches only " + number(farthest) +
+                                  " map units from the observer, less than a sample: a panorama "
+                                  "needs more of the DEM around it");
   rays.field = field_of_view(view.azimuth_from, view.azimuth_to);
   // Neighbouring rays at most a step apart at the far end (docs/PANORAMA.md 1.1).
   const double needed = std::ceil(rays.field.width_deg * kRadPerDeg * reach);
