@@ -45,7 +45,8 @@ std::string note_text(const io::DemNote& note, DemOrigin origin) {
                     : "declare it as nodata (gdal_edit.py -a_nodata " + number(0) + " INPUT)");
     case io::DemNoteCode::fill_taken:
       return "some heights are " + number(0) +
-             ", float's fill value, which no terrain has: those cells are taken as nodata";
+             ", a fill value (of magnitude 1e30 or more, as float's) that no terrain has: those "
+             "cells are taken as nodata";
     case io::DemNoteCode::implausible_relief:
       return "heights span " + number(0) + " over a DEM " + number(1) +
              " across, more than any terrain: if they are millimetres or centimetres, " +

@@ -560,11 +560,6 @@
         <translation>Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.</translation>
     </message>
     <message>
-        <location filename="../plugin/raster_grid.cpp" line="202" />
-        <source>Some heights are %1, float's fill value, which no terrain has: those cells are taken as no data.</source>
-        <translation>Einige Höhen betragen %1, der Füllwert für Gleitkommazahlen, den kein Gelände hat: diese Zellen werden als NoData behandelt.</translation>
-    </message>
-    <message>
         <location filename="../plugin/raster_grid.cpp" line="206" />
         <source>Heights span %1 over a raster %2 across, more than any terrain: if they are millimetres or centimetres, give the band a scale in the file (gdal_edit.py -scale 0.001).</source>
         <translation>Die Höhen umfassen %1 auf einem Raster von %2 Breite, mehr als jedes Gelände: wenn es Millimeter oder Zentimeter sind, geben Sie dem Kanal in der Datei einen Maßstab (gdal_edit.py -scale 0.001).</translation>
@@ -588,6 +583,11 @@
         <location filename="../plugin/raster_grid.cpp" line="197" />
         <source>Some heights are %1, a common fill value: if those cells have no data, set it as the layer's no data value (Layer Properties &gt; Transparency) or in the file.</source>
         <translation>Einige Höhen betragen %1, ein üblicher Füllwert: wenn diese Zellen keine Daten haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften &gt; Transparenz) oder in der Datei.</translation>
+    </message>
+    <message>
+        <location filename="../plugin/raster_grid.cpp" line="202" />
+        <source>Some heights are %1, a fill value (of magnitude 1e30 or more, as float's) that no terrain has: those cells are taken as no data.</source>
+        <translation>Einige Höhen betragen %1, ein Füllwert (vom Betrag 1e30 oder mehr, wie der für Gleitkommazahlen), den kein Gelände hat: diese Zellen werden als NoData behandelt.</translation>
     </message>
     <message>
         <location filename="../plugin/raster_grid.cpp" line="337" />

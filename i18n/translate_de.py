@@ -94,10 +94,10 @@ GERMAN = {
         "Einige Höhen betragen %1, ein üblicher Füllwert: wenn diese Zellen keine Daten "
         "haben, setzen Sie ihn als NoData-Wert des Layers (Layereigenschaften > Transparenz) "
         "oder in der Datei.",
-    "Some heights are %1, float's fill value, which no terrain has: those cells are taken as no "
-    "data.":
-        "Einige Höhen betragen %1, der Füllwert für Gleitkommazahlen, den kein Gelände hat: diese "
-        "Zellen werden als NoData behandelt.",
+    "Some heights are %1, a fill value (of magnitude 1e30 or more, as float's) that no terrain "
+    "has: those cells are taken as no data.":
+        "Einige Höhen betragen %1, ein Füllwert (vom Betrag 1e30 oder mehr, wie der für "
+        "Gleitkommazahlen), den kein Gelände hat: diese Zellen werden als NoData behandelt.",
     "The raster has %1 bands; band %2 is used.": "Das Raster hat %1 Kanäle; Kanal %2 wird verwendet.",
     "Could not write %1 whole: %2": "%1 konnte nicht vollständig geschrieben werden: %2",
     "Could not write %1 whole: the file ends cut short. Is the disk full?":

@@ -199,8 +199,8 @@ QString RasterGrid::noteText(const io::DemNote& note) {
                 "file.")
           .arg(number(0));
     case io::DemNoteCode::fill_taken:
-      return tr("Some heights are %1, float's fill value, which no terrain has: those cells are "
-                "taken as no data.")
+      return tr("Some heights are %1, a fill value (of magnitude 1e30 or more, as float's) that "
+                "no terrain has: those cells are taken as no data.")
           .arg(number(0));
     case io::DemNoteCode::implausible_relief:
       return tr("Heights span %1 over a raster %2 across, more than any terrain: if they are "
