@@ -21,7 +21,7 @@ std::string note_text(const io::DemNote& note, DemOrigin origin) {
                              : "a corner of it lies at a coordinate that is not a finite number") +
              ": its georeferencing is wrong" +
              (array ? "; give the transform in the CRS's units (transform=)"
-                    : "; set its corners, e.g. gdal_edit.py -a_ullr WEST NORTH EAST SOUTH INPUT");
+                    : std::string("; set its corners, e.g. ") + io::kSetCorners);
     case io::DemNoteCode::colour_image:
       return "band " + number(1) + " of its " + number(0) +
              " is a colour channel (red, green, blue or alpha) of an image, not heights: give a "

@@ -42,8 +42,7 @@ void read_georeferencing(GDALDataset& dataset, const std::string& path, const De
   if (dataset.GetGeoTransform(gt) == CE_None) {
     if (!std::all_of(gt, gt + 6, [](double v) { return std::isfinite(v); })) {
       throw Error("'" + path + "' has a geotransform that is not all finite numbers (" +
-                  geotransform_text(gt) +
-                  "); set its corners, e.g. gdal_edit.py -a_ullr WEST NORTH EAST SOUTH INPUT");
+                  geotransform_text(gt) + "); set its corners, e.g. " + kSetCorners);
     }
     if (gt[2] != 0.0 || gt[4] != 0.0) {
       throw Error("'" + path +
@@ -60,13 +59,17 @@ void read_georeferencing(GDALDataset& dataset, const std::string& path, const De
     std::copy(gt, gt + 6, dem.geotransform.a.begin());
     if (options.cell_size > 0.0)
       dem.notes.push_back({DemNoteCode::cell_size_ignored, {options.cell_size}, {}});
-  } else if (options.cell_size > 0.0) {
+    return;
+  }
+  const int control_points = dataset.GetGCPCount();
+  if (options.cell_size > 0.0) {
     dem.geotransform.a = {0.0, options.cell_size, 0.0, 0.0, 0.0, -options.cell_size};
-    const auto control_points = static_cast<double>(dataset.GetGCPCount());
-    dem.notes.push_back({DemNoteCode::assumed_cell_size, {options.cell_size, control_points}, {}});
-  } else if (dataset.GetGCPCount() > 0) {
+    dem.notes.push_back({DemNoteCode::assumed_cell_size,
+                         {options.cell_size, static_cast<double>(control_points)},
+                         {}});
+  } else if (control_points > 0) {
     // Told "no georeferencing", a user gave a cell size and got strokes in the grid's own frame.
-    throw Error("'" + path + "' is placed by " + std::to_string(dataset.GetGCPCount()) +
+    throw Error("'" + path + "' is placed by " + std::to_string(control_points) +
                 " ground control points, not a geotransform: warp it by them first, e.g. "
                 "gdalwarp " +
                 kWarpNoData + " INPUT OUTPUT_warped.tif");

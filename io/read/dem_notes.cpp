@@ -53,13 +53,12 @@ double farthest_coordinate(const DemFacts& f) {
   return farthest;
 }
 
-// True when the DEM's coordinates, as doubles, cannot tell a thousandth of a cell apart (sub-cell
-// places and smoothing move points by less than a cell): a corner not finite, or cells too small
-// for how far from the origin they lie (doubles at x are about x * 2^-52 apart). A DEM at 1e308
-// drew its strokes collapsed onto a few coordinates, without a word.
-bool too_far_for_cells(const DemFacts& f) {
-  const double farthest = farthest_coordinate(f);
-  return !std::isfinite(farthest) || farthest * DBL_EPSILON > 1e-3 * std::min(f.cell_x, f.cell_y);
+// True when coordinates as far out as `farthest` cannot tell a thousandth of a `cell` apart as
+// doubles (sub-cell places and smoothing move points by less than a cell): a corner not finite,
+// or cells too small for how far from the origin they lie (doubles at x are about x * 2^-52
+// apart). A DEM at 1e308 drew its strokes collapsed onto a few coordinates, without a word.
+bool too_far_for_cells(double farthest, double cell) {
+  return !std::isfinite(farthest) || farthest * DBL_EPSILON > 1e-3 * cell;
 }
 
 // Notes on the band's values: a fill value among them, or a relief no terrain has.
@@ -87,10 +86,10 @@ void assess_values(const DemFacts& f, double ground_scale, std::vector<DemNote>&
 
 DemAssessment assess_dem(const DemFacts& f) {
   DemAssessment a;
-  if (too_far_for_cells(f)) {
+  const double farthest = farthest_coordinate(f), cell = std::min(f.cell_x, f.cell_y);
+  if (too_far_for_cells(farthest, cell)) {
     a.refused = true;
-    a.notes.push_back(
-        {DemNoteCode::too_far, {farthest_coordinate(f), std::min(f.cell_x, f.cell_y)}, {}});
+    a.notes.push_back({DemNoteCode::too_far, {farthest, cell}, {}});
     return a;
   }
   if (f.has_crs && f.geographic) {

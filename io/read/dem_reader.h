@@ -46,6 +46,8 @@ struct Dem {
 // Warped, a DEM gains cells around its own; without a nodata value they would be 0, and their
 // edge a cliff in every view: the gdalwarp hints pass this.
 inline constexpr char kWarpNoData[] = "-dstnodata -9999";
+// The command that places a DEM whose georeferencing is wrong: its corners set anew.
+inline constexpr char kSetCorners[] = "gdal_edit.py -a_ullr WEST NORTH EAST SOUTH INPUT";
 
 // A DEM the method cannot take as it is (a geographic CRS, whose cell sizes are degrees): the
 // note says why, for the front end to word.

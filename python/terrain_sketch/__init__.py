@@ -104,13 +104,13 @@ def _north_up(array, numbers):
     if numbers is None or len(numbers) != 6 or array.ndim != 2 or numbers[2] or numbers[4]:
         return array, numbers
     x0, dx, _, y0, _, dy = numbers
+    if not (dy > 0 or dx < 0):
+        return array, numbers
     rows, cols = array.shape
     if dy > 0:
         array, y0, dy = array[::-1], y0 + rows * dy, -dy
     if dx < 0:
         array, x0, dx = array[:, ::-1], x0 + cols * dx, -dx
-    if (x0, dx, y0, dy) == (numbers[0], numbers[1], numbers[3], numbers[5]):
-        return array, numbers
     return np.ascontiguousarray(array), (x0, dx, 0.0, y0, 0.0, dy)
 
 
