@@ -56,8 +56,13 @@ DatasetPtr wrap_memory_raster(const MemoryBand& band, const MemoryRasterInfo& in
   }
   if (!info.crs.empty()) {
     OGRSpatialReference srs;
-    if (srs.SetFromUserInput(info.crs.c_str()) != OGRERR_NONE)
-      throw Error("the CRS '" + info.crs + "' is none GDAL knows: " + capture.message());
+    if (srs.SetFromUserInput(info.crs.c_str()) != OGRERR_NONE) {
+      // Text that is no form of CRS at all fails without a word from GDAL.
+      const std::string why = capture.first_failure().empty()
+                                  ? "give it as WKT, \"EPSG:N\" or a PROJ string"
+                                  : capture.first_failure();
+      throw Error("the CRS '" + info.crs + "' is none GDAL knows: " + why);
+    }
     dataset->SetSpatialRef(&srs);
   }
   if (info.nodata) dataset->GetRasterBand(1)->SetNoDataValue(*info.nodata);

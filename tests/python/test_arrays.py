@@ -131,8 +131,11 @@ def test_bad_arrays_and_options():
         terrain_sketch.sketch(heights, transform[:4], nodata, crs)
     with pytest.raises(terrain_sketch.Error, match="geographic"):
         terrain_sketch.sketch(heights, (-97.0, 0.001, 0, 33.0, 0, -0.001), nodata, "EPSG:4326")
-    with pytest.raises(terrain_sketch.Error, match="CRS 'no such CRS'"):
+    # Text in no form of CRS gets no reason from GDAL: the message says the forms taken.
+    with pytest.raises(terrain_sketch.Error, match="CRS 'no such CRS'.*give it as WKT"):
         terrain_sketch.sketch(heights, transform, nodata, "no such CRS")
+    with pytest.raises(terrain_sketch.Error, match="CRS 'EPSG:999999'.*crs not found"):
+        terrain_sketch.sketch(heights, transform, nodata, "EPSG:999999")
 
 
 def test_a_grid_without_georeferencing_takes_a_cell_size():
