@@ -203,7 +203,8 @@ const std::vector<OptionSpec> kOptionTable = {
     {"--drawn-for", "N", kStrokes,
      "drawn: for a map at 1:N: sized on paper, too little relief dropped, a DEM finer than "
      "0.4 mm a cell averaged to it (default: none)",
-     kStroked, TSK_SET(params.strokes.scale, parse_number)},
+     // Not classify's: its raster stays on the DEM's grid, which the scale would average.
+     kSilhouettes, TSK_SET(params.strokes.scale, parse_number)},
     {"--placement", "P", kStrokes,
      "far (default) or near_and_far: which end of an f-set zone to keep", kChained,
      [](Options& o, const std::string&, const std::string& v) {
@@ -324,7 +325,8 @@ const std::vector<CommandSpec> kCommandTable = {
      "hidden parts removed, every --every N cells (OUTPUT: vector)"},
     {"classify", kClassify,
      "per-cell stage of the method (visible, hidden, occluding, c-set, f-set,\n"
-     "t-set) on the DEM grid, with a colour table (OUTPUT: GeoTIFF)"},
+     "t-set) on the DEM grid, with a colour table (OUTPUT: GeoTIFF); the stroke\n"
+     "options change only --stats-json's g-set and stroke counts"},
     {"row-slope", kRowSlope,
      "|slope across the line of sight| in percent on the DEM grid (OUTPUT: GeoTIFF)"},
     {"pstrokes", kPStrokes,

@@ -1129,6 +1129,8 @@ TEST_CASE("each command takes its own options, and refuses the others by name", 
       {{"--ve", "3"}, "row-slope", "r.tif", "row-slope does not take --ve"},
       {{"--source", kSample}, "classify", "c.tif", "classify does not take --source"},
       {{"--page-scale", "5000"}, "panorama", "o.gpkg", "panorama does not take --page-scale"},
+      // A scale would average the DEM for the strokes that classify counts, not for its raster.
+      {{"--drawn-for", "1000000"}, "classify", "c.tif", "classify does not take --drawn-for"},
   };
   for (const Refused& r : cases) {
     std::vector<std::string> args = {r.command, kSample, dir / r.output};
