@@ -28,7 +28,7 @@ __all__ = ["silhouettes", "panorama", "classify", "row_slope", "drape", "pstroke
            "filter_plot", "sketch", "Strokes", "Error", "Cancelled"]
 
 _RETURNS = """
-Returns the run's stage statistics as a dict (as --stats-json writes them), or an empty dict for
+Returns the run's stage statistics as a dict (as stats_json= writes them), or an empty dict for
 a command that counts none. Raises ValueError on bad options, terrain_sketch.Error (an OSError)
 when the run cannot be done, KeyboardInterrupt on Ctrl-C and terrain_sketch.Cancelled when
 progress returns False; nothing is written then.

@@ -7,6 +7,7 @@ checked by the command line's parser, so a bad one raises its message.
 
 import logging
 import os
+import re
 import threading
 
 from . import _native
@@ -87,6 +88,19 @@ def hooks(progress):
     return _native.RunHooks(progress, log_line, main)
 
 
+def in_keywords(text):
+    """Help text of the command line's, its options named as keywords: "--every N cells" reads
+    "every=N cells", "--adapt-window cells" reads "adapt_window cells"."""
+    def named(match):
+        spec = _option_named(keyword(match.group(1)))
+        if spec is None:
+            return match.group(0)
+        if match.group(2) and match.group(2).strip() == spec["value"]:
+            return f"{keyword(spec['name'])}={spec['value']}"
+        return keyword(spec["name"]) + (match.group(2) or "")
+    return re.sub(r"(--[a-z][a-z-]*)( [A-Z][A-Z.,]*\b)?", named, text)
+
+
 def options_help(command, leave_out=()):
     """The options that `command` takes, as a docstring's section."""
     lines = []
@@ -95,11 +109,11 @@ def options_help(command, leave_out=()):
         if command not in spec["commands"] or key in leave_out:
             continue
         value = spec["value"] or "True/False"
-        help_lines = spec["help"].splitlines()
+        help_lines = in_keywords(spec["help"]).splitlines()
         lines.append(f"    {key} ({value}): {help_lines[0]}")
         lines += [f"        {more}" for more in help_lines[1:]]
     return "\n".join(lines)
 
 
 def summary(command):
-    return " ".join(_SUMMARIES[command].split())
+    return in_keywords(" ".join(_SUMMARIES[command].split()))

@@ -3,6 +3,7 @@ statistics; bad options raise ValueError with its words."""
 
 import json
 import os
+import re
 import shutil
 import sqlite3
 
@@ -159,3 +160,15 @@ def test_help_lists_each_commands_own_options():
     assert "default 2.5" in terrain_sketch.silhouettes.__doc__  # ranges and defaults
     assert "preview" not in terrain_sketch.sketch.__doc__
     assert "azimuth (DEG)" in terrain_sketch.sketch.__doc__
+
+
+def test_help_names_options_as_keywords():
+    # The command line's help named other options by their flags: "each neighbourhood of
+    # --adapt-window cells", "every --every N cells".
+    for name in terrain_sketch.__all__:
+        function = getattr(terrain_sketch, name)
+        if callable(function) and function.__doc__:
+            assert not re.search(r"--[a-z]", function.__doc__), name
+    assert "each neighbourhood of\n        adapt_window cells" in terrain_sketch.silhouettes.__doc__
+    assert "every every=N cells" in terrain_sketch.profiles.__doc__
+    assert "project source=RASTER" in terrain_sketch.drape.__doc__
