@@ -88,6 +88,7 @@ void draw_page(Canvas& canvas, const SketchPage& page, double scale, const Progr
       if (++drawn % 256 == 0) tell_progress(progress, 0.8 * static_cast<double>(drawn) / total);
       if (s.cls != cls) continue;
       for (std::size_t k = 1; k < s.points.size(); ++k) {
+        // Each width scaled before the sum, as when the page itself was scaled: the same pixels.
         const double radius = 0.25 * (s.widths[k - 1] * scale + s.widths[k] * scale);
         canvas.line(s.points[k - 1].x * scale, s.points[k - 1].y * scale, s.points[k].x * scale,
                     s.points[k].y * scale, radius,
