@@ -3,7 +3,9 @@
 #include <cpl_conv.h>
 #include <gdal.h>
 
+#include <chrono>
 #include <future>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -21,6 +23,27 @@
 
 namespace tsk::cli {
 namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Wall seconds of a panorama's steps, each after the one before, for --timings.
+struct PanoramaTimes {
+  double read = 0, peaks = 0, strokes = 0, visibility = 0, preview = 0;
+};
+
+// Runs `work`, adding its wall time to `seconds`.
+template <typename Work>
+void timed(double& seconds, Work&& work) {
+  const Clock::time_point start = Clock::now();
+  work();
+  seconds += std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void print_timings(const PanoramaTimes& t, const PanoramaRun& run, std::ostream& err) {
+  err << "timings (s): read " << t.read << ", survey " << run.survey_seconds << ", rays "
+      << run.rays_seconds << ", peaks " << t.peaks << ", write strokes " << t.strokes
+      << ", visibility " << t.visibility << ", preview " << t.preview << "\n";
+}
 
 // Everything that can be refused before the DEM is read.
 void check_before_work(const Options& o) {
@@ -47,26 +70,34 @@ io::HeldDemFile read_whole_dem(const Options& o, std::ostream& err) {
 // The outputs, put in place together when the run has done (io/write/output_set.h).
 void write_outputs(const Options& o, const io::Dem& dem, const PanoramaRun& run,
                    const std::vector<PeakLeader>& leaders, const ProgressFn& progress,
-                   std::ostream& err) {
+                   PanoramaTimes& times, std::ostream& err) {
   const PanoramaResult& result = run.result;
   const std::vector<PeakLeader>* peaks = o.peaks.empty() ? nullptr : &leaders;
   const std::string note =
       panorama_note(dem_name(o), o.dem.band, o.panorama, run.exaggeration, TSK_VERSION);
-  io::write_panorama_strokes(o.output, o.format, result.strokes, dem.srs_wkt, peaks,
-                             run.exaggeration, note);
+  timed(times.strokes, [&] {
+    io::write_panorama_strokes(o.output, o.format, result.strokes, dem.srs_wkt, peaks,
+                               run.exaggeration, note);
+  });
   err << "note: the panorama layer draws its elevation angles " << elevation_drawn(run.exaggeration)
       << " (--panorama-exaggeration)\n";
   stop_if_interrupted();
   if (!o.visibility.empty()) {
-    io::write_visibility(
-        o.visibility,
-        visibility_raster(result, dem.rows, dem.cols, dem.geotransform, o.params.threads),
-        dem.geotransform, dem.srs_wkt, note);
+    timed(times.visibility, [&] {
+      io::write_visibility(
+          o.visibility,
+          visibility_raster(result, dem.rows, dem.cols, dem.geotransform, o.params.threads),
+          dem.geotransform, dem.srs_wkt, note);
+    });
   }
   if (!o.preview.empty()) {
-    const io::PanoramaPage page = lay_out_panorama(result, o.params.strokes, o.page, leaders);
-    io::write_page(o.preview, page.page, o.page, progress);
-    err << "note: the preview's elevation angles are drawn " << elevation_drawn(page.exaggeration)
+    double exaggeration = 1.0;
+    timed(times.preview, [&] {
+      const io::PanoramaPage page = lay_out_panorama(result, o.params.strokes, o.page, leaders);
+      io::write_page(o.preview, page.page, o.page, progress);
+      exaggeration = page.exaggeration;
+    });
+    err << "note: the preview's elevation angles are drawn " << elevation_drawn(exaggeration)
         << "\n";
   }
 }
@@ -77,26 +108,31 @@ std::string panorama(const Args& args, std::ostream& out, std::ostream& err,
                      const ProgressFn& progress) {
   const Options o = parse("panorama", args);
   check_before_work(o);
-  io::HeldDemFile held = read_whole_dem(o, err);
-  const io::Dem& dem = held.dem;
+  PanoramaTimes times;
+  std::optional<io::HeldDemFile> held;
+  timed(times.read, [&] { held.emplace(read_whole_dem(o, err)); });
+  const io::Dem& dem = held->dem;
   // The peaks are read before the work, so that a bad file is refused first.
-  const std::vector<NamedPoint> peaks =
-      o.peaks.empty() ? std::vector<NamedPoint>()
-                      : io::read_named_points(o.peaks, o.peak_names, dem.srs_wkt);
+  std::vector<NamedPoint> peaks;
+  if (!o.peaks.empty())
+    timed(times.peaks, [&] { peaks = io::read_named_points(o.peaks, o.peak_names, dem.srs_wkt); });
   const PanoramaChoice choice{o.panorama, o.params, !o.visibility.empty()};
-  const PanoramaRun run = sketch_panorama_on(held.held(), choice, progress);
+  const PanoramaRun run = sketch_panorama_on(held->held(), choice, progress);
   const PanoramaResult& result = run.result;
   print_filter(run.filter, err);
-  const std::vector<PeakLeader> leaders =
-      lead_peaks(result, see_peaks(dem.oriented, dem.geotransform, result.rays, peaks));
+  std::vector<PeakLeader> leaders;
+  timed(times.peaks, [&] {
+    leaders = lead_peaks(result, see_peaks(dem.oriented, dem.geotransform, result.rays, peaks));
+  });
   // The outputs need the DEM's grid and georeferencing, not its heights: freed, they make room
   // for the visibility raster. Freed alongside the writing: giving a large DEM's pages back takes
   // the kernel a while (the future waits for it, whatever happens).
-  HeightGrid heights = std::move(held.dem.oriented);
-  held.dem.oriented = HeightGrid();
+  HeightGrid heights = std::move(held->dem.oriented);
+  held->dem.oriented = HeightGrid();
   const std::future<void> freed =
       std::async(std::launch::async, [&heights] { heights = HeightGrid(); });
-  write_outputs(o, dem, run, leaders, progress, err);
+  write_outputs(o, dem, run, leaders, progress, times, err);
+  if (o.timings) print_timings(times, run, err);
   const std::string statistics = report_statistics(o, result.stats, run.filter);
   const StageStats& s = result.stats;
   out << o.output << ": " << s.factual_strokes << " factual and " << s.formulated_strokes

@@ -6,11 +6,14 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <memory>
 #include <set>
+#include <sstream>
 
 #include "catch_compat.h"
 #include "cli_run.h"
@@ -161,6 +164,74 @@ TEST_CASE("panorama writes its strokes on the map and in the panorama, and its p
        at = svg.find("fill=\"#", at + 1))
     shades.insert(svg.substr(at + 6, 7));
   CHECK(shades.size() > 5);
+}
+
+namespace {
+
+// The seconds that --timings gives each step in `err` ("timings (s): read 0.5, write strokes
+// 0.1, ..."), by name.
+std::map<std::string, double> timings_of(const std::string& err) {
+  const std::string key = "timings (s): ";
+  const std::size_t at = err.find(key);
+  REQUIRE(at != std::string::npos);
+  std::istringstream line(err.substr(at + key.size(), err.find('\n', at) - at - key.size()));
+  std::map<std::string, double> seconds;
+  for (std::string step; std::getline(line, step, ',');) {
+    const std::size_t space = step.find_last_of(' ');
+    REQUIRE(space != std::string::npos);
+    const std::size_t start = step.find_first_not_of(' ');
+    seconds[step.substr(start, space - start)] = std::stod(step.substr(space + 1));
+  }
+  return seconds;
+}
+
+}  // namespace
+
+TEST_CASE("panorama --timings gives each step its seconds, which add up to no more than the run",
+          "[cli][panorama]") {
+  ScratchDir dir("panorama-timings");
+  const std::vector<std::string> view = {"--observer", kSummit, "--observer-height", "2"};
+  auto args = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> all = {"panorama", kSample, dir / name};
+    all.insert(all.end(), view.begin(), view.end());
+    all.insert(all.end(), extra.begin(), extra.end());
+    return all;
+  };
+  const CliRun quiet = run_cli(args("q.gpkg", {}));
+  REQUIRE(quiet.code == 0);
+  CHECK(quiet.err.find("timings") == std::string::npos);
+
+  const auto start = std::chrono::steady_clock::now();
+  const CliRun all = run_cli(
+      args("a.gpkg", {"--timings", "--visibility", dir / "seen.tif", "--preview", dir / "p.png"}));
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  INFO(all.err);
+  REQUIRE(all.code == 0);
+  const std::map<std::string, double> seconds = timings_of(all.err);
+  const std::set<std::string> steps = {"read",          "survey",     "rays",   "peaks",
+                                       "write strokes", "visibility", "preview"};
+  std::set<std::string> named;
+  double sum = 0;
+  for (const auto& [step, s] : seconds) {
+    named.insert(step);
+    CHECK(std::isfinite(s));
+    CHECK(s >= 0);
+    sum += s;
+  }
+  CHECK(named == steps);
+  for (const char* step : {"read", "rays", "write strokes", "visibility", "preview"})
+    CHECK(seconds.at(step) > 0);
+  // The steps follow one another: together they cannot take longer than the run.
+  CHECK(sum <= wall);
+
+  // Outputs not asked for take no time.
+  const CliRun bare = run_cli(args("b.gpkg", {"--timings"}));
+  REQUIRE(bare.code == 0);
+  const std::map<std::string, double> bare_seconds = timings_of(bare.err);
+  CHECK(bare_seconds.at("visibility") == 0);
+  CHECK(bare_seconds.at("preview") == 0);
+  CHECK(bare_seconds.at("rays") > 0);
 }
 
 TEST_CASE("the panorama layer draws its elevation angles exaggerated, as chosen or asked",

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/base/errors.h"
+#include "core/base/stage_timing.h"
 #include "core/method/averaged_dem.h"
 #include "core/method/visibility.h"
 
@@ -93,7 +94,9 @@ PanoramaRun sketch_panorama_on(const HeldDem& dem, const PanoramaChoice& choice,
                                const ProgressFn& progress) {
   if (!dem.frame.as_it_lies())
     throw Error("internal: a panorama needs the DEM as it lies, unturned");
+  const Clock::time_point start = Clock::now();
   const ResolvedParams resolved = resolve_on(dem, choice.method);
+  const double survey_seconds = seconds_since(start);
   const SilhouetteParams& method = resolved.params();
   PanoramaParams params;
   params.view = choice.view;
@@ -105,9 +108,11 @@ PanoramaRun sketch_panorama_on(const HeldDem& dem, const PanoramaChoice& choice,
   params.record_visibility = choice.record_visibility;
   // A leap along a ray draws no line on the terrain; SPEC's exact strokes are the chains.
   params.cut_leaps = method.strokes.drawn();
+  const Clock::time_point rays_start = Clock::now();
   PanoramaResult result = sketch_panorama(dem.oriented, dem.source.geotransform, params, progress);
+  const double rays_seconds = seconds_since(rays_start);
   const double exaggeration = panorama_exaggeration(result, choice.view.exaggeration);
-  return {std::move(result), resolved.filter(), exaggeration};
+  return {std::move(result), resolved.filter(), exaggeration, survey_seconds, rays_seconds};
 }
 
 }  // namespace tsk

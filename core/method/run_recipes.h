@@ -78,6 +78,9 @@ struct PanoramaRun {
   FilterReport filter;
   // The panorama layer's: the view's, or one chosen for the panorama (panorama_exaggeration).
   double exaggeration = 1.0;
+  // Wall seconds of the run's two steps, for --timings: the slope filter's survey of the DEM,
+  // then the rays cast, classified and linked.
+  double survey_seconds = 0.0, rays_seconds = 0.0;
 };
 
 // The panorama from the choice's viewpoint on a DEM held whole as it lies (the view from the west:
