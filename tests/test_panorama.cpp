@@ -478,3 +478,98 @@ TEST_CASE("the ray locator finds the band that the exact bearing falls in", "[pa
 }
 
 }  // namespace tsk
+
+namespace tsk {
+
+TEST_CASE("the ray locator's walk from a hint finds the band ray_of finds, whatever the hint",
+          "[panorama]") {
+  // Fields: the full circle, across north, wider than half a turn, a narrow one.
+  const HeightGrid dem(200, 200, 100.0f);
+  GeoTransform gt;
+  gt.a = {0.0, 10.0, 0.0, 2000.0, 0.0, -10.0};
+  for (const auto& [from, to] :
+       {std::pair{0.0, 360.0}, {300.0, 30.0}, {10.0, 290.0}, {44.0, 46.0}}) {
+    CAPTURE(from, to);
+    PanoramaView view;
+    view.observer_x = 1000.0, view.observer_y = 1000.0;
+    view.azimuth_from = from, view.azimuth_to = to;
+    const PanoramaRays rays = plan_rays(dem, gt, view);
+    const RayLocator locator(rays);
+    const double spacing = rays.ray_spacing_deg();
+    std::size_t walked = 0;
+    for (int k = 0; k < 200000; ++k) {
+      // All round O, and within 3e-8 degrees of band edges and of the field's ends.
+      double bearing = std::fmod(k * 0.0137 + (k % 7) * 1e-7, 360.0);
+      if (k % 5 == 0) bearing = std::fmod(from + (k % 997) * spacing + 3e-8 * (k % 3 - 1), 360.0);
+      if (k % 5 == 1) bearing = std::fmod(to + 360.0 + 1e-3 * (k % 11 - 5), 360.0);
+      const double radians = bearing * kPi / 180.0, length = 1 + k % 13;
+      const double east = std::sin(radians) * length, north = std::cos(radians) * length;
+      const std::size_t expected = locator.ray_of(east, north);
+      // Hints: the band itself, its neighbours a few rays off, rays far away, and none.
+      const std::size_t near = expected < rays.rays ? expected : k % rays.rays;
+      const std::size_t offset = static_cast<std::size_t>(k % 9);
+      for (const std::size_t hint :
+           {near, near + offset, near >= offset ? near - offset : 0,
+            (near + rays.rays / 2) % rays.rays, std::size_t{0}, rays.rays - 1, rays.rays}) {
+        const std::size_t found =
+            locator.ray_near(east, north, std::hypot(east, north), std::min(hint, rays.rays));
+        REQUIRE(found == expected);
+        ++walked;
+      }
+    }
+    CHECK(walked == 7 * 200000);
+  }
+}
+
+TEST_CASE("the visibility raster takes each cell's class from its nearest sample on its ray",
+          "[panorama]") {
+  // Cell by cell, from the sample nearest the cell's centre, on the ray ray_of gives: views all
+  // round, across north and narrow, from the middle and a corner, with rows through O.
+  const std::size_t rows = 150, cols = 170;
+  const HeightGrid dem = terrain(rows, cols, [](double x, double y) {
+    return 40.0 * std::sin(x / 170.0) * std::cos(y / 130.0) + 0.02 * x;
+  });
+  const GeoTransform gt = north_up(rows);
+  struct View {
+    std::size_t row, col;
+    double from, to;
+    int per_cell;
+  };
+  for (const View& v : {View{75, 85, 0, 360, 1}, View{75, 85, 300, 30, 2}, View{2, 3, 100, 170, 1},
+                        View{149, 169, 280, 10, 1}, View{40, 120, 200, 201, 3}}) {
+    CAPTURE(v.row, v.col, v.from, v.to, v.per_cell);
+    PanoramaParams params = looking_from(centre(gt, v.row, v.col), 3.0);
+    params.view.azimuth_from = v.from, params.view.azimuth_to = v.to;
+    params.view.samples_per_cell = v.per_cell;
+    const PanoramaResult result = sketch_panorama(dem, gt, params);
+    const PanoramaRays& rays = result.rays;
+    const RayLocator locator(rays);
+    const Grid<std::uint8_t> seen = visibility_raster(result, rows, cols, gt, 2);
+    std::map<std::uint8_t, std::size_t> codes;
+    for (std::size_t r = 0; r < rows; ++r) {
+      for (std::size_t c = 0; c < cols; ++c) {
+        const StrokePoint p = centre(gt, r, c);
+        const double dx = p.x - rays.observer_x, dy = p.y - rays.observer_y;
+        const double nearest = std::floor(std::sqrt(dx * dx + dy * dy) / rays.step + 0.5);
+        std::uint8_t expected = visibility_code::visible;
+        if (nearest > static_cast<double>(rays.samples)) {
+          expected = visibility_code::out_of_range;
+        } else if (nearest >= 1.0) {
+          const std::size_t ray = locator.ray_of(dx, dy);
+          const std::uint8_t bits =
+              ray == rays.rays ? sample_class::out
+                               : result.sample_class_of(ray, static_cast<std::size_t>(nearest) - 1);
+          expected = bits == sample_class::visible  ? visibility_code::visible
+                     : bits == sample_class::hidden ? visibility_code::hidden
+                                                    : visibility_code::out_of_range;
+        }
+        REQUIRE(seen(r, c) == expected);
+        ++codes[expected];
+      }
+    }
+    CHECK(codes[visibility_code::visible] > 0);
+    CHECK(codes[visibility_code::hidden] + codes[visibility_code::out_of_range] > 0);
+  }
+}
+
+}  // namespace tsk

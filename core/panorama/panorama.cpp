@@ -45,7 +45,7 @@ PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotra
   result.rays = plan_rays(dem, geotransform, params.view);
   const PanoramaRays& rays = result.rays;
   if (params.record_visibility) {
-    const std::size_t bytes = rays.rays * result.row_bytes();
+    const std::size_t bytes = result.record_bytes();
     check_fits_in_memory(
         static_cast<double>(bytes),
         "the visibility of " +
@@ -73,8 +73,7 @@ PanoramaResult sketch_panorama(const HeightGrid& dem, const GeoTransform& geotra
       RayScratch scratch;
       for (std::size_t k = lo; k < hi; ++k) {
         const std::size_t r = first + k;
-        std::uint8_t* record =
-            params.record_visibility ? result.samples.data() + r * result.row_bytes() : nullptr;
+        const RayRecord record = params.record_visibility ? result.record_of(r) : RayRecord();
         classify_ray(dem, rays, rules, r, scratch, batch[k], record);
       }
     });
@@ -113,36 +112,60 @@ std::vector<PeakLeader> lead_peaks(const PanoramaResult& result,
   return peak_leaders(seen, high, row, result.rays.field.width_deg / 20.0);
 }
 
+namespace {
+
+// The cells of one raster row as seen from O: their offsets (east, north), distances and nearest
+// samples (rounded half up, without libm's calls). Worked out in a pass of their own, free of
+// branches, so that the square roots and divisions of neighbouring cells overlap.
+struct RowFromObserver {
+  std::vector<double> east, north, distance, sample;
+
+  explicit RowFromObserver(std::size_t cols)
+      : east(cols), north(cols), distance(cols), sample(cols) {}
+
+  void measure(std::size_t row, const GeoTransform& geotransform, const PanoramaRays& rays) {
+    for (std::size_t col = 0; col < east.size(); ++col) {
+      double x, y;
+      geotransform.apply({static_cast<double>(col) + 0.5, static_cast<double>(row) + 0.5}, x, y);
+      const double dx = x - rays.observer_x, dy = y - rays.observer_y;
+      const double d = std::sqrt(dx * dx + dy * dy);
+      east[col] = dx, north[col] = dy, distance[col] = d;
+      sample[col] = static_cast<double>(static_cast<std::int64_t>(d / rays.step + 0.5));
+    }
+  }
+};
+
+}  // namespace
+
 Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t rows,
                                      std::size_t cols, const GeoTransform& geotransform,
                                      unsigned threads) {
   const PanoramaRays& rays = result.rays;
-  if (result.samples.size() != rays.rays * result.row_bytes())
+  if (result.samples.size() != result.record_bytes())
     throw Error("the panorama did not record its samples' visibility");
   Grid<std::uint8_t> raster(rows, cols, kUnset);
   const RayLocator locator(rays);
-  const auto code_of = [&](double x, double y) -> std::uint8_t {
-    const double dx = x - rays.observer_x, dy = y - rays.observer_y;
-    // The nearest sample (rounded half up, without libm's calls: this runs for every cell).
-    const double i = static_cast<double>(
-        static_cast<std::int64_t>(std::sqrt(dx * dx + dy * dy) / rays.step + 0.5));
+  // `ray` is the previous cell's ray, where the walk to this cell's starts; rays.rays for none.
+  const auto code_of = [&](const RowFromObserver& cells, std::size_t col,
+                           std::size_t& ray) -> std::uint8_t {
+    const double i = cells.sample[col];
     if (i < 1.0) return visibility_code::visible;  // the cell under O
     if (i > static_cast<double>(rays.samples)) return visibility_code::out_of_range;
-    const std::size_t r = locator.ray_of(dx, dy);
+    const std::size_t r =
+        locator.ray_near(cells.east[col], cells.north[col], cells.distance[col], ray);
     if (r == rays.rays) return visibility_code::out_of_range;
-    const std::size_t k = static_cast<std::size_t>(i) - 1;
-    const std::uint8_t bits = result.sample_class_of(r, k);
+    ray = r;
+    const std::uint8_t bits = result.sample_class_of(r, static_cast<std::size_t>(i) - 1);
     return bits == sample_class::visible  ? visibility_code::visible
            : bits == sample_class::hidden ? visibility_code::hidden
                                           : visibility_code::out_of_range;
   };
   parallel_for(rows, threads, [&](std::size_t lo, std::size_t hi) {
+    RowFromObserver cells(cols);
     for (std::size_t row = lo; row < hi; ++row) {
-      for (std::size_t col = 0; col < cols; ++col) {
-        double x, y;
-        geotransform.apply({static_cast<double>(col) + 0.5, static_cast<double>(row) + 0.5}, x, y);
-        raster(row, col) = code_of(x, y);
-      }
+      cells.measure(row, geotransform, rays);
+      std::size_t ray = rays.rays;
+      for (std::size_t col = 0; col < cols; ++col) raster(row, col) = code_of(cells, col, ray);
     }
   });
   return raster;

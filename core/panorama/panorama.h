@@ -36,12 +36,23 @@ struct PanoramaResult {
   PanoramaRays rays;
   StageStats stats;                     // shares of the valid samples in range
   std::vector<PanoramaStroke> strokes;  // factual first, each class in the order chains started
-  // With record_visibility: two bits per sample (sample_class), row_bytes() per ray.
+  // With record_visibility: two bits per sample (sample_class), in blocks of kBlockSamples
+  // samples of a ray (one cache line): the first block of every ray, ray after ray, then the
+  // second. A raster's row of cells crosses many rays at much the same distance, and so reads a
+  // few neighbouring lines rather than a line and a page per cell.
   std::vector<std::uint8_t> samples;
-  std::size_t row_bytes() const { return (rays.samples + 3) / 4; }
+  static constexpr std::size_t kBlockBytes = RayRecord::kBlockBytes,
+                               kBlockSamples = 4 * kBlockBytes;
+  std::size_t sample_blocks() const { return (rays.samples + kBlockSamples - 1) / kBlockSamples; }
+  std::size_t record_bytes() const { return sample_blocks() * rays.rays * kBlockBytes; }
+  RayRecord record_of(std::size_t r) {
+    return {samples.data() + r * kBlockBytes, rays.rays * kBlockBytes};
+  }
   // The class (sample_class) recorded for sample k (0-based) of ray r.
   std::uint8_t sample_class_of(std::size_t r, std::size_t k) const {
-    return static_cast<std::uint8_t>((samples[r * row_bytes() + k / 4] >> (2 * (k % 4))) & 3u);
+    const std::size_t block = k / kBlockSamples, within = k % kBlockSamples;
+    const std::uint8_t byte = samples[(block * rays.rays + r) * kBlockBytes + within / 4];
+    return static_cast<std::uint8_t>((byte >> (2 * (within % 4))) & 3u);
   }
 };
 

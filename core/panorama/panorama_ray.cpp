@@ -205,22 +205,26 @@ void collect_cells(const HeightGrid& dem, const PanoramaRays& rays, const RayPla
   }
 }
 
-void record_visibility(const RayScratch& s, std::uint8_t* out) {
-  std::memset(out, 0, (s.flags.size() + 3) / 4);
-  for (std::size_t k = 0; k < s.flags.size(); ++k) {
-    const std::uint8_t f = s.flags[k];
-    const std::uint8_t code = !(f & cell::valid)   ? sample_class::out
-                              : (f & cell::hidden) ? sample_class::hidden
-                                                   : sample_class::visible;
-    out[k / 4] |= static_cast<std::uint8_t>(code << (2 * (k % 4)));
+void record_visibility(const RayScratch& s, RayRecord out) {
+  const std::size_t samples = s.flags.size();
+  for (std::size_t byte = 0; byte * 4 < samples; ++byte) {
+    std::uint8_t four = 0;
+    for (std::size_t k = byte * 4; k < std::min(samples, byte * 4 + 4); ++k) {
+      const std::uint8_t f = s.flags[k];
+      const std::uint8_t code = !(f & cell::valid)   ? sample_class::out
+                                : (f & cell::hidden) ? sample_class::hidden
+                                                     : sample_class::visible;
+      four |= static_cast<std::uint8_t>(code << (2 * (k % 4)));
+    }
+    const std::size_t block = byte / RayRecord::kBlockBytes;
+    out.first[block * out.stride + byte % RayRecord::kBlockBytes] = four;
   }
 }
 
 }  // namespace
 
 void classify_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayRules& rules,
-                  std::size_t r, RayScratch& scratch, RayChainCells& out,
-                  std::uint8_t* visibility) {
+                  std::size_t r, RayScratch& scratch, RayChainCells& out, RayRecord visibility) {
   const RayPlace place(rays, r);
   sample_ray(dem, rays, place, scratch);
   select_candidates(rays, rules.height_tolerance, scratch);
@@ -233,7 +237,7 @@ void classify_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayRule
   profile_candidates(scratch.flags.data(), n, false, out.formulated);
   collect_cells(dem, rays, place, r, scratch, true, out);
   collect_cells(dem, rays, place, r, scratch, false, out);
-  if (visibility) record_visibility(scratch, visibility);
+  if (visibility.first) record_visibility(scratch, visibility);
 }
 
 }  // namespace tsk

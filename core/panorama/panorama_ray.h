@@ -31,6 +31,14 @@ namespace sample_class {
 constexpr std::uint8_t out = 0, visible = 1, hidden = 2;
 }
 
+// Where a ray's samples' classes go: kBlockBytes bytes (four samples each) at `first`, the next
+// `stride` bytes on, and so on (PanoramaResult::samples). Null `first`: not recorded.
+struct RayRecord {
+  std::uint8_t* first = nullptr;
+  std::size_t stride = 0;
+  static constexpr std::size_t kBlockBytes = 64;
+};
+
 // Per ray storage, reused ray after ray by one thread.
 struct RayScratch {
   std::vector<float> apparent;      // z' = z - drop, metres; NaN for nodata
@@ -51,9 +59,9 @@ struct RayChainCells {
   StageStats counts;
 };
 
-// Classifies ray r of `rays` over `dem` into `out`. With `visibility`, writes its samples'
-// classes there (rays.samples two-bit codes).
+// Classifies ray r of `rays` over `dem` into `out`. With a `visibility` record, writes its
+// samples' classes there (rays.samples two-bit codes).
 void classify_ray(const HeightGrid& dem, const PanoramaRays& rays, const RayRules& rules,
-                  std::size_t r, RayScratch& scratch, RayChainCells& out, std::uint8_t* visibility);
+                  std::size_t r, RayScratch& scratch, RayChainCells& out, RayRecord visibility);
 
 }  // namespace tsk

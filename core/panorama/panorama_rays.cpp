@@ -138,7 +138,8 @@ bool clockwise_of(PixelPoint edge, double east, double north) {
 
 }  // namespace
 
-RayLocator::RayLocator(const PanoramaRays& rays) : rays_(rays), bounds_(rays.rays + 1) {
+RayLocator::RayLocator(const PanoramaRays& rays)
+    : rays_(rays), bounds_(rays.rays + 1), walkable_(rays.ray_spacing_deg() < 90.0) {
   for (std::size_t j = 0; j <= rays.rays; ++j) {
     const double azimuth =
         (rays.field.from_deg + static_cast<double>(j) * rays.ray_spacing_deg()) * kRadPerDeg;
@@ -164,6 +165,33 @@ std::size_t RayLocator::ray_of(double east, double north) const {
   while (r > 0 && !clockwise_of(bounds_[r], east, north)) --r;
   while (r + 1 < n && clockwise_of(bounds_[r + 1], east, north)) ++r;
   return r;
+}
+
+bool RayLocator::near_field_ends(double east, double north, double distance) const {
+  // Four times ray_of's margin, which is itself far above the close bearing's error.
+  constexpr double kSine = 6.981e-5;  // sin(0.004 degrees)
+  const auto near = [&](const PixelPoint& edge) {
+    const double across = east * edge.row - north * edge.col;
+    const double along = east * edge.col + north * edge.row;
+    return along > 0.0 && std::fabs(across) <= kSine * distance;
+  };
+  return near(bounds_.front()) || near(bounds_.back());
+}
+
+std::size_t RayLocator::ray_near(double east, double north, double distance,
+                                 std::size_t hint) const {
+  const std::size_t n = rays_.rays;
+  if (!walkable_ || hint >= n || near_field_ends(east, north, distance)) return ray_of(east, north);
+  // Along the edges, clockwise_of is true up to the direction and false past it (for half a turn
+  // each way): a band whose first edge says true and whose second says false holds it, and no
+  // other band does. ray_of's walk from its close bearing ends in that same band.
+  constexpr int kMostSteps = 4;
+  std::size_t r = hint;
+  for (int s = 0; s < kMostSteps && r > 0 && !clockwise_of(bounds_[r], east, north); ++s) --r;
+  for (int s = 0; s < kMostSteps && r + 1 < n && clockwise_of(bounds_[r + 1], east, north); ++s)
+    ++r;
+  if (clockwise_of(bounds_[r], east, north) && !clockwise_of(bounds_[r + 1], east, north)) return r;
+  return ray_of(east, north);
 }
 
 PanoramaRays plan_rays(const HeightGrid& dem, const GeoTransform& gt, const PanoramaView& view) {

@@ -87,10 +87,21 @@ class RayLocator {
   // The ray r whose band [from + r spacing, from + (r + 1) spacing) holds the direction
   // (east, north) from O, not (0, 0); rays.rays when it lies outside the field of view.
   std::size_t ray_of(double east, double north) const;
+  // ray_of(east, north), found by walking from `hint`, the ray of a direction close by (a
+  // neighbouring cell's), when a few rays' walk ends in a band whose two edges both hold the
+  // direction between them; `distance` is the direction's length. A raster's rows walk from
+  // cell to cell; the bearing and the band's arithmetic are left for the rest.
+  std::size_t ray_near(double east, double north, double distance, std::size_t hint) const;
 
  private:
+  // Whether the direction lies within a few thousandths of a degree of the field's first or
+  // last edge, where ray_of takes the exact bearing.
+  bool near_field_ends(double east, double north, double distance) const;
+
   const PanoramaRays& rays_;
   std::vector<PixelPoint> bounds_;  // the band edges' unit vectors (east, north), rays + 1
+  bool walkable_;  // bands under a quarter turn wide: only one band holds a direction between its
+                   // edges
 };
 
 // Plans the rays of `view` over `dem` (north-up, georeferenced by `geotransform`). Throws Error
