@@ -100,8 +100,8 @@ class RayLocator {
 
   const PanoramaRays& rays_;
   std::vector<PixelPoint> bounds_;  // the band edges' unit vectors (east, north), rays + 1
-  bool walkable_;  // bands under a quarter turn wide: only one band holds a direction between its
-                   // edges
+  // Bands under a quarter turn wide: only one band holds a direction between its edges.
+  bool walkable_;
 };
 
 // Plans the rays of `view` over `dem` (north-up, georeferenced by `geotransform`). Throws Error
