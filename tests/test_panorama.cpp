@@ -438,29 +438,43 @@ TEST_CASE("a panorama reports its progress and stops when told to", "[panorama]"
 
 namespace tsk {
 
+namespace {
+
+// The rays from the middle of a 2 km square DEM over the field from `from` to `to` degrees.
+PanoramaRays rays_over(double from, double to) {
+  const HeightGrid dem(200, 200, 100.0f);
+  PanoramaView view;
+  view.observer_x = 1000.0, view.observer_y = 1000.0;
+  view.azimuth_from = from, view.azimuth_to = to;
+  return plan_rays(dem, north_up(200), view);
+}
+
+// Direction k of a fine irregular spread all round O, every fifth one within 3e-8 degrees of a
+// band edge (the close bearing alone would miss them), every fifth other one within 5e-3 degrees
+// of the field's end: (east, north), of lengths 1 to 13.
+PixelPoint test_direction(int k, const PanoramaRays& rays, double from, double to) {
+  double bearing = std::fmod(k * 0.0137 + (k % 7) * 1e-7, 360.0);
+  if (k % 5 == 0)
+    bearing = std::fmod(from + (k % 997) * rays.ray_spacing_deg() + 3e-8 * (k % 3 - 1), 360.0);
+  if (k % 5 == 1) bearing = std::fmod(to + 360.0 + 1e-3 * (k % 11 - 5), 360.0);
+  const double radians = bearing * kPi / 180.0, length = 1 + k % 13;
+  return {std::sin(radians) * length, std::cos(radians) * length};
+}
+
+}  // namespace
+
 TEST_CASE("the ray locator finds the band that the exact bearing falls in", "[panorama]") {
   // Brute force: libm's atan2, the band floor(offset / spacing), for directions all round O,
   // near the bands' edges and the field's ends too.
-  const HeightGrid dem(200, 200, 100.0f);
-  GeoTransform gt;
-  gt.a = {0.0, 10.0, 0.0, 2000.0, 0.0, -10.0};
   for (const auto& [from, to] : {std::pair{0.0, 360.0}, {300.0, 30.0}, {10.0, 200.0}}) {
     CAPTURE(from, to);
-    PanoramaView view;
-    view.observer_x = 1000.0, view.observer_y = 1000.0;
-    view.azimuth_from = from, view.azimuth_to = to;
-    const PanoramaRays rays = plan_rays(dem, gt, view);
+    const PanoramaRays rays = rays_over(from, to);
     const RayLocator locator(rays);
     const double spacing = rays.ray_spacing_deg();
     std::size_t checked = 0, inside = 0;
     for (int k = 0; k < 200000; ++k) {
-      // Bearings on a fine irregular spread, some 3e-8 degrees from a band edge (the close
-      // bearing alone would miss them).
-      double bearing = std::fmod(k * 0.0137 + (k % 7) * 1e-7, 360.0);
-      if (k % 5 == 0) bearing = std::fmod(from + (k % 997) * spacing + 3e-8 * (k % 3 - 1), 360.0);
-      const double radians = bearing * kPi / 180.0;
-      const double east = std::sin(radians) * (1 + k % 13),
-                   north = std::cos(radians) * (1 + k % 13);
+      const PixelPoint direction = test_direction(k, rays, from, to);
+      const double east = direction.col, north = direction.row;
       const double offset = rays.field.offset_deg(std::atan2(east, north) * 180.0 / kPi);
       const double in_band = offset / spacing;
       // Directions within 1e-9 of a band's edge may go either way.
@@ -484,26 +498,15 @@ namespace tsk {
 TEST_CASE("the ray locator's walk from a hint finds the band ray_of finds, whatever the hint",
           "[panorama]") {
   // Fields: the full circle, across north, wider than half a turn, a narrow one.
-  const HeightGrid dem(200, 200, 100.0f);
-  GeoTransform gt;
-  gt.a = {0.0, 10.0, 0.0, 2000.0, 0.0, -10.0};
   for (const auto& [from, to] :
        {std::pair{0.0, 360.0}, {300.0, 30.0}, {10.0, 290.0}, {44.0, 46.0}}) {
     CAPTURE(from, to);
-    PanoramaView view;
-    view.observer_x = 1000.0, view.observer_y = 1000.0;
-    view.azimuth_from = from, view.azimuth_to = to;
-    const PanoramaRays rays = plan_rays(dem, gt, view);
+    const PanoramaRays rays = rays_over(from, to);
     const RayLocator locator(rays);
-    const double spacing = rays.ray_spacing_deg();
     std::size_t walked = 0;
     for (int k = 0; k < 200000; ++k) {
-      // All round O, and within 3e-8 degrees of band edges and of the field's ends.
-      double bearing = std::fmod(k * 0.0137 + (k % 7) * 1e-7, 360.0);
-      if (k % 5 == 0) bearing = std::fmod(from + (k % 997) * spacing + 3e-8 * (k % 3 - 1), 360.0);
-      if (k % 5 == 1) bearing = std::fmod(to + 360.0 + 1e-3 * (k % 11 - 5), 360.0);
-      const double radians = bearing * kPi / 180.0, length = 1 + k % 13;
-      const double east = std::sin(radians) * length, north = std::cos(radians) * length;
+      const PixelPoint direction = test_direction(k, rays, from, to);
+      const double east = direction.col, north = direction.row;
       const std::size_t expected = locator.ray_of(east, north);
       // Hints: the band itself, its neighbours a few rays off, rays far away, and none.
       const std::size_t near = expected < rays.rays ? expected : k % rays.rays;
