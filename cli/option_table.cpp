@@ -245,7 +245,7 @@ const std::vector<OptionSpec> kOptionTable = {
        o.params.threads = static_cast<unsigned>(parse_count(n, v, 0, " (0: all cores)"));
      }},
     {"--timings", nullptr, kInputOutput,
-     "print the time of reading, each stage and writing to stderr", kSilhouettes | kPanorama,
+     "report the time of reading, each stage and writing on stderr", kSilhouettes | kPanorama,
      TSK_FLAG(timings)},
     {"--strips", "N", kInputOutput,
      "read and process N profiles at a time (default: 1024, more for profiles\n"

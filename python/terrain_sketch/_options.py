@@ -90,7 +90,8 @@ def hooks(progress):
 
 def in_keywords(text):
     """Help text of the command line's, its options named as keywords: "--every N cells" reads
-    "every=N cells", "--adapt-window cells" reads "adapt_window cells"."""
+    "every=N cells", "--adapt-window cells" reads "adapt_window cells"; and what the command line
+    reports on stderr goes to the logger, as the notes do."""
     def named(match):
         spec = _option_named(keyword(match.group(1)))
         if spec is None:
@@ -98,6 +99,7 @@ def in_keywords(text):
         if match.group(2) and match.group(2).strip() == spec["value"]:
             return f"{keyword(spec['name'])}={spec['value']}"
         return keyword(spec["name"]) + (match.group(2) or "")
+    text = text.replace("on stderr", "to the terrain_sketch logger")
     return re.sub(r"(--[a-z][a-z-]*)( [A-Z][A-Z.,]*\b)?", named, text)
 
 

@@ -169,6 +169,8 @@ def test_help_names_options_as_keywords():
         function = getattr(terrain_sketch, name)
         if callable(function) and function.__doc__:
             assert not re.search(r"--[a-z]", function.__doc__), name
+            assert "stderr" not in function.__doc__, name  # --timings': the logger's here
     assert "each neighbourhood of\n        adapt_window cells" in terrain_sketch.silhouettes.__doc__
     assert "every every=N cells" in terrain_sketch.profiles.__doc__
     assert "project source=RASTER" in terrain_sketch.drape.__doc__
+    assert "writing to the terrain_sketch logger" in terrain_sketch.panorama.__doc__
