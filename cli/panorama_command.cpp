@@ -86,7 +86,9 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaRun& run,
     timed(times.visibility, [&] {
       io::write_visibility(
           o.visibility,
-          visibility_raster(result, dem.rows, dem.cols, dem.geotransform, o.params.threads),
+          // The progress line is full by now: what `progress` does here is stop on Ctrl-C.
+          visibility_raster(result, dem.rows, dem.cols, dem.geotransform, o.params.threads,
+                            progress),
           dem.geotransform, dem.srs_wkt, note);
     });
   }

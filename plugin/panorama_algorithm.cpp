@@ -184,7 +184,7 @@ PanoramaResult PanoramaAlgorithm::sketch(QgsProcessingFeedback* feedback) {
 }
 
 void PanoramaAlgorithm::writeStrokes(const QVariantMap& parameters, QgsProcessingContext& context,
-                                     const PanoramaResult& result,
+                                     const PanoramaResult& result, double progressFrom,
                                      QgsProcessingFeedback* feedback) {
   QgsFields fields = strokeFields();
   fields.append(makeField(QStringLiteral("azimuth_min"), FieldKind::Real));
@@ -198,9 +198,9 @@ void PanoramaAlgorithm::writeStrokes(const QVariantMap& parameters, QgsProcessin
     QgsAttributes attributes = feature.attributes();
     attributes << s.azimuth_min << s.azimuth_max;
     feature.setAttributes(attributes);
-    addWithProgress(map, feature, feedback, 2 * result.strokes.size(), 80);
+    addWithProgress(map, feature, feedback, 2 * result.strokes.size(), progressFrom);
     feature.setGeometry(lineGeometry(exaggerated(s.view, mExaggeration)));
-    addWithProgress(panorama, feature, feedback, 2 * result.strokes.size(), 80);
+    addWithProgress(panorama, feature, feedback, 2 * result.strokes.size(), progressFrom);
   }
   map.finish(mNote);
   panorama.finish(mNote);
@@ -272,15 +272,17 @@ QVariantMap PanoramaAlgorithm::writeOutputs(const QVariantMap& parameters,
                                                 result.rays, readPeaks(parameters, context)))
                  : std::vector<PeakLeader>();
   // The raster first: the line outputs, once finished, are whole.
+  const double strokesFrom = mVisibility.isEmpty() ? 80 : 85;
   if (!mVisibility.isEmpty()) {
     const Grid<std::uint8_t> seen = withCoreErrors([&] {
       return visibility_raster(result, raster.oriented().rows(), raster.oriented().cols(),
-                               raster.geotransform());
+                               raster.geotransform(), 0,
+                               progressBetween(feedback, 80, strokesFrom));
     });
     writeVisibilityRaster(mVisibility, seen, raster, mNote);
   }
   if (feedback && feedback->isCanceled()) throw QgsProcessingException(tr("Cancelled."));
-  writeStrokes(parameters, context, result, feedback);
+  writeStrokes(parameters, context, result, strokesFrom, feedback);
   if (labelPeaks) writePeaks(parameters, context, leaders, feedback);
   releaseRaster();
   QVariantMap outputs = {{kMapOutput, mMapId}, {kPanoramaOutput, mPanoramaId}};

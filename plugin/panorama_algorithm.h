@@ -28,8 +28,10 @@ class PanoramaAlgorithm : public DemViewAlgorithm {
   // The view's parameters; then the outputs.
   void addViewParameters();
   PanoramaResult sketch(QgsProcessingFeedback* feedback);
+  // The two layers, the progress bar going from `progressFrom` to 100.
   void writeStrokes(const QVariantMap& parameters, QgsProcessingContext& context,
-                    const PanoramaResult& result, QgsProcessingFeedback* feedback);
+                    const PanoramaResult& result, double progressFrom,
+                    QgsProcessingFeedback* feedback);
 
   // The named points to label, in the DEM's CRS (none when no layer is given).
   std::vector<NamedPoint> readPeaks(const QVariantMap& parameters, QgsProcessingContext& context);

@@ -576,3 +576,27 @@ TEST_CASE("the visibility raster takes each cell's class from its nearest sample
 }
 
 }  // namespace tsk
+
+namespace tsk {
+
+TEST_CASE("the visibility raster reports its progress and stops when told", "[panorama]") {
+  const std::size_t n = 300;
+  const HeightGrid dem = terrain(n, n, [](double x, double y) { return std::hypot(x, y) / 50.0; });
+  const GeoTransform gt = north_up(n);
+  const PanoramaResult result = sketch_panorama(dem, gt, looking_from(centre(gt, 150, 150), 2.0));
+  std::vector<double> told;
+  visibility_raster(result, n, n, gt, 2, [&](double fraction) {
+    told.push_back(fraction);
+    return true;
+  });
+  REQUIRE(told.size() > 2);
+  CHECK(std::is_sorted(told.begin(), told.end()));
+  CHECK(told.front() > 0.0);
+  CHECK(told.back() <= 1.0);
+  std::size_t calls = 0;
+  CHECK_THROWS_AS(visibility_raster(result, n, n, gt, 2, [&](double) { return ++calls < 2; }),
+                  Cancelled);
+  CHECK(calls == 2);  // stopped at once
+}
+
+}  // namespace tsk

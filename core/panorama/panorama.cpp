@@ -139,7 +139,7 @@ struct RowFromObserver {
 
 Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t rows,
                                      std::size_t cols, const GeoTransform& geotransform,
-                                     unsigned threads) {
+                                     unsigned threads, const ProgressFn& progress) {
   const PanoramaRays& rays = result.rays;
   if (result.samples.size() != result.record_bytes())
     throw Error("the panorama did not record its samples' visibility");
@@ -160,14 +160,17 @@ Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t r
            : bits == sample_class::hidden ? visibility_code::hidden
                                           : visibility_code::out_of_range;
   };
-  parallel_for(rows, threads, [&](std::size_t lo, std::size_t hi) {
-    RowFromObserver cells(cols);
-    for (std::size_t row = lo; row < hi; ++row) {
-      cells.measure(row, geotransform, rays);
-      std::size_t ray = rays.rays;
-      for (std::size_t col = 0; col < cols; ++col) raster(row, col) = code_of(cells, col, ray);
-    }
-  });
+  parallel_for(
+      rows, threads,
+      [&](std::size_t lo, std::size_t hi) {
+        RowFromObserver cells(cols);
+        for (std::size_t row = lo; row < hi; ++row) {
+          cells.measure(row, geotransform, rays);
+          std::size_t ray = rays.rays;
+          for (std::size_t col = 0; col < cols; ++col) raster(row, col) = code_of(cells, col, ray);
+        }
+      },
+      progress);
   return raster;
 }
 

@@ -84,12 +84,13 @@ std::vector<StrokePoint> exaggerated(std::vector<StrokePoint> view, double exagg
 std::vector<PeakLeader> lead_peaks(const PanoramaResult& result, const std::vector<SeenPeak>& seen);
 
 // The visibility raster on the DEM's grid (docs/PANORAMA.md 2): each cell takes the class of the
-// sample nearest its centre. `result` must hold the samples (record_visibility).
+// sample nearest its centre. `result` must hold the samples (record_visibility). Throws
+// Cancelled when `progress` says stop.
 namespace visibility_code {
 constexpr std::uint8_t hidden = 0, visible = 1, out_of_range = 255;
 }
 Grid<std::uint8_t> visibility_raster(const PanoramaResult& result, std::size_t rows,
                                      std::size_t cols, const GeoTransform& geotransform,
-                                     unsigned threads = 0);
+                                     unsigned threads = 0, const ProgressFn& progress = {});
 
 }  // namespace tsk
