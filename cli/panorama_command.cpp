@@ -3,7 +3,6 @@
 #include <cpl_conv.h>
 #include <gdal.h>
 
-#include <chrono>
 #include <future>
 #include <optional>
 #include <ostream>
@@ -14,6 +13,7 @@
 #include "cli/dem_note_text.h"
 #include "cli/interrupt.h"
 #include "core/base/errors.h"
+#include "core/base/stage_timing.h"
 #include "core/panorama/panorama.h"
 #include "io/pages/panorama_page.h"
 #include "io/pages/preview.h"
@@ -23,8 +23,6 @@
 
 namespace tsk::cli {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // Wall seconds of a panorama's steps, each after the one before, for --timings.
 struct PanoramaTimes {
@@ -36,7 +34,7 @@ template <typename Work>
 void timed(double& seconds, Work&& work) {
   const Clock::time_point start = Clock::now();
   work();
-  seconds += std::chrono::duration<double>(Clock::now() - start).count();
+  seconds += seconds_since(start);
 }
 
 void print_timings(const PanoramaTimes& t, const PanoramaRun& run, std::ostream& err) {

@@ -1,5 +1,4 @@
 // terrain-sketch silhouettes: the strokes, written as they complete.
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <ostream>
@@ -11,18 +10,13 @@
 #include "cli/commands.h"
 #include "cli/dem_note_text.h"
 #include "cli/interrupt.h"
+#include "core/base/stage_timing.h"
 #include "core/method/run_note.h"
 #include "io/pages/preview.h"
 #include "io/write/vector_writer.h"
 
 namespace tsk::cli {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 void print_timings(const StageTimings& t, double write_s, double commit_s, std::ostream& err) {
   err << "timings (s): read " << t.reading << " (alongside the stages), visibility " << t.visibility
@@ -97,14 +91,14 @@ std::string silhouettes(const Args& args, std::ostream& out, std::ostream& err,
           // Two clock readings a stroke only when asked: 1.3 % of an exact run's time.
           const Clock::time_point start = o.timings ? Clock::now() : Clock::time_point();
           write(stroke);
-          if (o.timings) write_s += since(start);
+          if (o.timings) write_s += seconds_since(start);
           if (preview) drawn.push_back(std::move(stroke));
         });
         produced = Clock::now();
         note = note_of(o, result);
       },
       io::kStrokeLayer, o.params.strokes.drawn(), [&] { return note; });
-  const double commit_s = since(produced);
+  const double commit_s = seconds_since(produced);
   // All three go in place together when the run has done (io/write/output_set.h).
   stop_if_interrupted();
   const std::string statistics = report_statistics(o, result.stats, result.filter);
