@@ -12,9 +12,9 @@ returns the strokes as numpy columns, with ``to_geodataframe()``.
 
 Every function releases the GIL while it works, reports ``progress(fraction)`` (return False to
 stop: ``Cancelled``), stops on Ctrl-C with ``KeyboardInterrupt``, and writes its outputs whole or
-not at all. Bad options raise ValueError with the command line's message; a run that cannot be
-done raises ``terrain_sketch.Error``, an OSError. Notes on the DEM go to the ``terrain_sketch``
-logger.
+not at all. Bad options raise ValueError with the command line's message, its options named as
+keywords; a run that cannot be done raises ``terrain_sketch.Error``, an OSError. Notes on the DEM
+go to the ``terrain_sketch`` logger.
 """
 
 import json
@@ -39,10 +39,13 @@ def _command_function(command):
     def run(input, output, *, progress=None, **options):
         arguments = [_options.path_argument(input), _options.path_argument(output)]
         arguments += _options.to_arguments(options)
-        _said, statistics = _native.run_command(command, arguments, _options.hooks(progress))
+        with _options.keyword_errors(name):
+            _said, statistics = _native.run_command(command, arguments,
+                                                    _options.hooks(progress, name))
         return json.loads(statistics) if statistics else {}
 
-    run.__name__ = run.__qualname__ = command.replace("-", "_")
+    name = command.replace("-", "_")
+    run.__name__ = run.__qualname__ = name
     run.__doc__ = (f"{run.__name__}(input, output, *, progress=None, **options)\n\n"
                    f"{_options.summary(command)} (terrain-sketch {command}).\n\n"
                    f"Options:\n{_options.options_help(command)}\n"
@@ -122,9 +125,10 @@ def sketch(heights, transform=None, nodata=None, crs=None, *, progress=None, **o
             raise ValueError(f"sketch() neither reads nor writes files: {key} is an option of "
                              "silhouettes(), which does")
     crs_text = "" if crs is None else crs.to_wkt() if hasattr(crs, "to_wkt") else str(crs)
-    native = _native.sketch(heights_array, numbers, crs_text,
-                            None if nodata is None else float(nodata),
-                            _options.to_arguments(options), _options.hooks(progress))
+    with _options.keyword_errors("sketch"):
+        native = _native.sketch(heights_array, numbers, crs_text,
+                                None if nodata is None else float(nodata),
+                                _options.to_arguments(options), _options.hooks(progress, "sketch"))
     return Strokes(native)
 
 

@@ -5,12 +5,13 @@ A keyword is the command line's option without its dashes, with underscores:
 checked by the command line's parser, so a bad one raises its message.
 """
 
+import contextlib
 import logging
 import os
 import re
 import threading
 
-from . import _native
+from . import _errors, _native
 
 _OPTIONS = _native.options()
 _SUMMARIES = {command["name"]: command["summary"] for command in _native.commands()}
@@ -78,29 +79,78 @@ def log_line(line):
         _LOG.info(line)
 
 
-def hooks(progress):
+def hooks(progress, function=None):
     """What the native run calls back: progress, the notes (the command line's on stderr, here
-    the terrain_sketch logger's at INFO), and whether it may catch Ctrl-C (only on Python's main
-    thread)."""
+    the terrain_sketch logger's at INFO, in the words of `function` when one is named: see
+    keyword_message), and whether it may catch Ctrl-C (only on Python's main thread)."""
     if progress is not None and not callable(progress):
         raise ValueError("progress must be a callable taking a fraction from 0 to 1")
     main = threading.current_thread() is threading.main_thread()
-    return _native.RunHooks(progress, log_line, main)
+    return _native.RunHooks(progress, notes_of(function), main)
+
+
+def notes_of(function):
+    """log_line, or log_line in the words of `function` (None: the command line's)."""
+    if function is None:
+        return log_line
+    return lambda line: log_line(keyword_message(line, function))
+
+
+def keyword_message(text, function):
+    """A message of the command line's as the Python function `function` says it (its name as
+    called: "silhouettes", "sketch", "dask.silhouettes"): options as keywords, commands as
+    functions, its help as help(); "--filter fixed" reads "filter='fixed'"."""
+    text = re.sub(r"`terrain-sketch [a-z-]+ --help` lists the options it takes",
+                  f"help(terrain_sketch.{function}) lists the keywords it takes", text)
+    text = re.sub(r"unknown option '--([^']*)'",
+                  lambda match: f"unknown keyword '{keyword(match.group(1))}'", text)
+
+    def other_function(match):
+        takers = ", ".join(name.replace("-", "_") + "()" for name in match.group(2).split(", "))
+        return f"{function}() does not take {keyword(match.group(1))} (a keyword of {takers})"
+    text = re.sub(r"^[a-z-]+ does not take (--[a-z-]+) \(an option of ([a-z, -]+)\)",
+                  other_function, text)
+    return in_keywords(text)
+
+
+@contextlib.contextmanager
+def keyword_errors(function):
+    """Raises the bad options and failed runs of the command line's door in the words of
+    `function` (keyword_message)."""
+    try:
+        yield
+    except (ValueError, _errors.Error) as error:
+        said = keyword_message(str(error), function)
+        if said == str(error):
+            raise
+        raise type(error)(said) from None
+
+
+def _is_choice(spec, word):
+    """Whether `word` is one of the choices of an option whose value is one (its value named by
+    a single letter, F for --filter, the choice named in its help)."""
+    value = spec["value"] or ""
+    return (len(value) == 1 and value not in "NXKM"
+            and re.search(r"\b" + re.escape(word) + r"\b", spec["help"]) is not None)
 
 
 def in_keywords(text):
     """Help text of the command line's, its options named as keywords: "--every N cells" reads
-    "every=N cells", "--adapt-window cells" reads "adapt_window cells"; and what the command line
-    reports on stderr goes to the logger, as the notes do."""
+    "every=N cells", "--adapt-window cells" reads "adapt_window cells", "--filter fixed" reads
+    "filter='fixed'"; and what the command line reports on stderr goes to the logger, as the
+    notes do."""
     def named(match):
         spec = _option_named(keyword(match.group(1)))
         if spec is None:
             return match.group(0)
-        if match.group(2) and match.group(2).strip() == spec["value"]:
-            return f"{keyword(spec['name'])}={spec['value']}"
-        return keyword(spec["name"]) + (match.group(2) or "")
+        key, then = keyword(spec["name"]), match.group(2) or ""
+        if then.strip() == spec["value"]:
+            return f"{key}={spec['value']}"
+        if then.strip() and then.strip().islower() and _is_choice(spec, then.strip()):
+            return f"{key}='{then.strip()}'"
+        return key + then
     text = text.replace("on stderr", "to the terrain_sketch logger")
-    return re.sub(r"(--[a-z][a-z-]*)( [A-Z][A-Z.,]*\b)?", named, text)
+    return re.sub(r"(--[a-z][a-z-]*)( [A-Z][A-Z.,]*\b| [a-z]+\b)?", named, text)
 
 
 def options_help(command, leave_out=()):

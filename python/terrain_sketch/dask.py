@@ -181,8 +181,9 @@ def silhouettes(input, output, client=None, band_profiles=None, *, progress=None
     again by another. OUTPUT is written whole at the end, or not at all.
     """
     input_path, output_path = _options.path_argument(input), _options.path_argument(output)
-    return _run(input_path, output_path, client, band_profiles, _options.to_arguments(options),
-                progress)
+    with _options.keyword_errors("dask.silhouettes"):
+        return _run(input_path, output_path, client, band_profiles,
+                    _options.to_arguments(options), progress, "dask.silhouettes")
 
 
 def _checked_band_profiles(band_profiles):
@@ -196,13 +197,13 @@ def _checked_band_profiles(band_profiles):
     return int(band_profiles)
 
 
-def _run(input_path, output_path, client, band_profiles, arguments, progress):
+def _run(input_path, output_path, client, band_profiles, arguments, progress, function=None):
     """silhouettes() with the command line's arguments; `client` a Client, a scheduler's address,
-    or None."""
+    or None; the notes in the words of `function` (None: the command line's)."""
     from dask.distributed import Client
 
     band_profiles = _checked_band_profiles(band_profiles)
-    hooks = _options.hooks(progress)
+    hooks = _options.hooks(progress, function)
     plan = _native.plan_bands(input_path, output_path, arguments, hooks)
     cluster, own_client = None, client is None or isinstance(client, str)
     if client is None:
@@ -215,7 +216,8 @@ def _run(input_path, output_path, client, band_profiles, arguments, progress):
         workers = len(client.scheduler_info()["workers"])
         width = band_profiles if band_profiles is not None else _band_width(profiles, workers)
         bands = _bands(profiles, width, taper=band_profiles is None)
-        statistics = _stitch(client, input_path, output_path, arguments, plan, bands, progress)
+        statistics = _stitch(client, input_path, output_path, arguments, plan, bands, progress,
+                             function)
     finally:
         if own_client:
             client.close()
@@ -224,7 +226,7 @@ def _run(input_path, output_path, client, band_profiles, arguments, progress):
     return json.loads(statistics)
 
 
-def _stitch(client, input_path, output_path, arguments, plan, bands, progress):
+def _stitch(client, input_path, output_path, arguments, plan, bands, progress, function):
     """Submits every band, then stitches them as they come back, in order, writing each stroke
     as soon as it is whole; a band whose guess of the chains' order was wrong is sketched again
     from the true order."""
@@ -256,7 +258,7 @@ def _stitch(client, input_path, output_path, arguments, plan, bands, progress):
 
     try:
         # Ctrl-C reaches Python's own handler while the client waits for a band.
-        hooks = _native.RunHooks(None, _options.log_line, False)
+        hooks = _native.RunHooks(None, _options.notes_of(function), False)
         return _native.stitch_bands(input_path, output_path, arguments, filter_report, z_ref,
                                     profiles, next_band, again, hooks)
     finally:

@@ -125,7 +125,8 @@ def test_bad_arrays_and_options():
             terrain_sketch.sketch(not_heights, transform, nodata, crs)
     with pytest.raises(ValueError, match="neither reads nor writes files: preview"):
         terrain_sketch.sketch(heights, transform, nodata, crs, preview="p.svg")
-    with pytest.raises(ValueError, match="does not take --observer"):
+    with pytest.raises(ValueError, match=r"sketch\(\) does not take observer \(a keyword of "
+                       r"panorama\(\)\); help\(terrain_sketch.sketch\)"):
         terrain_sketch.sketch(heights, transform, nodata, crs, observer=(1, 2))
     with pytest.raises(ValueError, match="6 numbers"):
         terrain_sketch.sketch(heights, transform[:4], nodata, crs)
@@ -142,7 +143,7 @@ def test_a_grid_without_georeferencing_takes_a_cell_size():
     heights, transform, nodata, _ = read_dem(SAMPLE)
     strokes = terrain_sketch.sketch(heights, None, nodata, cell_size=75)
     assert len(strokes) > 0 and strokes.crs == ""
-    with pytest.raises(terrain_sketch.Error, match="cell-size"):
+    with pytest.raises(terrain_sketch.Error, match="give it with cell_size"):
         terrain_sketch.sketch(heights, None, nodata)
 
 

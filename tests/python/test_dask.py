@@ -247,9 +247,11 @@ def test_options_a_run_in_bands_cannot_take(tmp_path, client):
     out = tmp_path / "out.gpkg"
     for options, words in [({"strokes": "exact", "adapt": "local"}, "not locally"),
                            ({"strokes": "exact", "preview": "p.svg"}, "OUTPUT only"),
-                           ({"strokes": "exact", "observer": (1, 2)}, "does not take")]:
-        with pytest.raises(ValueError, match=words):
+                           ({"strokes": "exact", "observer": (1, 2)},
+                            r"dask.silhouettes\(\) does not take observer")]:
+        with pytest.raises(ValueError, match=words) as refused:
             terrain_sketch.dask.silhouettes(SAMPLE, out, client, **options)
+        assert "--" not in str(refused.value)  # keywords, not the command line's flags
     with pytest.raises(terrain_sketch.Error, match="no.tif"):
         terrain_sketch.dask.silhouettes(tmp_path / "no.tif", out, client, strokes="exact")
     # 0 was taken as "chosen for the cluster"; text and fractions raised a TypeError from inside.

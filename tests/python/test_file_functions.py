@@ -2,6 +2,7 @@
 statistics; bad options raise ValueError with its words."""
 
 import json
+import logging
 import os
 import re
 import shutil
@@ -10,6 +11,7 @@ import sqlite3
 import pytest
 
 import terrain_sketch
+from terrain_sketch._options import keyword_message
 from conftest import DATA, SAMPLE
 
 # The sample's centre, where a panorama's viewer stands.
@@ -96,26 +98,52 @@ def test_statistics_follow_the_options(tmp_path):
 
 
 @pytest.mark.parametrize("options,words", [
-    ({"observer": (1, 2)}, "silhouettes does not take --observer (an option of panorama)"),
-    ({"azimut": 90}, "unknown option '--azimut'"),
-    ({"azimuth": "east"}, "--azimuth needs a number, got 'east'"),
+    ({"observer": (1, 2)}, "silhouettes() does not take observer (a keyword of panorama()); "
+     "help(terrain_sketch.silhouettes) lists the keywords it takes"),
+    ({"azimut": 90}, "unknown keyword 'azimut'"),
+    ({"azimuth": "east"}, "azimuth needs a number, got 'east'"),
     ({"azimuth": True}, "azimuth takes DEG, not True"),
     ({"no_diagonals": 3}, "no_diagonals is a switch"),
     ({"filter": "clever"}, "filter must be 'adaptive' or 'fixed', got 'clever'"),
     ({"ve": -1}, "exaggeration"),
     ({"preview": "picture.bmp"}, "give it a .png, .svg or .pdf name"),
+    ({"page_scale": 50000}, "page, page_scale and plotter shape the preview picture: give preview"),
 ])
-def test_bad_options_raise_value_error_with_the_command_lines_words(tmp_path, cli, options,
-                                                                     words):
+def test_bad_options_raise_value_error_in_keywords(tmp_path, cli, options, words):
     with pytest.raises(ValueError) as raised:
         terrain_sketch.silhouettes(SAMPLE, tmp_path / "out.gpkg", **options)
-    assert words in str(raised.value)
+    said = str(raised.value)
+    assert words in said
+    # The command line's words named its flags and its --help, which a Python caller has not.
+    assert "--" not in said and "terrain-sketch" not in said
     assert not os.listdir(tmp_path)
-    if not any(isinstance(value, (bool, int)) and key != "ve" for key, value in options.items()):
-        # Spelled for the command line, the same options get the same words.
+    if not any(isinstance(value, (bool, int)) and key not in ("ve", "page_scale")
+               for key, value in options.items()):
+        # Spelled for the command line, the same options are refused for the same cause.
         code, err = cli("silhouettes", SAMPLE, tmp_path / "out.gpkg",
                         *cli_arguments(options, str(tmp_path)))
-        assert code == 1 and f"terrain-sketch: {raised.value}\n" == err
+        assert code == 1 and err.startswith("terrain-sketch: ") and err.endswith("\n")
+        assert said == keyword_message(err[len("terrain-sketch: "):-1], "silhouettes")
+
+
+def test_notes_and_run_failures_name_keywords(tmp_path, caplog):
+    caplog.set_level(logging.INFO, logger="terrain_sketch")
+    terrain_sketch.silhouettes(SAMPLE, tmp_path / "out.gpkg")
+    notes = [record.getMessage() for record in caplog.records]
+    # The command line's note reads "(--filter fixed keeps 20, 12, 8.75)".
+    assert any("(filter='fixed' keeps 20, 12, 8.75)" in note for note in notes), notes
+    assert not any("--" in note for note in notes), notes
+    # A run refused for its DEM names the keyword that mends it, here cell_size.
+    from osgeo import gdal
+    heights = gdal.Open(SAMPLE).ReadAsArray()
+    dem = tmp_path / "bare.tif"  # no transform, no CRS
+    bare = gdal.GetDriverByName("GTiff").Create(str(dem), heights.shape[1], heights.shape[0], 1,
+                                                gdal.GDT_Float32)
+    bare.GetRasterBand(1).WriteArray(heights)
+    bare = None  # closed: written
+    with pytest.raises(terrain_sketch.Error) as refused:
+        terrain_sketch.silhouettes(dem, tmp_path / "bare.gpkg")
+    assert "cell_size" in str(refused.value) and "--" not in str(refused.value)
 
 
 def test_paths_as_text_bytes_or_path_objects_give_one_file(tmp_path):
