@@ -18,6 +18,7 @@ go to the ``terrain_sketch`` logger.
 """
 
 import json
+from numbers import Integral
 
 from . import _native, _options
 from ._errors import Cancelled, Error
@@ -125,6 +126,8 @@ def sketch(heights, transform=None, nodata=None, crs=None, *, progress=None, **o
             raise ValueError(f"sketch() neither reads nor writes files: {key} is an option of "
                              "silhouettes(), which does")
     crs_text = "" if crs is None else crs.to_wkt() if hasattr(crs, "to_wkt") else str(crs)
+    if isinstance(crs, Integral) and not isinstance(crs, bool):
+        crs_text = f"EPSG:{int(crs)}"  # an EPSG code alone, as pyproj takes it
     with _options.keyword_errors("sketch"):
         native = _native.sketch(heights_array, numbers, crs_text,
                                 None if nodata is None else float(nodata),
@@ -143,7 +146,8 @@ to_geodataframe(). The same recipe and options as silhouettes(), on the array in
         without georeferencing (then give cell_size). Rows from the south (a positive row step,
         netCDF's order) or columns from the east are read as a flipped copy
     nodata: the value that marks no data, if any
-    crs: the CRS, as WKT, "EPSG:N" or an object with to_wkt() (rasterio's, pyproj's)
+    crs: the CRS, as WKT, "EPSG:N", an EPSG code (32616) or an object with to_wkt() (rasterio's,
+        pyproj's)
 
 Options:
 {_options.options_help("silhouettes", _FILE_OPTIONS)}

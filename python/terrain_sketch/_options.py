@@ -7,6 +7,7 @@ checked by the command line's parser, so a bad one raises its message.
 
 import contextlib
 import logging
+import numbers
 import os
 import re
 import threading
@@ -30,17 +31,27 @@ def _option_named(key):
     return None
 
 
+def _is_truth(value):
+    """True and False, Python's or numpy's (np.bool_ is no bool)."""
+    return isinstance(value, bool) or getattr(getattr(value, "dtype", None), "kind", "") == "b"
+
+
 def _value_text(key, spec, value):
-    if isinstance(value, bool):
+    if _is_truth(value):
         raise ValueError(f"{key} takes {spec['value']}, not {value}")
-    if isinstance(value, (tuple, list)):
+    if isinstance(value, (tuple, list)) or getattr(value, "ndim", 0) == 1:  # numpy's too
+        value = tuple(value)
         # X,Y: its numbers counted (a third one was named as the second's fault).
         parts = spec["value"].count(",") + 1
         if parts > 1 and len(value) != parts:
             raise ValueError(f"{key} takes {spec['value']}, {parts} numbers, not {value!r}")
         return ",".join(_value_text(key, spec, part) for part in value)
-    if isinstance(value, float):
-        return repr(value)
+    # numpy's scalars as Python's numbers: numpy 2 gives repr(np.float64(45)) as
+    # "np.float64(45.0)", which the parser refused.
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Real):
+        return repr(float(value))
     if isinstance(value, (os.PathLike, bytes)):
         return os.fsdecode(value)
     return str(value)

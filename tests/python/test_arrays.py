@@ -114,6 +114,35 @@ def test_rasterio_style_affine_and_crs_objects():
     assert "UTM zone 16N" in a.crs
 
 
+def test_numpy_numbers_and_an_epsg_code_are_taken_as_pythons():
+    heights, transform, nodata, crs = read_dem(SAMPLE)
+    plain = terrain_sketch.sketch(heights, transform, nodata, "EPSG:32616", azimuth=200.5,
+                                  base_slope=30)
+    numpy = terrain_sketch.sketch(heights, transform, nodata, 32616, azimuth=np.float64(200.5),
+                                  base_slope=np.int64(30))
+    np.testing.assert_array_equal(plain.x, numpy.x)
+    assert plain.crs == numpy.crs and "UTM zone 16N" in numpy.crs
+
+    class Numpy2Float(float):  # numpy 2's np.float64, whose repr is "np.float64(200.5)"
+        def __repr__(self):
+            return f"np.float64({float(self)})"
+    spelled = terrain_sketch.sketch(heights, transform, nodata, crs, azimuth=Numpy2Float(200.5),
+                                    base_slope=30)
+    np.testing.assert_array_equal(plain.x, spelled.x)
+    with pytest.raises(ValueError, match="azimuth takes DEG, not True"):
+        terrain_sketch.sketch(heights, transform, nodata, crs, azimuth=np.True_)
+
+
+def test_an_observer_as_a_numpy_array(tmp_path):
+    from test_file_functions import OBSERVER, gpkg_rows
+    terrain_sketch.panorama(SAMPLE, tmp_path / "a.gpkg", observer=OBSERVER, max_distance=9000)
+    terrain_sketch.panorama(SAMPLE, tmp_path / "b.gpkg", observer=np.array(OBSERVER),
+                            max_distance=9000)
+    assert gpkg_rows(str(tmp_path / "a.gpkg")) == gpkg_rows(str(tmp_path / "b.gpkg"))
+    with pytest.raises(ValueError, match="observer takes X,Y, 2 numbers"):
+        terrain_sketch.panorama(SAMPLE, tmp_path / "c.gpkg", observer=np.zeros(3))
+
+
 def test_bad_arrays_and_options():
     heights, transform, nodata, crs = read_dem(SAMPLE)
     with pytest.raises(ValueError, match="2-D"):
