@@ -31,10 +31,16 @@ class Strokes:
 
     def coordinates(self, k):
         """Stroke ``k``'s points as an (n, 2) array, or (n, 3) with its weights as a third column
-        for drawn strokes."""
+        for drawn strokes. ``k`` counts from 0, or back from the last at -1, as a list's index."""
+        import operator
+
         import numpy as np
 
-        start, end = self.offsets[k], self.offsets[k + 1]
+        index = operator.index(k)  # a whole number: 1.5 is no stroke
+        if not -len(self) <= index < len(self):
+            raise IndexError(f"stroke {index} is none of the {len(self)} strokes")
+        index %= len(self)  # -1 read offsets[-1]:offsets[0], an empty stroke
+        start, end = self.offsets[index], self.offsets[index + 1]
         parts = [self.x[start:end], self.y[start:end]]
         if self.m is not None:
             parts.append(self.m[start:end])

@@ -176,6 +176,24 @@ def test_a_grid_without_georeferencing_takes_a_cell_size():
         terrain_sketch.sketch(heights, None, nodata)
 
 
+def test_strokes_are_indexed_as_a_list_is():
+    heights, transform, nodata, crs = read_dem(SAMPLE)
+    strokes = terrain_sketch.sketch(heights, transform, nodata, crs)
+    n = len(strokes)
+    last = np.column_stack([strokes.x[strokes.offsets[n - 1]:], strokes.y[strokes.offsets[n - 1]:],
+                            strokes.m[strokes.offsets[n - 1]:]])
+    assert len(last) >= 2
+    # -1 read the offsets from the last to the first: an empty stroke.
+    np.testing.assert_array_equal(strokes.coordinates(-1), last)
+    np.testing.assert_array_equal(strokes.coordinates(-n), strokes.coordinates(0))
+    np.testing.assert_array_equal(strokes.coordinates(np.int64(n - 1)), last)
+    for beyond in (n, -n - 1):
+        with pytest.raises(IndexError, match=f"stroke {beyond} is none of the {n} strokes"):
+            strokes.coordinates(beyond)
+    with pytest.raises(TypeError):
+        strokes.coordinates(1.5)
+
+
 def test_geodataframe():
     geopandas = pytest.importorskip("geopandas")
     heights, transform, nodata, crs = read_dem(SAMPLE)
