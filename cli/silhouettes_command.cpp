@@ -26,14 +26,16 @@ void print_timings(const StageTimings& t, double write_s, double commit_s, std::
 }
 
 // The preview draws the strokes over the whole DEM turned to the view, held for the run.
-io::PlotterReport write_preview(const Options& o, SilhouetteResult& result,
+io::PlotterReport write_preview(const Options& o, const SilhouetteResult& result,
                                 std::vector<Stroke>&& drawn, const io::Dem& whole,
                                 const std::string& note, const ProgressFn& progress) {
-  result.strokes = std::move(drawn);
+  SilhouetteResult shown;  // what the page needs of the run, the strokes moved in
+  shown.strokes = std::move(drawn);
+  shown.z_ref = result.z_ref;
   io::PageOptions page = o.page;
   page.description = note;
-  return io::write_preview(o.preview, result, whole.oriented, whole.frame, whole.geotransform,
-                           o.params.view, o.params.geometry, page, progress);
+  return io::write_preview(o.preview, std::move(shown), whole.oriented, whole.frame,
+                           whole.geotransform, o.params.view, o.params.geometry, page, progress);
 }
 
 // The run in a sentence, for the outputs' metadata.

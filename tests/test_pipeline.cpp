@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "catch_compat.h"
+#include "core/base/release_storage.h"
 #include "spec_oracle.h"
 #include "test_support.h"
 
@@ -333,6 +334,18 @@ TEST_CASE("an allocation over half of the machine's memory is refused before it 
   CHECK_THROWS_WITH(check_fits_in_memory(1e18, "the visibility of 4e+18 samples", "sample less"),
                     Catch::Contains("the visibility of 4e+18 samples would take 1000000000.0 GB, "
                                     "more than half of this machine's memory; sample less"));
+}
+
+TEST_CASE("storage released is let go, where assigning an empty list kept it",
+          "[pipeline][memory]") {
+  std::vector<StrokeVertex> vertices(1000);
+  vertices = {};  // an empty initializer list assigned: emptied, its memory kept
+  REQUIRE(vertices.capacity() >= 1000);
+  release_storage(vertices);
+  CHECK(vertices.capacity() == 0);
+  std::vector<float, LargePageAllocator<float>> heights(1 << 20, 1.0f);  // a strip's buffer
+  release_storage(heights);
+  CHECK(heights.capacity() == 0);
 }
 
 TEST_CASE("strips must arrive in order and cover the grid", "[pipeline][strips]") {

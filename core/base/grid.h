@@ -15,6 +15,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/large_pages.h"
+#include "core/base/release_storage.h"
 
 namespace tsk {
 
@@ -53,7 +54,7 @@ class Grid {
   // memory costs a page fault for every page.
   void reshape(std::size_t rows, std::size_t cols, Unset) {
     const std::size_t n = checked_cell_count(rows, cols);
-    if (n > cells_.capacity()) cells_ = {};  // no cell is worth copying
+    if (n > cells_.capacity()) release_storage(cells_);  // no cell is worth copying or keeping
     cells_.resize(n);
     rows_ = rows;
     cols_ = cols;

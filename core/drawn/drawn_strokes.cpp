@@ -5,6 +5,7 @@
 #include <iterator>
 #include <limits>
 
+#include "core/base/release_storage.h"
 #include "core/drawn/drawing_scale.h"
 #include "core/drawn/stroke_smoothing.h"
 #include "core/drawn/stroke_weights.h"
@@ -71,7 +72,7 @@ bool finish_stroke(Stroke& stroke, const DrawingSetup& setup) {
   if (!moves) stroke.length = weighed_length;
   const double weight = relief_weight(relief, setup.relief_full);
   for (double& w : stroke.weights) w *= weight;
-  stroke.vertices = {};
+  release_storage(stroke.vertices);
   return true;
 }
 

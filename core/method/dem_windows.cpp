@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/base/errors.h"
+#include "core/base/release_storage.h"
 #include "core/method/orient.h"
 #include "core/method/resample.h"
 
@@ -103,7 +104,7 @@ void DemBand::load(const OrientedFrame& frame, std::size_t first, std::size_t co
     const double largest =
         std::min(cells_per_sample * static_cast<double>(count) * static_cast<double>(frame.length),
                  static_cast<double>(frame.dem_rows) * static_cast<double>(frame.dem_cols));
-    heights_ = {};
+    release_storage(heights_);  // before the larger block is taken, not after
     heights_.reserve(std::max(cells, static_cast<std::size_t>(1.125 * largest)));
   }
   heights_.resize(cells);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/base/release_storage.h"
 #include "io/gpkg/gpkg_connection.h"
 
 namespace tsk::io {
@@ -256,7 +257,7 @@ void GpkgLineAppender::finish(const std::string& description) {
   }
   if (!count_trigger_.empty()) db.run(count_trigger_);
   add_gpkg_spatial_index(dataset_, table_, boxes_);
-  boxes_ = {};
+  release_storage(boxes_);
 }
 
 GpkgFileAppender::GpkgFileAppender(const std::string& path, const std::string& table)

@@ -25,12 +25,12 @@ void check_png_page(const PageSize& size);
 // black, formulated strokes thinner, on white; drawn strokes tapered and weighted for depth. The
 // extension of `path` picks the format: .png a picture, .svg or .pdf vector art (sketch_page.h,
 // vector_art.h). Whole or not at all. Returns the plotter's figures for a plotter page. A picture
-// reports its drawing to `progress`, and a false answer throws Cancelled.
-PlotterReport write_preview(const std::string& path, const SilhouetteResult& result,
-                            const HeightGrid& z, const OrientedFrame& frame,
-                            const GeoTransform& geotransform, const ViewParams& view,
-                            Geometry geometry, const PageOptions& options = {},
-                            const ProgressFn& progress = {});
+// reports its drawing to `progress`, and a false answer throws Cancelled. `result`'s strokes are
+// let go as they are laid out (move them in: a copy holds them all twice).
+PlotterReport write_preview(const std::string& path, SilhouetteResult result, const HeightGrid& z,
+                            const OrientedFrame& frame, const GeoTransform& geotransform,
+                            const ViewParams& view, Geometry geometry,
+                            const PageOptions& options = {}, const ProgressFn& progress = {});
 
 // Writes a laid-out page in the format of `path`'s extension, as write_preview does.
 PlotterReport write_page(const std::string& path, const SketchPage& page,

@@ -152,14 +152,15 @@ PageSize parse_page_size(const std::string& text) {
       text + "'");
 }
 
-SketchPage lay_out_sketch(const SilhouetteResult& result, const HeightGrid& z,
-                          const OrientedFrame& frame, const GeoTransform& geotransform,
-                          const ViewParams& view, Geometry geometry, const PageOptions& options) {
+SketchPage lay_out_sketch(SilhouetteResult result, const HeightGrid& z, const OrientedFrame& frame,
+                          const GeoTransform& geotransform, const ViewParams& view,
+                          Geometry geometry, const PageOptions& options) {
   const Plot plot(z, frame, geotransform, view, geometry, result.z_ref);
   SketchPage page;
   const Placement at = options.size.empty() ? pixel_placement(plot, options, page)
                                             : paper_placement(plot, options, page);
-  for (const Stroke& s : result.strokes) {
+  page.paths.reserve(result.strokes.size());
+  for (Stroke& s : result.strokes) {
     const bool drawn = !s.weights.empty();
     const ClassWidths widths =
         page.millimetres ? (drawn ? kDrawnMm : kExactMm) : (drawn ? kDrawnPx : kExactPx);
@@ -175,6 +176,7 @@ SketchPage lay_out_sketch(const SilhouetteResult& result, const HeightGrid& z,
       path.widths.assign(path.points.size(), full);
     }
     page.paths.push_back(std::move(path));
+    s = Stroke{};  // its path made: the page and the strokes are not held whole together
   }
   return page;
 }

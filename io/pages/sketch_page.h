@@ -48,9 +48,9 @@ struct SketchPage {
 // Lays the strokes of `result` out on the page. Exact strokes are drawn through their cells'
 // centres; drawn strokes through their points, carried back into the view (the DEM's heights
 // between cells for map geometry), with their weights as widths. Throws Error when the sketch
-// at the scale asked for does not fit the page.
-SketchPage lay_out_sketch(const SilhouetteResult& result, const HeightGrid& z,
-                          const OrientedFrame& frame, const GeoTransform& geotransform,
-                          const ViewParams& view, Geometry geometry, const PageOptions& options);
+// at the scale asked for does not fit the page. Each stroke is let go once its path is made.
+SketchPage lay_out_sketch(SilhouetteResult result, const HeightGrid& z, const OrientedFrame& frame,
+                          const GeoTransform& geotransform, const ViewParams& view,
+                          Geometry geometry, const PageOptions& options);
 
 }  // namespace tsk::io
