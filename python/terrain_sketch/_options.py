@@ -134,7 +134,8 @@ def keyword_errors(function):
         said = keyword_message(str(error), function)
         if said == str(error):
             raise
-        raise type(error)(said) from None
+        # As the package's own kinds: a subclass may not take a message alone.
+        raise (_errors.Error if isinstance(error, _errors.Error) else ValueError)(said) from None
 
 
 def _is_choice(spec, word):
