@@ -8,6 +8,7 @@
 #include <limits>
 #include <locale>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "io/pages/sketch_page.h"
