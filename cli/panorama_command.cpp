@@ -29,14 +29,6 @@ struct PanoramaTimes {
   double read = 0, peaks = 0, strokes = 0, visibility = 0, preview = 0;
 };
 
-// Runs `work`, adding its wall time to `seconds`.
-template <typename Work>
-void timed(double& seconds, Work&& work) {
-  const Clock::time_point start = Clock::now();
-  work();
-  seconds += seconds_since(start);
-}
-
 void print_timings(const PanoramaTimes& t, const PanoramaRun& run, std::ostream& err) {
   err << "timings (s): read " << t.read << ", survey " << run.survey_seconds << ", rays "
       << run.rays_seconds << ", peaks " << t.peaks << ", write strokes " << t.strokes
@@ -73,7 +65,7 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaRun& run,
   const std::vector<PeakLeader>* peaks = o.peaks.empty() ? nullptr : &leaders;
   const std::string note =
       panorama_note(dem_name(o), o.dem.band, o.panorama, run.exaggeration, TSK_VERSION);
-  timed(times.strokes, [&] {
+  add_wall_time(times.strokes, [&] {
     io::write_panorama_strokes(o.output, o.format, result.strokes, dem.srs_wkt, peaks,
                                run.exaggeration, note);
   });
@@ -81,7 +73,7 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaRun& run,
       << " (--panorama-exaggeration)\n";
   stop_if_interrupted();
   if (!o.visibility.empty()) {
-    timed(times.visibility, [&] {
+    add_wall_time(times.visibility, [&] {
       io::write_visibility(
           o.visibility,
           // The progress line is full by now: what `progress` does here is stop on Ctrl-C.
@@ -92,7 +84,7 @@ void write_outputs(const Options& o, const io::Dem& dem, const PanoramaRun& run,
   }
   if (!o.preview.empty()) {
     double exaggeration = 1.0;
-    timed(times.preview, [&] {
+    add_wall_time(times.preview, [&] {
       const io::PanoramaPage page = lay_out_panorama(result, o.params.strokes, o.page, leaders);
       io::write_page(o.preview, page.page, o.page, progress);
       exaggeration = page.exaggeration;
@@ -110,18 +102,19 @@ std::string panorama(const Args& args, std::ostream& out, std::ostream& err,
   check_before_work(o);
   PanoramaTimes times;
   std::optional<io::HeldDemFile> held;
-  timed(times.read, [&] { held.emplace(read_whole_dem(o, err)); });
+  add_wall_time(times.read, [&] { held.emplace(read_whole_dem(o, err)); });
   const io::Dem& dem = held->dem;
   // The peaks are read before the work, so that a bad file is refused first.
   std::vector<NamedPoint> peaks;
   if (!o.peaks.empty())
-    timed(times.peaks, [&] { peaks = io::read_named_points(o.peaks, o.peak_names, dem.srs_wkt); });
+    add_wall_time(times.peaks,
+                  [&] { peaks = io::read_named_points(o.peaks, o.peak_names, dem.srs_wkt); });
   const PanoramaChoice choice{o.panorama, o.params, !o.visibility.empty()};
   const PanoramaRun run = sketch_panorama_on(held->held(), choice, progress);
   const PanoramaResult& result = run.result;
   print_filter(run.filter, err);
   std::vector<PeakLeader> leaders;
-  timed(times.peaks, [&] {
+  add_wall_time(times.peaks, [&] {
     leaders = lead_peaks(result, see_peaks(dem.oriented, dem.geotransform, result.rays, peaks));
   });
   // The outputs need the DEM's grid and georeferencing, not its heights: freed, they make room

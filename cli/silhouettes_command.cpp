@@ -29,12 +29,9 @@ void print_timings(const StageTimings& t, double write_s, double commit_s, std::
 io::PlotterReport write_preview(const Options& o, const SilhouetteResult& result,
                                 std::vector<Stroke>&& drawn, const io::Dem& whole,
                                 const std::string& note, const ProgressFn& progress) {
-  SilhouetteResult shown;  // what the page needs of the run, the strokes moved in
-  shown.strokes = std::move(drawn);
-  shown.z_ref = result.z_ref;
   io::PageOptions page = o.page;
   page.description = note;
-  return io::write_preview(o.preview, std::move(shown), whole.oriented, whole.frame,
+  return io::write_preview(o.preview, std::move(drawn), result.z_ref, whole.oriented, whole.frame,
                            whole.geotransform, o.params.view, o.params.geometry, page, progress);
 }
 

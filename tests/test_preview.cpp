@@ -284,8 +284,9 @@ TEST_CASE("a PNG preview reports its drawing, stops when told and is bounded in 
   tsk::io::PageOptions page;
   page.size = "A2";
   std::vector<double> seen;
-  tsk::io::write_preview(dir / "again.png", result, dem.oriented, dem.frame, dem.geotransform,
-                         params.view, params.geometry, page, [&](double fraction) {
+  tsk::io::write_preview(dir / "again.png", result.strokes, result.z_ref, dem.oriented, dem.frame,
+                         dem.geotransform, params.view, params.geometry, page,
+                         [&](double fraction) {
                            seen.push_back(fraction);
                            return true;
                          });
@@ -294,10 +295,11 @@ TEST_CASE("a PNG preview reports its drawing, stops when told and is bounded in 
   CHECK(seen.back() == Approx(1.0));
   for (const double stop_at : {0.01, 0.5, 0.9}) {
     CAPTURE(stop_at);
-    CHECK_THROWS_AS(tsk::io::write_preview(dir / "stopped.png", result, dem.oriented, dem.frame,
-                                           dem.geotransform, params.view, params.geometry, page,
-                                           [&](double fraction) { return fraction < stop_at; }),
-                    tsk::Cancelled);
+    CHECK_THROWS_AS(
+        tsk::io::write_preview(dir / "stopped.png", result.strokes, result.z_ref, dem.oriented,
+                               dem.frame, dem.geotransform, params.view, params.geometry, page,
+                               [&](double fraction) { return fraction < stop_at; }),
+        tsk::Cancelled);
     CHECK_FALSE(std::filesystem::exists(dir / "stopped.png"));
   }
   // A page whose picture would take gigabytes is refused before any work, with its size; as

@@ -15,6 +15,14 @@ inline double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// Runs `work`, adding its wall time to `seconds`.
+template <typename Work>
+void add_wall_time(double& seconds, Work&& work) {
+  const Clock::time_point start = Clock::now();
+  work();
+  seconds += seconds_since(start);
+}
+
 // The stages that run profile by profile inside SilhouetteStream::add_strip.
 inline constexpr double StageTimings::*kProfileStages[] = {
     &StageTimings::visibility, &StageTimings::candidates, &StageTimings::filter,
@@ -33,9 +41,7 @@ struct StageClock {
   template <typename Work>
   void time(double StageTimings::*stage, Work&& work) {
     if (!timed) return work();
-    const auto start = Clock::now();
-    work();
-    seconds.*stage += seconds_since(start);
+    add_wall_time(seconds.*stage, work);
   }
 };
 

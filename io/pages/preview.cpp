@@ -148,12 +148,13 @@ void check_png_page(const PageSize& size) {
                    std::ceil(size.height_mm * kPixelsPerMm));
 }
 
-PlotterReport write_preview(const std::string& path, SilhouetteResult result, const HeightGrid& z,
-                            const OrientedFrame& frame, const GeoTransform& geotransform,
-                            const ViewParams& view, Geometry geometry, const PageOptions& options,
+PlotterReport write_preview(const std::string& path, std::vector<Stroke> strokes, double z_ref,
+                            const HeightGrid& z, const OrientedFrame& frame,
+                            const GeoTransform& geotransform, const ViewParams& view,
+                            Geometry geometry, const PageOptions& options,
                             const ProgressFn& progress) {
   SketchPage page =
-      lay_out_sketch(std::move(result), z, frame, geotransform, view, geometry, options);
+      lay_out_sketch(std::move(strokes), z_ref, z, frame, geotransform, view, geometry, options);
   page.description = options.description;
   return write_page(path, page, options, progress);
 }

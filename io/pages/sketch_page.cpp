@@ -152,15 +152,15 @@ PageSize parse_page_size(const std::string& text) {
       text + "'");
 }
 
-SketchPage lay_out_sketch(SilhouetteResult result, const HeightGrid& z, const OrientedFrame& frame,
-                          const GeoTransform& geotransform, const ViewParams& view,
-                          Geometry geometry, const PageOptions& options) {
-  const Plot plot(z, frame, geotransform, view, geometry, result.z_ref);
+SketchPage lay_out_sketch(std::vector<Stroke> strokes, double z_ref, const HeightGrid& z,
+                          const OrientedFrame& frame, const GeoTransform& geotransform,
+                          const ViewParams& view, Geometry geometry, const PageOptions& options) {
+  const Plot plot(z, frame, geotransform, view, geometry, z_ref);
   SketchPage page;
   const Placement at = options.size.empty() ? pixel_placement(plot, options, page)
                                             : paper_placement(plot, options, page);
-  page.paths.reserve(result.strokes.size());
-  for (Stroke& s : result.strokes) {
+  page.paths.reserve(strokes.size());
+  for (Stroke& s : strokes) {
     const bool drawn = !s.weights.empty();
     const ClassWidths widths =
         page.millimetres ? (drawn ? kDrawnMm : kExactMm) : (drawn ? kDrawnPx : kExactPx);

@@ -45,12 +45,13 @@ struct SketchPage {
   double label_size() const { return millimetres ? 3.0 : 13.0; }  // the text's height
 };
 
-// Lays the strokes of `result` out on the page. Exact strokes are drawn through their cells'
-// centres; drawn strokes through their points, carried back into the view (the DEM's heights
-// between cells for map geometry), with their weights as widths. Throws Error when the sketch
-// at the scale asked for does not fit the page. Each stroke is let go once its path is made.
-SketchPage lay_out_sketch(SilhouetteResult result, const HeightGrid& z, const OrientedFrame& frame,
-                          const GeoTransform& geotransform, const ViewParams& view,
-                          Geometry geometry, const PageOptions& options);
+// Lays the strokes out on the page (`z_ref`: the run's, SilhouetteResult::z_ref). Exact strokes are
+// drawn through their cells' centres; drawn strokes through their points, carried back into the
+// view (the DEM's heights between cells for map geometry), with their weights as widths. Throws
+// Error when the sketch at the scale asked for does not fit the page. Each stroke is let go once
+// its path is made.
+SketchPage lay_out_sketch(std::vector<Stroke> strokes, double z_ref, const HeightGrid& z,
+                          const OrientedFrame& frame, const GeoTransform& geotransform,
+                          const ViewParams& view, Geometry geometry, const PageOptions& options);
 
 }  // namespace tsk::io

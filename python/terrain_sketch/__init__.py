@@ -37,6 +37,8 @@ progress returns False; nothing is written then.
 
 
 def _command_function(command):
+    name = command.replace("-", "_")
+
     def run(input, output, *, progress=None, **options):
         arguments = [_options.path_argument(input), _options.path_argument(output)]
         arguments += _options.to_arguments(options)
@@ -45,7 +47,6 @@ def _command_function(command):
                                                     _options.hooks(progress, name))
         return json.loads(statistics) if statistics else {}
 
-    name = command.replace("-", "_")
     run.__name__ = run.__qualname__ = name
     run.__doc__ = (f"{run.__name__}(input, output, *, progress=None, **options)\n\n"
                    f"{_options.summary(command)} (terrain-sketch {command}).\n\n"
