@@ -6,10 +6,10 @@ import json
 class Strokes:
     """Strokes as columns: stroke ``k``'s points are ``x[offsets[k]:offsets[k + 1]]`` (and ``y``,
     and ``m``, the weight of each point of a drawn stroke, written as M in vector files; None for
-    exact strokes). ``columns`` holds the attributes, one array per field, named and ordered as
-    the vector outputs' fields (``class``, ``cells``, ``length``, ...; NaN for null).
-    ``statistics`` is the run's stage statistics as a dict, ``crs`` the DEM's CRS as WKT ("" for
-    none)."""
+    exact strokes). ``strokes[k]`` gives them as an array, and iterating gives each stroke's in
+    turn. ``columns`` holds the attributes, one array per field, named and ordered as the vector
+    outputs' fields (``class``, ``cells``, ``length``, ...; NaN for null). ``statistics`` is the
+    run's stage statistics as a dict, ``crs`` the DEM's CRS as WKT ("" for none)."""
 
     def __init__(self, native):
         self.x = native["x"]
@@ -19,11 +19,21 @@ class Strokes:
         import numpy as np  # here, so that the file functions need no numpy
 
         self.columns = {name: np.asarray(values) for name, values in native["columns"].items()}
+        # No stroke: an empty list reads as floats, which equal no class name.
+        self.columns["class"] = np.asarray(native["columns"]["class"], dtype=str)
         self.crs = native["crs"]
         self.statistics = json.loads(native["statistics"])
 
     def __len__(self):
         return len(self.offsets) - 1
+
+    def __getitem__(self, k):
+        """Stroke ``k``'s points, as ``coordinates(k)``."""
+        return self.coordinates(k)
+
+    def __iter__(self):
+        """Each stroke's points in turn, as ``coordinates(k)``."""
+        return (self.coordinates(k) for k in range(len(self)))
 
     def __repr__(self):
         factual = int((self.columns["class"] == "factual").sum())

@@ -1,6 +1,7 @@
 """sketch() on an array gives the strokes the command line writes from the file it was read from:
 the same geometries (M values too) and attributes, in the same order."""
 
+import importlib.util
 import os
 import sqlite3
 import struct
@@ -192,6 +193,14 @@ def test_strokes_are_indexed_as_a_list_is():
             strokes.coordinates(beyond)
     with pytest.raises(TypeError):
         strokes.coordinates(1.5)
+    # Subscripts and iteration give the same arrays.
+    np.testing.assert_array_equal(strokes[-1], last)
+    with pytest.raises(IndexError):
+        strokes[n]
+    walked = list(strokes)
+    assert len(walked) == n
+    for k in (0, n // 2, n - 1):
+        np.testing.assert_array_equal(walked[k], strokes.coordinates(k))
 
 
 def test_geodataframe():
@@ -216,6 +225,12 @@ def test_a_run_that_draws_nothing_warns_why(caplog):
         strokes = terrain_sketch.sketch(heights, (500000, 10, 0, 4000000, 0, -10), None,
                                         "EPSG:32616")
     assert len(strokes) == 0
+    # No stroke is still Strokes: shown, walked and framed as any, its class column text.
+    assert repr(strokes) == "<Strokes: 0 factual, 0 formulated>"
+    assert strokes.columns["class"].dtype.kind == "U" and list(strokes) == []
+    if importlib.util.find_spec("geopandas"):
+        frame = strokes.to_geodataframe()
+        assert len(frame) == 0 and list(frame.columns[:2]) == ["class", "cells"]
     warnings = [r.getMessage() for r in caplog.records if r.levelname == "WARNING"]
     assert any(w.startswith("warning: no strokes: no cell of the DEM is hidden") for w in warnings)
     # The sample draws strokes, and warns of nothing.
