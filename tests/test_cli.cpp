@@ -37,7 +37,8 @@ struct VectorSummary {
   long long features = 0;
   std::map<std::string, long long> per_class;
   long long null_depth_formulated = 0;
-  long long measured = 0;  // features whose geometry read back has M values
+  long long measured = 0;                      // features whose geometry read back has M values
+  OGRwkbGeometryType layer_type = wkbUnknown;  // as the layer declares it
   int epsg = 0;
   std::vector<std::string> fields;
 };
@@ -49,6 +50,7 @@ VectorSummary summarise(const std::string& path) {
   REQUIRE(ds != nullptr);
   OGRLayer* layer = ds->GetLayer(0);
   VectorSummary s;
+  s.layer_type = layer->GetGeomType();
   OGRFeatureDefn* defn = layer->GetLayerDefn();
   for (int k = 0; k < defn->GetFieldCount(); ++k)
     s.fields.push_back(defn->GetFieldDefn(k)->GetNameRef());
@@ -204,6 +206,11 @@ TEST_CASE("output formats follow the extension", "[cli]") {
       if (std::string(command) == "silhouettes") {
         CHECK(told == (written.measured == 0));
         if (written.measured == 0) lost_m.insert(name);
+        // A layer of lines with M values is not declared 3D: QGIS took a SQLite file's so, and
+        // saving it elsewhere lost the weights.
+        CHECK_FALSE(OGR_GT_HasZ(written.layer_type));
+        if (written.measured > 0 && written.layer_type != wkbUnknown)
+          CHECK(written.layer_type == wkbLineStringM);
       } else {
         CHECK_FALSE(told);
       }
