@@ -60,6 +60,22 @@ void warnOfLostWeights(const QString& path, bool measured, QgsProcessingFeedback
           .arg(driver));
 }
 
+// The options QGIS creates a new file at `path` and its layer with: io's writer's for its format
+// (a SQLite file made SpatiaLite, so that its measured layer reads back as LineStringM, its layer
+// then told so: QGIS's own default for SQLite, FORMAT=WKB, is refused there).
+struct NewFileOptions {
+  QStringList file, layer;
+};
+NewFileOptions newFileOptions(const QString& path) {
+  const QString driver = QgsVectorFileWriter::driverForExtension(QFileInfo(path).suffix());
+  NewFileOptions options;
+  for (const std::string& option : io::new_file_options(driver.toStdString()))
+    options.file << QString::fromStdString(option);
+  if (options.file.contains(QStringLiteral("SPATIALITE=YES")))
+    options.layer << QStringLiteral("FORMAT=SPATIALITE");
+  return options;
+}
+
 // The files beside `path` named after it: those its format keeps with it (a shapefile's .shx and
 // .dbf, GML's .xsd, a GeoPackage's -journal), and the file itself.
 QStringList filesNamedAfter(const QString& path) {
@@ -217,10 +233,12 @@ LineOutput::LineOutput(const QgsProcessingAlgorithm& algorithm, const QVariantMa
   const bool gpkg = !file.addsLayer && target.endsWith(QLatin1String(".gpkg"), Qt::CaseInsensitive);
   std::optional<io::BulkLoadPages> pages;  // QGIS creates the file, in this thread
   if (gpkg) pages.emplace();
+  NewFileOptions options = file.addsLayer ? NewFileOptions() : newFileOptions(file.path);
+  if (gpkg)
+    options.layer << QStringLiteral("SPATIAL_INDEX=NO");  // GpkgLineSink builds it at the end
   mSink.reset(QgsProcessingParameters::parameterAsSink(
       definition, sinkParameters, fields, measured ? kLineStringM : kLineString, crs, context,
-      mDestination, QgsFeatureSink::SinkFlags(), QVariantMap(), QStringList(),
-      gpkg ? QStringList{QStringLiteral("SPATIAL_INDEX=NO")} : QStringList()));
+      mDestination, QgsFeatureSink::SinkFlags(), QVariantMap(), options.file, options.layer));
   pages.reset();
   if (!mSink) throw QgsProcessingException(SinkErrors::invalidSinkError(parameters, key));
   const QVariantMap parts =

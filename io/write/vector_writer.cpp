@@ -203,20 +203,6 @@ CPLStringList line_layer_options(const std::string& driver_name) {
   return options;
 }
 
-// The options a new file of `driver` is created with. A SQLite file in OGR's own flavour records a
-// measured layer's type as 3D (GDAL 3.6 and 3.10 read it back as a 3D line, and QGIS as
-// LineStringZ, so that saving it elsewhere drops the weights); SpatiaLite's records M. Without the
-// EPSG table SpatiaLite would fill (7 MB), only the layers' CRS is stored.
-CPLStringList dataset_options(GDALDriver& driver, const std::string& driver_name) {
-  CPLStringList options;
-  const char* known = driver.GetMetadataItem(GDAL_DMD_CREATIONOPTIONLIST);
-  if (driver_name == "SQLite" && known && std::strstr(known, "SPATIALITE")) {
-    options.SetNameValue("SPATIALITE", "YES");
-    options.SetNameValue("INIT_WITH_EPSG", "NO");
-  }
-  return options;
-}
-
 // Creates `layer` in `ds` (at `path` for messages) and fills it.
 void fill_line_layer(GDALDataset& ds, const std::string& path, const std::string& driver_name,
                      const LineLayer& spec, const GdalErrorCapture& capture) {
@@ -282,8 +268,10 @@ void write_line_layers(const std::string& path, const std::string& format,
   const auto fill = [&](const std::string& target) {
     std::optional<BulkLoadPages> pages;
     if (database) pages.emplace();
-    DatasetPtr ds(driver->Create(target.c_str(), 0, 0, 0, GDT_Unknown,
-                                 dataset_options(*driver, driver_name).List()));
+    CPLStringList options;
+    for (const std::string& option : new_file_options(driver_name))
+      options.AddString(option.c_str());
+    DatasetPtr ds(driver->Create(target.c_str(), 0, 0, 0, GDT_Unknown, options.List()));
     pages.reset();
     if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
     const bool transaction = ds->StartTransaction() == OGRERR_NONE;
@@ -388,6 +376,16 @@ bool keeps_m_values(const std::string& driver_name) {
       !write_measured_line(*driver, path, driver_name) || reads_back_measured_line(path);
   VSIRmdirRecursive(folder.c_str());
   return kept;
+}
+
+std::vector<std::string> new_file_options(const std::string& driver_name) {
+  if (driver_name != "SQLite") return {};
+  GDALAllRegister();
+  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("SQLite");
+  const char* known = driver ? driver->GetMetadataItem(GDAL_DMD_CREATIONOPTIONLIST) : nullptr;
+  if (!known || !std::strstr(known, "SPATIALITE")) return {};  // GDAL built without SpatiaLite
+  // Without the EPSG table SpatiaLite would fill (7 MB): only the layers' CRS is stored.
+  return {"SPATIALITE=YES", "INIT_WITH_EPSG=NO"};
 }
 
 void write_strokes(const std::string& path, const std::string& format, const std::string& srs_wkt,

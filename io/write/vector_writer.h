@@ -37,6 +37,11 @@ std::string check_vector_output(const std::string& path, const std::string& form
 // there are lost.
 bool keeps_m_values(const std::string& driver_name);
 
+// The options a new file of OGR driver `driver_name` is created with (NAME=VALUE). A SQLite file
+// is made SpatiaLite where GDAL can: in OGR's own flavour a measured layer is recorded as 3D, and
+// GDAL and QGIS read it back so (QGIS then saves it elsewhere without its weights).
+std::vector<std::string> new_file_options(const std::string& driver_name);
+
 // Writes one stroke to the layer being filled.
 using StrokeWriter = std::function<void(const Stroke& stroke)>;
 

@@ -348,9 +348,11 @@ TEST_CASE("drawn strokes to a format without M values are written with a warning
     return log.warnings.filter(QStringLiteral("keeps no M values")).size();
   };
   // Warned exactly when the layers read back have no M values (GDAL 3.10's GeoJSON driver says
-  // it takes them, and drops them); GML keeps none in any GDAL the project meets.
+  // it takes them, and drops them); GML keeps none in any GDAL the project meets. A SQLite file
+  // in OGR's own flavour kept them in its lines and declared its layer 3D, which QGIS read as
+  // LineStringZ: a layer with M values, no Z.
   int lost = 0;
-  for (const char* format : {"geojson", "gml", "gpkg", "fgb"}) {
+  for (const char* format : {"geojson", "gml", "gpkg", "fgb", "sqlite"}) {
     CAPTURE(format);
     RecordingFeedback log;
     const Run run = runAlgorithm(dem, outputsAs(dir, format), dir, &log);
@@ -359,9 +361,11 @@ TEST_CASE("drawn strokes to a format without M values are written with a warning
     QgsVectorLayer written(run.results.value("FORMULATED").toString(), "f", "ogr");
     REQUIRE(written.featureCount() > 0);
     const bool measured = QgsWkbTypes::hasM(written.wkbType());
+    CHECK_FALSE(QgsWkbTypes::hasZ(written.wkbType()));
     CHECK(warned(log) == (measured ? 0 : 2));  // one for each output
     lost += measured ? 0 : 1;
     CHECK((std::string(format) != "gml" || !measured));
+    CHECK((std::string(format) != "sqlite" || measured));
   }
   CHECK(lost >= 1);
   RecordingFeedback exact;
