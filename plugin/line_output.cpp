@@ -47,11 +47,16 @@ FileTarget fileTarget(const QString& target) {
   return {path, target.startsWith(QLatin1String("ogr:")) && QFileInfo(path).isFile()};
 }
 
+// The OGR driver QGIS writes a file at `path` with, named by its extension.
+QString driverOf(const QString& path) {
+  return QgsVectorFileWriter::driverForExtension(QFileInfo(path).suffix());
+}
+
 // Drawn strokes' weights are their M values: a file format that keeps none loses them, and the
 // styles then draw every stroke at one width. Said before the run, where the user can change it.
 void warnOfLostWeights(const QString& path, bool measured, QgsProcessingFeedback* feedback) {
   if (!measured || path.isEmpty() || !feedback) return;
-  const QString driver = QgsVectorFileWriter::driverForExtension(QFileInfo(path).suffix());
+  const QString driver = driverOf(path);
   if (driver.isEmpty() || io::keeps_m_values(driver.toStdString())) return;
   feedback->pushWarning(
       LineOutput::tr("%1 keeps no M values, so the drawn strokes' weights (their taper and depth, "
@@ -67,9 +72,8 @@ struct NewFileOptions {
   QStringList file, layer;
 };
 NewFileOptions newFileOptions(const QString& path) {
-  const QString driver = QgsVectorFileWriter::driverForExtension(QFileInfo(path).suffix());
   NewFileOptions options;
-  for (const std::string& option : io::new_file_options(driver.toStdString()))
+  for (const std::string& option : io::new_file_options(driverOf(path).toStdString()))
     options.file << QString::fromStdString(option);
   if (options.file.contains(QStringLiteral("SPATIALITE=YES")))
     options.layer << QStringLiteral("FORMAT=SPATIALITE");

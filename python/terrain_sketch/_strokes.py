@@ -18,9 +18,10 @@ class Strokes:
         self.offsets = native["offsets"]
         import numpy as np  # here, so that the file functions need no numpy
 
-        self.columns = {name: np.asarray(values) for name, values in native["columns"].items()}
-        # No stroke: an empty list reads as floats, which equal no class name.
-        self.columns["class"] = np.asarray(native["columns"]["class"], dtype=str)
+        # The class column as text at any length: an empty list reads as floats, which equal no
+        # class name.
+        self.columns = {name: np.asarray(values, dtype=str if name == "class" else None)
+                        for name, values in native["columns"].items()}
         self.crs = native["crs"]
         self.statistics = json.loads(native["statistics"])
 
