@@ -232,7 +232,9 @@ const std::vector<OptionSpec> kOptionTable = {
      kPreviewed, TSK_SET(preview, parse_preview_name)},
     {"--page", "SIZE", kInputOutput,
      "draw the preview on a page: A4, A3, A2, A1, A0, letter, tabloid or\n"
-     "WxH in mm (turned to suit the sketch; a PNG at 150 dpi)",
+     "WxH in mm (turned to suit the sketch; a PNG at 150 dpi). silhouettes:\n"
+     "drawn strokes are drawn for the page's scale when it is smaller than\n"
+     "the DEM's own (0.4 mm a cell) and --drawn-for is not given",
      kPreviewed, [](Options& o, const std::string&, const std::string& v) { o.page.size = v; }},
     {"--page-scale", "N", kInputOutput, "draw it at 1:N of the ground (default: fit the page)",
      kSilhouettes, TSK_SET(page.scale, parse_page_scale)},

@@ -11,6 +11,7 @@
 #include "cli/dem_note_text.h"
 #include "cli/interrupt.h"
 #include "core/base/stage_timing.h"
+#include "core/drawn/drawing_scale.h"
 #include "core/method/run_note.h"
 #include "io/pages/preview.h"
 #include "io/write/vector_writer.h"
@@ -55,6 +56,39 @@ struct RunDem {
   }
 };
 
+// A scale rounded to two significant figures, as map scales are given (1:547 312 is 1:550 000).
+double round_scale(double scale) {
+  const double unit = std::pow(10.0, std::floor(std::log10(scale)) - 1.0);
+  return std::round(scale / unit) * unit;
+}
+
+// Strokes drawn for the DEM's own scale (0.4 mm a cell) crowd into a grey texture on a preview
+// at a much smaller scale. A page states the map's scale: drawn strokes without --drawn-for are
+// drawn for it, in the vector output too, since both show one sketch. A picture without a page
+// size states none, so a warning names what to give.
+void fit_strokes_to_preview(Options& o, const io::Dem& dem, std::ostream& err) {
+  if (!o.params.strokes.drawn() || o.params.strokes.scale > 0.0) return;
+  // The preview's scale in map units, as --drawn-for takes it (ground metres per map unit apart).
+  const double shown =
+      io::preview_scale(dem.oriented, dem.frame, o.params.view, o.page) / dem.ground_scale;
+  const double own = own_scale(dem.geotransform);
+  if (!std::isfinite(shown) || !(own > 0.0) || !(shown > own)) return;
+  if (!o.page.size.empty()) {
+    o.params.strokes.scale = o.page.scale > 0.0 ? shown : round_scale(shown);
+    err << "note: drawn for the page at 1:" << number_text(o.params.strokes.scale)
+        << ", smaller than the DEM's own 1:" << number_text(own)
+        << " (0.4 mm a cell), whose strokes would crowd into a grey texture there; --drawn-for "
+           "N draws for another scale\n";
+  } else if (shown > 2.0 * own) {
+    err << "warning: the " << o.page.width_px
+        << "-pixel preview shows the sketch at about 1:" << number_text(round_scale(shown))
+        << " (96 pixels to the inch), " << std::lround(shown / own)
+        << " times smaller than its strokes are drawn for (the DEM's "
+        << "own 1:" << number_text(own) << ", 0.4 mm a cell): they crowd into a grey "
+        << "texture there. --page SIZE draws them for a page, --drawn-for N for a map at 1:N\n";
+  }
+}
+
 void print_plotter(const io::PlotterReport& r, bool millimetres, std::ostream& err) {
   const char* unit = millimetres ? " mm" : " px";
   err << "plotter: " << r.strokes << " strokes drawn as " << r.paths << " paths; pen-up travel "
@@ -66,12 +100,13 @@ void print_plotter(const io::PlotterReport& r, bool millimetres, std::ostream& e
 
 std::string silhouettes(const Args& args, std::ostream& out, std::ostream& err,
                         const ProgressFn& progress) {
-  const Options o = parse("silhouettes", args);
+  Options o = parse("silhouettes", args);
   print_lost_weights(o, io::check_vector_output(o.output, o.format), err);  // before any work
   const bool preview = !o.preview.empty();
   RunDem dem;
   if (preview) {
     dem.held.emplace(load_dem(o, err));
+    fit_strokes_to_preview(o, dem.info(), err);
   } else {
     dem.file.emplace(o.input, o.dem);
     print_notes(dem.info().notes, err);

@@ -376,6 +376,79 @@ TEST_CASE("strokes drawn for a scale say so, and keep fewer strokes", "[cli][pre
   CHECK_THAT(bad.err, Catch::Contains("scale drawn for"));
 }
 
+TEST_CASE("a page smaller in scale than the DEM's own draws the strokes for the page",
+          "[cli][preview]") {
+  ScratchDir dir("page_scale");
+  // The strokes of a run, as CSV: the same strokes give the same text.
+  const auto strokes_of = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> args = {"silhouettes", kSample, dir / (name + ".csv")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const CliRun run = run_cli(args);
+    INFO(run.err);
+    REQUIRE(run.code == 0);
+    return std::pair{slurp(dir / (name + ".csv")), run.err};
+  };
+  const auto [own, own_err] = strokes_of("own", {});
+  // The sample's 75 m cells are 0.4 mm at 1:187 500. At 1:500 000 the page draws the strokes as
+  // --drawn-for 500000 does; at 1:150 000 it leaves them as they are.
+  const auto [small, small_err] =
+      strokes_of("small", {"--preview", dir / "s.svg", "--page", "A4", "--page-scale", "500000"});
+  CHECK_THAT(small_err, Catch::Contains("note: drawn for the page at 1:500000, smaller than the "
+                                        "DEM's own 1:187500"));
+  CHECK(small == strokes_of("for", {"--drawn-for", "500000"}).first);
+  CHECK(small != own);
+  const auto [large, large_err] =
+      strokes_of("large", {"--preview", dir / "l.svg", "--page", "A3", "--page-scale", "150000"});
+  CHECK(large == own);
+  CHECK_THAT(large_err, !Catch::Contains("drawn for the page"));
+  // --drawn-for given wins over the page's scale; exact strokes have no scale to draw for.
+  CHECK(strokes_of("given", {"--preview", dir / "g.svg", "--page", "A4", "--page-scale", "500000",
+                             "--drawn-for", "250000"})
+            .first == strokes_of("given_alone", {"--drawn-for", "250000"}).first);
+  CHECK(strokes_of("exact", {"--strokes", "exact", "--preview", dir / "e.svg", "--page", "A4",
+                             "--page-scale", "500000"})
+            .first == strokes_of("exact_alone", {"--strokes", "exact"}).first);
+  // A page the sketch is fitted to: 30 mm inside the margins of a 50 mm page hold the sample's
+  // 31 km across the view at 1:1 035 000 or smaller, rounded to two figures.
+  const auto [fitted, fitted_err] =
+      strokes_of("fitted", {"--preview", dir / "f.svg", "--page", "50x50"});
+  std::smatch m;
+  REQUIRE(std::regex_search(fitted_err, m, std::regex("drawn for the page at 1:([0-9]+),")));
+  const long long scale = std::stoll(m[1]);
+  CHECK(scale >= 1000000);
+  CHECK(scale % 10000 == 0);
+  CHECK(fitted == strokes_of("fitted_alone", {"--drawn-for", m[1]}).first);
+  CHECK(read_svg(slurp(dir / "f.svg")).outside == 0);
+}
+
+TEST_CASE("a picture far smaller than its strokes are drawn for warns, and changes nothing",
+          "[cli][preview]") {
+  ScratchDir dir("picture_scale");
+  // 2400 cells of 10 m across the 1600-pixel picture: 0.17 mm a cell at 96 pixels to the inch,
+  // 2.3 times smaller than the 0.4 mm a cell the strokes are drawn for.
+  const std::string dem = dir / "wide.tif";
+  write_tiff(
+      dem, 2400, 2400, 1,
+      [](int, int r, int c) {
+        return static_cast<float>(80 * std::sin(r / 40.0) * std::cos(c / 55.0));
+      },
+      kNorthUp, 32633);
+  const CliRun picture = run_cli({"silhouettes", dem, dir / "p.csv", "--preview", dir / "p.png"});
+  INFO(picture.err);
+  REQUIRE(picture.code == 0);
+  CHECK_THAT(picture.err,
+             Catch::Contains("warning: the 1600-pixel preview shows the sketch at about "
+                             "1:57000 (96 pixels to the inch), 2 times smaller than "
+                             "its strokes are drawn for (the DEM's own 1:25000"));
+  REQUIRE(run_cli({"silhouettes", dem, dir / "n.csv"}).code == 0);
+  CHECK(slurp(dir / "p.csv") == slurp(dir / "n.csv"));
+  // The sample's 414 cells fill the picture at 1.2 mm a cell: no warning.
+  const CliRun sample =
+      run_cli({"silhouettes", kSample, dir / "s.csv", "--preview", dir / "s.png"});
+  REQUIRE(sample.code == 0);
+  CHECK_THAT(sample.err, !Catch::Contains("times smaller"));
+}
+
 TEST_CASE("the P-strokes, profile lines and panorama record the run that made them",
           "[cli][preview]") {
   ScratchDir dir("product_notes");

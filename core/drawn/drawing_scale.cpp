@@ -15,10 +15,14 @@ double cells_on_paper(double mm, double scale, double cell) {
 
 }  // namespace
 
+double own_scale(const GeoTransform& geotransform) {
+  const auto& a = geotransform.a;
+  return kOwnScalePerCell * std::min(std::hypot(a[1], a[4]), std::hypot(a[2], a[5]));
+}
+
 std::size_t scale_averaging(double scale, const DemGrid& grid, const GeoTransform& geotransform) {
   if (!(scale > 0.0) || !std::isfinite(scale)) return 1;
-  const auto& a = geotransform.a;
-  const double cell = std::min(std::hypot(a[1], a[4]), std::hypot(a[2], a[5]));
+  const double cell = own_scale(geotransform) / kOwnScalePerCell;
   if (!(cell > 0.0) || !std::isfinite(cell)) return 1;
   const double wanted = std::floor(scale / kOwnScalePerCell / cell);
   const std::size_t most = std::min(grid.rows, grid.cols) / kLeastAveragedSide;

@@ -38,6 +38,9 @@ constexpr double kLeastReliefWeight = 0.4;
 // The shorter side, in cells, that averaging for a scale leaves a DEM at least.
 constexpr std::size_t kLeastAveragedSide = 32;
 
+// The DEM's own scale, 1:N of its map units: kOwnScalePerCell times its shorter cell side.
+double own_scale(const GeoTransform& geotransform);
+
 // The cells a side that a DEM is averaged by (averaged_dem) before it is drawn for 1:scale: as
 // many as make cells of about 0.4 mm on paper (kOwnScalePerCell), when that is 2 or more, so
 // that a DEM finer than the scale needs and the same DEM averaged give one sketch; no more than

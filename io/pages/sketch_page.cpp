@@ -21,6 +21,30 @@ struct ClassWidths {
 constexpr ClassWidths kExactPx{2.2, 1.1}, kDrawnPx{3.4, 1.9};
 constexpr ClassWidths kExactMm{0.5, 0.25}, kDrawnMm{0.8, 0.45};
 constexpr double kMarginPx = 10.0, kMarginMm = 10.0;
+// A pixel of the picture without a page size, as vector art reads it (96 to the inch).
+constexpr double kCssPixelMm = 25.4 / 96.0;
+
+// The heights' range and the size of the sketch before it is put on the page, ground units: as
+// wide as the profiles, as tall as the farthest cell lifted by the highest height.
+struct PlotExtent {
+  double z_min = 0.0, z_max = 0.0, width = 0.0, height = 0.0;
+};
+
+PlotExtent plot_extent(const HeightGrid& z, const OrientedFrame& frame, const ViewParams& view) {
+  PlotExtent e;
+  e.z_min = std::numeric_limits<double>::infinity();
+  e.z_max = -e.z_min;
+  for (std::size_t k = 0; k < z.size(); ++k) {
+    if (!is_data(z.data()[k])) continue;
+    e.z_min = std::min(e.z_min, static_cast<double>(z.data()[k]));
+    e.z_max = std::max(e.z_max, static_cast<double>(z.data()[k]));
+  }
+  if (!std::isfinite(e.z_min)) e.z_min = e.z_max = 0.0;
+  const PlanObliqueShift shift(view, frame.d, e.z_min);
+  e.width = std::max(frame.w, static_cast<double>(frame.profiles) * frame.w);
+  e.height = shift(static_cast<double>(frame.length), e.z_max) * frame.d;
+  return e;
+}
 
 // Where the sketch lies before it is put on the page: x across the view and y up the
 // plan-oblique position along it, ground units, from the view's left and lowest height.
@@ -28,23 +52,16 @@ class Plot {
  public:
   Plot(const HeightGrid& z, const OrientedFrame& frame, const GeoTransform& geotransform,
        const ViewParams& view, Geometry geometry, double z_ref)
-      : z_(z), frame_(frame), geotransform_(geotransform), geometry_(geometry) {
-    double z_min = std::numeric_limits<double>::infinity(), z_max = -z_min;
-    for (std::size_t k = 0; k < z.size(); ++k) {
-      if (!is_data(z.data()[k])) continue;
-      z_min = std::min(z_min, static_cast<double>(z.data()[k]));
-      z_max = std::max(z_max, static_cast<double>(z.data()[k]));
-    }
-    if (!std::isfinite(z_min)) z_min = z_max = 0.0;
-    shift_ = PlanObliqueShift(view, frame.d, z_min);
-    z_min_ = z_min;
-    // Points already in plan-oblique geometry were shifted from the run's reference height.
-    reference_cells_ = shift_(0.0, z_ref);
-    width_ = std::max(frame.w, static_cast<double>(frame.profiles) * frame.w);
-    height_ = shift_(static_cast<double>(frame.length), z_max) * frame.d;
-  }
-  double width() const { return width_; }
-  double height() const { return height_; }
+      : z_(z),
+        frame_(frame),
+        geotransform_(geotransform),
+        geometry_(geometry),
+        extent_(plot_extent(z, frame, view)),
+        shift_(view, frame.d, extent_.z_min),
+        // Points already in plan-oblique geometry were shifted from the run's reference height.
+        reference_cells_(shift_(0.0, z_ref)) {}
+  double width() const { return extent_.width; }
+  double height() const { return extent_.height; }
 
   StrokePoint cell(const ChainCell& c) const {
     const double zc =
@@ -71,15 +88,16 @@ class Plot {
     const auto col =
         static_cast<std::size_t>(std::clamp(std::lround(s), 0L, static_cast<long>(z_.cols()) - 1));
     const float nearest = z_(row, col);
-    return is_data(nearest) ? nearest : z_min_;
+    return is_data(nearest) ? nearest : extent_.z_min;
   }
 
   const HeightGrid& z_;
   const OrientedFrame& frame_;
   const GeoTransform& geotransform_;
   Geometry geometry_;
-  PlanObliqueShift shift_{ViewParams{}, 1.0, 0.0};
-  double reference_cells_ = 0.0, width_ = 0.0, height_ = 0.0, z_min_ = 0.0;
+  PlotExtent extent_;
+  PlanObliqueShift shift_;
+  double reference_cells_;
 };
 
 // How plot coordinates become page coordinates.
@@ -90,10 +108,37 @@ struct Placement {
   }
 };
 
+// The picture's width in pixels without a page size.
+int picture_width(const PageOptions& options) {
+  return std::clamp(options.width_px, 64, 20000);
+}
+
+// Pixels a ground unit on the picture without a page size.
+double pixel_scale(double plot_width, const PageOptions& options) {
+  return (picture_width(options) - 2.0 * kMarginPx) / plot_width;
+}
+
+// A page of paper turned to suit a sketch `plot_width` by `plot_height` ground units, and the
+// millimetres a ground unit that fit the sketch inside its margins.
+struct PaperFit {
+  double width, height, fit;
+};
+
+PaperFit fit_paper(double plot_width, double plot_height, const PageOptions& options) {
+  const PageSize size = parse_page_size(options.size);
+  const double short_side = std::min(size.width_mm, size.height_mm);
+  const double long_side = std::max(size.width_mm, size.height_mm);
+  const bool landscape = plot_width >= plot_height;
+  PaperFit paper{landscape ? long_side : short_side, landscape ? short_side : long_side, 0.0};
+  paper.fit = std::min((paper.width - 2 * kMarginMm) / plot_width,
+                       (paper.height - 2 * kMarginMm) / plot_height);
+  return paper;
+}
+
 // The 1600 px picture (the preview before pages): as tall as the sketch needs.
 Placement pixel_placement(const Plot& plot, const PageOptions& options, SketchPage& page) {
-  page.width = std::clamp(options.width_px, 64, 20000);
-  const double scale = (page.width - 2.0 * kMarginPx) / plot.width();
+  page.width = picture_width(options);
+  const double scale = pixel_scale(plot.width(), options);
   page.height = std::clamp(
       static_cast<int>(std::ceil(plot.height() * scale)) + 2 * static_cast<int>(kMarginPx), 64,
       20000);
@@ -103,15 +148,12 @@ Placement pixel_placement(const Plot& plot, const PageOptions& options, SketchPa
 // A page of paper: turned to suit the sketch, which is fitted or drawn at the scale asked for
 // and centred.
 Placement paper_placement(const Plot& plot, const PageOptions& options, SketchPage& page) {
-  const PageSize size = parse_page_size(options.size);
-  const double short_side = std::min(size.width_mm, size.height_mm);
-  const double long_side = std::max(size.width_mm, size.height_mm);
-  const bool landscape = plot.width() >= plot.height();
-  page.width = landscape ? long_side : short_side;
-  page.height = landscape ? short_side : long_side;
+  const PaperFit paper = fit_paper(plot.width(), plot.height(), options);
+  page.width = paper.width;
+  page.height = paper.height;
   page.millimetres = true;
   const double room_w = page.width - 2 * kMarginMm, room_h = page.height - 2 * kMarginMm;
-  const double fit = std::min(room_w / plot.width(), room_h / plot.height());
+  const double fit = paper.fit;
   const double scale = options.scale > 0.0 ? 1000.0 / options.scale : fit;  // mm per ground unit
   if (scale > fit * (1.0 + 1e-9)) {
     throw Error("at 1:" + number_text(options.scale) + " the sketch is " +
@@ -150,6 +192,15 @@ PageSize parse_page_size(const std::string& text) {
       "--page must be A4, A3, A2, A1, A0, letter, tabloid or WIDTHxHEIGHT in millimetres "
       "(each 50 to 5000), got '" +
       text + "'");
+}
+
+double preview_scale(const HeightGrid& z, const OrientedFrame& frame, const ViewParams& view,
+                     const PageOptions& options) {
+  if (!options.size.empty() && options.scale > 0.0) return options.scale;
+  const PlotExtent plot = plot_extent(z, frame, view);
+  if (!(plot.width > 0.0) || !(plot.height > 0.0)) return 0.0;
+  if (!options.size.empty()) return 1000.0 / fit_paper(plot.width, plot.height, options).fit;
+  return 1000.0 / (pixel_scale(plot.width, options) * kCssPixelMm);
 }
 
 SketchPage lay_out_sketch(std::vector<Stroke> strokes, double z_ref, const HeightGrid& z,

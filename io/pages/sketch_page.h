@@ -45,6 +45,13 @@ struct SketchPage {
   double label_size() const { return millimetres ? 3.0 : 13.0; }  // the text's height
 };
 
+// The scale 1:N of the frame's ground units at which the preview shows the sketch: a page's
+// (options.scale, or the one that fits the sketch inside the page's margins), or, without a page
+// size, the picture's, its pixels taken at 96 to the inch as vector art reads them. 0 for a sketch
+// of no extent.
+double preview_scale(const HeightGrid& z, const OrientedFrame& frame, const ViewParams& view,
+                     const PageOptions& options);
+
 // Lays the strokes out on the page (`z_ref`: the run's, SilhouetteResult::z_ref). Exact strokes are
 // drawn through their cells' centres; drawn strokes through their points, carried back into the
 // view (the DEM's heights between cells for map geometry), with their weights as widths. Throws
