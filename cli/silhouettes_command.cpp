@@ -65,12 +65,13 @@ double round_scale(double scale) {
 // Strokes drawn for the DEM's own scale (0.4 mm a cell) crowd into a grey texture on a preview
 // at a much smaller scale. A page states the map's scale: drawn strokes without --drawn-for are
 // drawn for it, in the vector output too, since both show one sketch. A picture without a page
-// size states none, so a warning names what to give.
+// size states none, so a warning names what to give. A page the sketch does not fit at the
+// scale asked for is refused here, before the run.
 void fit_strokes_to_preview(Options& o, const io::Dem& dem, std::ostream& err) {
-  if (!o.params.strokes.drawn() || o.params.strokes.scale > 0.0) return;
   // The preview's scale in map units, as --drawn-for takes it (ground metres per map unit apart).
   const double shown =
       io::preview_scale(dem.oriented, dem.frame, o.params.view, o.page) / dem.ground_scale;
+  if (!o.params.strokes.drawn() || o.params.strokes.scale > 0.0) return;
   const double own = own_scale(dem.geotransform);
   if (!std::isfinite(shown) || !(own > 0.0) || !(shown > own)) return;
   if (!o.page.size.empty()) {

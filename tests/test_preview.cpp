@@ -13,6 +13,7 @@
 #include <string>
 
 #include "catch_compat.h"
+#include "cli/cli_app.h"
 #include "cli_run.h"
 #include "core/method/run_recipes.h"
 #include "gdal_test_support.h"
@@ -218,6 +219,13 @@ TEST_CASE("pages and scales are checked, and a sketch too large for its page is 
     CHECK_THAT(run.err, Catch::Contains(b.message));
     CHECK(dir.file_count() == 0);
   }
+  // A page too small for the scale asked for is refused before the run: no progress is shown.
+  std::ostringstream out, err;
+  CHECK(tsk::cli::run({"silhouettes", kSample, dir / "s.gpkg", "--preview", dir / "a.svg", "--page",
+                       "A4", "--page-scale", "100000"},
+                      out, err, true) == 1);
+  CHECK_THAT(err.str(), Catch::Contains("larger than the page"));
+  CHECK_THAT(err.str(), !Catch::Contains("0..."));
   // At 1:250 000 the sample's 31 km fit an A3 page, in millimetres.
   const CliRun fits = run_cli({"silhouettes", kSample, dir / "s.gpkg", "--preview", dir / "a.svg",
                                "--page", "A3", "--page-scale", "250000"});

@@ -119,19 +119,29 @@ double pixel_scale(double plot_width, const PageOptions& options) {
 }
 
 // A page of paper turned to suit a sketch `plot_width` by `plot_height` ground units, and the
-// millimetres a ground unit that fit the sketch inside its margins.
-struct PaperFit {
-  double width, height, fit;
+// millimetres a ground unit it is drawn at: the scale asked for, or the one that fits the sketch
+// inside the margins. Throws Error when the sketch at the scale asked for does not fit.
+struct Paper {
+  double width, height, mm_per_unit;
 };
 
-PaperFit fit_paper(double plot_width, double plot_height, const PageOptions& options) {
+Paper lay_paper(double plot_width, double plot_height, const PageOptions& options) {
   const PageSize size = parse_page_size(options.size);
   const double short_side = std::min(size.width_mm, size.height_mm);
   const double long_side = std::max(size.width_mm, size.height_mm);
   const bool landscape = plot_width >= plot_height;
-  PaperFit paper{landscape ? long_side : short_side, landscape ? short_side : long_side, 0.0};
-  paper.fit = std::min((paper.width - 2 * kMarginMm) / plot_width,
-                       (paper.height - 2 * kMarginMm) / plot_height);
+  Paper paper{landscape ? long_side : short_side, landscape ? short_side : long_side, 0.0};
+  const double room_w = paper.width - 2 * kMarginMm, room_h = paper.height - 2 * kMarginMm;
+  const double fit = std::min(room_w / plot_width, room_h / plot_height);
+  paper.mm_per_unit = options.scale > 0.0 ? 1000.0 / options.scale : fit;
+  if (paper.mm_per_unit > fit * (1.0 + 1e-9)) {
+    throw Error("at 1:" + number_text(options.scale) + " the sketch is " +
+                number_text(std::round(plot_width * paper.mm_per_unit)) + " x " +
+                number_text(std::round(plot_height * paper.mm_per_unit)) +
+                " mm, larger than the page's " + number_text(room_w) + " x " + number_text(room_h) +
+                " mm inside its margins; give --page-scale " +
+                number_text(std::ceil(1000.0 / fit)) + " or more, or a larger --page");
+  }
   return paper;
 }
 
@@ -148,21 +158,11 @@ Placement pixel_placement(const Plot& plot, const PageOptions& options, SketchPa
 // A page of paper: turned to suit the sketch, which is fitted or drawn at the scale asked for
 // and centred.
 Placement paper_placement(const Plot& plot, const PageOptions& options, SketchPage& page) {
-  const PaperFit paper = fit_paper(plot.width(), plot.height(), options);
+  const Paper paper = lay_paper(plot.width(), plot.height(), options);
   page.width = paper.width;
   page.height = paper.height;
   page.millimetres = true;
-  const double room_w = page.width - 2 * kMarginMm, room_h = page.height - 2 * kMarginMm;
-  const double fit = paper.fit;
-  const double scale = options.scale > 0.0 ? 1000.0 / options.scale : fit;  // mm per ground unit
-  if (scale > fit * (1.0 + 1e-9)) {
-    throw Error("at 1:" + number_text(options.scale) + " the sketch is " +
-                number_text(std::round(plot.width() * scale)) + " x " +
-                number_text(std::round(plot.height() * scale)) + " mm, larger than the page's " +
-                number_text(room_w) + " x " + number_text(room_h) +
-                " mm inside its margins; give --page-scale " +
-                number_text(std::ceil(1000.0 / fit)) + " or more, or a larger --page");
-  }
+  const double scale = paper.mm_per_unit;
   return {scale, (page.width - plot.width() * scale) / 2, (page.height - plot.height() * scale) / 2,
           page.height};
 }
@@ -196,10 +196,10 @@ PageSize parse_page_size(const std::string& text) {
 
 double preview_scale(const HeightGrid& z, const OrientedFrame& frame, const ViewParams& view,
                      const PageOptions& options) {
-  if (!options.size.empty() && options.scale > 0.0) return options.scale;
   const PlotExtent plot = plot_extent(z, frame, view);
   if (!(plot.width > 0.0) || !(plot.height > 0.0)) return 0.0;
-  if (!options.size.empty()) return 1000.0 / fit_paper(plot.width, plot.height, options).fit;
+  if (!options.size.empty())
+    return 1000.0 / lay_paper(plot.width, plot.height, options).mm_per_unit;
   return 1000.0 / (pixel_scale(plot.width, options) * kCssPixelMm);
 }
 

@@ -48,7 +48,8 @@ struct SketchPage {
 // The scale 1:N of the frame's ground units at which the preview shows the sketch: a page's
 // (options.scale, or the one that fits the sketch inside the page's margins), or, without a page
 // size, the picture's, its pixels taken at 96 to the inch as vector art reads them. 0 for a sketch
-// of no extent.
+// of no extent. Throws Error, as lay_out_sketch would, when the sketch at the page's scale does
+// not fit it: a front end can refuse it before the run.
 double preview_scale(const HeightGrid& z, const OrientedFrame& frame, const ViewParams& view,
                      const PageOptions& options);
 
