@@ -22,9 +22,9 @@ double own_scale(const GeoTransform& geotransform) {
 
 std::size_t scale_averaging(double scale, const DemGrid& grid, const GeoTransform& geotransform) {
   if (!(scale > 0.0) || !std::isfinite(scale)) return 1;
-  const double cell = own_scale(geotransform) / kOwnScalePerCell;
-  if (!(cell > 0.0) || !std::isfinite(cell)) return 1;
-  const double wanted = std::floor(scale / kOwnScalePerCell / cell);
+  const double own = own_scale(geotransform);
+  if (!(own > 0.0) || !std::isfinite(own)) return 1;
+  const double wanted = std::floor(scale / own);
   const std::size_t most = std::min(grid.rows, grid.cols) / kLeastAveragedSide;
   const double factor = std::min(wanted, static_cast<double>(most));
   return factor >= 2.0 ? static_cast<std::size_t>(factor) : 1;
