@@ -1,3 +1,4 @@
+#include <random>
 #include <string>
 #include <vector>
 
@@ -61,4 +62,53 @@ TEST_CASE("whole-grid thinning equals the per-profile rule", "[thinning]") {
   for (std::size_t p = 0; p < 2; ++p)
     for (std::size_t i = 0; i < 6; ++i) out += (grid(p, i) & cell::thinned) ? 't' : '.';
   CHECK(out == ".t.......t..");
+}
+
+namespace {
+
+// SPEC 1.6 written out zone by zone, for comparison: each maximal run of f-set cells is dropped
+// when the cell behind its last is occluding, else its last cell (and for near_and_far its first)
+// is kept.
+std::vector<std::uint8_t> thinned_by_zones(std::vector<std::uint8_t> flags, Placement placement) {
+  std::size_t i = 0;
+  while (i < flags.size()) {
+    if (!(flags[i] & cell::filtered)) {
+      ++i;
+      continue;
+    }
+    std::size_t last = i;
+    while (last + 1 < flags.size() && (flags[last + 1] & cell::filtered)) ++last;
+    const bool dropped = last + 1 < flags.size() && (flags[last + 1] & cell::occluding);
+    if (!dropped) {
+      flags[last] |= cell::thinned;
+      if (placement == Placement::near_and_far) flags[i] |= cell::thinned;
+    }
+    i = last + 1;
+  }
+  return flags;
+}
+
+}  // namespace
+
+TEST_CASE("thinning equals the rule written zone by zone on random profiles", "[thinning]") {
+  std::mt19937 random(20261206);
+  // Profiles of every length up to past a few vector widths, f-set shares from sparse to full.
+  for (std::size_t length = 0; length <= 70; ++length) {
+    for (int share_pct : {5, 40, 80, 100}) {
+      std::uniform_int_distribution<int> pct(0, 99);
+      std::vector<std::uint8_t> flags(length);
+      for (std::uint8_t& f : flags) {
+        f = pct(random) < 90 ? cell::valid : 0;
+        if (f && pct(random) < share_pct) f |= cell::candidate | cell::filtered;
+        // Occluding cells, some of them in the f-set too: the rule asks only whether the cell
+        // behind a zone is occluding.
+        if (f && pct(random) < 15) f |= cell::occluding;
+      }
+      for (Placement placement : {Placement::far, Placement::near_and_far}) {
+        std::vector<std::uint8_t> thinned_flags = flags;
+        thin_profile(thinned_flags.data(), thinned_flags.size(), placement);
+        CHECK(thinned_flags == thinned_by_zones(flags, placement));
+      }
+    }
+  }
 }
