@@ -271,14 +271,18 @@ TEST_CASE("strokes written straight into a GeoPackage read back as OGR writes th
   OGRLayer& a = gpkg.layer();
   OGRLayer& b = *other->GetLayer(0);
   CHECK(a.GetFeatureCount(FALSE) == 500);  // GDAL's stored count
-  OGREnvelope ea, eb;
+  // The stored extent against the strokes' own. Not against the SQLite file's: GDAL takes that
+  // from SpatiaLite's statistics when it trusts them, else from the spatial index's
+  // single-precision boxes, which it did once in a clean-clone CI run (499962.75 for 499962.76).
+  OGREnvelope ea, points;
   REQUIRE(a.GetExtent(&ea, FALSE) == OGRERR_NONE);
-  REQUIRE(b.GetExtent(&eb, TRUE) == OGRERR_NONE);
+  for (const Stroke& s : strokes)
+    for (const StrokePoint& p : s.points) points.Merge(p.x, p.y);
   // GDAL reads the stored extent back through text, to 15 digits or so.
-  CHECK(ea.MinX == Approx(eb.MinX).epsilon(1e-13));
-  CHECK(ea.MaxX == Approx(eb.MaxX).epsilon(1e-13));
-  CHECK(ea.MinY == Approx(eb.MinY).epsilon(1e-13));
-  CHECK(ea.MaxY == Approx(eb.MaxY).epsilon(1e-13));
+  CHECK(ea.MinX == Approx(points.MinX).epsilon(1e-13));
+  CHECK(ea.MaxX == Approx(points.MaxX).epsilon(1e-13));
+  CHECK(ea.MinY == Approx(points.MinY).epsilon(1e-13));
+  CHECK(ea.MaxY == Approx(points.MaxY).epsilon(1e-13));
   REQUIRE(a.GetLayerDefn()->GetFieldCount() == b.GetLayerDefn()->GetFieldCount());
   std::size_t rows = 0;
   for (auto& fa : a) {
