@@ -32,4 +32,19 @@ inline std::size_t next_cell_with(const std::uint8_t* f, std::size_t i, std::siz
   return i;
 }
 
+// Writes into `out` the indices, less `base`, of the cells in [from, to) whose flags masked by
+// `mask` equal `value`, and returns how many. Each index is written and kept by a running count,
+// with no branch on the flags: for sets too dense to skip and too scattered for the processor to
+// guess.
+template <typename Index>
+std::size_t sift_cells(const std::uint8_t* f, std::size_t from, std::size_t to, std::uint8_t mask,
+                       std::uint8_t value, std::size_t base, Index* out) {
+  std::size_t count = 0;
+  for (std::size_t i = from; i < to; ++i) {
+    out[count] = static_cast<Index>(i - base);
+    count += (f[i] & mask) == value;
+  }
+  return count;
+}
+
 }  // namespace tsk

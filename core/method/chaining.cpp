@@ -66,27 +66,21 @@ std::size_t last_hidden_before_visible(const std::uint8_t* f, std::size_t& i, st
 }
 
 // The t-set cells among [first, length), as indices into `cells`. Eight cells without one are
-// passed over at once (a steep DEM's t-set is sparse); in the others each cell's index is written
-// and kept only when it is in the t-set, with no branch on its flags (a low-relief DEM's t-set is
-// a sixth of its cells, too scattered for the processor to guess).
+// passed over at once (a steep DEM's t-set is sparse); the others are sifted (a low-relief DEM's
+// t-set is a sixth of its cells).
 void sift_thinned(const std::uint8_t* f, std::size_t first, std::size_t length,
                   std::vector<std::int32_t>& cells) {
   cells.resize(length - std::min(first, length));
   std::int32_t* out = cells.data();
   std::size_t count = 0;
-  const auto sift = [&](std::size_t from, std::size_t to) {
-    for (std::size_t i = from; i < to; ++i) {
-      out[count] = static_cast<std::int32_t>(i);
-      count += (f[i] & cell::thinned) != 0;
-    }
-  };
   constexpr std::uint64_t kInAnyByte = 0x0101010101010101ull * cell::thinned;
   std::size_t i = first;
   for (std::uint64_t word; i + 8 <= length; i += 8) {
     std::memcpy(&word, f + i, sizeof word);
-    if (word & kInAnyByte) sift(i, i + 8);
+    if (word & kInAnyByte)
+      count += sift_cells(f, i, i + 8, cell::thinned, cell::thinned, 0, out + count);
   }
-  sift(i, length);
+  count += sift_cells(f, i, length, cell::thinned, cell::thinned, 0, out + count);
   cells.resize(count);
 }
 

@@ -28,11 +28,8 @@ void filter_profile(const ProfileRows& profile, std::uint8_t* flags, std::size_t
   std::uint32_t sifted[kStretch];
   for (std::size_t begin = 0; begin < length; begin += kStretch) {
     const std::size_t end = std::min(length, begin + kStretch);
-    std::size_t count = 0;
-    for (std::size_t i = begin; i < end; ++i) {
-      sifted[count] = static_cast<std::uint32_t>(i - begin);
-      count += (flags[i] & (cell::candidate | cell::hidden)) == cell::candidate;
-    }
+    const std::size_t count = sift_cells(flags, begin, end, cell::candidate | cell::hidden,
+                                         cell::candidate, begin, sifted);
     for (std::size_t k = 0; k < count; ++k) {
       const std::size_t i = begin + sifted[k];
       // Multiplying by exactly 1 without local scales leaves the slopes as they are.
