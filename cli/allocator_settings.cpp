@@ -12,12 +12,16 @@
 // what the stream left.) Its size classes each have a lock of their own, and each thread's cache
 // takes and gives back objects in batches.
 //
-// Huge pages asked for (where the system grants them on request, as Debian's does): the run's
-// buffers of strokes and chain cells are touched fresh in 2 MB pages, not 4 KB ones; 161 000 page
-// faults became 12 000, processor time 7.44 -> 6.08 s, wall time 4.38 -> 3.51 s, peak memory
-// 315 -> 340 MB. Where the system gives no huge pages, this asks for nothing.
+// Huge pages are not asked for (jemalloc's thp:always, this file's setting from 2026-12-05 to
+// 2026-12-06): the system's own setting decides, as it does for GDAL's tools. On a virtual machine
+// that hands free memory back to its host, each fresh 2 MB page is faulted in from the host as it
+// is cleared, and that cost more than the 4 KB faults it saved. bench/hillshade_ratio.py 8000,
+// two runs each, thp:always / the system's default: defaults 2.25x, 2.35x / 2.11x, 1.99x
+// hillshade, 305 / 289 MB; panorama 1.41x, 1.36x / 1.09x, 1.00x gdal_viewshed; exact 0.79x,
+// 0.86x / 0.78x, 0.74x. (When it was set, with an arena per processor, it had cut the page
+// faults from 161 000 to 12 000; one arena has since cut most of that churn.)
 //
 // A user's MALLOC_CONF is read after this, and wins.
 extern "C" {
-const char* malloc_conf = "narenas:1,thp:always";  // the name jemalloc looks up
+const char* malloc_conf = "narenas:1";  // the name jemalloc looks up
 }
