@@ -207,7 +207,10 @@ TEST_CASE("profile candidates equal a cell-by-cell reading of the flags", "[chai
 TEST_CASE("the linker records the pairs of chains crossing in whose order decided a join",
           "[chaining][bands]") {
   const auto candidates = [](std::vector<std::int32_t> cells) {
-    return ProfileCandidates{cells, cells};
+    ProfileCandidates c;
+    c.cell.assign(cells.begin(), cells.end());
+    c.reach = c.cell;
+    return c;
   };
   // Chains open at cells 2 and 6 of a profile (indices 0 and 1), in `order`, then the next
   // profile, formulated chains within `window` cells.

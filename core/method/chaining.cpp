@@ -69,7 +69,7 @@ std::size_t last_hidden_before_visible(const std::uint8_t* f, std::size_t& i, st
 // passed over at once (a steep DEM's t-set is sparse); the others are sifted (a low-relief DEM's
 // t-set is a sixth of its cells).
 void sift_thinned(const std::uint8_t* f, std::size_t first, std::size_t length,
-                  std::vector<std::int32_t>& cells) {
+                  ScratchVector<std::int32_t>& cells) {
   cells.resize(length - std::min(first, length));
   std::int32_t* out = cells.data();
   std::size_t count = 0;

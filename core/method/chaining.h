@@ -6,6 +6,7 @@
 
 #include "core/base/flags.h"
 #include "core/base/parallel.h"
+#include "core/base/scratch_vector.h"
 
 namespace tsk {
 
@@ -19,9 +20,10 @@ using Chain = std::vector<ChainCell>;
 
 // The cells of one profile that may join chains, front to back. For factual chaining `reach` is
 // the last cell of the hidden zone behind each cell; for formulated chaining the cell itself.
+// (Scratch vectors: the t-set's are sized to the profile, then written, then cut to their count.)
 struct ProfileCandidates {
-  std::vector<std::int32_t> cell;
-  std::vector<std::int32_t> reach;
+  ScratchVector<std::int32_t> cell;
+  ScratchVector<std::int32_t> reach;
 };
 
 // The candidates of profile p: occluding cells with their hidden zones (factual) or t-set cells,

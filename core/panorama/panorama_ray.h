@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/base/scratch_vector.h"
 #include "core/method/chaining.h"
 #include "core/method/params.h"
 #include "core/method/slope_scale_map.h"
@@ -39,14 +40,15 @@ struct RayRecord {
   static constexpr std::size_t kBlockBytes = 64;
 };
 
-// Per ray storage, reused ray after ray by one thread.
+// Per ray storage, reused ray after ray by one thread (for a batch of rays): each ray writes what
+// it reads, so the numbers are not zeroed as they are sized.
 struct RayScratch {
-  std::vector<float> apparent;      // z' = z - drop, metres; NaN for nodata
-  std::vector<double> tangent;      // (z' - h0) / d: the tangent of the elevation angle
+  ScratchVector<float> apparent;    // z' = z - drop, metres; NaN for nodata
+  ScratchVector<double> tangent;    // (z' - h0) / d: the tangent of the elevation angle
   std::vector<std::uint8_t> flags;  // the cell:: bits, per sample
   // At an occluding sample: how far, in metres, the terrain of the hidden zone after it lies
   // below the sight line that grazes it, at its deepest (unset at other samples).
-  std::vector<double> zone_depth;
+  ScratchVector<double> zone_depth;
   std::size_t end = 0;  // the samples from here on lie off the DEM
 };
 
