@@ -8,8 +8,8 @@
 #pragma once
 
 #include <cstddef>
-#include <new>
-#include <utility>
+
+#include "core/base/scratch_vector.h"
 
 namespace tsk {
 
@@ -17,38 +17,15 @@ namespace tsk {
 void* allocate_large(std::size_t bytes);
 void free_large(void* block) noexcept;
 
-template <typename T>
-struct LargePageAllocator {
-  using value_type = T;
-  LargePageAllocator() = default;
-  template <typename U>
-  LargePageAllocator(const LargePageAllocator<U>&) noexcept {}
-
-  T* allocate(std::size_t n) {
-    if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_alloc();
-    return static_cast<T*>(allocate_large(n * sizeof(T)));
-  }
-  void deallocate(T* block, std::size_t) noexcept { free_large(block); }
-
-  // Default-initialises: a vector of n numbers is left as the memory was, for grids that are
-  // written in full next (by parallel workers, so pages are first touched where they are used).
-  template <typename U>
-  void construct(U* p) {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <typename U, typename... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-
-  template <typename U>
-  bool operator==(const LargePageAllocator<U>&) const noexcept {
-    return true;
-  }
-  template <typename U>
-  bool operator!=(const LargePageAllocator<U>&) const noexcept {
-    return false;
-  }
+// Memory from allocate_large().
+struct LargePages {
+  static void* take(std::size_t bytes) { return allocate_large(bytes); }
+  static void give_back(void* block) noexcept { free_large(block); }
 };
+
+// Default-initialises: a vector of n numbers is left as the memory was, for grids that are written
+// in full next (by parallel workers, so pages are first touched where they are used).
+template <typename T>
+using LargePageAllocator = DefaultInitAllocator<T, LargePages>;
 
 }  // namespace tsk
