@@ -1,6 +1,7 @@
 #include "cli/options.h"
 
 #include <cctype>
+#include <map>
 #include <optional>
 
 #include "cli/interrupt.h"
@@ -80,6 +81,8 @@ const OptionSpec& find_option(const std::string& name, const CommandSpec& comman
 std::vector<std::string> set_options(const CommandSpec& command,
                                      const std::vector<std::string>& args, Options& o) {
   std::vector<std::string> positional;
+  // Each option's value as given: a second one would silently win over the first.
+  std::map<std::string, std::string> given;
   for (std::size_t k = 0; k < args.size(); ++k) {
     if (!looks_like_option(args[k])) {
       positional.push_back(args[k]);
@@ -89,6 +92,12 @@ std::vector<std::string> set_options(const CommandSpec& command,
     const OptionSpec& option = find_option(name, command);
     if (option.value && k + 1 >= args.size()) throw Error(name + " needs a value");
     const std::string value = option.value ? args[++k] : std::string();
+    const auto [earlier, first] = given.emplace(name, value);
+    if (!first) {
+      throw Error(name + " is given twice" +
+                  (option.value ? " ('" + earlier->second + "', then '" + value + "')" : "") +
+                  "; give each option once");
+    }
     option.set(o, name, value);
   }
   o.params.validate();

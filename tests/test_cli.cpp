@@ -362,6 +362,10 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"silhouettes", kSample, out, "--geometry", "sideways"}, "geometry"},
       {{"silhouettes", kSample, out, "--bogus"}, "unknown option"},
       {{"silhouettes", kSample, out, "--ve"}, "needs a value"},
+      // A second value would silently win over the first.
+      {{"silhouettes", kSample, out, "--azimuth", "90", "--ve", "2", "--azimuth", "45"},
+       "--azimuth is given twice ('90', then '45'); give each option once"},
+      {{"silhouettes", kSample, out, "--subcell", "--subcell"}, "--subcell is given twice;"},
       {{"silhouettes", kSample}, "expected INPUT and OUTPUT"},
       {{"silhouettes", kSample, out, "--format", "NoSuchDriver"}, "not an OGR vector driver"},
       {{"silhouettes", dir / "dem.gpkg", dir / "dem.gpkg"}, "names a file the INPUT raster reads"},
