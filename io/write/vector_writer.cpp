@@ -276,9 +276,10 @@ void write_line_layers(const std::string& path, const std::string& format,
     if (!ds) throw Error("cannot create '" + path + "': " + capture.message());
     const bool transaction = ds->StartTransaction() == OGRERR_NONE;
     for (const LineLayer& layer : layers) fill_line_layer(*ds, path, driver_name, layer, capture);
-    if (describe && database) {
-      // The layers' description (gpkg_contents). Not the file's metadata (gpkg_metadata): GDAL
-      // 3.10 then writes an .aux.xml beside the GeoPackage whenever it opens it.
+    // A GeoPackage's layers' description (gpkg_contents). Not the file's metadata (gpkg_metadata):
+    // GDAL 3.10 then writes an .aux.xml beside the GeoPackage whenever it opens it. GDAL's SQLite
+    // driver keeps no layer metadata, so an SQLite file has no place for it.
+    if (describe && driver_name == "GPKG") {
       const std::string description = describe();
       for (const LineLayer& layer : layers)
         if (OGRLayer* written = ds->GetLayerByName(layer.name.c_str()))
@@ -420,7 +421,7 @@ void write_strokes(const std::string& path, const std::string& format,
 
 namespace {
 
-// The layers' description (a database's), when there is one.
+// The layers' description (a GeoPackage's), when there is one.
 std::function<std::string()> described(const std::string& description) {
   if (description.empty()) return {};
   return [description] { return description; };
