@@ -14,6 +14,7 @@
 #include "cli/dem_note_text.h"
 #include "cli/interrupt.h"
 #include "cli/option_table.h"
+#include "cli/options.h"
 #include "cli/progress_line.h"
 #include "core/base/errors.h"
 #include "io/write/output_set.h"
@@ -98,6 +99,10 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     return 130;
   } catch (const io::DemRefused& e) {
     err << "terrain-sketch: " << refusal_text(e) << "\n";
+  } catch (const UsageError& e) {
+    // Bad usage, as the README promises: a script can tell a mistyped call from a failed run.
+    err << "terrain-sketch: " << e.what() << "\n";
+    return 2;
   } catch (const Error& e) {
     err << "terrain-sketch: " << e.what() << "\n";
   } catch (const std::bad_alloc&) {

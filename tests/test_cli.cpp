@@ -311,7 +311,8 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
     std::string message;
   };
   const std::string out = dir / "out.gpkg";
-  const Bad cases[] = {
+  // Input or output that cannot be used: exit code 1.
+  const Bad refused[] = {
       {{"silhouettes", kData + "/jacksboro_geo.tif", out}, "gdalwarp -t_srs EPSG:32616"},
       {{"silhouettes", dir / "not_a_raster.tif", out}, "cannot open"},
       {{"silhouettes", dir / "missing.tif", out}, "cannot open"},
@@ -323,6 +324,29 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"silhouettes", dir / "tiny_cells.tif", out}, "thousandth of its 1e-300 cells"},
       {{"profiles", dir / "far_origin.tif", out}, "gdal_edit.py -a_ullr"},
       {{"silhouettes", dir / "multi.tif", out, "--band", "3"}, "band 3 does not exist"},
+      {{"silhouettes", kData + "/volcano.tif", dir / "out.kml"}, "no CRS to find them from"},
+      {{"silhouettes", kSample, dir / "no/such/folder/out.gpkg"}, "does not exist"},
+      {{"silhouettes", kSample, dir / "x.gpkg", "--format", "CSV"}, "a .gpkg name is GPKG's"},
+      {{"silhouettes", dir / "complex.tif", out}, "complex numbers (CFloat32)"},
+      {{"silhouettes", kSample, out, "--format", "NoSuchDriver"}, "not an OGR vector driver"},
+      {{"silhouettes", dir / "dem.gpkg", dir / "dem.gpkg"}, "names a file the INPUT raster reads"},
+      {{"classify", dir / "multi.tif", dir / "./multi.tif"}, "names a file the INPUT raster reads"},
+      {{"drape", kSample, dir / "multi.tif", "--source", dir / "multi.tif"},
+       "names a file the --source raster reads"},
+      {{"silhouettes", kSample, dir / "o.json", "--stats-json", dir / "o.json"},
+       "names OUTPUT too"},
+      {{"silhouettes", kSample, dir / "folder.gpkg"}, "is not a file"},
+      {{"silhouettes", kSample, dir / "pipe.geojson"}, "is not a file"},
+      {{"classify", kSample, dir / "folder.tif"}, "is not a file"},
+      // The strokes would be written, then the preview or statistics fail.
+      {{"silhouettes", kSample, out, "--preview", dir / "no/such/p.png"}, "does not exist"},
+      {{"silhouettes", kSample, out, "--stats-json", dir / "no/such/s.json"}, "does not exist"},
+      {{"classify", kSample, dir / "c.tif", "--stats-json", dir / "no/s.json"}, "does not exist"},
+      // A preview that cannot be put in place (a folder of its name) takes the strokes with it.
+      {{"silhouettes", kSample, out, "--preview", dir / "taken.png"}, "taken.png"},
+  };
+  // Bad usage (an option, its value, an output name of the wrong kind): exit code 2.
+  const Bad misused[] = {
       {{"silhouettes", kSample, out, "--filter", "thesis"}, "'adaptive' or 'fixed'"},
       {{"silhouettes", kSample, out, "--strokes", "smooth"}, "'drawn' or 'exact'"},
       {{"silhouettes", kSample, out, "--smooth", "-1"}, "smoothing (cells) must be between 0"},
@@ -332,10 +356,8 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"silhouettes", kSample, out, "--taper", "0.6"}, "taper (share"},
       {{"silhouettes", kSample, out, "--depth-cue", "1"}, "depth cue"},
       {{"silhouettes", kSample, out, "--extend", "11"}, "over-extension (cells) must be"},
-      {{"silhouettes", kData + "/volcano.tif", dir / "out.kml"}, "no CRS to find them from"},
       {{"silhouettes", kSample, out, "--adapt", "regional"}, "'whole' or 'local'"},
       {{"silhouettes", kSample, out, "--adapt-window", "4"}, "between 8 and 100000"},
-      {{"silhouettes", kSample, dir / "no/such/folder/out.gpkg"}, "does not exist"},
       {{"silhouettes", kSample, out, "--ve", "0"}, "exaggeration"},
       {{"silhouettes", kSample, out, "--ve", "abc"}, "needs a number"},
       {{"silhouettes", kSample, out, "--ctrl", "13"}, "control point"},
@@ -349,8 +371,6 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
       {{"silhouettes", kSample, out, "--azimuth", "0x5A"}, "needs a number"},
       {{"silhouettes", kSample, out, "--band", "1e0"}, "whole number"},
       {{"silhouettes", kSample, out, "--preview", dir / "x.jpg"}, ".png, .svg or .pdf name"},
-      {{"silhouettes", kSample, dir / "x.gpkg", "--format", "CSV"}, "a .gpkg name is GPKG's"},
-      {{"silhouettes", dir / "complex.tif", out}, "complex numbers (CFloat32)"},
       {{"silhouettes", dir / "nogeo.tif", out, "--cell-size", "0"}, "--cell-size must be positive"},
       {{"silhouettes", dir / "nogeo.tif", out, "--cell-size", "-1"},
        "--cell-size must be positive"},
@@ -367,35 +387,21 @@ TEST_CASE("bad input is refused with a message and leaves nothing behind", "[cli
        "--azimuth is given twice ('90', then '45'); give each option once"},
       {{"silhouettes", kSample, out, "--subcell", "--subcell"}, "--subcell is given twice;"},
       {{"silhouettes", kSample}, "expected INPUT and OUTPUT"},
-      {{"silhouettes", kSample, out, "--format", "NoSuchDriver"}, "not an OGR vector driver"},
-      {{"silhouettes", dir / "dem.gpkg", dir / "dem.gpkg"}, "names a file the INPUT raster reads"},
-      {{"classify", dir / "multi.tif", dir / "./multi.tif"}, "names a file the INPUT raster reads"},
-      {{"drape", kSample, dir / "multi.tif", "--source", dir / "multi.tif"},
-       "names a file the --source raster reads"},
-      {{"silhouettes", kSample, dir / "o.json", "--stats-json", dir / "o.json"},
-       "names OUTPUT too"},
       // An output's name says what it holds: no other file is written over.
       {{"silhouettes", kSample, out, "--stats-json", dir / "dem.gpkg"}, "give it a .json name"},
       {{"filter-plot", kSample, dir / "dem.gpkg"}, "give it an .html name"},
-      {{"silhouettes", kSample, dir / "folder.gpkg"}, "is not a file"},
-      {{"silhouettes", kSample, dir / "pipe.geojson"}, "is not a file"},
-      {{"classify", kSample, dir / "folder.tif"}, "is not a file"},
-      // The strokes would be written, then the preview or statistics fail.
-      {{"silhouettes", kSample, out, "--preview", dir / "no/such/p.png"}, "does not exist"},
-      {{"silhouettes", kSample, out, "--stats-json", dir / "no/such/s.json"}, "does not exist"},
-      {{"classify", kSample, dir / "c.tif", "--stats-json", dir / "no/s.json"}, "does not exist"},
-      // A preview that cannot be put in place (a folder of its name) takes the strokes with it.
-      {{"silhouettes", kSample, out, "--preview", dir / "taken.png"}, "taken.png"},
       {{"silhouettes", kSample, out, "--preview", dir / "p.json", "--stats-json", dir / "p.json"},
        "give it a .png, .svg or"},
   };
-  for (const Bad& b : cases) {
+  const auto check_refused = [&](const Bad& b, int code) {
     const CliRun run = run_cli(b.args);
     CAPTURE(b.args.back(), run.err);
-    CHECK(run.code == 1);
+    CHECK(run.code == code);
     CHECK_THAT(run.err, Catch::Contains(b.message));
     CHECK(dir.file_count() == inputs);
-  }
+  };
+  for (const Bad& b : refused) check_refused(b, 1);
+  for (const Bad& b : misused) check_refused(b, 2);
   CHECK(slurp(dir / "dem.gpkg") == dem_gpkg_bytes);
   CHECK(run_cli({"frobnicate"}).code == 2);
   CHECK(run_cli({}).code == 2);
@@ -806,7 +812,7 @@ TEST_CASE("classify writes the stage of every DEM cell with a colour table", "[c
   CHECK(thinned == core.stats.thinned);
   CHECK(valid == core.stats.valid);
   GDALClose(ds);
-  CHECK(run_cli({"classify", kSample, dir / "classes.png"}).code == 1);
+  CHECK(run_cli({"classify", kSample, dir / "classes.png"}).code == 2);
 }
 
 TEST_CASE("row-slope and profiles write their outputs", "[cli][profile plot]") {
@@ -825,7 +831,7 @@ TEST_CASE("row-slope and profiles write their outputs", "[cli][profile plot]") {
   INFO(prof.err);
   REQUIRE(prof.code == 0);
   CHECK(summarise(dir / "p.geojson").features > 20);
-  CHECK(run_cli({"profiles", kSample, dir / "q.geojson", "--every", "0"}).code == 1);
+  CHECK(run_cli({"profiles", kSample, dir / "q.geojson", "--every", "0"}).code == 2);
 }
 
 TEST_CASE("filter-plot writes the diagram page", "[cli][filter diagram]") {
@@ -857,7 +863,7 @@ TEST_CASE("drape projects every band of a raster on the DEM's grid", "[cli][drap
   const CliRun off = run_cli({"drape", kSample, dir / "e.tif", "--source", dir / "rgb.tif"});
   CHECK(off.code == 1);
   CHECK_THAT(off.err, Catch::Contains("on the DEM's grid"));
-  CHECK(run_cli({"drape", kSample, dir / "f.tif"}).code == 1);
+  CHECK(run_cli({"drape", kSample, dir / "f.tif"}).code == 2);
   // The same size is not enough: the same ground, in the same CRS. Both were draped silently.
   const double shifted[6] = {732795.639415354, 75, 0, 4038415.4307843, 0, -75};
   const double on_dem[6] = {731795.639415354467928, 75, 0, 4037415.430784302297980, 0, -75};
@@ -880,7 +886,7 @@ TEST_CASE("pstrokes writes classes and scores, and refuses bad tolerances", "[cl
   REQUIRE(run.code == 0);
   CHECK(summarise(dir / "p.geojson").features > 100);
   const CliRun bad = run_cli({"pstrokes", kSample, dir / "q.geojson", "--convex-row", "-1"});
-  CHECK(bad.code == 1);
+  CHECK(bad.code == 2);
   CHECK_THAT(bad.err, Catch::Contains("tolerances"));
 }
 
@@ -940,7 +946,7 @@ TEST_CASE("strips give byte-identical output to the whole DEM", "[cli][strips]")
       {"silhouettes", kSample, dir / "y.gpkg", "--strips", "10", "--preview", dir / "p.png"});
   CHECK(preview.code == 0);
   CHECK(std::filesystem::file_size(dir / "p.png") > 1000);
-  CHECK(run_cli({"silhouettes", kSample, dir / "z.gpkg", "--strips", "0"}).code == 1);
+  CHECK(run_cli({"silhouettes", kSample, dir / "z.gpkg", "--strips", "0"}).code == 2);
 }
 
 TEST_CASE("a DEM too large to hold whole is refused by the commands that need it whole",
@@ -1148,7 +1154,7 @@ TEST_CASE("each command takes its own options, and refuses the others by name", 
     args.insert(args.end(), r.args.begin(), r.args.end());
     const CliRun run = run_cli(args);
     CAPTURE(r.command, r.args.front(), run.err);
-    CHECK(run.code == 1);
+    CHECK(run.code == 2);
     CHECK_THAT(run.err, Catch::Contains(r.message));
     CHECK_THAT(run.err, Catch::Contains("terrain-sketch " + r.command + " --help"));
     CHECK(!std::filesystem::exists(dir / r.output));

@@ -318,43 +318,53 @@ TEST_CASE("panorama refuses a view it cannot draw, and writes nothing", "[cli][p
   const std::string one_cell = dir / "one_cell.tif";
   test::write_tiff(
       one_cell, 1, 1, 1, [](int, int, int) { return 100.0f; }, test::kNorthUp, 32616);
-  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-      {{one_cell, "--observer", "500005,3999995"}, "the DEM reaches only 7.07"},
-      {{kSample, "--observer", "0,0"}, "outside the DEM"},
-      {{holes, "--observer", "500050,3999950"}, "without data"},
-      {{kSample, "--observer", kSummit, "--max-distance", "0"}, "must be a positive distance"},
-      {{kSample, "--observer", kSummit, "--max-distance", "-5"}, "must be a positive distance"},
+  struct Refusal {
+    std::vector<std::string> args;
+    std::string message;
+    int code;  // 1: the DEM or a file cannot be used; 2: bad usage
+  };
+  const std::vector<Refusal> cases = {
+      {{one_cell, "--observer", "500005,3999995"}, "the DEM reaches only 7.07", 1},
+      {{kSample, "--observer", "0,0"}, "outside the DEM", 1},
+      {{holes, "--observer", "500050,3999950"}, "without data", 1},
+      {{kSample, "--observer", kSummit, "--max-distance", "0"}, "must be a positive distance", 2},
+      {{kSample, "--observer", kSummit, "--max-distance", "-5"}, "must be a positive distance", 2},
       {{kSample, "--observer", kSummit, "--azimuth-from", "30", "--azimuth-to", "30"},
-       "field of view from 30 to 30 degrees is empty"},
-      {{geographic, "--observer", "-84,36"}, "gdalwarp"},
-      {{kSample}, "needs --observer"},
-      {{kSample, "--observer", "749008"}, "needs X,Y"},
-      {{kSample, "--observer", kSummit, "--refraction", "1"}, "refraction coefficient"},
-      {{kSample, "--observer", kSummit, "--samples-per-cell", "9"}, "samples per cell"},
+       "field of view from 30 to 30 degrees is empty",
+       2},
+      {{geographic, "--observer", "-84,36"}, "gdalwarp", 1},
+      {{kSample}, "needs --observer", 2},
+      {{kSample, "--observer", "749008"}, "needs X,Y", 2},
+      {{kSample, "--observer", kSummit, "--refraction", "1"}, "refraction coefficient", 2},
+      {{kSample, "--observer", kSummit, "--samples-per-cell", "9"}, "samples per cell", 2},
       {{kSample, "--observer", kSummit, "--panorama-exaggeration", "0.5"},
-       "exaggeration must be from 1 to 50"},
+       "exaggeration must be from 1 to 50",
+       2},
       // The figures as given, not rounded to nothing.
-      {{kSample, "--observer", kSummit, "--max-distance", "1e-9"}, "the range of 1e-09 map units"},
-      {{kSample, "--observer", kSummit, "--azimuth-from", "1e20"}, "got 1e+20 and 360"},
-      {{kSample, "--observer", kSummit, "--observer-height", "-2"}, "observer height"},
-      {{kSample, "--observer", kSummit, "--visibility", dir / "seen.png"}, "GeoTIFF"},
+      {{kSample, "--observer", kSummit, "--max-distance", "1e-9"},
+       "the range of 1e-09 map units",
+       1},
+      {{kSample, "--observer", kSummit, "--azimuth-from", "1e20"}, "got 1e+20 and 360", 2},
+      {{kSample, "--observer", kSummit, "--observer-height", "-2"}, "observer height", 2},
+      {{kSample, "--observer", kSummit, "--visibility", dir / "seen.png"}, "GeoTIFF", 2},
       {{kSample, "--observer", kSummit, "--preview", dir / "p.png", "--page", "A3", "--page-scale",
         "50000"},
-       "--page-scale"},
+       "--page-scale",
+       2},
   };
-  for (const auto& [args, message] : cases) {
+  for (const auto& [args, message, code] : cases) {
     std::vector<std::string> full = {"panorama", args.front(), dir / "out.gpkg"};
     full.insert(full.end(), args.begin() + 1, args.end());
     CAPTURE(full);
     const CliRun run = run_cli(full);
-    CHECK(run.code == 1);
+    CHECK(run.code == code);
     CHECK_THAT(run.err, Catch::Contains(message));
     CHECK_FALSE(test::fs::exists(dir / "out.gpkg"));
     CHECK_FALSE(test::fs::exists(dir / "seen.png"));
   }
   // One layer per file cannot hold the map and the panorama.
   const CliRun shp = run_cli({"panorama", kSample, dir / "out.shp", "--observer", kSummit});
-  CHECK(shp.code == 1);
+  CHECK(shp.code == 2);
   CHECK_THAT(shp.err, Catch::Contains(".gpkg"));
   CHECK(dir.file_count() == 2);  // holes.tif and one_cell.tif alone
 }

@@ -88,7 +88,7 @@ TEST_CASE("the SVG preview holds a layer per class and a path per stroke", "[cli
   CHECK(svg.outside == 0);
   // Another extension is refused before any work.
   const CliRun jpeg = run_cli({"silhouettes", kSample, dir / "t.gpkg", "--preview", dir / "t.jpg"});
-  CHECK(jpeg.code == 1);
+  CHECK(jpeg.code == 2);
   CHECK_THAT(jpeg.err, Catch::Contains(".png, .svg or .pdf name"));
   CHECK(dir.file_count() == 3);
 }
@@ -199,23 +199,25 @@ TEST_CASE("pages and scales are checked, and a sketch too large for its page is 
   struct Bad {
     std::vector<std::string> extra;
     std::string message;
+    int code;  // 1: the DEM does not fit the page; 2: bad usage
   };
   const Bad cases[] = {
       {{"--preview", dir / "a.svg", "--page", "A4", "--page-scale", "100000"},
-       "larger than the page"},
-      {{"--preview", dir / "a.svg", "--page-scale", "5000"}, "--page-scale needs a --page"},
-      {{"--preview", dir / "a.svg", "--page", "B7"}, "--page must be A4"},
-      {{"--preview", dir / "a.svg", "--page", "20x30"}, "each 50 to 5000"},
-      {{"--preview", dir / "a.svg", "--page", "A3", "--page-scale", "0.5"}, "1:N, from 1"},
-      {{"--preview", dir / "a.png", "--plotter"}, "give --preview a .svg or .pdf name"},
-      {{"--page", "A4"}, "shape the --preview picture"},
+       "larger than the page",
+       1},
+      {{"--preview", dir / "a.svg", "--page-scale", "5000"}, "--page-scale needs a --page", 2},
+      {{"--preview", dir / "a.svg", "--page", "B7"}, "--page must be A4", 2},
+      {{"--preview", dir / "a.svg", "--page", "20x30"}, "each 50 to 5000", 2},
+      {{"--preview", dir / "a.svg", "--page", "A3", "--page-scale", "0.5"}, "1:N, from 1", 2},
+      {{"--preview", dir / "a.png", "--plotter"}, "give --preview a .svg or .pdf name", 2},
+      {{"--page", "A4"}, "shape the --preview picture", 2},
   };
   for (const Bad& b : cases) {
     std::vector<std::string> args = {"silhouettes", kSample, dir / "s.gpkg"};
     args.insert(args.end(), b.extra.begin(), b.extra.end());
     const CliRun run = run_cli(args);
     CAPTURE(b.message);
-    CHECK(run.code == 1);
+    CHECK(run.code == b.code);
     CHECK_THAT(run.err, Catch::Contains(b.message));
     CHECK(dir.file_count() == 0);
   }
@@ -314,7 +316,7 @@ TEST_CASE("a PNG preview reports its drawing, stops when told and is bounded in 
   // vector art it is drawn.
   const CliRun huge = run_cli({"silhouettes", kSample, dir / "h.gpkg", "--page", "5000x5000",
                                "--preview", dir / "huge.png"});
-  CHECK(huge.code == 1);
+  CHECK(huge.code == 2);
   CHECK_THAT(huge.err, Catch::Contains("29528 x 29528 pixels") && Catch::Contains("GB"));
   CHECK_FALSE(std::filesystem::exists(dir / "h.gpkg"));
   CHECK(run_cli({"silhouettes", kSample, dir / "h.gpkg", "--page", "5000x5000", "--preview",

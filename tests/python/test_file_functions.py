@@ -122,7 +122,7 @@ def test_bad_options_raise_value_error_in_keywords(tmp_path, cli, options, words
         # Spelled for the command line, the same options are refused for the same cause.
         code, err = cli("silhouettes", SAMPLE, tmp_path / "out.gpkg",
                         *cli_arguments(options, str(tmp_path)))
-        assert code == 1 and err.startswith("terrain-sketch: ") and err.endswith("\n")
+        assert code == 2 and err.startswith("terrain-sketch: ") and err.endswith("\n")
         assert said == keyword_message(err[len("terrain-sketch: "):-1], "silhouettes")
 
 
