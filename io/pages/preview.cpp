@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <locale>
@@ -11,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/pages/ink_canvas.h"
 #include "io/pages/sketch_page.h"
 #include "io/pages/vector_art.h"
 #include "io/read/gdal_util.h"
@@ -18,51 +20,6 @@
 
 namespace tsk::io {
 namespace {
-
-// A grey-level canvas on which pens darken pixels with anti-aliased discs.
-class Canvas {
- public:
-  Canvas(int width, int height)
-      : width_(width), height_(height), ink_(static_cast<std::size_t>(width) * height, 0.f) {}
-
-  void line(double x0, double y0, double x1, double y1, double radius, float darkness) {
-    const double len = std::hypot(x1 - x0, y1 - y0);
-    const int steps = std::max(1, static_cast<int>(std::ceil(len / 0.35)));
-    for (int k = 0; k <= steps; ++k) {
-      const double t = static_cast<double>(k) / steps;
-      dot(x0 + t * (x1 - x0), y0 + t * (y1 - y0), radius, darkness);
-    }
-  }
-
-  std::vector<GByte> pixels() const {
-    std::vector<GByte> out(ink_.size());
-    for (std::size_t k = 0; k < ink_.size(); ++k) {
-      out[k] = static_cast<GByte>(std::lround(255.0 * (1.0 - std::min(1.f, ink_[k]))));
-    }
-    return out;
-  }
-  int width() const { return width_; }
-  int height() const { return height_; }
-
- private:
-  void dot(double cx, double cy, double radius, float darkness) {
-    const int x_lo = std::max(0, static_cast<int>(std::floor(cx - radius - 1)));
-    const int x_hi = std::min(width_ - 1, static_cast<int>(std::ceil(cx + radius + 1)));
-    const int y_lo = std::max(0, static_cast<int>(std::floor(cy - radius - 1)));
-    const int y_hi = std::min(height_ - 1, static_cast<int>(std::ceil(cy + radius + 1)));
-    for (int y = y_lo; y <= y_hi; ++y) {
-      for (int x = x_lo; x <= x_hi; ++x) {
-        const double dist = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
-        const double coverage = std::clamp(radius + 0.5 - dist, 0.0, 1.0);
-        float& v = ink_[static_cast<std::size_t>(y) * width_ + x];
-        v = std::max(v, static_cast<float>(coverage) * darkness);
-      }
-    }
-  }
-
-  int width_, height_;
-  std::vector<float> ink_;
-};
 
 // A paper page's pixels in a millimetre, at kPreviewDpi.
 constexpr double kPixelsPerMm = kPreviewDpi / 25.4;
@@ -80,7 +37,8 @@ int CPL_STDCALL encoding_progress(double fraction, const char*, void* data) {
 
 // Draws the page's paths, `scale` pixels to a page unit, formulated first so factual strokes
 // stay on top, and the labels' leaders: a picture has no text, so its peaks show as leaders alone.
-void draw_page(Canvas& canvas, const SketchPage& page, double scale, const ProgressFn& progress) {
+void draw_page(InkCanvas& canvas, const SketchPage& page, double scale,
+               const ProgressFn& progress) {
   std::size_t drawn = 0;
   const double total = 2.0 * static_cast<double>(std::max<std::size_t>(1, page.paths.size()));
   for (StrokeClass cls : {StrokeClass::formulated, StrokeClass::factual}) {
@@ -109,11 +67,11 @@ void write_png_preview(const std::string& path, const SketchPage& page,
   const double pixels_across = page.millimetres ? std::ceil(page.width * scale) : page.width;
   const double pixels_down = page.millimetres ? std::ceil(page.height * scale) : page.height;
   check_png_pixels(pixels_across, pixels_down);
-  Canvas canvas(static_cast<int>(pixels_across), static_cast<int>(pixels_down));
+  InkCanvas canvas(static_cast<int>(pixels_across), static_cast<int>(pixels_down));
   draw_page(canvas, page, scale, progress);
   GDALAllRegister();
   GdalErrorCapture capture;
-  std::vector<GByte> pixels = canvas.pixels();
+  std::vector<std::uint8_t> pixels = canvas.pixels();
   GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
   GDALDriver* png = GetGDALDriverManager()->GetDriverByName("PNG");
   if (!mem || !png) throw Error("GDAL has no MEM or PNG driver");
