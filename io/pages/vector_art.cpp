@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/drawn/stroke_outline.h"
+#include "io/pages/fixed_number.h"
 #include "io/write/output_files.h"
 
 namespace tsk::io {
@@ -159,15 +160,21 @@ namespace {
 
 // The page's strokes as SVG, one layer per class.
 void svg_classes(std::ostream& svg, const SketchPage& page, const PlotterPage* plotter) {
+  std::string path;  // one path's text, its storage reused
   for (std::size_t c = 0; c < 2; ++c) {
     const ClassLook l = look(kClassOrder[c]);
     svg << "<g id=\"" << l.id << "\" inkscape:label=\"" << l.label
         << "\" inkscape:groupmode=\"layer\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
     class_paths(page, plotter, c,
                 [&](const std::vector<StrokePoint>& pts, bool closed, double w, double ink) {
-                  svg << "<path d=\"";
-                  for (std::size_t k = 0; k < pts.size(); ++k)
-                    svg << (k == 0 ? "M" : " L") << pts[k].x << " " << pts[k].y;
+                  path.assign("<path d=\"");
+                  for (std::size_t k = 0; k < pts.size(); ++k) {
+                    path += k == 0 ? "M" : " L";
+                    append_fixed3(path, pts[k].x);
+                    path += ' ';
+                    append_fixed3(path, pts[k].y);
+                  }
+                  svg << path;
                   if (closed) {
                     svg << " Z\" fill=\"" << svg_colour(l, ink) << "\" stroke=\"none\"/>\n";
                   } else {
@@ -246,6 +253,7 @@ struct PdfPlace {
 void pdf_strokes(std::ostream& content, const SketchPage& page, const PlotterPage* plotter,
                  const PdfPlace& at) {
   content << "1 J 1 j\n";
+  std::string path;  // one path's operators, their storage reused
   for (std::size_t c = 0; c < 2; ++c) {
     const ClassLook l = look(kClassOrder[c]);
     content << "/OC /L" << c << " BDC\n"
@@ -261,8 +269,14 @@ void pdf_strokes(std::ostream& content, const SketchPage& page, const PlotterPag
                             << rgb[1] << " " << rgb[2] << " rg\n";
                     current_ink = ink;
                   }
-                  for (std::size_t k = 0; k < pts.size(); ++k)
-                    content << at.x(pts[k]) << " " << at.y(pts[k]) << (k ? " l\n" : " m\n");
+                  path.clear();
+                  for (std::size_t k = 0; k < pts.size(); ++k) {
+                    append_fixed3(path, at.x(pts[k]));
+                    path += ' ';
+                    append_fixed3(path, at.y(pts[k]));
+                    path += k ? " l\n" : " m\n";
+                  }
+                  content << path;
                   if (closed) {
                     content << "f\n";
                   } else {
