@@ -62,6 +62,20 @@ TEST_CASE("effective areas agree with the brute-force oracle", "[pstrokes][oracl
   }
 }
 
+TEST_CASE("effective areas of long lines with many equal areas agree with the oracle",
+          "[pstrokes][oracle]") {
+  // Whole-metre heights on a regular spacing tie often: the first vertex of equal area goes
+  // first, in both.
+  std::mt19937 rng(20261207);
+  for (int round = 0; round < 60; ++round) {
+    const std::size_t n = 3 + rng() % 400;
+    std::vector<double> x(n), y(n);
+    for (std::size_t k = 0; k < n; ++k) x[k] = 30.0 * k, y[k] = static_cast<double>(rng() % 4);
+    CAPTURE(round, n);
+    CHECK(effective_areas(x, y) == brute_force_areas(x, y));
+  }
+}
+
 TEST_CASE("a ridge seeds convex column strokes along its crest, drawn across the view",
           "[pstrokes]") {
   // North-south ridge, crest at column 20, seen from the west: the crest is convex along the

@@ -1,7 +1,10 @@
 #include "core/applications/pstrokes.h"
 
+#include <algorithm>
 #include <cmath>
-#include <queue>
+#include <cstdint>
+#include <initializer_list>
+#include <vector>
 
 #include "core/base/errors.h"
 #include "core/base/parallel.h"
@@ -22,6 +25,92 @@ const char* pstroke_class_name(PStrokeClass c) {
   return names[static_cast<int>(c)];
 }
 
+namespace {
+
+// The interior vertices of a line still to remove, least effective area first (ties: the first
+// vertex), each found by its place in the heap so that a neighbour's new area moves it there
+// rather than adding an entry: a line of n vertices keeps n entries, not 3n to sift through.
+// Four children a node, each entry with its key: half the levels, and the keys compared side by
+// side in the cache rather than looked up.
+class VertexHeap {
+ public:
+  explicit VertexHeap(const std::vector<double>& keys) : place_(keys.size(), kOut) {
+    const std::size_t n = keys.size();
+    for (std::size_t k = 1; k + 1 < n; ++k) {
+      place_[k] = static_cast<std::uint32_t>(heap_.size());
+      heap_.push_back({keys[k], static_cast<std::uint32_t>(k)});
+    }
+    for (std::size_t at = heap_.size(); at-- > 0;) sift_down(at);  // leaves stay put
+  }
+  bool empty() const { return heap_.empty(); }
+  // Takes the vertex of least key.
+  std::size_t pop() {
+    const std::uint32_t top = heap_.front().vertex;
+    place_[top] = kOut;
+    const Entry last = heap_.back();
+    heap_.pop_back();
+    if (!heap_.empty()) {
+      heap_.front() = last;
+      sift_down(0);
+    }
+    return top;
+  }
+  // Gives vertex k (still held) its new key, and moves it where that belongs.
+  void update(std::size_t k, double key) {
+    const std::size_t at = place_[k];
+    const bool smaller = key < heap_[at].key;
+    heap_[at].key = key;
+    if (smaller) {
+      sift_up(at);
+    } else {
+      sift_down(at);
+    }
+  }
+
+ private:
+  static constexpr std::uint32_t kOut = 0xffffffffu;
+  static constexpr std::size_t kArity = 4;
+  struct Entry {
+    double key;
+    std::uint32_t vertex;
+    bool operator<(const Entry& o) const {
+      return key < o.key || (key == o.key && vertex < o.vertex);
+    }
+  };
+  void put(const Entry& e, std::size_t at) {
+    heap_[at] = e;
+    place_[e.vertex] = static_cast<std::uint32_t>(at);
+  }
+  void sift_up(std::size_t at) {
+    const Entry e = heap_[at];
+    while (at > 0 && e < heap_[(at - 1) / kArity]) {
+      put(heap_[(at - 1) / kArity], at);
+      at = (at - 1) / kArity;
+    }
+    put(e, at);
+  }
+  void sift_down(std::size_t at) {
+    const Entry e = heap_[at];
+    const std::size_t n = heap_.size();
+    for (;;) {
+      const std::size_t first = kArity * at + 1;
+      if (first >= n) break;
+      std::size_t least = first;
+      const std::size_t end = std::min(first + kArity, n);
+      for (std::size_t c = first + 1; c < end; ++c) least = heap_[c] < heap_[least] ? c : least;
+      if (!(heap_[least] < e)) break;
+      put(heap_[least], at);
+      at = least;
+    }
+    put(e, at);
+  }
+
+  std::vector<Entry> heap_;
+  std::vector<std::uint32_t> place_;
+};
+
+}  // namespace
+
 std::vector<double> effective_areas(const std::vector<double>& x, const std::vector<double>& y) {
   const std::size_t n = x.size();
   std::vector<double> area(n, 0.0);
@@ -32,28 +121,24 @@ std::vector<double> effective_areas(const std::vector<double>& x, const std::vec
   auto triangle = [&](std::size_t a, std::size_t k, std::size_t b) {
     return 0.5 * ((x[b] - x[a]) * (y[k] - y[a]) - (x[k] - x[a]) * (y[b] - y[a]));
   };
-  using Entry = std::pair<double, std::size_t>;  // |area|, vertex
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
-  std::vector<double> current(n, 0.0);
+  std::vector<double> current(n, 0.0), magnitude(n, 0.0);
   for (std::size_t k = 1; k + 1 < n; ++k) {
     current[k] = triangle(k - 1, k, k + 1);
-    heap.push({std::fabs(current[k]), k});
+    magnitude[k] = std::fabs(current[k]);
   }
-  std::vector<bool> removed(n, false);
+  VertexHeap heap(magnitude);
   double floor_area = 0.0;
   while (!heap.empty()) {
-    const auto [a, k] = heap.top();
-    heap.pop();
-    if (removed[k] || a != std::fabs(current[k])) continue;  // stale entry
-    removed[k] = true;
-    floor_area = std::max(floor_area, a);
+    const std::size_t k = heap.pop();
+    floor_area = std::max(floor_area, magnitude[k]);
     area[k] = std::copysign(floor_area, current[k]);
     next[prev[k]] = next[k];
     prev[next[k]] = prev[k];
     for (std::size_t j : {prev[k], next[k]}) {
       if (j == 0 || j + 1 == n) continue;
       current[j] = triangle(prev[j], j, next[j]);
-      heap.push({std::fabs(current[j]), j});
+      magnitude[j] = std::fabs(current[j]);
+      heap.update(j, magnitude[j]);
     }
   }
   return area;
