@@ -34,11 +34,12 @@ namespace {
 // side in the cache rather than looked up.
 class VertexHeap {
  public:
-  explicit VertexHeap(const std::vector<double>& keys) : place_(keys.size(), kOut) {
-    const std::size_t n = keys.size();
+  // Holds vertices 1 to n - 2 of a line of n, keyed by their areas' magnitudes.
+  explicit VertexHeap(const std::vector<double>& areas) : place_(areas.size()) {
+    const std::size_t n = areas.size();
     for (std::size_t k = 1; k + 1 < n; ++k) {
       place_[k] = static_cast<std::uint32_t>(heap_.size());
-      heap_.push_back({keys[k], static_cast<std::uint32_t>(k)});
+      heap_.push_back({std::fabs(areas[k]), static_cast<std::uint32_t>(k)});
     }
     for (std::size_t at = heap_.size(); at-- > 0;) sift_down(at);  // leaves stay put
   }
@@ -46,7 +47,6 @@ class VertexHeap {
   // Takes the vertex of least key.
   std::size_t pop() {
     const std::uint32_t top = heap_.front().vertex;
-    place_[top] = kOut;
     const Entry last = heap_.back();
     heap_.pop_back();
     if (!heap_.empty()) {
@@ -68,7 +68,6 @@ class VertexHeap {
   }
 
  private:
-  static constexpr std::uint32_t kOut = 0xffffffffu;
   static constexpr std::size_t kArity = 4;
   struct Entry {
     double key;
@@ -121,24 +120,20 @@ std::vector<double> effective_areas(const std::vector<double>& x, const std::vec
   auto triangle = [&](std::size_t a, std::size_t k, std::size_t b) {
     return 0.5 * ((x[b] - x[a]) * (y[k] - y[a]) - (x[k] - x[a]) * (y[b] - y[a]));
   };
-  std::vector<double> current(n, 0.0), magnitude(n, 0.0);
-  for (std::size_t k = 1; k + 1 < n; ++k) {
-    current[k] = triangle(k - 1, k, k + 1);
-    magnitude[k] = std::fabs(current[k]);
-  }
-  VertexHeap heap(magnitude);
+  std::vector<double> current(n, 0.0);
+  for (std::size_t k = 1; k + 1 < n; ++k) current[k] = triangle(k - 1, k, k + 1);
+  VertexHeap heap(current);
   double floor_area = 0.0;
   while (!heap.empty()) {
     const std::size_t k = heap.pop();
-    floor_area = std::max(floor_area, magnitude[k]);
+    floor_area = std::max(floor_area, std::fabs(current[k]));
     area[k] = std::copysign(floor_area, current[k]);
     next[prev[k]] = next[k];
     prev[next[k]] = prev[k];
     for (std::size_t j : {prev[k], next[k]}) {
       if (j == 0 || j + 1 == n) continue;
       current[j] = triangle(prev[j], j, next[j]);
-      magnitude[j] = std::fabs(current[j]);
-      heap.update(j, magnitude[j]);
+      heap.update(j, std::fabs(current[j]));
     }
   }
   return area;

@@ -3,8 +3,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <sstream>
 #include <system_error>
+
+#include "core/base/errors.h"
 
 namespace tsk::io {
 namespace {
@@ -15,21 +16,14 @@ namespace {
 constexpr double kFastLimit = 1e12;
 constexpr double kTieMargin = 1e-3;
 
-// The exact rounding, at full cost: std::to_chars, or a stream where it cannot (none here).
+// The exact rounding, at full cost. The text of any double fits: 309 digits, its sign, the point
+// and three decimals.
 void append_exact(std::string& out, double value) {
-  char text[320];  // the largest double in full, its sign and decimals
+  char text[320];
   const auto [end, error] =
       std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, 3);
-  if (error == std::errc()) {
-    out.append(text, end);
-    return;
-  }
-  std::ostringstream stream;
-  stream.imbue(std::locale::classic());
-  stream.setf(std::ios::fixed);
-  stream.precision(3);
-  stream << value;
-  out += stream.str();
+  if (error != std::errc()) throw Error("internal: a number did not fit its text");
+  out.append(text, end);
 }
 
 }  // namespace

@@ -49,11 +49,12 @@ void InkCanvas::line(double x0, double y0, double x1, double y1, double radius, 
   }
   // Only the part of the segment within reach of the canvas can ink it: clipped first, a segment
   // far longer than the canvas is not cut into pieces that all miss it.
-  const double reach = radius + 1.0;
+  // The canvas grown by more than the ink's reach (radius + 0.5) on every side.
+  const double margin = radius + 1.0;
   const double dx = x1 - x0, dy = y1 - y0;
   double t0 = 0.0, t1 = 1.0;
-  if (!clip_span(-dx, x0 + reach, t0, t1) || !clip_span(dx, width_ + reach - x0, t0, t1) ||
-      !clip_span(-dy, y0 + reach, t0, t1) || !clip_span(dy, height_ + reach - y0, t0, t1)) {
+  if (!clip_span(-dx, x0 + margin, t0, t1) || !clip_span(dx, width_ + margin - x0, t0, t1) ||
+      !clip_span(-dy, y0 + margin, t0, t1) || !clip_span(dy, height_ + margin - y0, t0, t1)) {
     return;
   }
   const double ax = x0 + t0 * dx, ay = y0 + t0 * dy;
