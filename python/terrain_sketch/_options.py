@@ -41,9 +41,12 @@ def _value_text(key, spec, value):
         raise ValueError(f"{key} takes {spec['value']}, not {value}")
     if isinstance(value, (tuple, list)) or getattr(value, "ndim", 0) == 1:  # numpy's too
         value = tuple(value)
-        # X,Y: its numbers counted (a third one was named as the second's fault).
+        # X,Y: its numbers counted (a third one was named as the second's fault). An option of
+        # one value takes no list: preview=["a.svg"] was joined into a path of its own.
         parts = spec["value"].count(",") + 1
-        if parts > 1 and len(value) != parts:
+        if parts == 1:
+            raise ValueError(f"{key} takes one {spec['value']}, not a list: {value!r}")
+        if len(value) != parts:
             raise ValueError(f"{key} takes {spec['value']}, {parts} numbers, not {value!r}")
         return ",".join(_value_text(key, spec, part) for part in value)
     # numpy's scalars as Python's numbers: numpy 2 gives repr(np.float64(45)) as

@@ -126,6 +126,20 @@ def test_bad_options_raise_value_error_in_keywords(tmp_path, cli, options, words
         assert said == keyword_message(err[len("terrain-sketch: "):-1], "silhouettes")
 
 
+@pytest.mark.parametrize("options,words", [
+    ({"preview": ["a.svg"]}, "preview takes one FILE, not a list: ('a.svg',)"),
+    ({"preview": ("a.svg", "b.png")}, "preview takes one FILE, not a list"),
+    ({"azimuth": [90]}, "azimuth takes one DEG, not a list"),
+    ({"observer": (1, 2, 3)}, "observer takes X,Y, 2 numbers"),
+])
+def test_lists_only_for_options_of_many_numbers(tmp_path, options, words):
+    # A list for an option of one value was joined with commas into one path or number.
+    command = terrain_sketch.panorama if "observer" in options else terrain_sketch.silhouettes
+    with pytest.raises(ValueError, match=re.escape(words)):
+        command(SAMPLE, tmp_path / "out.gpkg", **options)
+    assert not os.listdir(tmp_path)
+
+
 def test_notes_and_run_failures_name_keywords(tmp_path, caplog):
     caplog.set_level(logging.INFO, logger="terrain_sketch")
     terrain_sketch.silhouettes(SAMPLE, tmp_path / "out.gpkg")
