@@ -3,13 +3,16 @@
 // plan-oblique silhouettes overlay it exactly.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/base/flags.h"
 #include "core/base/parallel.h"
 #include "core/method/orient.h"
 #include "core/method/params.h"
+#include "core/method/plan_oblique.h"
 #include "core/method/strokes.h"
 
 namespace tsk {
@@ -19,8 +22,10 @@ class PlanObliqueDrape {
   // Needs the visibility flags of `oriented`; z_ref is the height that stays in place.
   // `progress` hears of the work done (0 to 1) every few hundred profiles and rows; Cancelled is
   // thrown when it returns false.
+  // Both passes run on `threads` threads (0: the hardware threads).
   PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& flags, const OrientedFrame& frame,
-                   const ViewParams& view, double z_ref, const ProgressFn& progress = {});
+                   const ViewParams& view, double z_ref, const ProgressFn& progress = {},
+                   unsigned threads = 0);
 
   // The output lattice: north-up, the DEM's cell size, covering every visible cell's
   // plan-oblique position; output cell (r, c) is DEM pixel cell (row0 + r, col0 + c). With no
@@ -43,6 +48,32 @@ class PlanObliqueDrape {
   // false, the lattice one empty cell, when col_min > col_max (nothing visible). Throws Error when
   // it would be far larger than the DEM.
   bool lay_out_extent(double col_min, double col_max, double row_min, double row_max);
+  [[noreturn]] void refuse_extent(const std::string& size) const;
+
+  // The plan-oblique positions of each profile's visible cells, sorted (visible cells have
+  // non-decreasing transformed height, so their positions i + k (z - z_ref) are), and the cells'
+  // oriented indices.
+  struct VisiblePlaces {
+    explicit VisiblePlaces(std::size_t profiles) : position(profiles), cell(profiles) {}
+    std::vector<std::vector<double>> position;
+    std::vector<std::vector<std::uint32_t>> cell;
+  };
+  // The pixel columns and rows the visible cells reach.
+  struct PixelExtent {
+    double col_min = 1e300, col_max = -1e300, row_min = 1e300, row_max = -1e300;
+    void take_in(const PixelExtent& other) {
+      col_min = std::min(col_min, other.col_min), col_max = std::max(col_max, other.col_max);
+      row_min = std::min(row_min, other.row_min), row_max = std::max(row_max, other.row_max);
+    }
+  };
+  PixelExtent place_visible_cells(const HeightGrid& oriented, const CellFlags& flags,
+                                  const PlanObliqueShift& shift, VisiblePlaces& places,
+                                  const ProgressFn& progress, unsigned threads) const;
+  void place_profile(const HeightGrid& oriented, const CellFlags& flags,
+                     const PlanObliqueShift& shift, std::size_t p, VisiblePlaces& places,
+                     PixelExtent& extent) const;
+  // Output row r: each cell takes the nearest visible cell of its profile.
+  void fill_row_sources(std::size_t r, const VisiblePlaces& places);
   void check_on_dem_grid(const HeightGrid& source_on_dem) const;
   HeightGrid from_oriented(const HeightGrid& oriented) const;
 

@@ -71,7 +71,7 @@ SilhouetteResult sketch_held_strokes(const HeldDem& dem, const SilhouetteParams&
 PlanObliqueDrape lay_out_drape(const HeldDem& dem, const ViewParams& view, unsigned threads,
                                const ProgressFn& progress) {
   return PlanObliqueDrape(dem.oriented, visibility_of(dem, view, threads), dem.frame, view,
-                          dem.lowest_height, progress);
+                          dem.lowest_height, progress, threads);
 }
 
 std::vector<ProfileLine> plot_profiles(const HeldDem& dem, const ViewParams& view,
