@@ -26,14 +26,14 @@ void print_timings(const StageTimings& t, double write_s, double commit_s, std::
       << " (alongside the stages) + " << commit_s << " (spatial index, commit)\n";
 }
 
-// The preview draws the strokes over the whole DEM turned to the view, held for the run.
+// The preview's page, its strokes laid out during the run, finished with the run's reference
+// height.
 io::PlotterReport write_preview(const Options& o, const SilhouetteResult& result,
-                                std::vector<Stroke>&& drawn, const io::Dem& whole,
-                                const std::string& note, const ProgressFn& progress) {
-  io::PageOptions page = o.page;
+                                io::SketchLayout& layout, const std::string& note,
+                                const ProgressFn& progress) {
+  io::SketchPage page = layout.take_page(result.z_ref);
   page.description = note;
-  return io::write_preview(o.preview, std::move(drawn), result.z_ref, whole.oriented, whole.frame,
-                           whole.geotransform, o.params.view, o.params.geometry, page, progress);
+  return io::write_page(o.preview, page, o.page, progress);
 }
 
 // The run in a sentence, for the outputs' metadata.
@@ -112,10 +112,17 @@ std::string silhouettes(const Args& args, std::ostream& out, std::ostream& err,
     dem.file.emplace(o.input, o.dem);
     print_notes(dem.info().notes, err);
   }
-  // Strokes are written as they complete, so they are never all held (but for the preview).
+  // Strokes are written as they complete, so they are never all held; the preview keeps their
+  // paths on its page.
+  std::optional<io::SketchLayout> layout;
+  if (preview) {
+    // Laid out stroke by stroke as the run hands them on, alongside it rather than after it.
+    const io::Dem& whole = dem.info();
+    layout.emplace(whole.oriented, whole.frame, whole.geotransform, o.params.view,
+                   o.params.geometry, o.page);
+  }
   SilhouetteResult result;
   io::PlotterReport plotter;
-  std::vector<Stroke> drawn;
   double write_s = 0;
   Clock::time_point produced;
   std::string note;  // the run in a sentence, once it is made
@@ -127,7 +134,7 @@ std::string silhouettes(const Args& args, std::ostream& out, std::ostream& err,
           const Clock::time_point start = o.timings ? Clock::now() : Clock::time_point();
           write(stroke);
           if (o.timings) write_s += seconds_since(start);
-          if (preview) drawn.push_back(std::move(stroke));
+          if (layout) layout->add(stroke);
         });
         produced = Clock::now();
         note = note_of(o, result);
@@ -137,7 +144,7 @@ std::string silhouettes(const Args& args, std::ostream& out, std::ostream& err,
   // All three go in place together when the run has done (io/write/output_set.h).
   stop_if_interrupted();
   const std::string statistics = report_statistics(o, result.stats, result.filter);
-  if (preview) plotter = write_preview(o, result, std::move(drawn), dem.info(), note, progress);
+  if (layout) plotter = write_preview(o, result, *layout, note, progress);
   print_filter(result.filter, err);
   print_averaging(o.params.strokes.scale, dem.info().grid, result.averaged, err);
   print_empty_run(result.stats, o.params, err);

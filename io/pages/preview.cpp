@@ -111,8 +111,12 @@ PlotterReport write_preview(const std::string& path, std::vector<Stroke> strokes
                             const GeoTransform& geotransform, const ViewParams& view,
                             Geometry geometry, const PageOptions& options,
                             const ProgressFn& progress) {
-  SketchPage page =
-      lay_out_sketch(std::move(strokes), z_ref, z, frame, geotransform, view, geometry, options);
+  SketchLayout layout(z, frame, geotransform, view, geometry, options);
+  for (Stroke& s : strokes) {
+    layout.add(s);
+    s = Stroke{};  // its path made: the page and the strokes are not held whole together
+  }
+  SketchPage page = layout.take_page(z_ref);
   page.description = options.description;
   return write_page(path, page, options, progress);
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 
 #include "core/base/errors.h"
 #include "core/method/plan_oblique.h"
@@ -51,30 +52,36 @@ PlotExtent plot_extent(const HeightGrid& z, const OrientedFrame& frame, const Vi
 class Plot {
  public:
   Plot(const HeightGrid& z, const OrientedFrame& frame, const GeoTransform& geotransform,
-       const ViewParams& view, Geometry geometry, double z_ref)
+       const ViewParams& view, Geometry geometry)
       : z_(z),
         frame_(frame),
         geotransform_(geotransform),
         geometry_(geometry),
         extent_(plot_extent(z, frame, view)),
-        shift_(view, frame.d, extent_.z_min),
-        // Points already in plan-oblique geometry were shifted from the run's reference height.
-        reference_cells_(shift_(0.0, z_ref)) {}
+        shift_(view, frame.d, extent_.z_min) {}
   double width() const { return extent_.width; }
   double height() const { return extent_.height; }
+  Geometry geometry() const { return geometry_; }
 
   StrokePoint cell(const ChainCell& c) const {
     const double zc =
         static_cast<double>(z_(static_cast<std::size_t>(c.p), static_cast<std::size_t>(c.i)));
     return {(c.p + 0.5) * frame_.w, shift_(c.i + 0.5, zc) * frame_.d};
   }
-  // A drawn stroke's point, in the run's geometry, carried back to its profile and place.
-  StrokePoint point(StrokePoint at) const {
+  // A drawn stroke's point, in the run's geometry, carried back to its profile: x across the view
+  // and y the position along the profile, in cells. In map geometry that is the place (`plot`
+  // makes it ground units); in plan-oblique geometry the point was shifted from the run's
+  // reference height, which `lift` adds once the run has said it.
+  StrokePoint carry(StrokePoint at) const {
     double p = 0.0, s = 0.0;
     frame_.from_pixel(geotransform_.to_pixel(at.x, at.y), p, s);
-    double along = s + 0.5 + reference_cells_;
+    double along = s + 0.5;
     if (geometry_ == Geometry::map) along = shift_(s + 0.5, height_at(p, s));
-    return {(p + 0.5) * frame_.w, along * frame_.d};
+    return {(p + 0.5) * frame_.w, along};
+  }
+  StrokePoint plot(StrokePoint carried) const { return {carried.x, carried.y * frame_.d}; }
+  StrokePoint lift(StrokePoint carried, double z_ref) const {
+    return {carried.x, (carried.y + shift_(0.0, z_ref)) * frame_.d};
   }
 
  private:
@@ -97,7 +104,6 @@ class Plot {
   Geometry geometry_;
   PlotExtent extent_;
   PlanObliqueShift shift_;
-  double reference_cells_;
 };
 
 // How plot coordinates become page coordinates.
@@ -203,33 +209,59 @@ double preview_scale(const HeightGrid& z, const OrientedFrame& frame, const View
   return 1000.0 / (pixel_scale(plot.width, options) * kCssPixelMm);
 }
 
-SketchPage lay_out_sketch(std::vector<Stroke> strokes, double z_ref, const HeightGrid& z,
-                          const OrientedFrame& frame, const GeoTransform& geotransform,
-                          const ViewParams& view, Geometry geometry, const PageOptions& options) {
-  const Plot plot(z, frame, geotransform, view, geometry, z_ref);
+struct SketchLayout::Parts {
+  Parts(const HeightGrid& z, const OrientedFrame& frame, const GeoTransform& geotransform,
+        const ViewParams& view, Geometry geometry, const PageOptions& options)
+      : plot(z, frame, geotransform, view, geometry),
+        at(options.size.empty() ? pixel_placement(plot, options, page)
+                                : paper_placement(plot, options, page)) {}
+  Plot plot;
   SketchPage page;
-  const Placement at = options.size.empty() ? pixel_placement(plot, options, page)
-                                            : paper_placement(plot, options, page);
-  page.paths.reserve(strokes.size());
-  for (Stroke& s : strokes) {
-    const bool drawn = !s.weights.empty();
-    const ClassWidths widths =
-        page.millimetres ? (drawn ? kDrawnMm : kExactMm) : (drawn ? kDrawnPx : kExactPx);
-    const double full = s.cls == StrokeClass::factual ? widths.factual : widths.formulated;
-    PagePath path{s.cls, {}, {}};
-    if (drawn) {
-      for (std::size_t k = 0; k < s.points.size(); ++k) {
-        path.points.push_back(at.place(plot.point(s.points[k])));
-        path.widths.push_back(full * s.weights[k]);
-      }
-    } else {
-      for (const ChainCell& c : s.chain) path.points.push_back(at.place(plot.cell(c)));
-      path.widths.assign(path.points.size(), full);
+  Placement at;
+  std::vector<std::size_t> unlifted;  // paths of drawn strokes whose points wait for z_ref
+};
+
+SketchLayout::SketchLayout(const HeightGrid& z, const OrientedFrame& frame,
+                           const GeoTransform& geotransform, const ViewParams& view,
+                           Geometry geometry, const PageOptions& options)
+    : parts_(std::make_unique<Parts>(z, frame, geotransform, view, geometry, options)) {}
+
+SketchLayout::~SketchLayout() = default;
+
+void SketchLayout::add(const Stroke& s) {
+  SketchPage& page = parts_->page;
+  const bool drawn = !s.weights.empty();
+  const ClassWidths widths =
+      page.millimetres ? (drawn ? kDrawnMm : kExactMm) : (drawn ? kDrawnPx : kExactPx);
+  const double full = s.cls == StrokeClass::factual ? widths.factual : widths.formulated;
+  PagePath path{s.cls, {}, {}};
+  const Plot& plot = parts_->plot;
+  if (drawn) {
+    const bool lifted_later = plot.geometry() == Geometry::oblique;
+    path.points.reserve(s.points.size());
+    path.widths.reserve(s.points.size());
+    for (std::size_t k = 0; k < s.points.size(); ++k) {
+      const StrokePoint carried = plot.carry(s.points[k]);
+      path.points.push_back(lifted_later ? carried : parts_->at.place(plot.plot(carried)));
+      path.widths.push_back(full * s.weights[k]);
     }
-    page.paths.push_back(std::move(path));
-    s = Stroke{};  // its path made: the page and the strokes are not held whole together
+    if (lifted_later) parts_->unlifted.push_back(page.paths.size());
+  } else {
+    path.points.reserve(s.chain.size());
+    for (const ChainCell& c : s.chain) path.points.push_back(parts_->at.place(plot.cell(c)));
+    path.widths.assign(path.points.size(), full);
   }
-  return page;
+  page.paths.push_back(std::move(path));
+}
+
+SketchPage SketchLayout::take_page(double z_ref) {
+  SketchPage& page = parts_->page;
+  for (const std::size_t k : parts_->unlifted) {
+    for (StrokePoint& point : page.paths[k].points)
+      point = parts_->at.place(parts_->plot.lift(point, z_ref));
+  }
+  parts_->unlifted.clear();
+  return std::move(page);
 }
 
 }  // namespace tsk::io

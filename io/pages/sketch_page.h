@@ -2,6 +2,7 @@
 // width at each, far side up, as the raised viewer sees it (the thesis's profile plot).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -48,18 +49,33 @@ struct SketchPage {
 // The scale 1:N of the frame's ground units at which the preview shows the sketch: a page's
 // (options.scale, or the one that fits the sketch inside the page's margins), or, without a page
 // size, the picture's, its pixels taken at 96 to the inch as vector art reads them. 0 for a sketch
-// of no extent. Throws Error, as lay_out_sketch would, when the sketch at the page's scale does
+// of no extent. Throws Error, as SketchLayout would, when the sketch at the page's scale does
 // not fit it: a front end can refuse it before the run.
 double preview_scale(const HeightGrid& z, const OrientedFrame& frame, const ViewParams& view,
                      const PageOptions& options);
 
-// Lays the strokes out on the page (`z_ref`: the run's, SilhouetteResult::z_ref). Exact strokes are
+// Lays a run's strokes out on the page one at a time, as the run hands them on, so that they need
+// not be held till it ends: the page's size and scale follow from the DEM alone. Exact strokes are
 // drawn through their cells' centres; drawn strokes through their points, carried back into the
-// view (the DEM's heights between cells for map geometry), with their weights as widths. Throws
-// Error when the sketch at the scale asked for does not fit the page. Each stroke is let go once
-// its path is made.
-SketchPage lay_out_sketch(std::vector<Stroke> strokes, double z_ref, const HeightGrid& z,
-                          const OrientedFrame& frame, const GeoTransform& geotransform,
-                          const ViewParams& view, Geometry geometry, const PageOptions& options);
+// view (the DEM's heights between cells for map geometry), with their weights as widths. Drawn
+// strokes in plan-oblique geometry are finished when the page is taken, with the run's reference
+// height (SilhouetteResult::z_ref), which a run states at its end. `z`, `frame` and
+// `geotransform` are read until then: they must outlive the layout. Throws Error when the sketch
+// at the scale asked for does not fit the page.
+class SketchLayout {
+ public:
+  SketchLayout(const HeightGrid& z, const OrientedFrame& frame, const GeoTransform& geotransform,
+               const ViewParams& view, Geometry geometry, const PageOptions& options);
+  ~SketchLayout();
+  SketchLayout(const SketchLayout&) = delete;
+  SketchLayout& operator=(const SketchLayout&) = delete;
+
+  void add(const Stroke& stroke);  // its path, after those added before
+  SketchPage take_page(double z_ref);
+
+ private:
+  struct Parts;
+  std::unique_ptr<Parts> parts_;
+};
 
 }  // namespace tsk::io
