@@ -293,23 +293,23 @@ TEST_CASE("a PNG preview reports its drawing, stops when told and is bounded in 
   const tsk::io::Dem& dem = held.dem;
   tsk::io::PageOptions page;
   page.size = "A2";
+  tsk::io::SketchLayout layout(dem.oriented, dem.frame, dem.geotransform, params.view,
+                               params.geometry, page);
+  for (const tsk::Stroke& stroke : result.strokes) layout.add(stroke);
+  const tsk::io::SketchPage laid_out = layout.take_page(result.z_ref);
   std::vector<double> seen;
-  tsk::io::write_preview(dir / "again.png", result.strokes, result.z_ref, dem.oriented, dem.frame,
-                         dem.geotransform, params.view, params.geometry, page,
-                         [&](double fraction) {
-                           seen.push_back(fraction);
-                           return true;
-                         });
+  tsk::io::write_page(dir / "again.png", laid_out, page, [&](double fraction) {
+    seen.push_back(fraction);
+    return true;
+  });
   REQUIRE(seen.size() > 3);
   CHECK(std::is_sorted(seen.begin(), seen.end()));
   CHECK(seen.back() == Approx(1.0));
   for (const double stop_at : {0.01, 0.5, 0.9}) {
     CAPTURE(stop_at);
-    CHECK_THROWS_AS(
-        tsk::io::write_preview(dir / "stopped.png", result.strokes, result.z_ref, dem.oriented,
-                               dem.frame, dem.geotransform, params.view, params.geometry, page,
-                               [&](double fraction) { return fraction < stop_at; }),
-        tsk::Cancelled);
+    CHECK_THROWS_AS(tsk::io::write_page(dir / "stopped.png", laid_out, page,
+                                        [&](double fraction) { return fraction < stop_at; }),
+                    tsk::Cancelled);
     CHECK_FALSE(std::filesystem::exists(dir / "stopped.png"));
   }
   // A page whose picture would take gigabytes is refused before any work, with its size; as

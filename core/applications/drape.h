@@ -19,10 +19,10 @@ namespace tsk {
 
 class PlanObliqueDrape {
  public:
-  // Needs the visibility flags of `oriented`; z_ref is the height that stays in place.
-  // `progress` hears of the work done (0 to 1) every few hundred profiles and rows; Cancelled is
-  // thrown when it returns false.
-  // Both passes run on `threads` threads (0: the hardware threads).
+  // Needs the visibility flags of `oriented`; z_ref is the height that stays in place. Both
+  // passes, over the profiles and then the output rows, run on `threads` threads (0: the hardware
+  // threads). `progress` hears of the work done (0 to 1) from the caller's thread after each chunk
+  // of either; Cancelled is thrown when it returns false.
   PlanObliqueDrape(const HeightGrid& oriented, const CellFlags& flags, const OrientedFrame& frame,
                    const ViewParams& view, double z_ref, const ProgressFn& progress = {},
                    unsigned threads = 0);

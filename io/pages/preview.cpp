@@ -106,21 +106,6 @@ void check_png_page(const PageSize& size) {
                    std::ceil(size.height_mm * kPixelsPerMm));
 }
 
-PlotterReport write_preview(const std::string& path, std::vector<Stroke> strokes, double z_ref,
-                            const HeightGrid& z, const OrientedFrame& frame,
-                            const GeoTransform& geotransform, const ViewParams& view,
-                            Geometry geometry, const PageOptions& options,
-                            const ProgressFn& progress) {
-  SketchLayout layout(z, frame, geotransform, view, geometry, options);
-  for (Stroke& s : strokes) {
-    layout.add(s);
-    s = Stroke{};  // its path made: the page and the strokes are not held whole together
-  }
-  SketchPage page = layout.take_page(z_ref);
-  page.description = options.description;
-  return write_page(path, page, options, progress);
-}
-
 PlotterReport write_page(const std::string& path, const SketchPage& page,
                          const PageOptions& options, const ProgressFn& progress) {
   const std::string ext = lowercase_extension(path);

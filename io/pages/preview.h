@@ -21,19 +21,11 @@ void check_png_pixels(double width, double height);
 // The same for a paper page of `size` (parse_page_size) drawn at kPreviewDpi.
 void check_png_page(const PageSize& size);
 
-// Renders the strokes (a run's, with its z_ref) as seen from the viewpoint (far side up): factual
-// strokes bold black, formulated strokes thinner, on white; drawn strokes tapered and weighted for
-// depth. The extension of `path` picks the format: .png a picture, .svg or .pdf vector art
-// (sketch_page.h, vector_art.h). Whole or not at all. Returns the plotter's figures for a plotter
-// page. A picture reports its drawing to `progress`, and a false answer throws Cancelled. The
-// strokes are let go as they are laid out (move them in: a copy holds them all twice).
-PlotterReport write_preview(const std::string& path, std::vector<Stroke> strokes, double z_ref,
-                            const HeightGrid& z, const OrientedFrame& frame,
-                            const GeoTransform& geotransform, const ViewParams& view,
-                            Geometry geometry, const PageOptions& options = {},
-                            const ProgressFn& progress = {});
-
-// Writes a laid-out page in the format of `path`'s extension, as write_preview does.
+// Writes a laid-out page (SketchLayout) as seen from the viewpoint (far side up): factual strokes
+// bold black, formulated strokes thinner, on white; drawn strokes tapered and weighted for depth.
+// The extension of `path` picks the format: .png a picture, .svg or .pdf vector art
+// (vector_art.h). Whole or not at all. Returns the plotter's figures for a plotter page. A picture
+// reports its drawing to `progress`, and a false answer throws Cancelled.
 PlotterReport write_page(const std::string& path, const SketchPage& page,
                          const PageOptions& options = {}, const ProgressFn& progress = {});
 

@@ -81,7 +81,7 @@ class Plot {
   }
   StrokePoint plot(StrokePoint carried) const { return {carried.x, carried.y * frame_.d}; }
   StrokePoint lift(StrokePoint carried, double z_ref) const {
-    return {carried.x, (carried.y + shift_(0.0, z_ref)) * frame_.d};
+    return plot({carried.x, carried.y + shift_(0.0, z_ref)});
   }
 
  private:
