@@ -55,6 +55,35 @@ std::vector<Window> random_windows(unsigned seed) {
   return windows;
 }
 
+// A GeoPackage with an empty line layer made as QGIS's sinks make theirs (no spatial index), its
+// first `deleted` features added and deleted, so that the next id is deleted + 1.
+void make_unindexed_layer(const std::string& path, int deleted) {
+  GDALAllRegister();
+  io::DatasetPtr ds(GetGDALDriverManager()->GetDriverByName("GPKG")->Create(path.c_str(), 0, 0, 0,
+                                                                            GDT_Unknown, nullptr));
+  REQUIRE(ds);
+  const char* options[] = {"SPATIAL_INDEX=NO", nullptr};
+  OGRLayer* layer = ds->CreateLayer("lines", nullptr, wkbLineString, const_cast<char**>(options));
+  REQUIRE(layer);
+  for (int k = 0; k < deleted; ++k) {
+    OGRFeature feature(layer->GetLayerDefn());
+    OGRLineString line;
+    line.addPoint(kEast + k, kNorth);
+    line.addPoint(kEast + k, kNorth + 5);
+    feature.SetGeometry(&line);
+    REQUIRE(layer->CreateFeature(&feature) == OGRERR_NONE);
+  }
+  for (int fid = 1; fid <= deleted; ++fid) REQUIRE(layer->DeleteFeature(fid) == OGRERR_NONE);
+}
+
+// Appends `strokes` to layer "lines" of `path`, its index packed `window_leaves` leaves at a time.
+void append_windowed(const std::string& path, const std::vector<Stroke>& strokes,
+                     std::size_t window_leaves) {
+  io::GpkgFileAppender file(path, "lines", window_leaves);
+  for (const Stroke& s : strokes) file.lines().add(s.points);
+  file.finish();
+}
+
 }  // namespace
 
 TEST_CASE("a packed R-tree grows a level each time the nodes fill", "[gpkg]") {
@@ -316,30 +345,8 @@ TEST_CASE("lines appended after deleted features take the ids SQLite gives, and 
   // its AUTOINCREMENT key goes on from the largest id it gave, not from the rows left.
   ScratchDir dir("gpkg-append");
   const std::string path = dir / "a.gpkg";
-  {
-    GDALAllRegister();
-    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GPKG");
-    io::DatasetPtr ds(driver->Create(path.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
-    REQUIRE(ds);
-    const char* options[] = {"SPATIAL_INDEX=NO", nullptr};
-    OGRLayer* layer = ds->CreateLayer("lines", nullptr, wkbLineString, const_cast<char**>(options));
-    REQUIRE(layer);
-    for (int k = 0; k < 7; ++k) {
-      OGRFeature feature(layer->GetLayerDefn());
-      OGRLineString line;
-      line.addPoint(kEast + k, kNorth);
-      line.addPoint(kEast + k, kNorth + 5);
-      feature.SetGeometry(&line);
-      REQUIRE(layer->CreateFeature(&feature) == OGRERR_NONE);
-    }
-    for (int fid = 1; fid <= 7; ++fid) REQUIRE(layer->DeleteFeature(fid) == OGRERR_NONE);
-  }
-  const std::vector<Stroke> strokes = random_strokes(300, true, 3);
-  {
-    io::GpkgFileAppender file(path, "lines");
-    for (const Stroke& s : strokes) file.lines().add(s.points);
-    file.finish();
-  }
+  make_unindexed_layer(path, 7);
+  append_windowed(path, random_strokes(300, true, 3), io::RtreeStream::kWindowLeaves);
   IndexedGpkg gpkg(path, "lines");
   CHECK(gpkg.rtree_check() == "ok");
   CHECK(gpkg.first_column("SELECT min(fid) FROM lines").at(0) == "8");
@@ -389,4 +396,59 @@ TEST_CASE("an index built for features whose ids skip answers like a brute-force
   CHECK(gpkg.indexed() == 600);
   CHECK(gpkg.indexed("id % 3 = 0") == 0);
   for (const Window& w : random_windows(13)) CHECK(gpkg.index_hits(w) == gpkg.box_hits(w));
+}
+
+TEST_CASE("a spatial index packed window by window answers like a brute-force search", "[gpkg]") {
+  // Windows of two leaves (102 boxes) on 4096-byte pages: none filled, one just filled, one and a
+  // box, many and a part; the ids start after deleted features.
+  ScratchDir dir("gpkg-windows");
+  for (const std::size_t count : {50, 102, 103, 204, 3000}) {
+    CAPTURE(count);
+    const std::string path = dir / "w.gpkg";
+    make_unindexed_layer(path, 7);
+    append_windowed(path, random_strokes(count, true, static_cast<unsigned>(count)), 2);
+    IndexedGpkg gpkg(path, "lines");
+    CHECK(gpkg.rtree_check() == "ok");
+    CHECK(gpkg.indexed() == static_cast<long long>(count));
+    for (const Window& w : random_windows(static_cast<unsigned>(count) + 3))
+      CHECK(gpkg.index_hits(w) == gpkg.box_hits(w));
+    // Once a window fills, its leaves are numbered first, from 2, whatever lies where: the first
+    // 102 features are in leaves 2 and 3 alone.
+    if (count >= 102) {
+      CHECK(gpkg.first_column("SELECT DISTINCT nodeno FROM rtree_lines_geom_rowid WHERE rowid < " +
+                              std::to_string(8 + 102) + " ORDER BY nodeno") ==
+            std::vector<std::string>{"2", "3"});
+    }
+  }
+}
+
+TEST_CASE("a window's leaves are about square across a band of features", "[gpkg]") {
+  // Point features on a lattice 1020 wide and 10 tall, in rows: two windows of 100 leaves, each a
+  // band 1020 x 5. Square leaves of 51 points are about 10 x 5; slices as many as the square root
+  // of the leaves would make them 102 x 0.5.
+  ScratchDir dir("gpkg-band");
+  const std::string path = dir / "b.gpkg";
+  make_unindexed_layer(path, 0);
+  std::vector<Stroke> strokes;
+  for (int y = 0; y < 10; ++y) {
+    for (int x = 0; x < 1020; ++x) {
+      strokes.emplace_back();
+      strokes.back().points = {{kEast + x, kNorth + y}, {kEast + x, kNorth + y}};
+    }
+  }
+  append_windowed(path, strokes, 100);
+  IndexedGpkg gpkg(path, "lines");
+  REQUIRE(gpkg.rtree_check() == "ok");
+  const std::vector<std::string> widths = gpkg.first_column(
+      "SELECT max(t.maxx) - min(t.minx) FROM rtree_lines_geom_rowid r JOIN rtree_lines_geom t ON "
+      "t.id = r.rowid GROUP BY r.nodeno");
+  const std::vector<std::string> heights = gpkg.first_column(
+      "SELECT max(t.maxy) - min(t.miny) FROM rtree_lines_geom_rowid r JOIN rtree_lines_geom t ON "
+      "t.id = r.rowid GROUP BY r.nodeno");
+  REQUIRE(widths.size() == 200);
+  for (std::size_t k = 0; k < widths.size(); ++k) {
+    CAPTURE(k, widths[k], heights[k]);
+    CHECK(std::stod(widths[k]) <= 20);
+    CHECK(std::stod(heights[k]) >= 2);
+  }
 }

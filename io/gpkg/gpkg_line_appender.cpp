@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstring>
 
-#include "core/base/release_storage.h"
 #include "io/gpkg/gpkg_connection.h"
 
 namespace tsk::io {
@@ -55,8 +54,12 @@ class GpkgLineAppender::Rows {
   Connection::Statement many;
 };
 
-GpkgLineAppender::GpkgLineAppender(GDALDataset& dataset, const std::string& table)
-    : dataset_(dataset), table_(table), writeback_(dataset.GetDescription()) {
+GpkgLineAppender::GpkgLineAppender(GDALDataset& dataset, const std::string& table,
+                                   std::size_t index_window_leaves)
+    : dataset_(dataset),
+      table_(table),
+      writeback_(dataset.GetDescription()),
+      index_(dataset, table, index_window_leaves) {
   OGRLayer* layer = dataset.GetLayerByName(table.c_str());
   if (!layer) throw Error("no layer '" + table + "' to write to");
   // GDAL creates the table when it syncs the layer.
@@ -177,7 +180,7 @@ void GpkgLineAppender::add(const std::vector<StrokePoint>& points, const std::ve
   } else if (!points.empty()) {
     std::memcpy(out, points.data(), points.size() * sizeof(StrokePoint));
   }
-  boxes_.push_back({next_id_++, x0, x1, y0, y1});
+  index_.add({next_id_++, x0, x1, y0, y1});
   min_x_ = std::min(min_x_, x0), max_x_ = std::max(max_x_, x1);
   min_y_ = std::min(min_y_, y0), max_y_ = std::max(max_y_, y1);
   if (++waiting_count_ == waiting_.size()) insert_waiting();
@@ -237,7 +240,7 @@ void GpkgLineAppender::finish(const std::string& description) {
     describe.bind(1, description.c_str()).bind(2, table_.c_str());
     describe.step();
   }
-  if (!boxes_.empty()) {
+  if (index_.size() > 0) {
     Connection::Statement extent(db,
                                  "UPDATE gpkg_contents SET min_x = ?, min_y = ?, max_x = ?, "
                                  "max_y = ? WHERE lower(table_name) = lower(?)");
@@ -252,15 +255,15 @@ void GpkgLineAppender::finish(const std::string& description) {
   if (counted) {
     Connection::Statement count(
         db, "UPDATE gpkg_ogr_contents SET feature_count = ? WHERE lower(table_name) = lower(?)");
-    count.bind(1, static_cast<std::int64_t>(boxes_.size())).bind(2, table_.c_str());
+    count.bind(1, static_cast<std::int64_t>(index_.size())).bind(2, table_.c_str());
     count.step();
   }
   if (!count_trigger_.empty()) db.run(count_trigger_);
-  add_gpkg_spatial_index(dataset_, table_, boxes_);
-  release_storage(boxes_);
+  index_.finish();
 }
 
-GpkgFileAppender::GpkgFileAppender(const std::string& path, const std::string& table)
+GpkgFileAppender::GpkgFileAppender(const std::string& path, const std::string& table,
+                                   std::size_t index_window_leaves)
     : path_(path) {
   GDALAllRegister();
   CPLErrorReset();
@@ -274,7 +277,7 @@ GpkgFileAppender::GpkgFileAppender(const std::string& path, const std::string& t
   if (dataset_->StartTransaction() != OGRERR_NONE) {
     throw Error("cannot start a transaction in '" + path + "': " + CPLGetLastErrorMsg());
   }
-  lines_ = std::make_unique<GpkgLineAppender>(*dataset_, layer->GetName());
+  lines_ = std::make_unique<GpkgLineAppender>(*dataset_, layer->GetName(), index_window_leaves);
 }
 
 GpkgFileAppender::~GpkgFileAppender() {

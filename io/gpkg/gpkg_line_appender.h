@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "core/method/strokes.h"
-#include "io/gpkg/gpkg_spatial_index.h"
+#include "io/gpkg/gpkg_rtree_stream.h"
 #include "io/write/early_writeback.h"
 
 class GDALDataset;
@@ -26,8 +26,10 @@ namespace tsk::io {
 class GpkgLineAppender {
  public:
   // `table` is a line layer of `dataset` with no features yet; set() numbers its attribute
-  // fields in the layer's order, and every row sets them all.
-  GpkgLineAppender(GDALDataset& dataset, const std::string& table);
+  // fields in the layer's order, and every row sets them all. Its spatial index is packed
+  // `index_window_leaves` leaves at a time (RtreeStream).
+  GpkgLineAppender(GDALDataset& dataset, const std::string& table,
+                   std::size_t index_window_leaves = RtreeStream::kWindowLeaves);
   ~GpkgLineAppender();
   GpkgLineAppender(const GpkgLineAppender&) = delete;
   GpkgLineAppender& operator=(const GpkgLineAppender&) = delete;
@@ -72,7 +74,7 @@ class GpkgLineAppender {
   std::size_t rows_unflushed_ = 0;  // rows inserted since the last writeback was started
   std::size_t fields_ = 0;
   std::int64_t next_id_ = 1;
-  IndexBoxes boxes_;
+  RtreeStream index_;
   std::string count_trigger_;  // GDAL's, dropped while rows are inserted
   double min_x_ = std::numeric_limits<double>::infinity(), max_x_ = -min_x_;
   double min_y_ = min_x_, max_y_ = -min_x_;
@@ -83,7 +85,8 @@ class GpkgLineAppender {
 class GpkgFileAppender {
  public:
   // An empty `table` names the file's only layer.
-  GpkgFileAppender(const std::string& path, const std::string& table);
+  GpkgFileAppender(const std::string& path, const std::string& table,
+                   std::size_t index_window_leaves = RtreeStream::kWindowLeaves);
   ~GpkgFileAppender();  // without finish(), nothing of the lines is kept
   GpkgFileAppender(const GpkgFileAppender&) = delete;
   GpkgFileAppender& operator=(const GpkgFileAppender&) = delete;

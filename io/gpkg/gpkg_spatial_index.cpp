@@ -55,11 +55,9 @@ IndexBox::IndexBox(std::int64_t feature, double x0, double x1, double y0, double
       min_y(round_down(y0)),
       max_y(round_up(y1)) {}
 
-namespace {
-
-Cell cover(const Cell* first, const Cell* last, std::int64_t index) {
+IndexBox cover(const IndexBox* first, const IndexBox* last, std::int64_t id) {
   Cell c;
-  c.id = index;
+  c.id = id;
   c.min_x = c.min_y = kInf;
   c.max_x = c.max_y = -kInf;
   for (const Cell* child = first; child != last; ++child) {
@@ -70,6 +68,8 @@ Cell cover(const Cell* first, const Cell* last, std::int64_t index) {
   }
   return c;
 }
+
+namespace {
 
 // A double's bits as an unsigned number in the double's order (-0 taken as +0).
 std::uint64_t ordered_bits(double v) {
@@ -138,15 +138,22 @@ void sort_by_key(const Cells& from, std::size_t begin, std::size_t end, Key key,
   for (const Keyed& k : keyed) *to++ = from[k.at];
 }
 
-// Sort-Tile-Recursive: `cells` in vertical slices by centre x, each cut into nodes by centre y, so
-// that a node holds boxes that lie close together; into `cells` and `ends` of `level`.
-template <typename Cells, typename Level>
-void tile(const Cells& cells, std::size_t per_node, Level& level) {
-  const std::size_t count = cells.size();
-  const std::size_t node_count = (count + per_node - 1) / per_node;
+// Nodes to a slice that make as many slices as nodes in each: the square root of the node count,
+// rounded up.
+std::size_t square_slices(std::size_t cells, std::size_t per_node) {
+  const std::size_t node_count = (cells + per_node - 1) / per_node;
   auto slices = static_cast<std::size_t>(std::sqrt(static_cast<double>(node_count)));
   while (slices * slices < node_count) ++slices;
-  const std::size_t slice_cells = std::max<std::size_t>(1, slices) * per_node;
+  return slices;
+}
+
+// Sort-Tile-Recursive: `cells` in vertical slices of `nodes_per_slice` nodes by centre x, each cut
+// into nodes by centre y, so that a node holds boxes that lie close together; into `cells` and
+// `ends` of `level`.
+template <typename Cells, typename Level>
+void tile(const Cells& cells, std::size_t per_node, std::size_t nodes_per_slice, Level& level) {
+  const std::size_t count = cells.size();
+  const std::size_t slice_cells = std::max<std::size_t>(1, nodes_per_slice) * per_node;
   std::vector<Cell> by_x(count);
   sort_by_key(cells, 0, count, centre_x, by_x.data());
   level.cells.resize(count);
@@ -180,6 +187,40 @@ void put_float(unsigned char* out, float value) {
 
 }  // namespace
 
+std::size_t boxes_per_node(std::size_t node_bytes) {
+  if (node_bytes < 4 + 2 * kCellBytes) {
+    throw Error("R-tree nodes of " + std::to_string(node_bytes) + " bytes cannot hold two boxes");
+  }
+  return (node_bytes - 4) / kCellBytes;
+}
+
+void node_blob(const IndexBox* first, const IndexBox* last, std::int64_t ref_offset,
+               std::size_t node_bytes, int root_depth, std::vector<unsigned char>& blob) {
+  const auto count = static_cast<std::size_t>(last - first);
+  if (4 + count * kCellBytes > node_bytes) throw Error("internal: an R-tree node overfilled");
+  blob.assign(node_bytes, 0);
+  unsigned char* out = blob.data();
+  if (root_depth >= 0) put_big_endian(out, static_cast<unsigned>(root_depth), 2);
+  put_big_endian(out + 2, count, 2);
+  for (unsigned char* at = out + 4; first != last; ++first, at += kCellBytes) {
+    put_big_endian(at, static_cast<std::uint64_t>(first->id + ref_offset), 8);
+    put_float(at + 8, first->min_x);
+    put_float(at + 12, first->max_x);
+    put_float(at + 16, first->min_y);
+    put_float(at + 20, first->max_y);
+  }
+}
+
+PackedLeaves pack_leaves(const IndexBoxes& boxes, std::size_t per_node,
+                         std::size_t leaves_per_slice) {
+  struct {
+    std::vector<Cell> cells;
+    std::vector<std::size_t> ends;
+  } level;
+  tile(boxes, per_node, leaves_per_slice, level);
+  return {std::move(level.cells), std::move(level.ends)};
+}
+
 template <typename F>
 void PackedRtree::for_each_cell(const Level& level, F&& f) {
   for (std::size_t j = 0, begin = 0; j < level.ends.size(); begin = level.ends[j++]) {
@@ -188,14 +229,11 @@ void PackedRtree::for_each_cell(const Level& level, F&& f) {
   }
 }
 
-PackedRtree::PackedRtree(const IndexBoxes& boxes, std::size_t node_bytes)
-    : node_bytes_(node_bytes) {
-  if (node_bytes < 4 + 2 * kCellBytes) {
-    throw Error("R-tree nodes of " + std::to_string(node_bytes) + " bytes cannot hold two boxes");
-  }
-  const std::size_t per_node = (node_bytes - 4) / kCellBytes;
+PackedRtree::PackedRtree(const IndexBoxes& boxes, std::size_t node_bytes, RtreeNumbering numbering)
+    : node_bytes_(node_bytes), levels_below_(numbering.levels_below) {
+  const std::size_t per_node = boxes_per_node(node_bytes);
   levels_.emplace_back();
-  tile(boxes, per_node, levels_.back());
+  tile(boxes, per_node, square_slices(boxes.size(), per_node), levels_.back());
   while (levels_.back().ends.size() > 1) {
     const Level& below = levels_.back();
     std::vector<Cell> covers;
@@ -205,7 +243,7 @@ PackedRtree::PackedRtree(const IndexBoxes& boxes, std::size_t node_bytes)
                              static_cast<std::int64_t>(i)));
     }
     Level above;
-    tile(covers, per_node, above);
+    tile(covers, per_node, square_slices(covers.size(), per_node), above);
     levels_.push_back(std::move(above));  // `below` is not used after this
   }
   // Numbers top down from the root's 1; each node's parent from the cells above it.
@@ -213,7 +251,8 @@ PackedRtree::PackedRtree(const IndexBoxes& boxes, std::size_t node_bytes)
   for (std::size_t level = levels_.size(); level-- > 0;) {
     Level& l = levels_[level];
     l.first_number = next;
-    next += static_cast<std::int64_t>(l.ends.size());
+    next = level + 1 == levels_.size() ? numbering.below_root
+                                       : next + static_cast<std::int64_t>(l.ends.size());
     l.parent.assign(l.ends.size(), 0);
     if (level + 1 == levels_.size()) continue;
     for_each_cell(levels_[level + 1], [&l](const Cell& cell, std::int64_t number) {
@@ -234,21 +273,10 @@ void PackedRtree::node(std::size_t k, RtreeNode& node) const {
   const Level& l = levels_[level];
   node.number = l.first_number + static_cast<std::int64_t>(k);
   node.parent = l.parent[k];
-  node.blob.assign(node_bytes_, 0);
-  unsigned char* out = node.blob.data();
   const std::size_t begin = k > 0 ? l.ends[k - 1] : 0, end = l.ends[k];
-  if (node.number == 1) put_big_endian(out, static_cast<unsigned>(depth()), 2);
-  put_big_endian(out + 2, end - begin, 2);
-  for (std::size_t c = begin; c < end; ++c) {
-    const Cell& cell = l.cells[c];
-    const std::int64_t ref = level == 0 ? cell.id : levels_[level - 1].first_number + cell.id;
-    unsigned char* at = out + 4 + (c - begin) * kCellBytes;
-    put_big_endian(at, static_cast<std::uint64_t>(ref), 8);
-    put_float(at + 8, cell.min_x);
-    put_float(at + 12, cell.max_x);
-    put_float(at + 16, cell.min_y);
-    put_float(at + 20, cell.max_y);
-  }
+  const std::int64_t ref_offset = level == 0 ? 0 : levels_[level - 1].first_number;
+  node_blob(l.cells.data() + begin, l.cells.data() + end, ref_offset, node_bytes_,
+            node.number == 1 ? depth() : -1, node.blob);
 }
 
 std::vector<std::pair<std::int64_t, std::int64_t>> PackedRtree::leaf_entries() const {
@@ -358,20 +386,15 @@ void insert_pairs(const Connection& db, const std::string& into,
                     });
 }
 
-// Inserts the leaf of each feature into the R-tree's rowid table `rowids`, in the order of the
-// ids so that each row lands at the end of the table's B-tree. Where the ids count up one by one
-// from the first, as a writer's do, SQLite numbers the rows after the first itself, so that each
-// goes to the table's end without a search for its id (a million strokes' rows: 0.16 s became
-// 0.08 s).
-void insert_leaves(const Connection& db, const std::string& rowids, const PackedRtree& packed) {
-  const std::string into = "INSERT INTO " + rowids + "(rowid, nodeno) VALUES ";
-  const auto [first, leaf] = packed.leaves_by_id();
-  if (leaf.empty()) {
-    std::vector<std::pair<std::int64_t, std::int64_t>> entries = packed.leaf_entries();
-    std::sort(entries.begin(), entries.end());
-    return insert_pairs(db, into, entries);
-  }
-  insert_pairs(db, into, {std::make_pair(first, leaf.front())});
+// Inserts the leaf of each feature into the R-tree's rowid table `rowids`: `leaf[k]` is the leaf of
+// feature `first + k`. In the order of the ids, so that each row lands at the end of the table's
+// B-tree; SQLite numbers the rows after the first itself, so that each goes to the table's end
+// without a search for its id (a million strokes' rows: 0.16 s became 0.08 s).
+void insert_leaves_by_id(const Connection& db, const std::string& rowids, std::int64_t first,
+                         const std::vector<std::int64_t>& leaf) {
+  if (leaf.empty()) return;
+  insert_pairs(db, "INSERT INTO " + rowids + "(rowid, nodeno) VALUES ",
+               {std::make_pair(first, leaf.front())});
   constexpr std::size_t kRowsPerInsert = 512;
   static_assert(kRowsPerInsert <= gpkg::kMostBoundValues, "too many values a statement");
   insert_in_batches(
@@ -383,29 +406,78 @@ void insert_leaves(const Connection& db, const std::string& rowids, const Packed
             ", not " + std::to_string(last));
 }
 
+// Inserts the leaf of each feature of `packed` into the R-tree's rowid table `rowids`, by id where
+// the ids count up one by one from the first, as a writer's do.
+void insert_leaves(const Connection& db, const std::string& rowids, const PackedRtree& packed) {
+  const auto [first, leaf] = packed.leaves_by_id();
+  if (!leaf.empty()) return insert_leaves_by_id(db, rowids, first, leaf);
+  std::vector<std::pair<std::int64_t, std::int64_t>> entries = packed.leaf_entries();
+  std::sort(entries.begin(), entries.end());
+  insert_pairs(db, "INSERT INTO " + rowids + "(rowid, nodeno) VALUES ", entries);
+}
+
+Connection index_connection(GDALDataset& dataset) {
+  return Connection(dataset, "building a GeoPackage spatial index");
+}
+
 }  // namespace
 
-void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
-                            const IndexBoxes& boxes) {
+RtreeNames rtree_names(GDALDataset& dataset, const std::string& table) {
   OGRLayer* layer = dataset.GetLayerByName(table.c_str());
   if (!layer) throw Error("no layer '" + table + "' to index");
-  const std::string column = layer->GetGeometryColumn();
-  const std::string fid = *layer->GetFIDColumn() ? layer->GetFIDColumn() : "fid";
-  const std::string rtree = "rtree_" + table + "_" + column;
-  const Connection db(dataset, "building a GeoPackage spatial index");
+  RtreeNames names;
+  names.table = table;
+  names.column = layer->GetGeometryColumn();
+  names.fid = *layer->GetFIDColumn() ? layer->GetFIDColumn() : "fid";
+  names.rtree = "rtree_" + table + "_" + names.column;
+  return names;
+}
 
-  db.run("CREATE VIRTUAL TABLE " + quoted_identifier(rtree) +
+std::size_t create_rtree(GDALDataset& dataset, const RtreeNames& names) {
+  const Connection db = index_connection(dataset);
+  db.run("CREATE VIRTUAL TABLE " + quoted_identifier(names.rtree) +
          " USING rtree(id, minx, maxx, miny, maxy)");
-  std::size_t node_bytes = 0;
-  {
-    Connection::Statement root(
-        db, "SELECT length(data) FROM " + quoted_identifier(rtree + "_node") + " WHERE nodeno = 1");
-    if (root.step()) node_bytes = static_cast<std::size_t>(root.integer(0));
+  Connection::Statement root(
+      db,
+      "SELECT length(data) FROM " + quoted_identifier(names.rtree + "_node") + " WHERE nodeno = 1");
+  return root.step() ? static_cast<std::size_t>(root.integer(0)) : 0;
+}
+
+std::vector<IndexBox> write_rtree_leaves(GDALDataset& dataset, const RtreeNames& names,
+                                         std::size_t node_bytes, const PackedLeaves& leaves,
+                                         std::int64_t first_number) {
+  const Connection db = index_connection(dataset);
+  Connection::Statement node(db, "INSERT INTO " + quoted_identifier(names.rtree + "_node") +
+                                     "(nodeno, data) VALUES (?, ?)");
+  std::vector<IndexBox> covers;
+  covers.reserve(leaves.ends.size());
+  std::vector<unsigned char> blob;
+  std::int64_t first_id = std::numeric_limits<std::int64_t>::max();
+  for (const IndexBox& box : leaves.boxes) first_id = std::min(first_id, box.id);
+  // Each feature's leaf by its id less the first; 0, no node's number, where none was given.
+  std::vector<std::int64_t> leaf(leaves.boxes.size(), 0);
+  for (std::size_t j = 0, begin = 0; j < leaves.ends.size(); begin = leaves.ends[j++]) {
+    const IndexBox* first = leaves.boxes.data() + begin;
+    const IndexBox* last = leaves.boxes.data() + leaves.ends[j];
+    const std::int64_t number = first_number + static_cast<std::int64_t>(j);
+    node_blob(first, last, 0, node_bytes, -1, blob);
+    node.bind(1, number).bind(2, blob).step();
+    covers.push_back(cover(first, last, number));
+    for (const IndexBox* box = first; box != last; ++box) {
+      const auto at = static_cast<std::uint64_t>(box->id) - static_cast<std::uint64_t>(first_id);
+      if (at >= leaf.size() || leaf[at] != 0) db.fail("a window's feature ids skip or repeat");
+      leaf[at] = number;
+    }
   }
-  const PackedRtree packed(boxes, node_bytes);
-  db.run("DELETE FROM " + quoted_identifier(rtree + "_node"));
-  Connection::Statement node(
-      db, "INSERT INTO " + quoted_identifier(rtree + "_node") + "(nodeno, data) VALUES (?, ?)");
+  insert_leaves_by_id(db, quoted_identifier(names.rtree + "_rowid"), first_id, leaf);
+  return covers;
+}
+
+void write_rtree(GDALDataset& dataset, const RtreeNames& names, const PackedRtree& packed) {
+  const Connection db = index_connection(dataset);
+  db.run("DELETE FROM " + quoted_identifier(names.rtree + "_node") + " WHERE nodeno = 1");
+  Connection::Statement node(db, "INSERT INTO " + quoted_identifier(names.rtree + "_node") +
+                                     "(nodeno, data) VALUES (?, ?)");
   std::vector<std::pair<std::int64_t, std::int64_t>> parents;
   RtreeNode n;  // each node in turn, its blob's storage reused
   for (std::size_t k = 0; k < packed.node_count(); ++k) {
@@ -413,12 +485,20 @@ void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
     node.bind(1, n.number).bind(2, n.blob).step();
     if (n.parent != 0) parents.emplace_back(n.number, n.parent);
   }
+  // The nodes below, written before, name their parents among this tree's leaves.
+  if (packed.covers_nodes()) {
+    const auto below = packed.leaf_entries();
+    parents.insert(parents.end(), below.begin(), below.end());
+  }
   insert_pairs(
-      db, "INSERT INTO " + quoted_identifier(rtree + "_parent") + "(nodeno, parentnode) VALUES ",
+      db,
+      "INSERT INTO " + quoted_identifier(names.rtree + "_parent") + "(nodeno, parentnode) VALUES ",
       parents);
-  insert_leaves(db, quoted_identifier(rtree + "_rowid"), packed);
+  if (!packed.covers_nodes()) insert_leaves(db, quoted_identifier(names.rtree + "_rowid"), packed);
 
-  for (const std::string& trigger : rtree_triggers(table, column, fid, rtree)) db.run(trigger);
+  for (const std::string& trigger :
+       rtree_triggers(names.table, names.column, names.fid, names.rtree))
+    db.run(trigger);
   db.run(
       "CREATE TABLE IF NOT EXISTS gpkg_extensions (table_name TEXT,column_name TEXT,"
       "extension_name TEXT NOT NULL,definition TEXT NOT NULL,scope TEXT NOT NULL,"
@@ -426,9 +506,16 @@ void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
   db.run(
       "INSERT INTO gpkg_extensions (table_name, column_name, extension_name, definition, scope) "
       "VALUES (" +
-      quoted_literal(table) + ", " + quoted_literal(column) +
+      quoted_literal(names.table) + ", " + quoted_literal(names.column) +
       ", 'gpkg_rtree_index', 'http://www.geopackage.org/spec120/#extension_rtree', "
       "'write-only')");
+}
+
+void add_gpkg_spatial_index(GDALDataset& dataset, const std::string& table,
+                            const IndexBoxes& boxes) {
+  const RtreeNames names = rtree_names(dataset, table);
+  const std::size_t node_bytes = create_rtree(dataset, names);
+  write_rtree(dataset, names, PackedRtree(boxes, node_bytes));
 }
 
 }  // namespace tsk::io
