@@ -221,6 +221,27 @@ PackedLeaves pack_leaves(const IndexBoxes& boxes, std::size_t per_node,
   return {std::move(level.cells), std::move(level.ends)};
 }
 
+std::pair<std::int64_t, std::vector<std::int64_t>> leaf_of_each_id(
+    const std::vector<IndexBox>& boxes, const std::vector<std::size_t>& ends,
+    std::int64_t first_number) {
+  if (boxes.empty()) return {};
+  const auto lowest =
+      std::min_element(boxes.begin(), boxes.end(), [](const IndexBox& a, const IndexBox& b) {
+        return a.id < b.id;
+      })->id;
+  // 0 is no node's number: an id left at 0 has not been placed yet.
+  std::vector<std::int64_t> leaf(boxes.size(), 0);
+  for (std::size_t j = 0, begin = 0; j < ends.size(); begin = ends[j++]) {
+    for (std::size_t k = begin; k < ends[j]; ++k) {
+      const std::uint64_t at =
+          static_cast<std::uint64_t>(boxes[k].id) - static_cast<std::uint64_t>(lowest);
+      if (at >= leaf.size() || leaf[at] != 0) return {};  // a gap (somewhere), or a repeat
+      leaf[at] = first_number + static_cast<std::int64_t>(j);
+    }
+  }
+  return {lowest, std::move(leaf)};
+}
+
 template <typename F>
 void PackedRtree::for_each_cell(const Level& level, F&& f) {
   for (std::size_t j = 0, begin = 0; j < level.ends.size(); begin = level.ends[j++]) {
@@ -289,26 +310,8 @@ std::vector<std::pair<std::int64_t, std::int64_t>> PackedRtree::leaf_entries() c
 }
 
 std::pair<std::int64_t, std::vector<std::int64_t>> PackedRtree::leaves_by_id() const {
-  const std::vector<Cell>& cells = levels_.front().cells;
-  if (cells.empty()) return {};
-  const auto lowest =
-      std::min_element(cells.begin(), cells.end(), [](const Cell& a, const Cell& b) {
-        return a.id < b.id;
-      })->id;
-  // 0 is no node's number: an id left at 0 has not been placed yet.
-  std::vector<std::int64_t> leaf(cells.size(), 0);
-  bool placed = true;
-  for_each_cell(levels_.front(), [&](const Cell& cell, std::int64_t number) {
-    const std::uint64_t at =
-        static_cast<std::uint64_t>(cell.id) - static_cast<std::uint64_t>(lowest);
-    if (at >= leaf.size() || leaf[at] != 0) {
-      placed = false;  // a gap (somewhere), or a repeat
-    } else {
-      leaf[at] = number;
-    }
-  });
-  if (!placed) return {};
-  return {lowest, std::move(leaf)};
+  const Level& leaves = levels_.front();
+  return leaf_of_each_id(leaves.cells, leaves.ends, leaves.first_number);
 }
 
 namespace {
@@ -449,13 +452,12 @@ std::vector<IndexBox> write_rtree_leaves(GDALDataset& dataset, const RtreeNames&
   const Connection db = index_connection(dataset);
   Connection::Statement node(db, "INSERT INTO " + quoted_identifier(names.rtree + "_node") +
                                      "(nodeno, data) VALUES (?, ?)");
+  if (leaves.boxes.empty()) return {};
+  const auto [first_id, leaf] = leaf_of_each_id(leaves.boxes, leaves.ends, first_number);
+  if (leaf.empty()) db.fail("a window's feature ids skip or repeat");
   std::vector<IndexBox> covers;
   covers.reserve(leaves.ends.size());
   std::vector<unsigned char> blob;
-  std::int64_t first_id = std::numeric_limits<std::int64_t>::max();
-  for (const IndexBox& box : leaves.boxes) first_id = std::min(first_id, box.id);
-  // Each feature's leaf by its id less the first; 0, no node's number, where none was given.
-  std::vector<std::int64_t> leaf(leaves.boxes.size(), 0);
   for (std::size_t j = 0, begin = 0; j < leaves.ends.size(); begin = leaves.ends[j++]) {
     const IndexBox* first = leaves.boxes.data() + begin;
     const IndexBox* last = leaves.boxes.data() + leaves.ends[j];
@@ -463,11 +465,6 @@ std::vector<IndexBox> write_rtree_leaves(GDALDataset& dataset, const RtreeNames&
     node_blob(first, last, 0, node_bytes, -1, blob);
     node.bind(1, number).bind(2, blob).step();
     covers.push_back(cover(first, last, number));
-    for (const IndexBox* box = first; box != last; ++box) {
-      const auto at = static_cast<std::uint64_t>(box->id) - static_cast<std::uint64_t>(first_id);
-      if (at >= leaf.size() || leaf[at] != 0) db.fail("a window's feature ids skip or repeat");
-      leaf[at] = number;
-    }
   }
   insert_leaves_by_id(db, quoted_identifier(names.rtree + "_rowid"), first_id, leaf);
   return covers;

@@ -62,6 +62,13 @@ struct PackedLeaves {
 PackedLeaves pack_leaves(const IndexBoxes& boxes, std::size_t per_node,
                          std::size_t leaves_per_slice);
 
+// Where the ids of `boxes`, laid out leaf by leaf (`ends`: one past each leaf's last box; the
+// leaves numbered from `first_number`), run without a gap or a repeat: the first id, and each
+// box's leaf number by its id less the first; else an empty list.
+std::pair<std::int64_t, std::vector<std::int64_t>> leaf_of_each_id(
+    const std::vector<IndexBox>& boxes, const std::vector<std::size_t>& ends,
+    std::int64_t first_number);
+
 // One node of an SQLite R*Tree: its number (the root is 1), its parent's (0 for the root) and
 // its blob as the rtree module stores it.
 struct RtreeNode {
