@@ -40,7 +40,6 @@ RtreeStream::RtreeStream(GDALDataset& dataset, std::string table, std::size_t wi
 void RtreeStream::add(const IndexBox& box) {
   if (added_ > 0 && box.id != last_id_ + 1)
     throw Error("internal: a spatial index streamed features whose ids skip");
-  if (window_.capacity() == 0) window_.reserve(window_boxes_);
   window_.push_back(box);
   last_id_ = box.id;
   ++added_;
