@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <limits>
 #include <random>
 #include <set>
 #include <utility>
@@ -87,4 +88,53 @@ TEST_CASE("chain order refuses strokes out of the scan's order", "[strokes]") {
   order.release_before(10,
                        [&](Stroke&& s) { chains.push_back(static_cast<std::size_t>(s.mean_z)); });
   REQUIRE(chains == std::vector<std::size_t>{0, 3});
+}
+
+TEST_CASE("chain order hands the last strokes on in runs, each settling at the least profile left",
+          "[strokes]") {
+  // Chains whose first profiles go up and down (a long chain may start before younger ones), some
+  // with a piece of no cells; the oracle is the least first profile of every piece handed on
+  // after a settling, by brute force.
+  for (const std::size_t per_run : {1, 3, 7, 64, 1000}) {
+    CAPTURE(per_run);
+    std::mt19937 random(static_cast<std::uint32_t>(per_run));
+    ChainOrder order;
+    order.hold(0, 0, tagged(0, 0));
+    order.release_before(1, [](Stroke&&) {});  // the table starts after chain 0
+    std::vector<Key> held;
+    for (std::size_t chain = 1; chain < 200; ++chain) {
+      if (random() % 5 == 0) continue;  // a chain dropped: shorter than any stroke
+      auto profile = static_cast<std::int32_t>(random() % 50);
+      for (std::size_t piece = 0; piece <= random() % 3; ++piece) {
+        Stroke s = tagged(chain, piece);
+        if (random() % 11 != 0) s.chain = {{profile, 0}, {profile + 1, 0}};
+        profile += 2 + static_cast<std::int32_t>(random() % 4);  // the next piece starts later
+        order.hold(chain, piece, std::move(s));
+        held.push_back({chain, piece});
+      }
+    }
+    std::vector<Key> handed;
+    std::vector<double> first_profiles;                   // of the pieces handed on, in order
+    std::vector<std::pair<std::size_t, double>> settled;  // pieces handed on before, frontier
+    order.release_all_in_runs(
+        per_run,
+        [&](Stroke&& s) {
+          handed.push_back({static_cast<std::size_t>(s.mean_z), static_cast<std::size_t>(s.cells)});
+          first_profiles.push_back(s.chain.empty() ? -std::numeric_limits<double>::infinity()
+                                                   : static_cast<double>(s.chain.front().p));
+        },
+        [&](double frontier) { settled.emplace_back(handed.size(), frontier); });
+    REQUIRE(handed == held);
+    std::set<std::size_t> chains;
+    for (const Key& k : held) chains.insert(k.first);
+    REQUIRE(settled.size() == (chains.size() - 1) / per_run);
+    for (const auto& [before, frontier] : settled) {
+      CAPTURE(before);
+      REQUIRE(before < handed.size());
+      CHECK(frontier == *std::min_element(first_profiles.begin() + static_cast<long>(before),
+                                          first_profiles.end()));
+      // A settling comes between chains, after a whole run of them.
+      CHECK(handed[before].second == 0);
+    }
+  }
 }

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -60,6 +61,31 @@ class ChainOrder {
       use(slots_.take(due_[k]));
     }
     forget_released();
+  }
+
+  // Hands use(stroke) every stroke held, oldest chain first, `chains_per_run` chains at a time;
+  // after each run but the last, calls settle(frontier) with the least profile a stroke still
+  // held reaches: the least first cell's profile of their chains' first pieces (a chain's cells
+  // run from profile to profile, left to right).
+  template <typename Use, typename Settle>
+  void release_all_in_runs(std::size_t chains_per_run, Use&& use, Settle&& settle) {
+    std::vector<std::size_t> chains;
+    std::vector<double> frontier;  // by chain held: the least first profile from it on
+    for (std::size_t at = released_; at < firsts_.size(); ++at) {
+      if (firsts_[at] == kNone) continue;
+      const Chain& cells = slots_.at(firsts_[at]).chain;
+      chains.push_back(table_start_ + at);
+      frontier.push_back(cells.empty() ? -std::numeric_limits<double>::infinity()
+                                       : static_cast<double>(cells.front().p));
+    }
+    for (std::size_t k = frontier.size(); k-- > 1;)
+      frontier[k - 1] = std::min(frontier[k - 1], frontier[k]);
+    const std::size_t step = std::max<std::size_t>(1, chains_per_run);
+    for (std::size_t k = step; k < chains.size(); k += step) {
+      release_before(chains[k], use);
+      settle(frontier[k]);
+    }
+    release_before(std::numeric_limits<std::size_t>::max(), use);
   }
 
  private:

@@ -226,6 +226,23 @@ struct SilhouetteStream::State {
     });
   }
 
+  // After the last profile: hands the drawing the strokes still held a run of chains at a time,
+  // each run followed by the settling of the groups that no piece of a later chain can reach, so
+  // that grouping, drawing and writing go on alongside each other to the end. Handed on at once,
+  // the pieces still held (24 000 on the 8000^2 benchmark's defaults) went through the three one
+  // after the other. The strokes drawn are the same, in the same order: the drawing's order does
+  // not depend on when groups settle.
+  void hand_on_last(Strokes& strokes) {
+    constexpr std::size_t kChainsPerRun = 512;
+    strokes.order.release_all_in_runs(
+        kChainsPerRun, [&](Stroke&& piece) { drawing->add_piece(strokes.cls, std::move(piece)); },
+        [&](double frontier) {
+          drawing->settle(strokes.cls, frontier);
+          drawing->flush();
+        });
+    take_settled(strokes, true);
+  }
+
   // Links profile next_linked of a band: before its first, only to learn the order of the chains
   // open where it starts; from its first on, keeping each chain's cells.
   void link_band(Strokes& strokes, BandLinks& links, const ProfileCandidates& candidates,
@@ -437,8 +454,11 @@ SilhouetteResult SilhouetteStream::finish() {
   const auto start = Clock::now();
   for (State::Strokes* strokes : {&st.factual, &st.formulated}) {
     st.close(*strokes, strokes->linker.close_all());
-    st.hand_on(*strokes, std::numeric_limits<std::size_t>::max());
-    if (st.drawing) st.take_settled(*strokes, true);
+    if (st.drawing) {
+      st.hand_on_last(*strokes);
+    } else {
+      st.hand_on(*strokes, std::numeric_limits<std::size_t>::max());
+    }
   }
   if (st.drawing) {
     st.drawing->flush();

@@ -29,6 +29,8 @@ class StrokeSlots {
   }
   // Asks the processor for the stroke in `slot`: a stroke waits long enough to leave the cache.
   void prefetch(std::size_t slot) const { prefetch_record(strokes_[slot]); }
+  // The stroke waiting in `slot`.
+  const Stroke& at(std::size_t slot) const { return strokes_[slot]; }
   // Takes the stroke out of `slot`, which is free again; its memory goes with it.
   Stroke take(std::size_t slot) {
     free_.push_back(slot);
