@@ -2,6 +2,8 @@
 // its local adaptivity, against brute force and invariances.
 #include <algorithm>
 #include <cmath>
+#include <mutex>
+#include <thread>
 #include <vector>
 
 #include "catch_compat.h"
@@ -164,6 +166,55 @@ TEST_CASE("a survey on any number of threads counts the slopes of one pass", "[a
     CHECK(survey.cells == expected.cells);
     CHECK(survey.flat_cells == expected.flat_cells);
   }
+}
+
+TEST_CASE("a survey read through two readers, half on a thread of its own, is the survey of one",
+          "[adaptive]") {
+  const HeightGrid z = rolling(1700, 1400);  // over two million cells: 64 windows
+  const DemSource dem = memory_source(z, 10.0);
+  const std::vector<DemWindow> windows = survey_windows(z.rows(), z.cols());
+  REQUIRE(windows.size() == 64);
+  const auto index_of = [&](const DemWindow& w) {
+    for (std::size_t k = 0; k < windows.size(); ++k)
+      if (windows[k].row0 == w.row0 && windows[k].col0 == w.col0) return k;
+    FAIL("a window the survey does not read");
+    return windows.size();
+  };
+  std::vector<std::size_t> first, second;
+  std::thread::id second_thread;
+  std::mutex noting;
+  const WindowReader read = [&](const DemWindow& w, float* out) {
+    dem.read(w, out);
+    const std::lock_guard<std::mutex> lock(noting);
+    first.push_back(index_of(w));
+  };
+  const WindowReader alongside = [&](const DemWindow& w, float* out) {
+    dem.read(w, out);
+    const std::lock_guard<std::mutex> lock(noting);
+    second.push_back(index_of(w));
+    second_thread = std::this_thread::get_id();
+  };
+  const SlopeSurvey one = survey_slopes(z.rows(), z.cols(), 10.0, 10.0, dem.read, 2);
+  const SlopeSurvey two = survey_slopes(z.rows(), z.cols(), 10.0, 10.0, read, 2, alongside);
+  CHECK(two.median_slope_pct == one.median_slope_pct);
+  CHECK(two.cells == one.cells);
+  CHECK(two.flat_cells == one.flat_cells);
+  CHECK(two.heights.tolerance == one.heights.tolerance);
+  // Every other pair of windows through the second reader, on a thread of its own.
+  REQUIRE(first.size() == 32);
+  REQUIRE(second.size() == 32);
+  for (const std::size_t k : first) CHECK_FALSE(read_alongside(k));
+  for (const std::size_t k : second) CHECK(read_alongside(k));
+  CHECK(second_thread != std::this_thread::get_id());
+  // On one thread the second reader is not used; its failure is the survey's.
+  first.clear(), second.clear();
+  survey_slopes(z.rows(), z.cols(), 10.0, 10.0, read, 1, alongside);
+  CHECK(first.size() == 64);
+  CHECK(second.empty());
+  const WindowReader failing = [](const DemWindow&, float*) { throw Error("disk gone"); };
+  REQUIRE_THROWS_WITH(survey_slopes(z.rows(), z.cols(), 10.0, 10.0, read, 2, failing), "disk gone");
+  REQUIRE_THROWS_WITH(survey_slopes(z.rows(), z.cols(), 10.0, 10.0, failing, 2, alongside),
+                      "disk gone");
 }
 
 TEST_CASE("the height step is found from the heights", "[adaptive]") {

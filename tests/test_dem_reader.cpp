@@ -12,9 +12,11 @@
 #include <vector>
 
 #include "catch_compat.h"
+#include "core/method/slope_survey.h"
 #include "gdal_test_support.h"
 #include "io/read/block_retention.h"
 #include "io/read/dem_reader.h"
+#include "io/read/gdal_util.h"
 
 using namespace tsk;
 using test::ScratchDir;
@@ -328,4 +330,56 @@ TEST_CASE("a DEM opened without its range sample lacks only the notes on its val
   CHECK(codes(true) ==
         std::vector<io::DemNoteCode>{io::DemNoteCode::no_crs, io::DemNoteCode::fill_value});
   CHECK(codes(false) == std::vector<io::DemNoteCode>{io::DemNoteCode::no_crs});
+}
+
+TEST_CASE("a large DEM's range is sampled through two datasets as through one", "[io][notes]") {
+  // Over two million cells: 64 survey windows, the even ones sampled, every other pair of those
+  // through the file's second dataset. A common fill value in one window is told wherever it
+  // lies among those sampled, and not in a window the sample leaves out.
+  ScratchDir dir("range_two");
+  constexpr int kRows = 1700, kCols = 1400;
+  const std::vector<DemWindow> windows = survey_windows(kRows, kCols);
+  REQUIRE(windows.size() == 64);
+  REQUIRE_FALSE(read_alongside(0));
+  REQUIRE(read_alongside(2));
+  const double gt[6] = {1000, 10, 0, 5000, 0, -10};
+  for (const std::size_t k : {0, 2, 1}) {
+    CAPTURE(k);
+    const DemWindow& w = windows[k];
+    const std::string path = dir / ("fill" + std::to_string(k) + ".tif");
+    const auto fill_r = static_cast<int>(w.row0 + w.rows / 2);
+    const auto fill_c = static_cast<int>(w.col0 + w.cols / 2);
+    test::write_tiff(
+        path, kRows, kCols, 1,
+        [&](int, int r, int c) { return r == fill_r && c == fill_c ? -9999.0f : 100.0f; }, gt,
+        32632);
+    const io::DemFile two(path, io::DemOptions{});
+    const io::DemFile one(io::open_raster(path), path, io::DemOptions{});  // no second dataset
+    const auto fill_told = [](const io::DemFile& dem) {
+      return std::any_of(
+          dem.info().notes.begin(), dem.info().notes.end(),
+          [](const io::DemNote& n) { return n.code == io::DemNoteCode::fill_value; });
+    };
+    CHECK(fill_told(two) == (k % 2 == 0));
+    CHECK(fill_told(one) == fill_told(two));
+    // The second reader reads what the first does.
+    const DemSource source = two.source();
+    REQUIRE(source.read_alongside);
+    CHECK_FALSE(one.source().read_alongside);
+    std::vector<float> a(w.rows * w.cols), b(w.rows * w.cols);
+    source.read(w, a.data());
+    source.read_alongside(w, b.data());
+    CHECK(a == b);
+    CHECK(*std::min_element(a.begin(), a.end()) == -9999.0f);
+    // Without the range's sample, one reader.
+    io::DemOptions unsampled;
+    unsampled.sample_range = false;
+    CHECK_FALSE(io::DemFile(path, unsampled).source().read_alongside);
+  }
+  // A DEM of one survey window has nothing to share: the file is opened once.
+  const std::string small = dir / "small.tif";
+  test::write_tiff(
+      small, 64, 64, 1, [](int, int, int) { return 100.0f; }, gt, 32632);
+  REQUIRE(survey_windows(64, 64).size() == 1);
+  CHECK_FALSE(io::DemFile(small, io::DemOptions{}).source().read_alongside);
 }

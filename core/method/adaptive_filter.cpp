@@ -45,12 +45,12 @@ FilterReport report_of_survey(const SilhouetteParams& choice, const SlopeSurvey&
 }
 
 ResolvedParams adapt_filter(const SilhouetteParams& choice, const DemGrid& grid,
-                            const WindowReader& read) {
+                            const WindowReader& read, const WindowReader& alongside) {
   if (choice.adaptive.mode == FilterMode::fixed) return ResolvedParams(choice);
   choice.validate();
   if (!read) throw Error("an adaptive filter needs the DEM to survey");
   const SlopeSurvey survey =
-      survey_slopes(grid.rows, grid.cols, grid.dx, grid.dy, read, choice.threads);
+      survey_slopes(grid.rows, grid.cols, grid.dx, grid.dy, read, choice.threads, alongside);
   FilterReport report = report_of_survey(choice, survey);
   SilhouetteParams out = choice;
   out.adaptive.mode = FilterMode::fixed;  // resolved: the stages take the cut-offs as they are

@@ -50,7 +50,7 @@ class ResolvedParams {
   ResolvedParams(SilhouetteParams params, FilterReport filter)
       : params_(std::move(params)), filter_(std::move(filter)) {}
   friend ResolvedParams adapt_filter(const SilhouetteParams& choice, const DemGrid& grid,
-                                     const WindowReader& read);
+                                     const WindowReader& read, const WindowReader& alongside);
   friend ResolvedParams resolve_as_reported(const SilhouetteParams& choice,
                                             const FilterReport& report);
   SilhouetteParams params_;
@@ -60,9 +60,10 @@ class ResolvedParams {
 // Resolves the user's choice for one run: an adaptive filter's cut-offs scaled to the DEM read
 // through `read` on its own `grid`, its height tolerance and, with local adaptivity, the map of
 // local scales (which reads the whole DEM once); a fixed filter as it is (`read` is not called).
+// `alongside`, when given, reads half the survey's windows alongside `read` (survey_slopes).
 // Throws Error on bad parameters, and what `read` throws.
 ResolvedParams adapt_filter(const SilhouetteParams& choice, const DemGrid& grid,
-                            const WindowReader& read);
+                            const WindowReader& read, const WindowReader& alongside = {});
 
 // What an adaptive filter adapted to the whole DEM makes of `survey` (adapt_filter's report, for a
 // survey made in parts on a cluster: slope_survey.h).

@@ -76,7 +76,7 @@ namespace {
 SilhouetteResult sketch_source(const DemSource& dem, const SilhouetteParams& params,
                                std::size_t strip, const ProgressFn& progress, StrokeSink sink) {
   const OrientedFrame frame = make_frame(dem.grid, params.view.azimuth_deg);
-  const ResolvedParams run = adapt_filter(params, dem.grid, dem.read);
+  const ResolvedParams run = adapt_filter(params, dem.grid, dem.read, dem.read_alongside);
   // Plan-oblique geometry needs the DEM's lowest height before the first stroke: a pass of its
   // own over the DEM.
   const double z_ref = run->geometry == Geometry::oblique

@@ -101,6 +101,9 @@ struct DemSource {
   DemGrid grid;
   GeoTransform geotransform;
   WindowReader read;
+  // Optional: the same DEM through a reader of its own (a second dataset of its file), which may
+  // read while `read` does; the adaptive filter's survey reads half its windows through it.
+  WindowReader read_alongside = {};
 };
 
 // The whole method on a DEM read window by window, seen as params.view says: what the front ends

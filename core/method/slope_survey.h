@@ -73,11 +73,20 @@ HeightStep height_step(const float* heights, std::size_t count);
 // Each is a cell wider and taller than the cells it measures.
 std::vector<DemWindow> survey_windows(std::size_t rows, std::size_t cols);
 
+// Whether survey window `k` is read through a second reader of the DEM, when there is one: every
+// other pair of windows. The DEM's range (io's sampled_range) reads the even windows the same
+// way, so that each reader finds in its own cache the blocks it read for the range.
+inline bool read_alongside(std::size_t k) {
+  return (k / 2) % 2 == 1;
+}
+
 // Surveys a DEM of rows x cols cells of dx x dy ground units read through `read` (its
-// survey_windows, read on the calling thread), measuring the slopes on `threads` threads (0: every
-// core).
+// survey_windows, read on the calling thread, and, given `alongside` and more than one thread,
+// those read_alongside() names through it on a thread of its own), measuring the slopes on
+// `threads` threads (0: every core).
 SlopeSurvey survey_slopes(std::size_t rows, std::size_t cols, double dx, double dy,
-                          const WindowReader& read, unsigned threads = 0);
+                          const WindowReader& read, unsigned threads = 0,
+                          const WindowReader& alongside = {});
 
 // A survey in parts, for a cluster whose machines each read some of the windows: the parts summed
 // give survey_slopes' survey exactly. First the heights' step, which the slopes need.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -113,21 +114,16 @@ void add_crs_facts(const OGRSpatialReference& srs, const Dem& dem, DemFacts& f) 
   f.has_centre = centre_in_degrees(srs, dem, f.centre_lon, f.centre_lat);
 }
 
-// The band's least and greatest values, its nodata and NaN left out, among cells that the
-// adaptive filter's survey reads (survey_windows: the whole of a small DEM, else 64 windows spread
-// over it, each in a block of its own). Every other window: as many blocks as GDAL's approximate
-// range read (32 of the 8000 x 8000 benchmark's 1024), so that a run without a survey reads no
-// more than before, and a survey reads these from GDAL's cache rather than 32 others more.
-// False when no cell is valid, or a read fails (the failure is told later, by the run's reads).
-bool sampled_range(GDALRasterBand& band, double& lowest, double& highest) {
-  const auto rows = static_cast<std::size_t>(band.GetYSize());
-  const auto cols = static_cast<std::size_t>(band.GetXSize());
+// Widens [lowest, highest] to the values of `band`, its nodata and NaN left out, in the even
+// windows of `windows` that take(k) takes; false when a read fails.
+template <typename Take>
+bool range_of_windows(GDALRasterBand& band, const std::vector<DemWindow>& windows, Take&& take,
+                      double& lowest, double& highest) {
   int has_nodata = 0;
   const double nodata = band.GetNoDataValue(&has_nodata);
-  lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
   std::vector<double> values;
-  const std::vector<DemWindow> windows = survey_windows(rows, cols);
   for (std::size_t k = 0; k < windows.size(); k += 2) {
+    if (!take(k)) continue;
     const DemWindow& w = windows[k];
     values.resize(w.rows * w.cols);
     if (band.RasterIO(GF_Read, static_cast<int>(w.col0), static_cast<int>(w.row0),
@@ -141,18 +137,48 @@ bool sampled_range(GDALRasterBand& band, double& lowest, double& highest) {
       lowest = std::min(lowest, v), highest = std::max(highest, v);
     }
   }
-  return lowest <= highest;
+  return true;
 }
 
-void add_value_facts(GDALRasterBand& band, bool sample_range, DemFacts& f) {
+// The band's least and greatest values, its nodata and NaN left out, among cells that the
+// adaptive filter's survey reads (survey_windows: the whole of a small DEM, else 64 windows spread
+// over it, each in a block of its own). Every other window: as many blocks as GDAL's approximate
+// range read (32 of the 8000 x 8000 benchmark's 1024), so that a run without a survey reads no
+// more than before, and a survey reads these from GDAL's cache rather than 32 others more. Given
+// `second` (the band of the file opened once more), half of them are read through it on a thread
+// of its own, those the survey reads through its second reader (read_alongside()), which finds
+// them in its cache. False when no cell is valid, or a read fails (the failure is told later, by
+// the run's reads).
+bool sampled_range(GDALRasterBand& band, GDALRasterBand* second, double& lowest, double& highest) {
+  const auto rows = static_cast<std::size_t>(band.GetYSize());
+  const auto cols = static_cast<std::size_t>(band.GetXSize());
+  const std::vector<DemWindow> windows = survey_windows(rows, cols);
+  lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+  double second_lowest = lowest, second_highest = highest;
+  std::future<bool> alongside;
+  if (second) {
+    alongside = std::async(std::launch::async, [&] {
+      GdalErrorCapture quiet;  // the run's reads tell a failure
+      return range_of_windows(*second, windows, read_alongside, second_lowest, second_highest);
+    });
+  }
+  const bool read = range_of_windows(
+      band, windows, [&](std::size_t k) { return !second || !read_alongside(k); }, lowest, highest);
+  if (alongside.valid() && !alongside.get()) return false;
+  lowest = std::min(lowest, second_lowest), highest = std::max(highest, second_highest);
+  return read && lowest <= highest;
+}
+
+void add_value_facts(GDALRasterBand& band, GDALRasterBand* second, bool sample_range, DemFacts& f) {
   f.scale = band.GetScale();
   f.offset = band.GetOffset();
-  if (sample_range) f.has_range = sampled_range(band, f.lowest_value, f.highest_value);
+  if (sample_range) f.has_range = sampled_range(band, second, f.lowest_value, f.highest_value);
 }
 
 }  // namespace
 
-Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions& options) {
+Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions& options,
+                 GDALDataset* second) {
   check_band(dataset, path, options.band);
   Dem dem;
   dem.rows = static_cast<std::size_t>(dataset.GetRasterYSize());
@@ -168,7 +194,9 @@ Dem describe_dem(GDALDataset& dataset, const std::string& path, const DemOptions
                       colour == GCI_AlphaBand;
   const OGRSpatialReference* srs = dataset.GetSpatialRef();
   if (srs) add_crs_facts(*srs, dem, facts);
-  add_value_facts(*dataset.GetRasterBand(options.band), options.sample_range, facts);
+  add_value_facts(*dataset.GetRasterBand(options.band),
+                  second ? second->GetRasterBand(options.band) : nullptr, options.sample_range,
+                  facts);
   const DemAssessment assessment = assess_dem(facts);
   if (assessment.refused) throw DemRefused(path, assessment.notes.front());
   dem.ground_scale = assessment.ground_scale;

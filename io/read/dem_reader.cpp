@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/method/silhouettes.h"
+#include "core/method/slope_survey.h"
 #include "io/read/block_retention.h"
 #include "io/read/dem_description.h"
 #include "io/read/gdal_util.h"
@@ -258,13 +259,41 @@ void BandWindows::read(const DemWindow& window, float* heights) const {
 DemRefused::DemRefused(const std::string& path, DemNote note)
     : Error("'" + path + "' cannot be taken as it is"), path_(path), note_(std::move(note)) {}
 
-DemFile::DemFile(const std::string& path, const DemOptions& options)
-    : DemFile(open_raster(path), path, options) {}
+namespace {
 
-DemFile::DemFile(DatasetPtr dataset, const std::string& path, const DemOptions& options) {
+// The file of `first` opened once more, for the second reader of its range's sample and of the
+// filter's survey, or null: only when the range is sampled over windows the two readers share (a
+// DEM of up to about two million cells is one window; window 2 is the first read_alongside()
+// names). A second opening that fails leaves one reader, as before.
+DatasetPtr second_dataset(GDALDataset& first, const std::string& path, const DemOptions& options) {
+  const std::size_t windows = survey_windows(static_cast<std::size_t>(first.GetRasterYSize()),
+                                             static_cast<std::size_t>(first.GetRasterXSize()))
+                                  .size();
+  if (!options.sample_range || windows <= 2) return nullptr;
+  try {
+    return open_raster(path);
+  } catch (const Error&) {
+    return nullptr;
+  }
+}
+
+}  // namespace
+
+// A file is opened twice when its range is sampled: the sample and the filter's survey read half
+// their windows through each, on two threads (0.05 s each on one, at every DEM size).
+DemFile::DemFile(const std::string& path, const DemOptions& options)
+    : DemFile(open_raster(path), path, options, true) {}
+
+DemFile::DemFile(DatasetPtr dataset, const std::string& path, const DemOptions& options)
+    : DemFile(std::move(dataset), path, options, false) {}
+
+DemFile::DemFile(DatasetPtr dataset, const std::string& path, const DemOptions& options,
+                 bool reopen) {
   GdalErrorCapture capture;
-  dem_ = describe_dem(*dataset, path, options);
+  DatasetPtr second = reopen ? second_dataset(*dataset, path, options) : nullptr;
+  dem_ = describe_dem(*dataset, path, options, second.get());
   file_ = std::make_unique<BandWindows>(std::move(dataset), path, options.band);
+  if (second) alongside_ = std::make_unique<BandWindows>(std::move(second), path, options.band);
   // Describing it reads a sample of the DEM; a failure there is the reason for later ones.
   file_->remember_failure(capture.first_failure());
   stop_ = options.stop;
@@ -273,9 +302,11 @@ DemFile::DemFile(DatasetPtr dataset, const std::string& path, const DemOptions& 
 DemFile::~DemFile() = default;
 
 DemSource DemFile::source() const {
-  return {dem_.grid, dem_.geotransform,
-          stopping([&file = *file_](const DemWindow& w, float* heights) { file.read(w, heights); },
-                   stop_)};
+  const auto reader = [this](const BandWindows& file) {
+    return stopping([&file](const DemWindow& w, float* heights) { file.read(w, heights); }, stop_);
+  };
+  return {dem_.grid, dem_.geotransform, reader(*file_),
+          alongside_ ? reader(*alongside_) : WindowReader()};
 }
 
 HeldDem HeldDemFile::held() const {

@@ -113,12 +113,16 @@ class DemFile {
   DemFile(DatasetPtr dataset, const std::string& name, const DemOptions& options);
   ~DemFile();
   const Dem& info() const { return dem_; }  // grid, georeferencing and notes; no heights, no frame
-  // The DEM for the core; it reads through this object, which must outlive it.
+  // The DEM for the core; it reads through this object, which must outlive it. A file whose range
+  // was sampled has a second reader (DemSource::read_alongside), through a dataset of its own.
   DemSource source() const;
 
  private:
+  // `reopen`: whether the file at `name` may be opened once more for a second reader.
+  DemFile(DatasetPtr dataset, const std::string& name, const DemOptions& options, bool reopen);
   Dem dem_;
   std::unique_ptr<BandWindows> file_;
+  std::unique_ptr<BandWindows> alongside_;  // the second reader, or null
   std::function<void()> stop_;
 };
 
