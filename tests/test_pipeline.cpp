@@ -475,6 +475,47 @@ TEST_CASE("tasks behind run in turn, fall at most so far behind, and pass on a f
   CHECK_THROWS_WITH(in_turn.run([] { throw Error("at once"); }), "at once");
 }
 
+TEST_CASE("two shares run at once, and a failure of either stops the other and is passed on",
+          "[pipeline]") {
+  // Both on threads of their own at once: each waits until the other has begun.
+  std::atomic<int> begun{0};
+  std::thread::id threads[2];
+  run_two_shares(true, [&](int share, const std::atomic<bool>&) {
+    threads[share] = std::this_thread::get_id();
+    ++begun;
+    while (begun.load() < 2) std::this_thread::yield();
+  });
+  CHECK(threads[0] == std::this_thread::get_id());
+  CHECK(threads[1] != threads[0]);
+  // One share only when not two.
+  std::vector<int> ran;
+  run_two_shares(false, [&](int share, const std::atomic<bool>&) { ran.push_back(share); });
+  CHECK(ran == std::vector<int>{0});
+  // The second share fails after the first has begun; the first sees `stop` and ends early.
+  for (const int failing : {0, 1}) {
+    CAPTURE(failing);
+    std::atomic<bool> started{false}, stopped_early{false};
+    CHECK_THROWS_WITH(run_two_shares(true,
+                                     [&](int share, const std::atomic<bool>& stop) {
+                                       if (share == failing) {
+                                         while (!started) std::this_thread::yield();
+                                         throw Error("read failed");
+                                       }
+                                       started = true;
+                                       while (!stop) std::this_thread::yield();
+                                       stopped_early = true;
+                                     }),
+                      "read failed");
+    CHECK(stopped_early);
+  }
+  // Both fail: the caller's own failure is the one passed on.
+  CHECK_THROWS_WITH(run_two_shares(true,
+                                   [&](int share, const std::atomic<bool>&) {
+                                     throw Error(share == 0 ? "mine" : "theirs");
+                                   }),
+                    "mine");
+}
+
 TEST_CASE("a hand-off takes every item in order, a batch at a time, and passes on a failure",
           "[pipeline]") {
   for (const bool alongside : {true, false}) {

@@ -25,6 +25,28 @@ unsigned resolve_threads(unsigned threads) {
   return threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
 }
 
+void run_two_shares(bool two,
+                    const std::function<void(int share, const std::atomic<bool>& stop)>& share) {
+  std::atomic<bool> stop{false};
+  const auto run = [&](int which) {
+    try {
+      share(which, stop);
+    } catch (...) {
+      stop = true;
+      throw;
+    }
+  };
+  std::future<void> second;
+  if (two) second = std::async(std::launch::async, run, 1);
+  try {
+    run(0);
+  } catch (...) {
+    if (second.valid()) second.wait();
+    throw;
+  }
+  if (second.valid()) second.get();
+}
+
 void parallel_for(std::size_t count, unsigned threads,
                   const std::function<void(std::size_t, std::size_t)>& work,
                   const ProgressFn& progress) {

@@ -36,6 +36,13 @@ void parallel_for(std::size_t count, unsigned threads,
                   const std::function<void(std::size_t begin, std::size_t end)>& work,
                   const ProgressFn& progress = {});
 
+// Two shares of one job at once: share(0, stop) on the caller's thread and, when `two`,
+// share(1, stop) on a thread of its own (parallel_for may run both on the caller's). `stop` is
+// set when either share throws, for the other to end at its next step; once both have ended, the
+// caller's exception is rethrown, else the other's.
+void run_two_shares(bool two,
+                    const std::function<void(int share, const std::atomic<bool>& stop)>& share);
+
 // Work that goes alongside the caller's, strip after strip, on one thread of its own: the same
 // thread every time, so that memory it frees comes back to it. (A new thread for every strip may
 // take another of the allocator's arenas each time, and each arena keeps what was freed in it:

@@ -4,7 +4,6 @@
 #include <atomic>
 #include <cstring>
 #include <functional>
-#include <future>
 #include <limits>
 #include <mutex>
 
@@ -190,28 +189,15 @@ namespace {
 void read_survey_windows(const std::vector<DemWindow>& windows,
                          std::vector<std::vector<float>>& heights, const WindowReader& read,
                          const WindowReader& alongside) {
-  std::atomic<bool> failed{false};
-  const auto read_share = [&](const WindowReader& reader, bool second) {
-    try {
-      for (std::size_t k = 0; k < windows.size() && !failed; ++k) {
-        if (alongside && read_alongside(k) != second) continue;
-        heights[k].resize(windows[k].rows * windows[k].cols);
-        reader(windows[k], heights[k].data());
-      }
-    } catch (...) {
-      failed = true;
-      throw;
+  run_two_shares(static_cast<bool>(alongside), [&](int share, const std::atomic<bool>& stop) {
+    const bool second = share == 1;
+    const WindowReader& reader = second ? alongside : read;
+    for (std::size_t k = 0; k < windows.size() && !stop; ++k) {
+      if (alongside && read_alongside(k) != second) continue;
+      heights[k].resize(windows[k].rows * windows[k].cols);
+      reader(windows[k], heights[k].data());
     }
-  };
-  std::future<void> second;
-  if (alongside) second = std::async(std::launch::async, read_share, std::cref(alongside), true);
-  try {
-    read_share(read, false);
-  } catch (...) {
-    if (second.valid()) second.wait();
-    throw;
-  }
-  if (second.valid()) second.get();
+  });
 }
 
 }  // namespace

@@ -3,12 +3,15 @@
 #include <ogr_spatialref.h>
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
-#include <future>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "core/base/parallel.h"
 #include "core/method/slope_survey.h"
 #include "io/read/dem_notes.h"
 #include "io/read/gdal_util.h"
@@ -114,15 +117,18 @@ void add_crs_facts(const OGRSpatialReference& srs, const Dem& dem, DemFacts& f) 
   f.has_centre = centre_in_degrees(srs, dem, f.centre_lon, f.centre_lat);
 }
 
+// A read of the range sample failed: told later, by the run's reads.
+struct RangeReadFailed {};
+
 // Widens [lowest, highest] to the values of `band`, its nodata and NaN left out, in the even
-// windows of `windows` that take(k) takes; false when a read fails.
+// windows of `windows` that take(k) takes, until `stop` is set; throws when a read fails.
 template <typename Take>
-bool range_of_windows(GDALRasterBand& band, const std::vector<DemWindow>& windows, Take&& take,
-                      double& lowest, double& highest) {
+void range_of_windows(GDALRasterBand& band, const std::vector<DemWindow>& windows, Take&& take,
+                      const std::atomic<bool>& stop, double& lowest, double& highest) {
   int has_nodata = 0;
   const double nodata = band.GetNoDataValue(&has_nodata);
   std::vector<double> values;
-  for (std::size_t k = 0; k < windows.size(); k += 2) {
+  for (std::size_t k = 0; k < windows.size() && !stop; k += 2) {
     if (!take(k)) continue;
     const DemWindow& w = windows[k];
     values.resize(w.rows * w.cols);
@@ -130,14 +136,13 @@ bool range_of_windows(GDALRasterBand& band, const std::vector<DemWindow>& window
                       static_cast<int>(w.cols), static_cast<int>(w.rows), values.data(),
                       static_cast<int>(w.cols), static_cast<int>(w.rows), GDT_Float64, 0, 0,
                       nullptr) != CE_None) {
-      return false;
+      throw RangeReadFailed{};
     }
     for (const double v : values) {
       if (std::isnan(v) || (has_nodata && v == nodata)) continue;
       lowest = std::min(lowest, v), highest = std::max(highest, v);
     }
   }
-  return true;
 }
 
 // The band's least and greatest values, its nodata and NaN left out, among cells that the
@@ -148,25 +153,27 @@ bool range_of_windows(GDALRasterBand& band, const std::vector<DemWindow>& window
 // `second` (the band of the file opened once more), half of them are read through it on a thread
 // of its own, those the survey reads through its second reader (read_alongside()), which finds
 // them in its cache. False when no cell is valid, or a read fails (the failure is told later, by
-// the run's reads).
+// the run's reads, and stops the other reader at its next window).
 bool sampled_range(GDALRasterBand& band, GDALRasterBand* second, double& lowest, double& highest) {
   const auto rows = static_cast<std::size_t>(band.GetYSize());
   const auto cols = static_cast<std::size_t>(band.GetXSize());
   const std::vector<DemWindow> windows = survey_windows(rows, cols);
-  lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
-  double second_lowest = lowest, second_highest = highest;
-  std::future<bool> alongside;
-  if (second) {
-    alongside = std::async(std::launch::async, [&] {
-      GdalErrorCapture quiet;  // the run's reads tell a failure
-      return range_of_windows(*second, windows, read_alongside, second_lowest, second_highest);
+  std::array<double, 2> low, high;
+  low.fill(std::numeric_limits<double>::infinity()), high.fill(-low[0]);
+  try {
+    run_two_shares(second != nullptr, [&](int share, const std::atomic<bool>& stop) {
+      const bool alongside = share == 1;
+      // The run's reads tell a failure; the caller's thread's last error stays for them to tell.
+      std::optional<GdalErrorCapture> quiet;
+      if (alongside) quiet.emplace();
+      const auto take = [&](std::size_t k) { return !second || read_alongside(k) == alongside; };
+      range_of_windows(alongside ? *second : band, windows, take, stop, low[share], high[share]);
     });
+  } catch (const RangeReadFailed&) {
+    return false;
   }
-  const bool read = range_of_windows(
-      band, windows, [&](std::size_t k) { return !second || !read_alongside(k); }, lowest, highest);
-  if (alongside.valid() && !alongside.get()) return false;
-  lowest = std::min(lowest, second_lowest), highest = std::max(highest, second_highest);
-  return read && lowest <= highest;
+  lowest = std::min(low[0], low[1]), highest = std::max(high[0], high[1]);
+  return lowest <= highest;
 }
 
 void add_value_facts(GDALRasterBand& band, GDALRasterBand* second, bool sample_range, DemFacts& f) {

@@ -7,12 +7,12 @@
 #include <array>
 #include <atomic>
 #include <cmath>
-#include <future>
 #include <memory>
 #include <new>
 #include <thread>
 #include <vector>
 
+#include "core/base/parallel.h"
 #include "core/method/silhouettes.h"
 #include "core/method/slope_survey.h"
 #include "io/read/block_retention.h"
@@ -101,32 +101,18 @@ void read_as_it_lies(const std::string& path, GDALRasterBand& band, const DemOpt
       dem.rows >= 512 && std::thread::hardware_concurrency() > 1
           ? std::min(dem.rows, (dem.rows / 2 + block_rows - 1) / block_rows * block_rows)
           : dem.rows;
-  std::atomic<bool> given_up{false};
   LowestHeight upper, lower;
-  std::future<void> second;
-  if (half < dem.rows) {
-    second = std::async(std::launch::async, [&] {
-      try {
-        GdalErrorCapture capture;
-        auto dataset = open_raster(path);
-        read_rows_into(
-            stopping(band_reader(*dataset->GetRasterBand(options.band), path), options.stop), half,
-            dem.rows, step, given_up, grid, lower);
-      } catch (...) {
-        given_up = true;
-        throw;
-      }
-    });
-  }
-  try {
-    read_rows_into(stopping(band_reader(band, path), options.stop), 0, half, step, given_up, grid,
-                   upper);
-  } catch (...) {
-    given_up = true;
-    if (second.valid()) second.wait();
-    throw;
-  }
-  if (second.valid()) second.get();
+  run_two_shares(half < dem.rows, [&](int share, const std::atomic<bool>& stop) {
+    if (share == 0) {
+      read_rows_into(stopping(band_reader(band, path), options.stop), 0, half, step, stop, grid,
+                     upper);
+      return;
+    }
+    GdalErrorCapture capture;
+    auto dataset = open_raster(path);
+    read_rows_into(stopping(band_reader(*dataset->GetRasterBand(options.band), path), options.stop),
+                   half, dem.rows, step, stop, grid, lower);
+  });
   upper.add(lower);
   dem.lowest_height = upper.value();
   dem.oriented = std::move(grid);
