@@ -383,3 +383,34 @@ TEST_CASE("a large DEM's range is sampled through two datasets as through one", 
   REQUIRE(survey_windows(64, 64).size() == 1);
   CHECK_FALSE(io::DemFile(small, io::DemOptions{}).source().read_alongside);
 }
+
+TEST_CASE("a declared nodata that float cannot hold is left out of the range, as the reads do",
+          "[io][notes]") {
+  // A VRT declaring -9999.9 over a Float32 file, which holds it as -9999.900390625: compared as a
+  // double with the declared value, those cells were heights 10 km below the rest, and the
+  // 640 m DEM was noted to span more relief than any terrain.
+  ScratchDir dir("range_nodata");
+  const std::string tiff = dir / "heights.tif", path = dir / "nodata.vrt";
+  constexpr int kSize = 64;
+  constexpr double kNodata = -9999.9;
+  REQUIRE(static_cast<double>(static_cast<float>(kNodata)) != kNodata);
+  test::write_tiff(
+      tiff, kSize, kSize, 1,
+      [](int, int r, int c) { return r < 4 ? static_cast<float>(kNodata) : 100.0f + c; },
+      test::kNorthUp, 32632);
+  {
+    GDALDatasetUniquePtr source(GDALDataset::Open(tiff.c_str(), GDAL_OF_RASTER));
+    GDALDatasetUniquePtr vrt(GetGDALDriverManager()->GetDriverByName("VRT")->CreateCopy(
+        path.c_str(), source.get(), false, nullptr, nullptr, nullptr));
+    REQUIRE(vrt);
+    vrt->GetRasterBand(1)->SetNoDataValue(kNodata);
+  }
+  const io::DemFile dem(path, io::DemOptions{});
+  int has_nodata = 0;
+  REQUIRE(io::open_raster(path)->GetRasterBand(1)->GetNoDataValue(&has_nodata) == kNodata);
+  CHECK(dem.info().notes.empty());
+  // The reads take those cells as nodata.
+  std::vector<float> row(kSize);
+  dem.source().read({0, 0, 1, kSize}, row.data());
+  CHECK(std::all_of(row.begin(), row.end(), [](float z) { return std::isnan(z); }));
+}

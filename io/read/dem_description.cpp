@@ -120,13 +120,21 @@ void add_crs_facts(const OGRSpatialReference& srs, const Dem& dem, DemFacts& f) 
 // A read of the range sample failed: told later, by the run's reads.
 struct RangeReadFailed {};
 
-// Widens [lowest, highest] to the values of `band`, its nodata and NaN left out, in the even
-// windows of `windows` that take(k) takes, until `stop` is set; throws when a read fails.
+// True when the reads take `v` for the declared nodata: they compare as floats (a declared
+// -9999.9 is -9999.900390625 in a float), and a value beyond float's range is no float's.
+bool read_as_nodata(double v, bool has_nodata, float nodata) {
+  return has_nodata && std::fabs(v) <= std::numeric_limits<float>::max() &&
+         static_cast<float>(v) == nodata;
+}
+
+// Widens [lowest, highest] to the values of `band`, nodata and NaN left out as the run's reads
+// leave them out, in the even windows of `windows` that take(k) takes, until `stop` is set;
+// throws when a read fails. Doubles, so that a fill value's note tells it as it is.
 template <typename Take>
 void range_of_windows(GDALRasterBand& band, const std::vector<DemWindow>& windows, Take&& take,
                       const std::atomic<bool>& stop, double& lowest, double& highest) {
   int has_nodata = 0;
-  const double nodata = band.GetNoDataValue(&has_nodata);
+  const auto nodata = static_cast<float>(band.GetNoDataValue(&has_nodata));
   std::vector<double> values;
   for (std::size_t k = 0; k < windows.size() && !stop; k += 2) {
     if (!take(k)) continue;
@@ -139,7 +147,7 @@ void range_of_windows(GDALRasterBand& band, const std::vector<DemWindow>& window
       throw RangeReadFailed{};
     }
     for (const double v : values) {
-      if (std::isnan(v) || (has_nodata && v == nodata)) continue;
+      if (std::isnan(v) || read_as_nodata(v, has_nodata != 0, nodata)) continue;
       lowest = std::min(lowest, v), highest = std::max(highest, v);
     }
   }
