@@ -449,10 +449,10 @@ std::size_t create_rtree(GDALDataset& dataset, const RtreeNames& names) {
 std::vector<IndexBox> write_rtree_leaves(GDALDataset& dataset, const RtreeNames& names,
                                          std::size_t node_bytes, const PackedLeaves& leaves,
                                          std::int64_t first_number) {
+  if (leaves.boxes.empty()) return {};
   const Connection db = index_connection(dataset);
   Connection::Statement node(db, "INSERT INTO " + quoted_identifier(names.rtree + "_node") +
                                      "(nodeno, data) VALUES (?, ?)");
-  if (leaves.boxes.empty()) return {};
   const auto [first_id, leaf] = leaf_of_each_id(leaves.boxes, leaves.ends, first_number);
   if (leaf.empty()) db.fail("a window's feature ids skip or repeat");
   std::vector<IndexBox> covers;
