@@ -3,9 +3,7 @@
 // plan-oblique silhouettes overlay it exactly.
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include "core/base/flags.h"
@@ -48,32 +46,6 @@ class PlanObliqueDrape {
   // false, the lattice one empty cell, when col_min > col_max (nothing visible). Throws Error when
   // it would be far larger than the DEM.
   bool lay_out_extent(double col_min, double col_max, double row_min, double row_max);
-  [[noreturn]] void refuse_extent(const std::string& size) const;
-
-  // The plan-oblique positions of each profile's visible cells, sorted (visible cells have
-  // non-decreasing transformed height, so their positions i + k (z - z_ref) are), and the cells'
-  // oriented indices.
-  struct VisiblePlaces {
-    explicit VisiblePlaces(std::size_t profiles) : position(profiles), cell(profiles) {}
-    std::vector<std::vector<double>> position;
-    std::vector<std::vector<std::uint32_t>> cell;
-  };
-  // The pixel columns and rows the visible cells reach.
-  struct PixelExtent {
-    double col_min = 1e300, col_max = -1e300, row_min = 1e300, row_max = -1e300;
-    void take_in(const PixelExtent& other) {
-      col_min = std::min(col_min, other.col_min), col_max = std::max(col_max, other.col_max);
-      row_min = std::min(row_min, other.row_min), row_max = std::max(row_max, other.row_max);
-    }
-  };
-  PixelExtent place_visible_cells(const HeightGrid& oriented, const CellFlags& flags,
-                                  const PlanObliqueShift& shift, VisiblePlaces& places,
-                                  const ProgressFn& progress, unsigned threads) const;
-  void place_profile(const HeightGrid& oriented, const CellFlags& flags,
-                     const PlanObliqueShift& shift, std::size_t p, VisiblePlaces& places,
-                     PixelExtent& extent) const;
-  // Output row r: each cell takes the nearest visible cell of its profile.
-  void fill_row_sources(std::size_t r, const VisiblePlaces& places);
   void check_on_dem_grid(const HeightGrid& source_on_dem) const;
   HeightGrid from_oriented(const HeightGrid& oriented) const;
 
