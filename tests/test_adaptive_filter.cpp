@@ -102,6 +102,33 @@ TEST_CASE("survey windows lie in their parts of the DEM and on block edges where
   }
 }
 
+TEST_CASE("the survey's window count is the number of windows it lists", "[adaptive]") {
+  // Sizes about the whole-DEM limit (2^21 cells) and with fewer rows or columns than the lattice.
+  for (const auto& [rows, cols] : {std::pair<std::size_t, std::size_t>{1, 1},
+                                   {1448, 1448},
+                                   {1449, 1449},
+                                   {2048, 1024},
+                                   {2048, 1025},
+                                   {3, 1000000},
+                                   {1000000, 5},
+                                   {8000, 8000}}) {
+    CAPTURE(rows, cols);
+    CHECK(survey_window_count(rows, cols) == survey_windows(rows, cols).size());
+  }
+}
+
+TEST_CASE("with two readers each survey window is read by one of them, with one by it",
+          "[adaptive]") {
+  std::size_t second_reads = 0;
+  for (std::size_t k = 0; k < 64; ++k) {
+    CAPTURE(k);
+    CHECK(reader_takes(k, true, false) != reader_takes(k, true, true));
+    CHECK(reader_takes(k, false, false));
+    second_reads += reader_takes(k, true, true);
+  }
+  CHECK(second_reads == 32);  // the reads halved between the two
+}
+
 TEST_CASE("a survey made in parts, through bytes and in any order, is the survey", "[adaptive]") {
   // 64 windows on a DEM over two million cells; float heights, then whole metres.
   HeightGrid z = rolling(1700, 1400);

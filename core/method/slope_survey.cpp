@@ -44,6 +44,11 @@ std::size_t window_start(std::size_t centre, std::size_t size, std::size_t begin
 
 // Forward differences need the next row and column: each window is a cell wider and taller than
 // the cells it measures.
+std::size_t survey_window_count(std::size_t rows, std::size_t cols) {
+  if (rows * cols <= kWholeSurveyCells) return 1;
+  return std::min(kLattice, rows) * std::min(kLattice, cols);
+}
+
 std::vector<DemWindow> survey_windows(std::size_t rows, std::size_t cols) {
   if (rows * cols <= kWholeSurveyCells) return {{0, 0, rows, cols}};
   const std::size_t side = 181;  // 64 windows of 181 x 181 cells: two million cells
@@ -193,7 +198,7 @@ void read_survey_windows(const std::vector<DemWindow>& windows,
     const bool second = share == 1;
     const WindowReader& reader = second ? alongside : read;
     for (std::size_t k = 0; k < windows.size() && !stop; ++k) {
-      if (alongside && read_alongside(k) != second) continue;
+      if (!reader_takes(k, static_cast<bool>(alongside), second)) continue;
       heights[k].resize(windows[k].rows * windows[k].cols);
       reader(windows[k], heights[k].data());
     }

@@ -73,11 +73,20 @@ HeightStep height_step(const float* heights, std::size_t count);
 // Each is a cell wider and taller than the cells it measures.
 std::vector<DemWindow> survey_windows(std::size_t rows, std::size_t cols);
 
+// How many windows survey_windows(rows, cols) gives, without listing them.
+std::size_t survey_window_count(std::size_t rows, std::size_t cols);
+
 // Whether survey window `k` is read through a second reader of the DEM, when there is one: every
 // other pair of windows. The DEM's range (io's sampled_range) reads the even windows the same
 // way, so that each reader finds in its own cache the blocks it read for the range.
 inline bool read_alongside(std::size_t k) {
   return (k / 2) % 2 == 1;
+}
+
+// Whether reader `second` (the second reader, or the first) reads window `k`: with two readers,
+// those read_alongside() gives it; with one, every window.
+inline bool reader_takes(std::size_t k, bool two_readers, bool second) {
+  return !two_readers || read_alongside(k) == second;
 }
 
 // Surveys a DEM of rows x cols cells of dx x dy ground units read through `read` (its

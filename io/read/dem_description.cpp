@@ -174,7 +174,9 @@ bool sampled_range(GDALRasterBand& band, GDALRasterBand* second, double& lowest,
       // The run's reads tell a failure; the caller's thread's last error stays for them to tell.
       std::optional<GdalErrorCapture> quiet;
       if (alongside) quiet.emplace();
-      const auto take = [&](std::size_t k) { return !second || read_alongside(k) == alongside; };
+      const auto take = [&](std::size_t k) {
+        return reader_takes(k, second != nullptr, alongside);
+      };
       range_of_windows(alongside ? *second : band, windows, take, stop, low[share], high[share]);
     });
   } catch (const RangeReadFailed&) {

@@ -252,9 +252,8 @@ namespace {
 // DEM of up to about two million cells is one window; window 2 is the first read_alongside()
 // names). A second opening that fails leaves one reader, as before.
 DatasetPtr second_dataset(GDALDataset& first, const std::string& path, const DemOptions& options) {
-  const std::size_t windows = survey_windows(static_cast<std::size_t>(first.GetRasterYSize()),
-                                             static_cast<std::size_t>(first.GetRasterXSize()))
-                                  .size();
+  const std::size_t windows = survey_window_count(static_cast<std::size_t>(first.GetRasterYSize()),
+                                                  static_cast<std::size_t>(first.GetRasterXSize()));
   if (!options.sample_range || windows <= 2) return nullptr;
   try {
     return open_raster(path);
