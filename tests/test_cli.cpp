@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -184,6 +185,41 @@ TEST_CASE("a shapefile keeps every attribute under its shortened name", "[cli]")
     any = any || (f->IsFieldSetAndNotNull(row_slope) && f->GetFieldAsDouble(row_slope) > 0);
   CHECK(any);
   GDALClose(ds);
+}
+
+// Each feature of a vector file as text (its fields and its geometry's WKT), in file order.
+std::vector<std::string> features_as_text(const std::string& path) {
+  GDALDataset* ds = static_cast<GDALDataset*>(
+      GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  REQUIRE(ds != nullptr);
+  std::vector<std::string> features;
+  for (auto& feature : *ds->GetLayer(0)) {
+    std::string text;
+    for (int k = 0; k < feature->GetFieldCount(); ++k)
+      text += std::string(feature->GetFieldAsString(k)) + ";";
+    if (const OGRGeometry* g = feature->GetGeometryRef()) text += g->exportToWkt();
+    features.push_back(text);
+  }
+  GDALClose(ds);
+  return features;
+}
+
+TEST_CASE("FlatGeobuf holds the GeoPackage's strokes, in its spatial index's order", "[cli]") {
+  // The README says so: every other format keeps the scan's order, FlatGeobuf's index its own.
+  ScratchDir dir("fgb-order");
+  for (const char* name : {"out.gpkg", "out.fgb"}) {
+    const CliRun run = run_cli({"silhouettes", kSample, dir / name});
+    INFO(run.err);
+    REQUIRE(run.code == 0);
+  }
+  const std::vector<std::string> scan = features_as_text(dir / "out.gpkg");
+  std::vector<std::string> indexed = features_as_text(dir / "out.fgb");
+  REQUIRE(scan.size() > 100);
+  CHECK(indexed != scan);
+  std::vector<std::string> sorted_scan = scan;
+  std::sort(sorted_scan.begin(), sorted_scan.end());
+  std::sort(indexed.begin(), indexed.end());
+  CHECK(indexed == sorted_scan);
 }
 
 TEST_CASE("output formats follow the extension", "[cli]") {
