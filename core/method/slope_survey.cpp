@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <mutex>
+#include <utility>
 
 #include "core/base/byte_stream.h"
 #include "core/base/parallel.h"
@@ -40,20 +41,26 @@ std::size_t window_start(std::size_t centre, std::size_t size, std::size_t begin
   return centred;
 }
 
+// The survey's lattice of windows, rows by columns: one window, the whole DEM, for a DEM of at
+// most kWholeSurveyCells, else kLattice each way (fewer where the DEM has fewer cells).
+std::pair<std::size_t, std::size_t> survey_lattice(std::size_t rows, std::size_t cols) {
+  if (rows * cols <= kWholeSurveyCells) return {1, 1};
+  return {std::min(kLattice, rows), std::min(kLattice, cols)};
+}
+
 }  // namespace
+
+std::size_t survey_window_count(std::size_t rows, std::size_t cols) {
+  const auto [lattice_rows, lattice_cols] = survey_lattice(rows, cols);
+  return lattice_rows * lattice_cols;
+}
 
 // Forward differences need the next row and column: each window is a cell wider and taller than
 // the cells it measures.
-std::size_t survey_window_count(std::size_t rows, std::size_t cols) {
-  if (rows * cols <= kWholeSurveyCells) return 1;
-  return std::min(kLattice, rows) * std::min(kLattice, cols);
-}
-
 std::vector<DemWindow> survey_windows(std::size_t rows, std::size_t cols) {
-  if (rows * cols <= kWholeSurveyCells) return {{0, 0, rows, cols}};
+  const auto [lattice_rows, lattice_cols] = survey_lattice(rows, cols);
+  if (lattice_rows * lattice_cols == 1) return {{0, 0, rows, cols}};
   const std::size_t side = 181;  // 64 windows of 181 x 181 cells: two million cells
-  const std::size_t lattice_rows = std::min(kLattice, rows),
-                    lattice_cols = std::min(kLattice, cols);
   const std::size_t height = std::min(rows, std::min(side, rows / lattice_rows) + 1);
   const std::size_t width = std::min(cols, std::min(side, cols / lattice_cols) + 1);
   std::vector<DemWindow> windows;
