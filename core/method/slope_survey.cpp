@@ -201,11 +201,12 @@ namespace {
 void read_survey_windows(const std::vector<DemWindow>& windows,
                          std::vector<std::vector<float>>& heights, const WindowReader& read,
                          const WindowReader& alongside) {
-  run_two_shares(static_cast<bool>(alongside), [&](int share, const std::atomic<bool>& stop) {
+  const bool two = static_cast<bool>(alongside);
+  run_two_shares(two, [&](int share, const std::atomic<bool>& stop) {
     const bool second = share == 1;
     const WindowReader& reader = second ? alongside : read;
     for (std::size_t k = 0; k < windows.size() && !stop; ++k) {
-      if (!reader_takes(k, static_cast<bool>(alongside), second)) continue;
+      if (!reader_takes(k, two, second)) continue;
       heights[k].resize(windows[k].rows * windows[k].cols);
       reader(windows[k], heights[k].data());
     }

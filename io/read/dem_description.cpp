@@ -168,15 +168,14 @@ bool sampled_range(GDALRasterBand& band, GDALRasterBand* second, double& lowest,
   const std::vector<DemWindow> windows = survey_windows(rows, cols);
   std::array<double, 2> low, high;
   low.fill(std::numeric_limits<double>::infinity()), high.fill(-low[0]);
+  const bool two = second != nullptr;
   try {
-    run_two_shares(second != nullptr, [&](int share, const std::atomic<bool>& stop) {
+    run_two_shares(two, [&](int share, const std::atomic<bool>& stop) {
       const bool alongside = share == 1;
       // The run's reads tell a failure; the caller's thread's last error stays for them to tell.
       std::optional<GdalErrorCapture> quiet;
       if (alongside) quiet.emplace();
-      const auto take = [&](std::size_t k) {
-        return reader_takes(k, second != nullptr, alongside);
-      };
+      const auto take = [&](std::size_t k) { return reader_takes(k, two, alongside); };
       range_of_windows(alongside ? *second : band, windows, take, stop, low[share], high[share]);
     });
   } catch (const RangeReadFailed&) {
