@@ -100,3 +100,37 @@ TEST_CASE("plan-oblique points are lifted by the run's reference height when the
   for (std::size_t k = 0; k < 4; ++k)
     CHECK(map_lower.paths[0].points[k].y == map_level.paths[0].points[k].y);
 }
+
+TEST_CASE("a drawn point past the edge of nodata takes the nearest height, not the lowest",
+          "[preview]") {
+  // A drawn point may lie within its tolerance of its cell on a nodata cell beside it. The
+  // oriented grid: columns from kEdge on are nodata; a ridge of kRidge metres runs along the
+  // columns before them, far from the DEM's lowest ground (kHeight, columns 0 to 4).
+  constexpr int kEdge = 20;
+  constexpr float kRidge = 400.0f;
+  FlatView past_edge;
+  for (std::size_t p = 0; p < past_edge.z.rows(); ++p) {
+    for (std::size_t i = 5; i < past_edge.z.cols(); ++i)
+      past_edge.z(p, i) = i < kEdge ? kRidge : tsk::kNoData;
+  }
+  // The same DEM with the ridge's height on the point's own cell too (the same lowest and highest
+  // heights, so the same page): there the point is where it should be on the nodata one.
+  FlatView ridge_under = past_edge;
+  const int p = 12;
+  ridge_under.z(p, kEdge) = kRidge;
+
+  Stroke stroke;
+  stroke.cls = StrokeClass::factual;
+  for (const int i : {kEdge - 2, kEdge - 1, kEdge}) {
+    stroke.points.push_back(past_edge.centre(p, i));
+    stroke.weights.push_back(0.5);
+  }
+  const auto on_nodata = past_edge.page(stroke, Geometry::map, kHeight);
+  const auto expected = ridge_under.page(stroke, Geometry::map, kHeight);
+  REQUIRE(on_nodata.height == expected.height);
+  for (std::size_t k = 0; k < 3; ++k) {
+    CAPTURE(k);
+    CHECK(std::abs(on_nodata.paths[0].points[k].x - expected.paths[0].points[k].x) < 1e-9);
+    CHECK(std::abs(on_nodata.paths[0].points[k].y - expected.paths[0].points[k].y) < 1e-9);
+  }
+}

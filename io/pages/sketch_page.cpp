@@ -85,17 +85,33 @@ class Plot {
   }
 
  private:
-  // The height at a place along a profile: bilinear between cells, the nearest cell's next to
-  // nodata or the grid's edge.
+  // The height at a place along a profile: bilinear between cells; next to nodata or the grid's
+  // edge, the nearest cell's that holds one.
   double height_at(double p, double s) const {
     const float between = sample_bilinear(z_, {s + 0.5, p + 0.5});
-    if (is_data(between)) return between;
-    const auto row =
-        static_cast<std::size_t>(std::clamp(std::lround(p), 0L, static_cast<long>(z_.rows()) - 1));
-    const auto col =
-        static_cast<std::size_t>(std::clamp(std::lround(s), 0L, static_cast<long>(z_.cols()) - 1));
-    const float nearest = z_(row, col);
-    return is_data(nearest) ? nearest : extent_.z_min;
+    return is_data(between) ? between : nearest_height(p, s);
+  }
+  // The height of the cell nearest (p, s) that holds one, within kNearestReach cells; the lowest
+  // height if none does. A drawn point lies within its tolerance of its cell, which may put it on
+  // a nodata cell beside the DEM's edge: taken at the lowest height, it fell to the foot of the
+  // page as a spike.
+  double nearest_height(double p, double s) const {
+    constexpr long kNearestReach = 8;
+    const long last_row = static_cast<long>(z_.rows()) - 1,
+               last_col = static_cast<long>(z_.cols()) - 1;
+    const long row = std::clamp(std::lround(p), 0L, last_row);
+    const long col = std::clamp(std::lround(s), 0L, last_col);
+    double best = std::numeric_limits<double>::infinity(), height = extent_.z_min;
+    for (long r = std::max(0L, row - kNearestReach); r <= std::min(last_row, row + kNearestReach);
+         ++r) {
+      for (long c = std::max(0L, col - kNearestReach); c <= std::min(last_col, col + kNearestReach);
+           ++c) {
+        const float z = z_(static_cast<std::size_t>(r), static_cast<std::size_t>(c));
+        const double dp = static_cast<double>(r) - p, ds = static_cast<double>(c) - s;
+        if (is_data(z) && dp * dp + ds * ds < best) best = dp * dp + ds * ds, height = z;
+      }
+    }
+    return height;
   }
 
   const HeightGrid& z_;
