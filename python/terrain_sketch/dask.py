@@ -4,7 +4,7 @@ The view's profiles are cut into bands. Each task reads its own band of the DEM 
 (a GeoTIFF, COG or VRT on storage every worker sees; no DEM goes through the scheduler), sketches
 it and returns its strokes and the chains that run across its edges. The client stitches the
 bands in order into one output, written whole, with the same strokes as one machine's run, exact
-or drawn (see docs/DISTRIBUTED.md)::
+or drawn, in another order in the file (see docs/DISTRIBUTED.md)::
 
     from dask.distributed import Client
     import terrain_sketch.dask

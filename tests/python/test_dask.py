@@ -1,6 +1,6 @@
 """terrain_sketch.dask against the run on one machine: the same strokes, exact and drawn
-(compared as sets of rows: geometry with M values, and attributes) and statistics (the filter's
-report among them), on the sample and a 4000^2 DEM made of it, bands down to a few profiles, the
+(compared as sets of rows: geometry with M values, and attributes; drawn ones also in one run's
+order within each class) and statistics (the filter's report among them), on the sample and a 4000^2 DEM made of it, bands down to a few profiles, the
 adaptive filter's survey made by the workers, a worker killed mid-run, and the refusals."""
 
 import importlib.util
@@ -39,6 +39,13 @@ def rows(path):
         return sorted(row[1:] for row in db.execute("SELECT * FROM silhouettes"))
 
 
+def rows_of_class(path, cls):
+    """One class's strokes in the file's order: geometry blob and attributes, without the fid."""
+    with sqlite3.connect(path) as db:
+        return [row[1:] for row in
+                db.execute("SELECT * FROM silhouettes WHERE class = ? ORDER BY fid", (cls,))]
+
+
 def same_run(tmp_path, client, dem, band_profiles, **options):
     single = terrain_sketch.silhouettes(dem, tmp_path / "one.gpkg", **options)
     spread = terrain_sketch.dask.silhouettes(dem, tmp_path / "bands.gpkg", client, band_profiles,
@@ -47,6 +54,12 @@ def same_run(tmp_path, client, dem, band_profiles, **options):
     one, bands = rows(tmp_path / "one.gpkg"), rows(tmp_path / "bands.gpkg")
     assert len(one) == single["factual_strokes"] + single["formulated_strokes"] > 0
     assert bands == one
+    # Drawn strokes come in one run's order within each class (docs/DISTRIBUTED.md); exact ones
+    # in the order the bands complete them.
+    if options.get("strokes") != "exact":
+        for cls in ("factual", "formulated"):
+            assert (rows_of_class(tmp_path / "bands.gpkg", cls) ==
+                    rows_of_class(tmp_path / "one.gpkg", cls))
     return spread
 
 
