@@ -26,11 +26,11 @@ run_cli west_map
 run_cli west_oblique --geometry oblique
 run_cli az45_map --azimuth 45
 run_cli az200_oblique_subcell --azimuth 200 --geometry oblique --subcell --no-diagonals
-if [ -x /usr/bin/qgis_process.bin ] && [ -d "$build/qgis-plugin/terrain_sketch" ]; then
+if [ -x /usr/bin/qgis_process.bin ] && [ -d "$build/qgis-plugin/terrain_sketch_plugin" ]; then
   export HOME="$work/home" QT_QPA_PLATFORM=offscreen
   rm -rf "$HOME"
-  cmake -DPLUGIN_DIR="$build/qgis-plugin/terrain_sketch" \
-    -DPROFILE_DIR="$HOME/.local/share/QGIS/QGIS3/profiles/default" -DPLUGIN_NAME=terrain_sketch \
+  cmake -DPLUGIN_DIR="$build/qgis-plugin/terrain_sketch_plugin" \
+    -DPROFILE_DIR="$HOME/.local/share/QGIS/QGIS3/profiles/default" -DPLUGIN_NAME=terrain_sketch_plugin \
     -P "$repo/plugin/install_plugin.cmake" > /dev/null
   for az in 90 45; do
     /usr/bin/qgis_process.bin run terrainsketch:silhouettes --INPUT="$sample" --BAND=1 --AZIMUTH=$az \

@@ -7,8 +7,8 @@ STROKES.gpkg: the command line's default output (e.g. of the 8000 x 8000 benchma
 100 000 strokes). Each style draws the whole layer at SIZE_PX (default 1600) square; the figure is
 the best of three renderings (one for buffer_by_m, which takes minutes). The plain line is the
 reference: it draws no taper. The drawn style is timed twice: without the plugin (its stepped
-stand-ins draw) and with the plugin from PLUGIN_DIR (default build/qgis-plugin/terrain_sketch)
-loaded (its tapered line layer draws).
+stand-ins draw) and with the plugin from PLUGIN_DIR (default
+build/qgis-plugin/terrain_sketch_plugin) loaded (its tapered line layer draws).
 """
 import ctypes
 import os
@@ -84,7 +84,7 @@ def main():
     layer.setSimplifyMethod(simplify)
     print("%d strokes, %d x %d px, QGIS %s" % (layer.featureCount(), size, size, Qgis.version()))
     plugin_dir = sys.argv[3] if len(sys.argv) > 3 else os.path.join(
-        HERE, "..", "build", "qgis-plugin", "terrain_sketch")
+        HERE, "..", "build", "qgis-plugin", "terrain_sketch_plugin")
     for name, expression, runs in CANDIDATES:
         if expression == "plugin":
             library = ctypes.CDLL(os.path.join(plugin_dir, "libterrain_sketch_provider.so"))

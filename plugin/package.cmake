@@ -12,7 +12,7 @@ set(TSK_QGIS_RELEASE "${TSK_QGIS_MAJOR}.${TSK_QGIS_MINOR}" CACHE INTERNAL "")
 # The platform: Debian's release (cmake/debian_release.cmake) and the processor.
 set(TSK_PLATFORM "${TSK_DEBIAN_RELEASE}-${CMAKE_SYSTEM_PROCESSOR}")
 set(TSK_PACKAGE_NAME
-    "${TSK_PLUGIN_NAME}-${PROJECT_VERSION}-qgis${TSK_QGIS_RELEASE}-${TSK_PLATFORM}"
+    "terrain_sketch-${PROJECT_VERSION}-qgis${TSK_QGIS_RELEASE}-${TSK_PLATFORM}"
     CACHE INTERNAL "")
 
 # metadata.txt for this QGIS release: QGIS's Plugin Manager marks the package incompatible with
@@ -29,8 +29,8 @@ BUILT_FOR_QGIS = \"${TSK_QGIS_RELEASE}\"
 PACKAGE = \"${TSK_PACKAGE_NAME}\"
 ")
 
-# cmake --build build --target plugin-zip: build/<package>.zip, with the folder terrain_sketch/
-# at its top as QGIS's installer expects.
+# cmake --build build --target plugin-zip: build/<package>.zip, with the plugin's folder
+# (terrain_sketch_plugin/) at its top as QGIS's installer expects.
 set(TSK_PLUGIN_ZIP ${CMAKE_BINARY_DIR}/${TSK_PACKAGE_NAME}.zip CACHE INTERNAL "")
 add_custom_command(OUTPUT ${TSK_PLUGIN_ZIP}
   COMMAND ${CMAKE_COMMAND} -E rm -f ${TSK_PLUGIN_ZIP}

@@ -19,11 +19,21 @@ tsk::plugin::TerrainSketchProvider* gProvider = nullptr;
 
 extern "C" __attribute__((visibility("default"))) int terrain_sketch_register_provider() {
   if (gProvider) return 1;
+  QgsProcessingRegistry* registry = QgsApplication::processingRegistry();
+  auto provider = std::make_unique<tsk::plugin::TerrainSketchProvider>();
+  // Another copy of the plugin (another folder) registered it: this one adds nothing, and leaves
+  // the other's tapered line and translation alone.
+  if (registry->providerById(provider->id())) return 0;
   tsk::plugin::installTranslation(tsk::plugin::qgisLanguage());
   tsk::plugin::registerTaperedLine();
-  auto provider = std::make_unique<tsk::plugin::TerrainSketchProvider>();
-  if (!QgsApplication::processingRegistry()->addProvider(provider.get())) return 0;
-  gProvider = provider.release();
+  // The registry owns the provider from the call on: it deletes one it refuses (deleting it here
+  // too crashed QGIS when a second copy of the plugin was loaded).
+  tsk::plugin::TerrainSketchProvider* offered = provider.release();
+  if (!registry->addProvider(offered)) {
+    tsk::plugin::removeTranslation();
+    return 0;
+  }
+  gProvider = offered;
   return 1;
 }
 

@@ -36,11 +36,13 @@ chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
   terrain-sketch silhouettes /tmp/sample.tif /tmp/out.gpkg --stats-json /tmp/stats.json
   grep -q "\"formulated_strokes\": [1-9]" /tmp/stats.json
   test -s /usr/share/man/man1/terrain-sketch.1.gz
-  test -s /usr/share/qgis/python/plugins/terrain_sketch/libterrain_sketch_provider.so
-  test -s /usr/share/qgis/python/plugins/terrain_sketch/metadata.txt
+  test -s /usr/share/qgis/python/plugins/terrain_sketch_plugin/libterrain_sketch_provider.so
+  test -s /usr/share/qgis/python/plugins/terrain_sketch_plugin/metadata.txt
   # The Python package, in Debian'"'"'s Python path: the same run from Python.
   apt-get install -y -q --no-install-recommends python3 > /tmp/apt.log
   python3 -c "import terrain_sketch as t; s = t.silhouettes(\"/tmp/sample.tif\", \"/tmp/py.gpkg\"); assert s[\"formulated_strokes\"] > 0, s"
+  # QGIS puts its plugin folders first on Python'"'"'s path: the package is still the one found.
+  python3 -c "import sys; sys.path.insert(0, \"/usr/share/qgis/python/plugins\"); import terrain_sketch as t; assert hasattr(t, \"sketch\"), t.__file__"
   dpkg -s terrain-sketch | grep "^Version"
 '
 echo "Debian package installed and ran: 1 passed, 0 failed"

@@ -2,7 +2,8 @@
 
 Model: DEM (any CRS) -> gdal:warpreproject to a metric CRS -> native:hillshade and
 terrainsketch:silhouettes on the reprojected DEM. Outputs: hillshade, factual, formulated.
-    QT_QPA_PLATFORM=offscreen /usr/bin/python3 scripts/make_model.py BUILD/qgis-plugin/terrain_sketch
+    QT_QPA_PLATFORM=offscreen /usr/bin/python3 scripts/make_model.py \
+        BUILD/qgis-plugin/terrain_sketch_plugin
 """
 import ctypes
 import os

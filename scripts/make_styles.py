@@ -3,7 +3,7 @@
 Run with Debian's Python that has the qgis module, after building the plugin (the drawn styles
 hold its tapered line layer):
     QT_QPA_PLATFORM=offscreen /usr/bin/python3 scripts/make_styles.py [PLUGIN_DIR]
-PLUGIN_DIR defaults to build/qgis-plugin/terrain_sketch.
+PLUGIN_DIR defaults to build/qgis-plugin/terrain_sketch_plugin.
 """
 import ctypes
 import os
@@ -211,7 +211,7 @@ def main():
     app = QgsApplication([], False)
     app.initQgis()
     register_plugin(sys.argv[1] if len(sys.argv) > 1 else
-                    os.path.join(HERE, "..", "build", "qgis-plugin", "terrain_sketch"))
+                    os.path.join(HERE, "..", "build", "qgis-plugin", "terrain_sketch_plugin"))
     os.makedirs(OUT, exist_ok=True)
     for name, colour, width in STYLES:
         layer = QgsVectorLayer("LineString?crs=EPSG:32616&" + FIELDS, name, "memory")

@@ -5,17 +5,22 @@ asks it to register its provider; the desktop uses the same route.
 
 The library is built against one QGIS release, whose C++ interface differs from the others', so
 the shim first checks that it runs in that release and otherwise says so instead of loading it.
+
+The plugin's folder is terrain_sketch_plugin, not terrain_sketch: QGIS puts its plugin folders
+first on Python's path, where a folder named terrain_sketch hid the Python package of that name
+from QGIS's Python console and scripts.
 """
 import ctypes
 import os
 import sys
 
-from qgis.core import Qgis, QgsMessageLog
+from qgis.core import Qgis, QgsApplication, QgsMessageLog
 
 from .build_info import BUILT_FOR_QGIS, BUILT_FOR_QGIS_VERSION_INT, PACKAGE
 
 _LIBRARY = "libterrain_sketch_provider.so"
 _TAG = "Terrain Sketch"
+_PROVIDER_ID = "terrainsketch"
 
 
 def release_mismatch():
@@ -30,25 +35,52 @@ def release_mismatch():
             "(see the README)." % (PACKAGE, BUILT_FOR_QGIS, here, here))
 
 
+def other_copies():
+    """Other plugin folders beside this one that hold Terrain Sketch's library (an earlier
+    install under another folder name, such as terrain_sketch)."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    parent = os.path.dirname(here)
+    found = []
+    for name in sorted(os.listdir(parent)):
+        folder = os.path.join(parent, name)
+        if folder != here and os.path.isfile(os.path.join(folder, _LIBRARY)):
+            found.append(folder)
+    return found
+
+
+def already_registered():
+    """The message for a provider that another copy of the plugin registered; None if none."""
+    if QgsApplication.processingRegistry().providerById(_PROVIDER_ID) is None:
+        return None
+    others = other_copies()
+    where = " (%s)" % ", ".join(others) if others else ""
+    return ("Terrain Sketch was not loaded from %s: another copy of it is loaded already%s. "
+            "Uninstall the other copy in Plugins > Manage and Install Plugins (an earlier "
+            "version was installed under the folder name terrain_sketch), then restart QGIS."
+            % (os.path.dirname(os.path.abspath(__file__)), where))
+
+
 class TerrainSketchPlugin:
     def __init__(self, iface):
         self.iface = iface
         self.library = None
         self.refused = False
 
+    def refuse(self, message):
+        self.refused = True
+        QgsMessageLog.logMessage(message, _TAG, Qgis.Critical)
+        if self.iface is not None:
+            self.iface.messageBar().pushCritical(_TAG, message)
+        else:  # qgis_process: its messages go to the terminal
+            sys.stderr.write(message + "\n")
+
     def initProcessing(self):
         if self.refused:
             return
-        mismatch = release_mismatch()
-        if mismatch:
-            self.refused = True
-            QgsMessageLog.logMessage(mismatch, _TAG, Qgis.Critical)
-            if self.iface is not None:
-                self.iface.messageBar().pushCritical(_TAG, mismatch)
-            else:  # qgis_process: its messages go to the terminal
-                sys.stderr.write(mismatch + "\n")
-            return
         if self.library is None:
+            refusal = release_mismatch() or already_registered()
+            if refusal:
+                return self.refuse(refusal)
             self.library = ctypes.CDLL(os.path.join(os.path.dirname(__file__), _LIBRARY))
         if not self.library.terrain_sketch_register_provider():
             raise RuntimeError("Terrain Sketch: the processing provider could not be registered")

@@ -143,12 +143,27 @@ def dialogs():
             dialog.deleteLater()
 
 
+def python_package():
+    """The Python package terrain_sketch as QGIS's Python console imports it, beside the plugin
+    (whose folder once had the same name and hid it): a run of it from inside QGIS."""
+    if not os.environ.get("TSK_E2E_PYTHON_PACKAGE"):
+        return
+    try:
+        import terrain_sketch
+        report["python_package"] = {"file": terrain_sketch.__file__}
+        stats = terrain_sketch.silhouettes(DEM, os.path.join(OUT, "python.gpkg"))
+        report["python_package"]["formulated_strokes"] = stats.get("formulated_strokes")
+    except Exception:  # noqa: BLE001 - any failure goes into the report
+        report.setdefault("python_package", {})["error"] = traceback.format_exc()
+
+
 def run():
     try:
         import processing
         import qgis.utils
+        python_package()
         dialogs()
-        report["plugin_active"] = "terrain_sketch" in qgis.utils.active_plugins
+        report["plugin_active"] = "terrain_sketch_plugin" in qgis.utils.active_plugins
         report["provider"] = QgsApplication.processingRegistry().providerById(
             "terrainsketch") is not None
         common = {"INPUT": DEM, "BAND": 1}

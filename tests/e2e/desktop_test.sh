@@ -32,8 +32,16 @@ def check(cond, what):
     if not cond: errors.append(what)
 check(r.get("ok"), "run finished: %s" % r.get("error"))
 check(r.get("installed_from_zip"), "installed from the ZIP by QGIS's installer")
-check(os.path.exists(os.path.join(os.environ["TSK_E2E_OUT"], "profiles/profiles/default/python/plugins/terrain_sketch/libterrain_sketch_provider.so")), "unpacked into the profile")
+check(os.path.exists(os.path.join(os.environ["TSK_E2E_OUT"], "profiles/profiles/default/python/plugins/terrain_sketch_plugin/libterrain_sketch_provider.so")), "unpacked into the profile")
 check(r.get("provider"), "provider registered")
+# The Python package, imported by its name inside QGIS (where plugin folders come first on
+# Python's path), is the package and runs.
+if os.environ.get("TSK_E2E_PYTHON_PACKAGE"):
+    package = r.get("python_package", {})
+    check("/plugins/" not in package.get("file", "/plugins/"),
+          "import terrain_sketch in QGIS gives the Python package: %s" % package)
+    check((package.get("formulated_strokes") or 0) > 0,
+          "the Python package runs in QGIS: %s" % package)
 # Every algorithm's dialog builds its widgets, and the Silhouettes dialog's scale widget gives
 # back the scale it was given.
 dialogs = r.get("dialogs", {})

@@ -15,8 +15,8 @@ def start(build):
     app = QgsApplication([], False)
     app.initQgis()
     from processing.core.Processing import Processing
-    import terrain_sketch
+    import terrain_sketch_plugin
 
-    terrain_sketch.classFactory(None).initProcessing()
+    terrain_sketch_plugin.classFactory(None).initProcessing()
     Processing.initialize()
     return app

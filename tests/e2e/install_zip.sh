@@ -3,5 +3,5 @@
 install_zip() {
   mkdir -p "$2/python/plugins" "$2/QGIS"
   python3 -m zipfile -e "$1" "$2/python/plugins"
-  printf '[PythonPlugins]\nterrain_sketch=true\n' > "$2/QGIS/QGIS3.ini"
+  printf '[PythonPlugins]\nterrain_sketch_plugin=true\n' > "$2/QGIS/QGIS3.ini"
 }

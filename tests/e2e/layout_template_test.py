@@ -30,7 +30,8 @@ from osgeo import gdal  # noqa: E402
 from qgis.PyQt.QtXml import QDomDocument  # noqa: E402
 
 SAMPLE = os.path.join(repo, "resources", "sample", "jacksboro_utm16n.tif")
-TEMPLATE = os.path.join(build, "qgis-plugin", "terrain_sketch", "layouts", "terrain_sketch_a3.qpt")
+TEMPLATE = os.path.join(build, "qgis-plugin", "terrain_sketch_plugin", "layouts",
+                        "terrain_sketch_a3.qpt")
 passed = failed = 0
 
 
