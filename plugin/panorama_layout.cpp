@@ -47,9 +47,9 @@ QgsPrintLayout* PanoramaLayout::made(QgsProject& project) {
   if (!ok) return nullptr;
   mName = freeName(*project.layoutManager(), mTitle);
   layout->setName(mName);
-  QgsPrintLayout* kept = layout.get();
-  project.layoutManager()->addLayout(layout.release());
-  return kept;
+  // The manager owns the layout once it takes it; one it refuses stays ours, and goes.
+  if (!project.layoutManager()->addLayout(layout.get())) return nullptr;
+  return layout.release();
 }
 
 void PanoramaLayout::add(QgsProject& project, QgsMapLayer& layer, bool panorama) {
