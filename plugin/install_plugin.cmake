@@ -1,5 +1,6 @@
 # Copies the built plugin folder into a QGIS profile and enables it (desktop and qgis_process).
-# cmake -DPLUGIN_DIR=... -DPROFILE_DIR=... -DPLUGIN_NAME=terrain_sketch_plugin -P install_plugin.cmake
+# cmake -DPLUGIN_DIR=... -DPROFILE_DIR=... -DPLUGIN_NAME=terrain_sketch_plugin \
+#   -P install_plugin.cmake
 set(target "${PROFILE_DIR}/python/plugins/${PLUGIN_NAME}")
 file(REMOVE_RECURSE "${target}")
 # An earlier install under the folder's old name would load a second copy, and a folder named

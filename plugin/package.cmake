@@ -12,7 +12,7 @@ set(TSK_QGIS_RELEASE "${TSK_QGIS_MAJOR}.${TSK_QGIS_MINOR}" CACHE INTERNAL "")
 # The platform: Debian's release (cmake/debian_release.cmake) and the processor.
 set(TSK_PLATFORM "${TSK_DEBIAN_RELEASE}-${CMAKE_SYSTEM_PROCESSOR}")
 set(TSK_PACKAGE_NAME
-    "terrain_sketch-${PROJECT_VERSION}-qgis${TSK_QGIS_RELEASE}-${TSK_PLATFORM}"
+    "${PROJECT_NAME}-${PROJECT_VERSION}-qgis${TSK_QGIS_RELEASE}-${TSK_PLATFORM}"
     CACHE INTERNAL "")
 
 # metadata.txt for this QGIS release: QGIS's Plugin Manager marks the package incompatible with

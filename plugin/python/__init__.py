@@ -21,6 +21,7 @@ from .build_info import BUILT_FOR_QGIS, BUILT_FOR_QGIS_VERSION_INT, PACKAGE
 _LIBRARY = "libterrain_sketch_provider.so"
 _TAG = "Terrain Sketch"
 _PROVIDER_ID = "terrainsketch"
+_FOLDER = os.path.dirname(os.path.abspath(__file__))  # this copy's plugin folder
 
 
 def release_mismatch():
@@ -38,12 +39,11 @@ def release_mismatch():
 def other_copies():
     """Other plugin folders beside this one that hold Terrain Sketch's library (an earlier
     install under another folder name, such as terrain_sketch)."""
-    here = os.path.dirname(os.path.abspath(__file__))
-    parent = os.path.dirname(here)
+    parent = os.path.dirname(_FOLDER)
     found = []
     for name in sorted(os.listdir(parent)):
         folder = os.path.join(parent, name)
-        if folder != here and os.path.isfile(os.path.join(folder, _LIBRARY)):
+        if folder != _FOLDER and os.path.isfile(os.path.join(folder, _LIBRARY)):
             found.append(folder)
     return found
 
@@ -57,7 +57,7 @@ def already_registered():
     return ("Terrain Sketch was not loaded from %s: another copy of it is loaded already%s. "
             "Uninstall the other copy in Plugins > Manage and Install Plugins (an earlier "
             "version was installed under the folder name terrain_sketch), then restart QGIS."
-            % (os.path.dirname(os.path.abspath(__file__)), where))
+            % (_FOLDER, where))
 
 
 class TerrainSketchPlugin:
@@ -81,7 +81,7 @@ class TerrainSketchPlugin:
             refusal = release_mismatch() or already_registered()
             if refusal:
                 return self.refuse(refusal)
-            self.library = ctypes.CDLL(os.path.join(os.path.dirname(__file__), _LIBRARY))
+            self.library = ctypes.CDLL(os.path.join(_FOLDER, _LIBRARY))
         if not self.library.terrain_sketch_register_provider():
             raise RuntimeError("Terrain Sketch: the processing provider could not be registered")
 
