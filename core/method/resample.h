@@ -13,8 +13,8 @@ namespace tsk {
 // Bilinear height at a DEM pixel position; NaN outside the cell centres' hull or next to nodata.
 float sample_bilinear(const HeightGrid& dem, PixelPoint px);
 
-// sample_bilinear at the positions start + i * step, i in [0, count), into out[i]: four at a
-// time where the processor has AVX2, bit for bit as one at a time.
+// sample_bilinear at the positions start + i * step, i in [0, count), into out[i]: four or
+// eight at a time where the processor has AVX2 or AVX-512, bit for bit as one at a time.
 void sample_line(const HeightGrid& dem, PixelPoint start, PixelPoint step, std::size_t count,
                  float* out);
 
