@@ -394,7 +394,7 @@ class BilinearSampler {
     const __m256 nodata = _mm256_set1_ps(kNoData);
     const float* base = cells_.base();
     // Further ahead than run_avx2 fetches, as a step here is about twice as quick: of 16 to 96
-    // samples ahead, 48 was the quickest sampling lines across an 8000² grid.
+    // samples ahead, 48 was the quickest sampling lines across an 8000 x 8000 grid.
     [[maybe_unused]] const auto [ahead, cell_count] = fetch_ahead(dcol, drow, 48.0);
     for (; i + 8 <= end; i += 8) {
       const __m512d s = _mm512_add_pd(_mm512_set1_pd(static_cast<double>(i)), lanes);
