@@ -119,18 +119,24 @@ TSK_AVX2 inline __m128 avx2_heights(const float* base, __m256i at, __m128 mask) 
   return _mm256_mask_i64gather_ps(_mm_set1_ps(kNoData), base, at, mask, 4);
 }
 
-// Asks for the cells at base + at + ahead in each lane where that lies within `count` cells:
-// a ray across the rows meets a fresh cache line at every sample, and fetched 16 samples ahead
-// the wait is hidden (a panorama's processor time about 10 % less).
-TSK_AVX2 inline void avx2_fetch_ahead(const float* base, __m256i at, std::int64_t ahead,
-                                      std::int64_t count) {
-  alignas(32) std::int64_t lane[4];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(lane), at);
-  for (const std::int64_t cell : lane) {
+// Asks for the cells at base + cell + ahead, for each of the lanes' cells where that lies within
+// `count` cells: a ray across the rows meets a fresh cache line at every sample, and fetched
+// ahead the wait is hidden (16 samples ahead: a panorama's processor time about 10 % less).
+template <std::size_t kLanes>
+inline void fetch_cells_ahead(const float* base, const std::int64_t (&cells)[kLanes],
+                              std::int64_t ahead, std::int64_t count) {
+  for (const std::int64_t cell : cells) {
     const std::int64_t later = cell + ahead;
     if (later >= 0 && later < count)
       _mm_prefetch(reinterpret_cast<const char*>(base + later), _MM_HINT_T0);
   }
+}
+
+TSK_AVX2 inline void avx2_fetch_ahead(const float* base, __m256i at, std::int64_t ahead,
+                                      std::int64_t count) {
+  alignas(32) std::int64_t lane[4];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(lane), at);
+  fetch_cells_ahead(base, lane, ahead, count);
 }
 
 // The heights at base + at and the next column, each lane's two in one 64-bit read. Four plain
@@ -166,16 +172,11 @@ TSK_AVX512 inline void avx512_height_pairs(const float* base, __m512i at, __m512
   right = _mm512_cvtps_pd(_mm256_castsi256_ps(_mm512_extracti64x4_epi64(split, 1)));
 }
 
-// Asks for the cells at base + at + ahead in each lane where that lies within `count` cells.
 TSK_AVX512 inline void avx512_fetch_ahead(const float* base, __m512i at, std::int64_t ahead,
                                           std::int64_t count) {
   alignas(64) std::int64_t lane[8];
   _mm512_store_si512(lane, at);
-  for (const std::int64_t cell : lane) {
-    const std::int64_t later = cell + ahead;
-    if (later >= 0 && later < count)
-      _mm_prefetch(reinterpret_cast<const char*>(base + later), _MM_HINT_T0);
-  }
+  fetch_cells_ahead(base, lane, ahead, count);
 }
 #endif
 

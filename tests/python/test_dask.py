@@ -1,7 +1,8 @@
 """terrain_sketch.dask against the run on one machine: the same strokes, exact and drawn
 (compared as sets of rows: geometry with M values, and attributes; drawn ones also in one run's
-order within each class) and statistics (the filter's report among them), on the sample and a 4000^2 DEM made of it, bands down to a few profiles, the
-adaptive filter's survey made by the workers, a worker killed mid-run, and the refusals."""
+order within each class) and statistics (the filter's report among them), on the sample and a
+4000^2 DEM made of it, bands down to a few profiles, the adaptive filter's survey made by the
+workers, a worker killed mid-run, and the refusals."""
 
 import importlib.util
 import os
