@@ -4,8 +4,10 @@
 #include <qgsapplication.h>
 #include <qgsprocessingregistry.h>
 
+#include <QFile>
 #include <memory>
 
+#include "plugin/plugin_paths.h"
 #include "plugin/provider.h"
 #include "plugin/tapered_line.h"
 #include "plugin/translation.h"
@@ -35,6 +37,13 @@ extern "C" __attribute__((visibility("default"))) int terrain_sketch_register_pr
   }
   gProvider = offered;
   return 1;
+}
+
+// The plugin folder (as the file system names it) that holds the styles, layouts and translations,
+// for a library loaded from a copy outside it (the shim's; see plugin/python/__init__.py).
+extern "C" __attribute__((visibility("default"))) void terrain_sketch_set_plugin_folder(
+    const char* folder) {
+  tsk::plugin::setPluginDir(folder ? QFile::decodeName(folder) : QString());
 }
 
 extern "C" __attribute__((visibility("default"))) void terrain_sketch_unregister_provider() {

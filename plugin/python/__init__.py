@@ -1,7 +1,9 @@
 """Terrain Sketch: loads the compiled processing provider.
 
 qgis_process loads only Python plugins, so this shim loads the C++ library with ctypes and
-asks it to register its provider; the desktop uses the same route.
+asks it to register its provider; the desktop uses the same route. It loads a copy of the library
+held in memory, not the file in the plugin folder, so that installing a new package over this one
+neither crashes QGIS nor leaves the old library in use (load_private_copy).
 
 The library is built against one QGIS release, whose C++ interface differs from the others', so
 the shim first checks that it runs in that release and otherwise says so instead of loading it.
@@ -12,6 +14,7 @@ from QGIS's Python console and scripts.
 """
 import ctypes
 import os
+import shutil
 import sys
 
 from qgis.core import Qgis, QgsApplication, QgsMessageLog
@@ -22,6 +25,31 @@ _LIBRARY = "libterrain_sketch_provider.so"
 _TAG = "Terrain Sketch"
 _PROVIDER_ID = "terrainsketch"
 _FOLDER = os.path.dirname(os.path.abspath(__file__))  # this copy's plugin folder
+
+
+def load_private_copy(path):
+    """The library at `path`, loaded from a copy in memory that nothing else writes to.
+
+    QGIS's installer (Install from ZIP) first unpacks the new package over the files of the one
+    installed, rewriting the loaded library in place under the running code, and QGIS crashed when
+    it then unloaded the plugin. A copy keeps the old code whole for as long as anything of it
+    runs (the old provider, a tapered line already drawing), and the new package's library, copied
+    in turn, loads beside it and takes effect without a restart: the dynamic loader would give
+    back the library already loaded from the same path. Where no copy can be made or loaded, the
+    file itself is."""
+    try:
+        copy = os.memfd_create(_LIBRARY, os.MFD_CLOEXEC)
+    except (AttributeError, OSError):
+        return ctypes.CDLL(path)
+    try:
+        with open(path, "rb") as source, open(copy, "wb", closefd=False) as target:
+            shutil.copyfileobj(source, target)
+        # The copy's descriptor stays open while QGIS runs: the loader knows a library by its
+        # path, and a closed descriptor's number would name the next copy.
+        return ctypes.CDLL("/proc/self/fd/%d" % copy)
+    except OSError:
+        os.close(copy)
+        return ctypes.CDLL(path)
 
 
 def release_mismatch():
@@ -81,7 +109,9 @@ class TerrainSketchPlugin:
             refusal = release_mismatch() or already_registered()
             if refusal:
                 return self.refuse(refusal)
-            self.library = ctypes.CDLL(os.path.join(_FOLDER, _LIBRARY))
+            self.library = load_private_copy(os.path.join(_FOLDER, _LIBRARY))
+            # The copy lives in no folder: the library is told where its styles and layouts are.
+            self.library.terrain_sketch_set_plugin_folder(os.fsencode(_FOLDER))
         if not self.library.terrain_sketch_register_provider():
             raise RuntimeError("Terrain Sketch: the processing provider could not be registered")
 
