@@ -1,14 +1,18 @@
 """Runs inside the real QGIS desktop (qgis.bin --code): runs the Terrain sketch algorithms from
 Processing, loads their styled outputs, saves screenshots of the canvas and writes what it found
 to a JSON report for desktop_test.sh to check. Always exits QGIS."""
-import json
 import os
+import sys
 import traceback
 
 from qgis.core import (QgsApplication, QgsProcessingFeedback, QgsProject, QgsRectangle,
                        QgsWkbTypes)
 from qgis.PyQt.QtCore import QTimer
 from qgis.utils import iface
+
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.environ["TSK_E2E_SCRIPTS"])
+from desktop_report import finish  # noqa: E402
 
 OUT = os.environ["TSK_E2E_OUT"]
 DEM = os.environ["TSK_E2E_DEM"]
@@ -32,12 +36,6 @@ class RecordingFeedback(QgsProcessingFeedback):
     def reportError(self, error, fatalError=False):
         self.errors.append(error)
 
-
-def finish():
-    QgsProject.instance().setDirty(False)  # no "save project?" prompt on exit
-    with open(os.path.join(OUT, "report.json"), "w") as f:
-        json.dump(report, f, indent=2)
-    iface.actionExit().trigger()
 
 
 def describe(layer):
@@ -91,13 +89,13 @@ def take(index):
             report["screenshots"].append(path)
         if index == len(SHOTS):
             report["ok"] = True
-            finish()
+            finish(report)
             return
         show_only(SHOTS[index][1], SHOTS[index][2])
         QTimer.singleShot(4000, lambda: take(index + 1))
     except Exception:
         report["error"] = traceback.format_exc()
-        finish()
+        finish(report)
 
 
 def loaded_layer(path):
@@ -206,7 +204,7 @@ def run():
         QTimer.singleShot(1000, lambda: take(0))
     except Exception:
         report["error"] = traceback.format_exc()
-        finish()
+        finish(report)
 
 
 def install_from_zip():

@@ -8,16 +8,9 @@ zip=$1 dem=$2 out=$3
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$out" && mkdir -p "$out"
 profiles="$out/profiles"
-profile="$profiles/profiles/default"
-mkdir -p "$profile/QGIS"
-cat >> "$profile/QGIS/QGIS3.ini" <<'INI'
-[app]
-askToSaveMemoryLayers=false
-[qgis]
-checkVersion=false
-showTips=false
-INI
-export TSK_E2E_OUT="$out" TSK_E2E_DEM="$dem" TSK_E2E_ZIP="$zip"
+source "$here/desktop_profile.sh"
+fresh_profiles "$out"
+export TSK_E2E_OUT="$out" TSK_E2E_DEM="$dem" TSK_E2E_ZIP="$zip" TSK_E2E_SCRIPTS="$here"
 
 run_qgis() {
   rm -f "$out/report.json"

@@ -2,8 +2,8 @@
 one ZIP through QGIS's installer, runs Silhouettes and draws its styled layers, installs a newer
 ZIP over it the same way, draws the same layers again, runs Silhouettes with the new library, and
 writes what it found to a JSON report. Always exits QGIS."""
-import json
 import os
+import sys
 import traceback
 
 from qgis.core import (QgsApplication, QgsMapRendererSequentialJob, QgsMapSettings, QgsProject,
@@ -12,16 +12,14 @@ from qgis.PyQt.QtCore import QSize, QTimer
 from qgis.PyQt.QtGui import QColor
 from qgis.utils import iface
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.environ["TSK_E2E_SCRIPTS"])
+from desktop_report import finish  # noqa: E402
+
 OUT = os.environ["TSK_E2E_OUT"]
 DEM = os.environ["TSK_E2E_DEM"]
 report = {"ok": False}
 
-
-def finish():
-    QgsProject.instance().setDirty(False)  # no "save project?" prompt on exit
-    with open(os.path.join(OUT, "report.json"), "w") as f:
-        json.dump(report, f, indent=2)
-    iface.actionExit().trigger()
 
 
 def install(zip_path):
@@ -92,7 +90,7 @@ def go():
         report["ok"] = True
     except Exception:
         report["error"] = traceback.format_exc()
-    finish()
+    finish(report)
 
 
 def when_ready(waited_ms=0):

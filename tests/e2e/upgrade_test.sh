@@ -22,18 +22,11 @@ with zipfile.ZipFile(source) as old, zipfile.ZipFile(target, "w", zipfile.ZIP_DE
         else:
             new.writestr(entry, old.read(entry))
 PY
-profile="$out/profiles/profiles/default"
-mkdir -p "$profile/QGIS"
-cat >> "$profile/QGIS/QGIS3.ini" <<'INI'
-[app]
-askToSaveMemoryLayers=false
-[qgis]
-checkVersion=false
-showTips=false
-INI
+source "$here/desktop_profile.sh"
+fresh_profiles "$out"
 status=0
 TSK_E2E_OUT="$out" TSK_E2E_DEM="$dem" TSK_E2E_ZIP="$zip" TSK_E2E_NEWER_ZIP="$newer_zip" \
-  timeout 240 xvfb-run -a -s "-screen 0 1600x1000x24" /usr/bin/qgis.bin \
+  TSK_E2E_SCRIPTS="$here" timeout 240 xvfb-run -a -s "-screen 0 1600x1000x24" /usr/bin/qgis.bin \
   --profiles-path "$out/profiles" --nologo --noversioncheck --code "$here/upgrade_run.py" \
   > "$out/qgis.log" 2>&1 || status=$?
 [ -f "$out/report.json" ] || { echo "no report (QGIS exit $status); QGIS log:"; tail -40 "$out/qgis.log"; exit 1; }
