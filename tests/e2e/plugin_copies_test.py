@@ -2,7 +2,8 @@
 old name: the copy loaded second is refused with a message that names the other's folder, nothing
 is raised, and the first copy's provider stays registered. The second copy's library, asked to
 register all the same (as an earlier shim asks it), says no without crashing QGIS and leaves the
-first copy's tapered line in place.
+first copy's tapered line in place. The shim loads its library from a copy in memory, or from the
+file where it cannot.
     QT_QPA_PLATFORM=offscreen /usr/bin/python3 tests/e2e/plugin_copies_test.py BUILD_DIR"""
 import contextlib
 import ctypes
@@ -54,6 +55,20 @@ try:
         errors.append("the second copy's library replaced the first copy's provider")
     if QgsApplication.symbolLayerRegistry().symbolLayerMetadata("TerrainSketchTaperedLine") is None:
         errors.append("the second copy's library removed the tapered line")
+    # The shim loads its library from a copy in memory (an upgrade rewrites the file in place),
+    # and the file itself where no such copy can be made.
+    first_library = os.path.join(first_folder, "libterrain_sketch_provider.so")
+    in_memory = terrain_sketch_plugin.load_private_copy(first_library)._name
+    if not in_memory.startswith("/proc/self/fd/"):
+        errors.append("the library was not loaded from a copy in memory: %s" % in_memory)
+    memfd_create = os.memfd_create
+    try:
+        del os.memfd_create
+        from_file = terrain_sketch_plugin.load_private_copy(first_library)._name
+    finally:
+        os.memfd_create = memfd_create
+    if from_file != first_library:
+        errors.append("without copies in memory, the library was loaded from %s" % from_file)
 except Exception as e:  # noqa: BLE001 - any failure is the test's
     errors.append("raised: %r" % e)
 finally:
