@@ -37,7 +37,6 @@ class RecordingFeedback(QgsProcessingFeedback):
         self.errors.append(error)
 
 
-
 def describe(layer):
     renderer = layer.renderer()
     info = {"name": layer.name(), "file": os.path.basename(layer.source().split("|")[0]),

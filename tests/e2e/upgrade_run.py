@@ -21,7 +21,6 @@ DEM = os.environ["TSK_E2E_DEM"]
 report = {"ok": False}
 
 
-
 def install(zip_path):
     from pyplugin_installer import instance as plugin_installer
     plugin_installer().installFromZipFile(zip_path)
