@@ -14,6 +14,7 @@
 #include "core/drawn/drawing_scale.h"
 #include "core/method/run_note.h"
 #include "io/pages/preview.h"
+#include "io/read/page_heights.h"
 #include "io/write/vector_writer.h"
 
 namespace tsk::cli {
@@ -43,18 +44,55 @@ std::string note_of(const Options& o, const SilhouetteResult& result) {
   return run_note(facts);
 }
 
-// The DEM of a run: held whole once for a preview, which draws over it too (refused when too
-// large to hold); otherwise open to be read strip by strip, for DEMs of any size.
+// The DEM of a run. For a preview, which draws over the DEM turned to the view, it is held whole
+// when it can be; a DEM too large for that is read strip by strip, as without a preview, and its
+// page is laid out over the DEM averaged for it (io::page_averaging), so that a DEM of any size
+// has a preview.
 struct RunDem {
   std::optional<io::HeldDemFile> held;
   std::optional<io::DemFile> file;
+  std::optional<io::PageHeights> page;  // a preview's heights when the DEM is not held
   const io::Dem& info() const { return held ? held->dem : file->info(); }
+  // The heights, frame and georeferencing that the preview's page is laid out over.
+  const HeightGrid& page_grid() const { return page ? page->oriented : held->dem.oriented; }
+  const OrientedFrame& page_frame() const { return page ? page->frame : held->dem.frame; }
+  const GeoTransform& page_geotransform() const {
+    return page ? page->geotransform : held->dem.geotransform;
+  }
+  std::optional<io::HeightRange> page_averaged() const {
+    if (!page) return std::nullopt;
+    return io::HeightRange{page->lowest, page->highest};
+  }
   SilhouetteResult sketch(const Options& o, const ProgressFn& progress, StrokeSink sink) const {
     if (held) return sketch_held_strokes(held->held(), o.params, progress, std::move(sink));
     return sketch_silhouettes(file->source(), o.params, static_cast<std::size_t>(o.strips),
                               progress, std::move(sink));
   }
 };
+
+// Opens the DEM of a run, and reads what a preview draws over.
+void open_run_dem(const Options& o, RunDem& dem, std::ostream& err) {
+  if (!o.preview.empty()) {
+    io::DemOptions size_only = o.dem;
+    size_only.sample_range = false;  // the grid is all that the choice needs
+    const DemGrid grid = io::DemFile(o.input, size_only).info().grid;
+    const std::size_t factor = io::page_averaging(grid, o.params.view.azimuth_deg);
+    if (factor == 1) {
+      dem.held.emplace(load_dem(o, err));
+      return;
+    }
+    dem.file.emplace(o.input, o.dem);
+    print_notes(dem.info().notes, err);
+    err << "note: the preview is laid out over the DEM averaged " << factor << " x " << factor
+        << " cells (" << dem.info().cols << " x " << dem.info().rows
+        << " cells turned whole would take more than half of the memory), read first; the "
+           "strokes are drawn from its own cells\n";
+    dem.page.emplace(io::read_page_heights(*dem.file, o.params.view.azimuth_deg, factor));
+    return;
+  }
+  dem.file.emplace(o.input, o.dem);
+  print_notes(dem.info().notes, err);
+}
 
 // A scale rounded to two significant figures, as map scales are given (1:547 312 is 1:550 000).
 double round_scale(double scale) {
@@ -67,12 +105,13 @@ double round_scale(double scale) {
 // drawn for it, in the vector output too, since both show one sketch. A picture without a page
 // size states none, so a warning names what to give. A page the sketch does not fit at the
 // scale asked for is refused here, before the run.
-void fit_strokes_to_preview(Options& o, const io::Dem& dem, std::ostream& err) {
+void fit_strokes_to_preview(Options& o, const RunDem& dem, std::ostream& err) {
   // The preview's scale in map units, as --drawn-for takes it (ground metres per map unit apart).
-  const double shown =
-      io::preview_scale(dem.oriented, dem.frame, o.params.view, o.page) / dem.ground_scale;
+  const double shown = io::preview_scale(dem.page_grid(), dem.page_frame(), o.params.view, o.page,
+                                         dem.page_averaged()) /
+                       dem.info().ground_scale;
   if (!o.params.strokes.drawn() || o.params.strokes.scale > 0.0) return;
-  const double own = own_scale(dem.geotransform);
+  const double own = own_scale(dem.info().geotransform);
   if (!std::isfinite(shown) || !(own > 0.0) || !(shown > own)) return;
   if (!o.page.size.empty()) {
     o.params.strokes.scale = o.page.scale > 0.0 ? shown : round_scale(shown);
@@ -103,23 +142,15 @@ std::string silhouettes(const Args& args, std::ostream& out, std::ostream& err,
                         const ProgressFn& progress) {
   Options o = parse("silhouettes", args);
   print_lost_weights(o, io::check_vector_output(o.output, o.format), err);  // before any work
-  const bool preview = !o.preview.empty();
   RunDem dem;
-  if (preview) {
-    dem.held.emplace(load_dem(o, err));
-    fit_strokes_to_preview(o, dem.info(), err);
-  } else {
-    dem.file.emplace(o.input, o.dem);
-    print_notes(dem.info().notes, err);
-  }
+  open_run_dem(o, dem, err);
   // Strokes are written as they complete, so they are never all held; the preview keeps their
-  // paths on its page.
+  // paths on its page, laid out stroke by stroke as the run hands them on.
   std::optional<io::SketchLayout> layout;
-  if (preview) {
-    // Laid out stroke by stroke as the run hands them on, alongside it rather than after it.
-    const io::Dem& whole = dem.info();
-    layout.emplace(whole.oriented, whole.frame, whole.geotransform, o.params.view,
-                   o.params.geometry, o.page);
+  if (!o.preview.empty()) {
+    fit_strokes_to_preview(o, dem, err);
+    layout.emplace(dem.page_grid(), dem.page_frame(), dem.page_geotransform(), o.params.view,
+                   o.params.geometry, o.page, dem.page_averaged());
   }
   SilhouetteResult result;
   io::PlotterReport plotter;

@@ -995,11 +995,40 @@ TEST_CASE("a DEM too large to hold whole is refused by the commands that need it
     CHECK(run.code == 1);
     CHECK_THAT(run.err, Catch::Contains("too large") && Catch::Contains("strip by strip"));
   }
-  const CliRun preview =
-      run_cli({"silhouettes", dir / "huge.vrt", dir / "out.gpkg", "--preview", dir / "p.png"});
-  CHECK(preview.code == 1);
-  CHECK_THAT(preview.err, Catch::Contains("too large"));
   CHECK(dir.file_count() == 1);
+  // The silhouettes' preview is laid out over the DEM averaged instead: test_page_heights.cpp.
+}
+
+TEST_CASE("a preview of a DEM too large to hold is laid out over it averaged", "[cli][preview]") {
+  ScratchDir dir("averaged_preview");
+  const CliRun held =
+      run_cli({"silhouettes", kSample, dir / "held.gpkg", "--preview", dir / "held.svg"});
+  REQUIRE(held.code == 0);
+  CHECK_THAT(held.err, !Catch::Contains("averaged"));
+  // Half a megabyte may hold 100 000 cells turned to the view; the sample has 180 000.
+  setenv("TSK_MEMORY_MB", "1", 1);
+  const CliRun small =
+      run_cli({"silhouettes", kSample, dir / "small.gpkg", "--preview", dir / "small.svg"});
+  setenv("TSK_MEMORY_MB", "half", 1);
+  const CliRun nonsense = run_cli({"silhouettes", kSample, dir / "x.gpkg"});
+  unsetenv("TSK_MEMORY_MB");
+  REQUIRE(small.code == 0);
+  CHECK_THAT(
+      small.err,
+      Catch::Contains("the preview is laid out over the DEM averaged 2 x 2 cells (414 x 436"));
+  CHECK(features_as_text(dir / "small.gpkg") == features_as_text(dir / "held.gpkg"));
+  const auto paths = [](const std::string& svg) {
+    const std::string text = test::slurp(svg);
+    std::size_t count = 0;
+    for (std::size_t at = text.find("<path"); at != std::string::npos;
+         at = text.find("<path", at + 1))
+      ++count;
+    return count;
+  };
+  CHECK(paths(dir / "small.svg") > 1000);
+  CHECK(paths(dir / "small.svg") == paths(dir / "held.svg"));
+  CHECK(nonsense.code == 1);
+  CHECK_THAT(nonsense.err, Catch::Contains("TSK_MEMORY_MB") && Catch::Contains("'half'"));
 }
 
 TEST_CASE("a command line run interrupted leaves nothing behind", "[cli][robustness]") {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "core/base/errors.h"
@@ -12,9 +13,24 @@
 namespace tsk {
 namespace {
 
+// The machine's memory, or the megabytes TSK_MEMORY_MB gives for a run to plan for: on a machine
+// shared with other work, or in a container whose limit the machine's memory does not show.
+double machine_memory() {
+  if (const char* given = std::getenv("TSK_MEMORY_MB"); given && *given) {
+    char* end = nullptr;
+    const double megabytes = std::strtod(given, &end);
+    if (*end != '\0' || !(megabytes >= 1.0) || !(megabytes <= 1e12)) {
+      throw Error(
+          std::string("TSK_MEMORY_MB must be the megabytes a run may plan for, from 1, got '") +
+          given + "'");
+    }
+    return megabytes * 1024.0 * 1024.0;
+  }
+  return static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+}
+
 bool over_half_the_memory(double bytes) {
-  const double memory =
-      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+  const double memory = machine_memory();
   return memory > 0 && bytes > 0.5 * memory;
 }
 
@@ -36,7 +52,8 @@ bool too_large_to_turn_whole(const OrientedFrame& frame) {
 }
 
 std::size_t strip_profiles(const OrientedFrame& frame) {
-  constexpr double kBudget = 512.0 * 1024 * 1024;
+  // 512 MiB, less on a machine with under 2 GiB.
+  const double budget = std::min(512.0 * 1024 * 1024, 0.25 * machine_memory());
   const double bytes_per_profile = strip_bytes_per_profile(frame);
   // Short profiles come more to a strip, at least 1 Mi cells, as every strip costs a read and a
   // pause in linking. (Not more for others: the first strip is read before any work starts.)
@@ -48,7 +65,7 @@ std::size_t strip_profiles(const OrientedFrame& frame) {
   const double length = static_cast<double>(std::max<std::size_t>(1, frame.length));
   double most = std::clamp(std::floor(1024.0 * 1024 / length), 1024.0, 65536.0);
   if (frame.length > 4096) most = std::clamp(std::floor(4.0 * 1024 * 1024 / length), 256.0, 1024.0);
-  return static_cast<std::size_t>(std::clamp(std::floor(kBudget / bytes_per_profile), 16.0, most));
+  return static_cast<std::size_t>(std::clamp(std::floor(budget / bytes_per_profile), 16.0, most));
 }
 
 void check_strip_fits(const OrientedFrame& frame, std::size_t strip) {

@@ -1,5 +1,7 @@
 // How much of the machine a run may take, decided in one place: whether a DEM may be turned
-// whole, and how many profiles a strip-by-strip run reads at a time.
+// whole, and how many profiles a strip-by-strip run reads at a time. The machine's memory is its
+// physical memory, or the megabytes that the environment variable TSK_MEMORY_MB gives (each
+// function here throws Error when that is not a number from 1).
 #pragma once
 
 #include <cstddef>
@@ -18,7 +20,7 @@ bool too_large_to_turn_whole(const OrientedFrame& frame);
 // cells (1 Mi cells a strip, up to 65536 profiles), fewer for profiles over 4096 cells (4 Mi
 // cells a strip, at least 256 profiles) and for profiles so long that a run's
 // strips (two of heights, the classification and, resampled, the band: 9 or 13 bytes a cell)
-// would pass 512 MiB, at least 16.
+// would pass 512 MiB (or a quarter of the machine's memory, when that is less), at least 16.
 std::size_t strip_profiles(const OrientedFrame& frame);
 
 // Throws Error when strips of `strip` profiles are none or would take more than half of this

@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "core/base/errors.h"
 #include "core/method/plan_oblique.h"
@@ -31,16 +32,21 @@ struct PlotExtent {
   double z_min = 0.0, z_max = 0.0, width = 0.0, height = 0.0;
 };
 
-PlotExtent plot_extent(const HeightGrid& z, const OrientedFrame& frame, const ViewParams& view) {
+PlotExtent plot_extent(const HeightGrid& z, const OrientedFrame& frame, const ViewParams& view,
+                       std::optional<HeightRange> averaged) {
   PlotExtent e;
   e.z_min = std::numeric_limits<double>::infinity();
   e.z_max = -e.z_min;
-  for (std::size_t k = 0; k < z.size(); ++k) {
+  if (averaged) {
+    e.z_min = averaged->lowest;
+    e.z_max = averaged->highest;
+  }
+  for (std::size_t k = 0; k < z.size() && !averaged; ++k) {
     if (!is_data(z.data()[k])) continue;
     e.z_min = std::min(e.z_min, static_cast<double>(z.data()[k]));
     e.z_max = std::max(e.z_max, static_cast<double>(z.data()[k]));
   }
-  if (!std::isfinite(e.z_min)) e.z_min = e.z_max = 0.0;
+  if (!std::isfinite(e.z_min) || !std::isfinite(e.z_max)) e.z_min = e.z_max = 0.0;
   const PlanObliqueShift shift(view, frame.d, e.z_min);
   e.width = std::max(frame.w, static_cast<double>(frame.profiles) * frame.w);
   e.height = shift(static_cast<double>(frame.length), e.z_max) * frame.d;
@@ -52,12 +58,12 @@ PlotExtent plot_extent(const HeightGrid& z, const OrientedFrame& frame, const Vi
 class Plot {
  public:
   Plot(const HeightGrid& z, const OrientedFrame& frame, const GeoTransform& geotransform,
-       const ViewParams& view, Geometry geometry)
+       const ViewParams& view, Geometry geometry, std::optional<HeightRange> averaged)
       : z_(z),
         frame_(frame),
         geotransform_(geotransform),
         geometry_(geometry),
-        extent_(plot_extent(z, frame, view)),
+        extent_(plot_extent(z, frame, view, averaged)),
         shift_(view, frame.d, extent_.z_min) {}
   double width() const { return extent_.width; }
   double height() const { return extent_.height; }
@@ -217,8 +223,8 @@ PageSize parse_page_size(const std::string& text) {
 }
 
 double preview_scale(const HeightGrid& z, const OrientedFrame& frame, const ViewParams& view,
-                     const PageOptions& options) {
-  const PlotExtent plot = plot_extent(z, frame, view);
+                     const PageOptions& options, std::optional<HeightRange> averaged) {
+  const PlotExtent plot = plot_extent(z, frame, view, averaged);
   if (!(plot.width > 0.0) || !(plot.height > 0.0)) return 0.0;
   if (!options.size.empty())
     return 1000.0 / lay_paper(plot.width, plot.height, options).mm_per_unit;
@@ -227,20 +233,24 @@ double preview_scale(const HeightGrid& z, const OrientedFrame& frame, const View
 
 struct SketchLayout::Parts {
   Parts(const HeightGrid& z, const OrientedFrame& frame, const GeoTransform& geotransform,
-        const ViewParams& view, Geometry geometry, const PageOptions& options)
-      : plot(z, frame, geotransform, view, geometry),
+        const ViewParams& view, Geometry geometry, const PageOptions& options,
+        std::optional<HeightRange> averaged)
+      : plot(z, frame, geotransform, view, geometry, averaged),
         at(options.size.empty() ? pixel_placement(plot, options, page)
-                                : paper_placement(plot, options, page)) {}
+                                : paper_placement(plot, options, page)),
+        cells_on_grid(!averaged) {}
   Plot plot;
   SketchPage page;
   Placement at;
-  std::vector<std::size_t> unlifted;  // paths of drawn strokes whose points wait for z_ref
+  bool cells_on_grid;                 // whether exact strokes' cells index the plot's heights
+  std::vector<std::size_t> unlifted;  // paths of strokes whose points wait for z_ref
 };
 
 SketchLayout::SketchLayout(const HeightGrid& z, const OrientedFrame& frame,
                            const GeoTransform& geotransform, const ViewParams& view,
-                           Geometry geometry, const PageOptions& options)
-    : parts_(std::make_unique<Parts>(z, frame, geotransform, view, geometry, options)) {}
+                           Geometry geometry, const PageOptions& options,
+                           std::optional<HeightRange> averaged)
+    : parts_(std::make_unique<Parts>(z, frame, geotransform, view, geometry, options, averaged)) {}
 
 SketchLayout::~SketchLayout() = default;
 
@@ -252,14 +262,14 @@ void SketchLayout::add(const Stroke& s) {
   const double full = s.cls == StrokeClass::factual ? widths.factual : widths.formulated;
   PagePath path{s.cls, {}, {}};
   const Plot& plot = parts_->plot;
-  if (drawn) {
+  if (drawn || !parts_->cells_on_grid) {
     const bool lifted_later = plot.geometry() == Geometry::oblique;
     path.points.reserve(s.points.size());
     path.widths.reserve(s.points.size());
     for (std::size_t k = 0; k < s.points.size(); ++k) {
       const StrokePoint carried = plot.carry(s.points[k]);
       path.points.push_back(lifted_later ? carried : parts_->at.place(plot.plot(carried)));
-      path.widths.push_back(full * s.weights[k]);
+      path.widths.push_back(drawn ? full * s.weights[k] : full);
     }
     if (lifted_later) parts_->unlifted.push_back(page.paths.size());
   } else {

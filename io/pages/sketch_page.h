@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,13 +47,19 @@ struct SketchPage {
   double label_size() const { return millimetres ? 3.0 : 13.0; }  // the text's height
 };
 
+// A DEM's own lowest and highest heights, which averaging its cells narrows.
+struct HeightRange {
+  double lowest, highest;
+};
+
 // The scale 1:N of the frame's ground units at which the preview shows the sketch: a page's
 // (options.scale, or the one that fits the sketch inside the page's margins), or, without a page
 // size, the picture's, its pixels taken at 96 to the inch as vector art reads them. 0 for a sketch
 // of no extent. Throws Error, as SketchLayout would, when the sketch at the page's scale does
 // not fit it: a front end can refuse it before the run.
+// `averaged` as SketchLayout takes it.
 double preview_scale(const HeightGrid& z, const OrientedFrame& frame, const ViewParams& view,
-                     const PageOptions& options);
+                     const PageOptions& options, std::optional<HeightRange> averaged = {});
 
 // Lays a run's strokes out on the page one at a time, as the run hands them on, so that they need
 // not be held till it ends: the page's size and scale follow from the DEM alone. Exact strokes are
@@ -60,12 +67,16 @@ double preview_scale(const HeightGrid& z, const OrientedFrame& frame, const View
 // view (the DEM's heights between cells for map geometry), with their weights as widths. Drawn
 // strokes in plan-oblique geometry are finished when the page is taken, with the run's reference
 // height (SilhouetteResult::z_ref), which a run states at its end. `z`, `frame` and
-// `geotransform` are read until then: they must outlive the layout. Throws Error when the sketch
-// at the scale asked for does not fit the page.
+// `geotransform` are read until then: they must outlive the layout. They are the run's own grid,
+// or, given the DEM's own range of heights as `averaged`, the DEM averaged for its page (a DEM too
+// large to hold: page_heights.h). Over that, exact strokes are placed by their points, as drawn
+// ones are, since their cells index the run's grid. Throws Error when the sketch at the scale
+// asked for does not fit the page.
 class SketchLayout {
  public:
   SketchLayout(const HeightGrid& z, const OrientedFrame& frame, const GeoTransform& geotransform,
-               const ViewParams& view, Geometry geometry, const PageOptions& options);
+               const ViewParams& view, Geometry geometry, const PageOptions& options,
+               std::optional<HeightRange> averaged = {});
   ~SketchLayout();
   SketchLayout(const SketchLayout&) = delete;
   SketchLayout& operator=(const SketchLayout&) = delete;

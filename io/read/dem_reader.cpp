@@ -148,7 +148,7 @@ void refuse_too_large_to_turn(const std::string& path, const Dem& dem, double az
   throw Error("'" + path + "' (" + std::to_string(dem.cols) + " x " + std::to_string(dem.rows) +
               " cells) is too large for this command, which holds the whole DEM turned to the "
               "view: that would take more than half of this machine's memory. `silhouettes` "
-              "without `--preview` reads large DEMs strip by strip; or clip or resample the DEM");
+              "reads large DEMs strip by strip, with its preview; or clip or resample the DEM");
 }
 
 void require_on_dem_grid(const std::string& path, const Dem& dem) {
