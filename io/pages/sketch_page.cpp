@@ -40,11 +40,12 @@ PlotExtent plot_extent(const HeightGrid& z, const OrientedFrame& frame, const Vi
   if (averaged) {
     e.z_min = averaged->lowest;
     e.z_max = averaged->highest;
-  }
-  for (std::size_t k = 0; k < z.size() && !averaged; ++k) {
-    if (!is_data(z.data()[k])) continue;
-    e.z_min = std::min(e.z_min, static_cast<double>(z.data()[k]));
-    e.z_max = std::max(e.z_max, static_cast<double>(z.data()[k]));
+  } else {
+    for (std::size_t k = 0; k < z.size(); ++k) {
+      if (!is_data(z.data()[k])) continue;
+      e.z_min = std::min(e.z_min, static_cast<double>(z.data()[k]));
+      e.z_max = std::max(e.z_max, static_cast<double>(z.data()[k]));
+    }
   }
   if (!std::isfinite(e.z_min) || !std::isfinite(e.z_max)) e.z_min = e.z_max = 0.0;
   const PlanObliqueShift shift(view, frame.d, e.z_min);

@@ -1,7 +1,6 @@
 #include "io/read/page_heights.h"
 
 #include <algorithm>
-#include <cstring>
 #include <limits>
 
 #include "core/base/memory_budget.h"
@@ -9,6 +8,7 @@
 #include "core/method/orient.h"
 
 namespace tsk::io {
+
 std::size_t page_averaging(const DemGrid& grid, double azimuth_deg, double most_cells) {
   if (!too_large_to_turn_whole(make_frame(grid, azimuth_deg))) return 1;
   const std::size_t largest = std::max<std::size_t>(1, std::max(grid.rows, grid.cols));
@@ -33,12 +33,9 @@ PageHeights read_page_heights(const DemFile& file, double azimuth_deg, std::size
     }
   };
   const DemSource averaged = averaged_dem(source, factor);
+  // Read whole in one window: the averaging reads its source a block row at a time.
   HeightGrid heights(averaged.grid.rows, averaged.grid.cols, Unset{});
-  read_row_blocks(averaged.grid.rows, averaged.grid.cols, averaged.read,
-                  [&](std::size_t first_row, std::size_t count, const float* block) {
-                    std::memcpy(heights.data() + first_row * averaged.grid.cols, block,
-                                count * averaged.grid.cols * sizeof(float));
-                  });
+  averaged.read({0, 0, averaged.grid.rows, averaged.grid.cols}, heights.data());
   PageHeights page;
   page.frame = make_frame(averaged.grid, azimuth_deg);
   page.oriented = orient(heights, page.frame);
