@@ -70,8 +70,8 @@ struct RunDem {
   }
 };
 
-// Opens the DEM of a run, and reads what a preview draws over.
-void open_run_dem(const Options& o, RunDem& dem, std::ostream& err) {
+// Opens the DEM of a run, and reads what a preview draws over, telling `progress` as it does.
+void open_run_dem(const Options& o, RunDem& dem, std::ostream& err, const ProgressFn& progress) {
   if (!o.preview.empty()) {
     io::DemOptions size_only = o.dem;
     size_only.sample_range = false;  // the grid is all that the choice needs
@@ -87,7 +87,7 @@ void open_run_dem(const Options& o, RunDem& dem, std::ostream& err) {
         << " cells (" << dem.info().cols << " x " << dem.info().rows
         << " cells turned whole would take more than half of the memory), read first; the "
            "strokes are drawn from its own cells\n";
-    dem.page.emplace(io::read_page_heights(*dem.file, o.params.view.azimuth_deg, factor));
+    dem.page.emplace(io::read_page_heights(*dem.file, o.params.view.azimuth_deg, factor, progress));
     return;
   }
   dem.file.emplace(o.input, o.dem);
@@ -143,7 +143,7 @@ std::string silhouettes(const Args& args, std::ostream& out, std::ostream& err,
   Options o = parse("silhouettes", args);
   print_lost_weights(o, io::check_vector_output(o.output, o.format), err);  // before any work
   RunDem dem;
-  open_run_dem(o, dem, err);
+  open_run_dem(o, dem, err, progress);
   // Strokes are written as they complete, so they are never all held; the preview keeps their
   // paths on its page, laid out stroke by stroke as the run hands them on.
   std::optional<io::SketchLayout> layout;

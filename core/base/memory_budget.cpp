@@ -41,7 +41,16 @@ double strip_bytes_per_profile(const OrientedFrame& frame) {
          static_cast<double>(std::max<std::size_t>(1, frame.length));
 }
 
+// What a run plans to hold beside what it must: 512 MiB, less on a machine with under 2 GiB.
+double run_budget() {
+  return std::min(512.0 * 1024 * 1024, 0.25 * machine_memory());
+}
+
 }  // namespace
+
+bool within_run_budget(double bytes) {
+  return bytes <= run_budget();
+}
 
 bool too_large_to_turn_whole(const OrientedFrame& frame) {
   const double dem = frame.resampled ? 4.0 * static_cast<double>(frame.dem_rows) *
@@ -52,8 +61,7 @@ bool too_large_to_turn_whole(const OrientedFrame& frame) {
 }
 
 std::size_t strip_profiles(const OrientedFrame& frame) {
-  // 512 MiB, less on a machine with under 2 GiB.
-  const double budget = std::min(512.0 * 1024 * 1024, 0.25 * machine_memory());
+  const double budget = run_budget();
   const double bytes_per_profile = strip_bytes_per_profile(frame);
   // Short profiles come more to a strip, at least 1 Mi cells, as every strip costs a read and a
   // pause in linking. (Not more for others: the first strip is read before any work starts.)

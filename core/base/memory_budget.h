@@ -16,6 +16,10 @@ namespace tsk {
 // Reading that much could not fail cleanly: memory is promised freely and taken at first use.
 bool too_large_to_turn_whole(const OrientedFrame& frame);
 
+// True when `bytes` fit in what a run plans to hold beside its strips: 512 MiB, or a quarter of
+// the machine's memory when that is less.
+bool within_run_budget(double bytes);
+
 // Profiles per strip for a strip-by-strip run of this view: 1024, more for profiles under 1024
 // cells (1 Mi cells a strip, up to 65536 profiles), fewer for profiles over 4096 cells (4 Mi
 // cells a strip, at least 256 profiles) and for profiles so long that a run's

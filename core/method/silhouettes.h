@@ -111,9 +111,11 @@ struct DemSource {
 // memory a run takes (strips of `strip` profiles, 0: strip_profiles()), reads the next strip while
 // the stages work on this one, first reads a sample of the DEM (the whole DEM for local
 // adaptivity) for an adaptive filter (adapt_filter), and for plan-oblique geometry reads the DEM
-// once for its lowest height. Strokes go to `sink` as they complete (the result holds none) or,
-// without one, into the result. Throws Error on bad parameters or what `read` throws, Cancelled
-// when `progress` returns false.
+// once for its lowest height. Drawn for a scale coarser than the DEM (run_averaging), the DEM is
+// read and averaged once, on two threads when it has a reader alongside, and held when the
+// averaged DEM fits in a run's budget (within_run_budget); else each pass averages as it reads.
+// Strokes go to `sink` as they complete (the result holds none) or, without one, into the result.
+// Throws Error on bad parameters or what `read` throws, Cancelled when `progress` returns false.
 SilhouetteResult sketch_silhouettes(const DemSource& dem, const SilhouetteParams& params,
                                     std::size_t strip = 0, const ProgressFn& progress = {},
                                     StrokeSink sink = {});

@@ -20,27 +20,43 @@ std::size_t page_averaging(const DemGrid& grid, double azimuth_deg, double most_
   return largest;
 }
 
-PageHeights read_page_heights(const DemFile& file, double azimuth_deg, std::size_t factor) {
-  // The DEM's own range, seen as its windows are read for averaging.
+namespace {
+
+// The lowest and highest heights with data that a reader has read.
+struct HeightsSeen {
   double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
-  DemSource source = file.source();
-  source.read = [&lowest, &highest, read = source.read](const DemWindow& w, float* z) {
+};
+
+// `read`, noting in `seen` the range of what it reads; empty when `read` is.
+WindowReader noting_range(WindowReader read, HeightsSeen& seen) {
+  if (!read) return read;
+  return [&seen, read = std::move(read)](const DemWindow& w, float* z) {
     read(w, z);
     for (std::size_t k = 0; k < w.rows * w.cols; ++k) {
       if (!is_data(z[k])) continue;
-      lowest = std::min(lowest, static_cast<double>(z[k]));
-      highest = std::max(highest, static_cast<double>(z[k]));
+      seen.lowest = std::min(seen.lowest, static_cast<double>(z[k]));
+      seen.highest = std::max(seen.highest, static_cast<double>(z[k]));
     }
   };
-  const DemSource averaged = averaged_dem(source, factor);
-  // Read whole in one window: the averaging reads its source a block row at a time.
-  HeightGrid heights(averaged.grid.rows, averaged.grid.cols, Unset{});
-  averaged.read({0, 0, averaged.grid.rows, averaged.grid.cols}, heights.data());
+}
+
+}  // namespace
+
+PageHeights read_page_heights(const DemFile& file, double azimuth_deg, std::size_t factor,
+                              const ProgressFn& progress) {
+  // The DEM's own range, seen by each of its readers (on threads of their own) as they read.
+  HeightsSeen first, second;
+  DemSource source = file.source();
+  source.read = noting_range(std::move(source.read), first);
+  source.read_alongside = noting_range(std::move(source.read_alongside), second);
+  const HeightGrid heights = read_averaged(source, factor, progress);
   PageHeights page;
-  page.frame = make_frame(averaged.grid, azimuth_deg);
+  page.frame = make_frame(averaged_grid(source.grid, factor), azimuth_deg);
   page.oriented = orient(heights, page.frame);
-  page.geotransform = averaged.geotransform;
+  page.geotransform = averaged_geotransform(source.geotransform, factor);
   page.averaged = factor;
+  const double lowest = std::min(first.lowest, second.lowest);
+  const double highest = std::max(first.highest, second.highest);
   if (lowest <= highest) page.lowest = lowest, page.highest = highest;
   return page;
 }

@@ -8,6 +8,7 @@
 
 #include "core/base/geotransform.h"
 #include "core/base/grid.h"
+#include "core/base/parallel.h"
 #include "core/method/frame.h"
 #include "io/read/dem_reader.h"
 
@@ -30,8 +31,10 @@ struct PageHeights {
   double lowest = 0.0, highest = 0.0;
 };
 
-// The DEM of `file` averaged `factor` cells a side (averaged_dem) and turned to the view facing
-// `azimuth_deg`. Throws Error as the file's reads do.
-PageHeights read_page_heights(const DemFile& file, double azimuth_deg, std::size_t factor);
+// The DEM of `file` averaged `factor` cells a side (read_averaged: on two threads when the file
+// has a reader alongside) and turned to the view facing `azimuth_deg`, telling `progress` as it
+// reads. Throws Error as the file's reads do, Cancelled when `progress` says stop.
+PageHeights read_page_heights(const DemFile& file, double azimuth_deg, std::size_t factor,
+                              const ProgressFn& progress = {});
 
 }  // namespace tsk::io
