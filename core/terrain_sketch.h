@@ -26,7 +26,8 @@
 // applications/: profile_plot.h, pstrokes.h, drape.h [3]; diagnostics.h (classification and row
 //   slope maps); filter_diagram.h (column against row slope with the filter's removal region).
 // base/: grid.h (the grid type, NaN nodata), flags.h (per-cell classification bits), errors.h,
-//   parallel.h (threads, progress, cancellation), memory budgets and timing.
+//   parallel.h (threads, progress, cancellation), memory budgets (with a control group's limit)
+//   and timing.
 #pragma once
 
 #include "core/applications/diagnostics.h"

@@ -8,13 +8,14 @@
 #include <cstdlib>
 #include <string>
 
+#include "core/base/cgroup_memory.h"
 #include "core/base/errors.h"
 
 namespace tsk {
 namespace {
 
-// The machine's memory, or the megabytes TSK_MEMORY_MB gives for a run to plan for: on a machine
-// shared with other work, or in a container whose limit the machine's memory does not show.
+// The megabytes TSK_MEMORY_MB gives for a run to plan for (on a machine shared with other work),
+// else the machine's memory or, when less, its control group's limit (a container's).
 double machine_memory() {
   if (const char* given = std::getenv("TSK_MEMORY_MB"); given && *given) {
     char* end = nullptr;
@@ -26,7 +27,9 @@ double machine_memory() {
     }
     return megabytes * 1024.0 * 1024.0;
   }
-  return static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+  const double physical =
+      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+  return std::min(physical, this_process_memory_limit());
 }
 
 bool over_half_the_memory(double bytes) {

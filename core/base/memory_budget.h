@@ -1,7 +1,8 @@
 // How much of the machine a run may take, decided in one place: whether a DEM may be turned
 // whole, and how many profiles a strip-by-strip run reads at a time. The machine's memory is its
-// physical memory, or the megabytes that the environment variable TSK_MEMORY_MB gives (each
-// function here throws Error when that is not a number from 1).
+// physical memory or, when less, its control group's limit (cgroup_memory.h), or the megabytes
+// that the environment variable TSK_MEMORY_MB gives (each function here throws Error when that is
+// not a number from 1).
 #pragma once
 
 #include <cstddef>
