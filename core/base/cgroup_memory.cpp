@@ -5,7 +5,6 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
-#include <vector>
 
 namespace tsk {
 namespace {
@@ -17,8 +16,7 @@ constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 double limit_in(const std::string& path) {
   std::ifstream file(path);
   std::string text;
-  if (!(file >> text) || text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
-    return kNoLimit;
+  if (!(file >> text) || text.find_first_not_of("0123456789") != std::string::npos) return kNoLimit;
   const double bytes = std::strtod(text.c_str(), nullptr);
   return bytes > 0 ? bytes : kNoLimit;
 }

@@ -11,6 +11,7 @@
 #include "core/base/errors.h"
 #include "core/base/parallel.h"
 #include "core/drawn/drawing_scale.h"
+#include "core/method/dem_windows.h"
 
 namespace tsk {
 namespace {
@@ -129,15 +130,7 @@ DemSource held_source(std::shared_ptr<const HeightGrid> heights, const DemGrid& 
   if (!heights || heights->rows() != grid.rows || heights->cols() != grid.cols)
     throw Error("internal: the heights held do not match the DEM's grid");
   DemSource held{grid, geotransform, {}, {}};
-  held.read = [heights](const DemWindow& w, float* out) {
-    if (w.row0 > heights->rows() || w.rows > heights->rows() - w.row0 || w.col0 > heights->cols() ||
-        w.cols > heights->cols() - w.col0)
-      throw Error("internal: a window beyond the heights held");
-    for (std::size_t r = 0; r < w.rows; ++r) {
-      const float* row = heights->row(w.row0 + r) + w.col0;
-      std::copy(row, row + w.cols, out + r * w.cols);
-    }
-  };
+  held.read = [heights](const DemWindow& w, float* out) { copy_window(*heights, w, out); };
   // Memory read alike from any thread.
   held.read_alongside = held.read;
   return held;

@@ -115,6 +115,16 @@ void DemBand::load(const OrientedFrame& frame, std::size_t first, std::size_t co
   }
 }
 
+void copy_window(const HeightGrid& grid, const DemWindow& w, float* heights) {
+  if (w.row0 > grid.rows() || w.rows > grid.rows() - w.row0 || w.col0 > grid.cols() ||
+      w.cols > grid.cols() - w.col0)
+    throw Error("internal: a window beyond the DEM held");
+  for (std::size_t r = 0; r < w.rows; ++r) {
+    const float* row = grid.row(w.row0 + r) + w.col0;
+    std::copy(row, row + w.cols, heights + r * w.cols);
+  }
+}
+
 void read_row_blocks(std::size_t rows, std::size_t cols, const WindowReader& read,
                      const std::function<void(std::size_t first_row, std::size_t count,
                                               const float* heights)>& use) {

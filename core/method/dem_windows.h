@@ -20,6 +20,10 @@ struct DemWindow {
 // nodata. Throws Error when the raster cannot be read.
 using WindowReader = std::function<void(const DemWindow& window, float* heights)>;
 
+// Copies `window` of a grid held in memory into `heights`, row by row (a WindowReader's work on
+// a DEM held whole). Throws Error when the window does not lie in the grid.
+void copy_window(const HeightGrid& grid, const DemWindow& window, float* heights);
+
 // Reads a DEM of rows x cols cells whole through `read`, top to bottom in blocks of rows of
 // about 16 MB, handing each block to use(first_row, count, heights).
 void read_row_blocks(

@@ -1,11 +1,11 @@
 #include "core/method/run_recipes.h"
 
-#include <algorithm>
 #include <utility>
 
 #include "core/base/errors.h"
 #include "core/base/stage_timing.h"
 #include "core/method/averaged_dem.h"
+#include "core/method/dem_windows.h"
 #include "core/method/visibility.h"
 
 namespace tsk {
@@ -35,14 +35,7 @@ CellFlags visibility_of(const HeldDem& dem, const ViewParams& view, unsigned thr
 WindowReader dem_windows(const HeldDem& dem) {
   if (!dem.frame.as_it_lies()) return dem.source.read;
   const HeightGrid& grid = dem.oriented;
-  return [&grid](const DemWindow& w, float* heights) {
-    if (w.row0 + w.rows > grid.rows() || w.col0 + w.cols > grid.cols())
-      throw Error("internal: a window beyond the DEM");
-    for (std::size_t r = 0; r < w.rows; ++r) {
-      const float* row = grid.row(w.row0 + r) + w.col0;
-      std::copy(row, row + w.cols, heights + r * w.cols);
-    }
-  };
+  return [&grid](const DemWindow& w, float* heights) { copy_window(grid, w, heights); };
 }
 
 ResolvedParams resolve_on(const HeldDem& dem, const SilhouetteParams& choice) {
